@@ -1,0 +1,53 @@
+#include "raystep/accel.h"
+
+#include <stdexcept>
+
+namespace raystep {
+
+std::optional<Hit> BruteForce::intersect(Ray ray, TraversalCounters& counters) const {
+    std::optional<Hit> closest;
+    Hit hit;
+    const std::uint32_t n = scene_->primitiveCount();
+    for (std::uint32_t p = 0; p < n; ++p) {
+        ++counters.primitiveTests;
+        // intersectPrimitive shortens ray.tMax, so later primitives must be closer to win.
+        if (scene_->intersectPrimitive(p, ray, hit)) closest = hit;
+    }
+    return closest;
+}
+
+bool BruteForce::occluded(Ray ray, TraversalCounters& counters) const {
+    Hit hit;
+    const std::uint32_t n = scene_->primitiveCount();
+    for (std::uint32_t p = 0; p < n; ++p) {
+        ++counters.primitiveTests;
+        if (scene_->intersectPrimitive(p, ray, hit)) return true;
+    }
+    return false;
+}
+
+std::optional<AccelKind> parseAccelKind(std::string_view name) {
+    if (name == "bruteforce") return AccelKind::BruteForce;
+    if (name == "grid") return AccelKind::Grid;
+    if (name == "kdtree") return AccelKind::KdTree;
+    if (name == "bvh") return AccelKind::Bvh;
+    return std::nullopt;
+}
+
+std::string_view accelKindName(AccelKind kind) {
+    switch (kind) {
+        case AccelKind::BruteForce: return "bruteforce";
+        case AccelKind::Grid: return "grid";
+        case AccelKind::KdTree: return "kdtree";
+        case AccelKind::Bvh: return "bvh";
+    }
+    return "?";
+}
+
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind) {
+    if (kind == AccelKind::BruteForce) return BruteForce(scene);
+    throw std::runtime_error("--accel " + std::string(accelKindName(kind)) +
+                             ": not implemented yet; only 'bruteforce' is available in this version");
+}
+
+}  // namespace raystep

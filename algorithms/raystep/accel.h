@@ -1,0 +1,61 @@
+#pragma once
+// The accelerator interface: "given the scene, find the nearest hit of a ray efficiently".
+// A closed set of structures dispatched through std::variant (no virtual call per ray).
+// Brute force is the slides' RaySceneIntersection; grid, kd-tree and BVH come with issue 4.
+#include "raystep/ray.h"
+#include "raystep/scene.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace raystep {
+
+/// What one query cost: counted in locals by the caller and summed per pixel.
+struct TraversalCounters {
+    std::uint64_t primitiveTests = 0;
+    std::uint64_t nodeVisits = 0;
+    std::uint64_t mailboxSkips = 0;
+    TraversalCounters& operator+=(const TraversalCounters& o) {
+        primitiveTests += o.primitiveTests;
+        nodeVisits += o.nodeVisits;
+        mailboxSkips += o.mailboxSkips;
+        return *this;
+    }
+};
+
+/// The slides' loop: test every primitive, keep the closest.
+class BruteForce {
+public:
+    explicit BruteForce(const Scene& scene) : scene_(&scene) {}
+    /// Nearest hit in (ray.tMin, ray.tMax).
+    std::optional<Hit> intersect(Ray ray, TraversalCounters& counters) const;
+    /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
+    bool occluded(Ray ray, TraversalCounters& counters) const;
+
+private:
+    const Scene* scene_;
+};
+
+enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
+
+/// Parses "bruteforce|grid|kdtree|bvh"; nullopt for anything else.
+std::optional<AccelKind> parseAccelKind(std::string_view name);
+std::string_view accelKindName(AccelKind kind);
+
+using Accelerator = std::variant<BruteForce>;
+
+/// Builds the chosen structure over `scene` (which must outlive it).
+/// Throws std::runtime_error for a structure that is not implemented yet.
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind);
+
+inline std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray,
+                                    TraversalCounters& counters) {
+    return std::visit([&](const auto& a) { return a.intersect(ray, counters); }, accel);
+}
+inline bool occluded(const Accelerator& accel, const Ray& ray, TraversalCounters& counters) {
+    return std::visit([&](const auto& a) { return a.occluded(ray, counters); }, accel);
+}
+
+}  // namespace raystep

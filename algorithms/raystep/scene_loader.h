@@ -1,0 +1,50 @@
+#pragma once
+// Scene files (JSON with comments, docs/scene-format.md) and the built-in scenes.
+#include "raystep/scene.h"
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raystep {
+
+/// A scene that cannot be loaded: which file, which line, which key, and why.
+class SceneError : public std::runtime_error {
+public:
+    SceneError(std::string file, int line, std::string key, const std::string& message);
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }  // 0 when the error is about the file as a whole
+    const std::string& key() const { return key_; }
+
+private:
+    std::string file_;
+    int line_;
+    std::string key_;
+};
+
+/// Returns the text of a file a scene refers to (an OBJ mesh), or nullopt when it does not exist.
+using FileResolver = std::function<std::optional<std::string>(const std::string& relativePath)>;
+
+/// Parses scene text; `fileName` is used in messages and as the scene's name.
+Scene loadSceneText(std::string_view text, const std::string& fileName,
+                    const FileResolver& resolver);
+
+/// Loads a scene file from disk; meshes are resolved relative to the file's folder.
+Scene loadSceneFile(const std::string& path);
+
+/// A built-in scene by name ("default", "whitted", "cornell", "stadium").
+Scene loadBuiltinScene(const std::string& name);
+
+/// A built-in name, else a file path; the error for neither names both possibilities.
+Scene loadScene(const std::string& nameOrPath);
+
+struct BuiltinSceneInfo {
+    std::string name;
+    std::string description;
+};
+std::vector<std::string> builtinSceneNames();
+
+}  // namespace raystep

@@ -1,0 +1,424 @@
+#include "raystep/scene_loader.h"
+
+#include "raystep/json_lines.h"
+#include "raystep/resources.h"
+
+#include <nlohmann/json.hpp>
+#include <tiny_obj_loader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace raystep {
+
+using nlohmann::json;
+
+SceneError::SceneError(std::string file, int line, std::string key, const std::string& message)
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                         (key.empty() ? std::string() : "key '" + key + "': ") + message),
+      file_(std::move(file)),
+      line_(line),
+      key_(std::move(key)) {}
+
+namespace {
+
+std::string joinNames(std::initializer_list<const char*> names) {
+    std::string out;
+    for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+    return out;
+}
+
+/// Typed access to the parsed JSON that fails with file, line and key.
+class Reader {
+public:
+    Reader(std::string file, std::string_view text) : file_(std::move(file)), lines_(text) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+        throw SceneError(file_, lines_.lineOf(path), path, message);
+    }
+    const JsonLineMap& lines() const { return lines_; }
+
+    void requireObject(const json& j, const std::string& path) const {
+        if (!j.is_object()) fail(path, "expected an object {...}, got " + typeName(j));
+    }
+    void checkKeys(const json& obj, const std::string& path,
+                   std::initializer_list<const char*> allowed) const {
+        for (const auto& [key, value] : obj.items()) {
+            bool known = false;
+            for (const char* a : allowed) known = known || key == a;
+            if (!known)
+                fail(JsonLineMap::child(path, key),
+                     "unknown key (allowed here: " + joinNames(allowed) + ")");
+        }
+    }
+    double number(const json& j, const std::string& path) const {
+        if (!j.is_number()) fail(path, "expected a number, got " + typeName(j));
+        const double v = j.get<double>();
+        if (!std::isfinite(v)) fail(path, "must be a finite number");
+        return v;
+    }
+    double positive(const json& j, const std::string& path) const {
+        const double v = number(j, path);
+        if (!(v > 0.0)) fail(path, "must be greater than 0, got " + fmt(v));
+        return v;
+    }
+    double nonNegative(const json& j, const std::string& path) const {
+        const double v = number(j, path);
+        if (v < 0.0) fail(path, "must not be negative, got " + fmt(v));
+        return v;
+    }
+    int integer(const json& j, const std::string& path, int lo, int hi) const {
+        const double v = number(j, path);
+        if (v != std::floor(v)) fail(path, "expected a whole number, got " + fmt(v));
+        if (v < lo || v > hi)
+            fail(path, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                           ", got " + fmt(v));
+        return static_cast<int>(v);
+    }
+    std::string string(const json& j, const std::string& path) const {
+        if (!j.is_string()) fail(path, "expected a string, got " + typeName(j));
+        return j.get<std::string>();
+    }
+    Vec3 vec3(const json& j, const std::string& path) const {
+        if (!j.is_array() || j.size() != 3)
+            fail(path, "expected an array of 3 numbers [x, y, z], got " + typeName(j));
+        return Vec3(number(j[0], JsonLineMap::element(path, 0)),
+                    number(j[1], JsonLineMap::element(path, 1)),
+                    number(j[2], JsonLineMap::element(path, 2)));
+    }
+    /// A colour: [r, g, b] or one number for grey; each component >= 0 and, if `maxOne`, <= 1.
+    Color color(const json& j, const std::string& path, bool maxOne) const {
+        Color c;
+        if (j.is_number()) {
+            c = Color(number(j, path));
+        } else if (j.is_array() && j.size() == 3) {
+            c = vec3(j, path);
+        } else {
+            fail(path, "expected a colour: [r, g, b] or one number, got " + typeName(j));
+        }
+        for (int k = 0; k < 3; ++k) {
+            if (c[k] < 0.0) fail(path, "colour components must not be negative");
+            if (maxOne && c[k] > 1.0)
+                fail(path, "reflectance components must be at most 1 (energy conservation)");
+        }
+        return c;
+    }
+
+    static std::string typeName(const json& j) {
+        if (j.is_null()) return "null";
+        if (j.is_boolean()) return "a boolean";
+        if (j.is_number()) return "a number";
+        if (j.is_string()) return "a string";
+        if (j.is_array()) return "an array of " + std::to_string(j.size());
+        return "an object";
+    }
+    static std::string fmt(double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+
+private:
+    std::string file_;
+    JsonLineMap lines_;
+};
+
+/// Runs `f(value, path)` on obj[key] when present.
+template <typename F>
+void optional(const json& obj, const std::string& path, const char* key, F&& f) {
+    if (auto it = obj.find(key); it != obj.end()) f(*it, JsonLineMap::child(path, key));
+}
+
+void readCamera(const Reader& r, const json& j, const std::string& path, Camera& cam) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"eye", "look_at", "up", "fov"});
+    optional(j, path, "eye", [&](const json& v, const std::string& p) { cam.eye = r.vec3(v, p); });
+    optional(j, path, "look_at",
+             [&](const json& v, const std::string& p) { cam.lookAt = r.vec3(v, p); });
+    optional(j, path, "up", [&](const json& v, const std::string& p) { cam.up = r.vec3(v, p); });
+    optional(j, path, "fov", [&](const json& v, const std::string& p) {
+        cam.fovDeg = r.positive(v, p);
+        if (cam.fovDeg >= 180.0) r.fail(p, "field of view must be below 180 degrees");
+    });
+    const Vec3 forward = cam.lookAt - cam.eye;
+    if (glm::length(forward) <= 1e-12 * (1.0 + maxAbsComponent(cam.eye)))
+        r.fail(JsonLineMap::child(path, "look_at"),
+               "the camera has no direction: look_at equals eye");
+    const Vec3 side = glm::cross(glm::normalize(forward), cam.up);
+    if (!(glm::length(side) > 1e-9 * glm::length(cam.up)))
+        r.fail(JsonLineMap::child(path, "up"),
+               "up must not be zero nor parallel to the view direction");
+}
+
+void readRender(const Reader& r, const json& j, const std::string& path, RenderSettings& s) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"width", "height", "bounces", "spp", "diffuse_samples"});
+    optional(j, path, "width",
+             [&](const json& v, const std::string& p) { s.width = r.integer(v, p, 1, kMaxImageSide); });
+    optional(j, path, "height",
+             [&](const json& v, const std::string& p) { s.height = r.integer(v, p, 1, kMaxImageSide); });
+    optional(j, path, "bounces",
+             [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, 64); });
+    optional(j, path, "spp",
+             [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, 4096); });
+    optional(j, path, "diffuse_samples", [&](const json& v, const std::string& p) {
+        s.diffuseSamples = r.integer(v, p, 0, 1024);
+    });
+}
+
+Material readMaterial(const Reader& r, const json& j, const std::string& path,
+                      const std::string& name) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"kd", "ks", "n", "reflect", "transparency", "ior", "checker"});
+    Material m;
+    m.name = name;
+    optional(j, path, "kd", [&](const json& v, const std::string& p) { m.kd = r.color(v, p, true); });
+    optional(j, path, "ks", [&](const json& v, const std::string& p) { m.ks = r.color(v, p, true); });
+    optional(j, path, "n", [&](const json& v, const std::string& p) { m.n = r.nonNegative(v, p); });
+    optional(j, path, "reflect",
+             [&](const json& v, const std::string& p) { m.reflect = r.color(v, p, true); });
+    optional(j, path, "transparency",
+             [&](const json& v, const std::string& p) { m.transparency = r.color(v, p, true); });
+    optional(j, path, "ior", [&](const json& v, const std::string& p) { m.ior = r.positive(v, p); });
+    optional(j, path, "checker", [&](const json& v, const std::string& p) {
+        r.requireObject(v, p);
+        r.checkKeys(v, p, {"color", "size"});
+        m.checker.enabled = true;
+        optional(v, p, "color",
+                 [&](const json& c, const std::string& cp) { m.checker.color = r.color(c, cp, true); });
+        optional(v, p, "size",
+                 [&](const json& c, const std::string& cp) { m.checker.size = r.positive(c, cp); });
+    });
+    return m;
+}
+
+struct MeshTransform {
+    Vec3 scale{1.0};
+    Vec3 translate{0.0};
+};
+
+void readMesh(const Reader& r, const json& j, const std::string& path, std::uint32_t material,
+              const FileResolver& resolver, Scene& scene) {
+    const std::string filePath = JsonLineMap::child(path, "file");
+    if (!j.contains("file")) r.fail(filePath, "a mesh needs the OBJ file to load");
+    const std::string file = r.string(j["file"], filePath);
+    MeshTransform xf;
+    optional(j, path, "scale", [&](const json& v, const std::string& p) {
+        xf.scale = v.is_number() ? Vec3(r.number(v, p)) : r.vec3(v, p);
+        if (xf.scale.x == 0.0 || xf.scale.y == 0.0 || xf.scale.z == 0.0)
+            r.fail(p, "scale must not be zero (the mesh would be flat)");
+    });
+    optional(j, path, "translate",
+             [&](const json& v, const std::string& p) { xf.translate = r.vec3(v, p); });
+
+    const std::optional<std::string> text = resolver(file);
+    if (!text) r.fail(filePath, "cannot open OBJ file '" + file + "'");
+    tinyobj::ObjReader obj;
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    if (!obj.ParseFromString(*text, "", config)) {
+        std::string err = obj.Error();
+        while (!err.empty() && err.back() == '\n') err.pop_back();
+        r.fail(filePath, "cannot read OBJ file '" + file + "': " + err);
+    }
+    const auto& verts = obj.GetAttrib().vertices;
+    const auto vertex = [&](int index) {
+        const Vec3 v(verts[3 * index], verts[3 * index + 1], verts[3 * index + 2]);
+        return v * xf.scale + xf.translate;
+    };
+    std::size_t added = 0;
+    for (const tinyobj::shape_t& shape : obj.GetShapes()) {
+        const auto& idx = shape.mesh.indices;
+        for (std::size_t f = 0; f + 2 < idx.size(); f += 3) {
+            Triangle t{vertex(idx[f].vertex_index), vertex(idx[f + 1].vertex_index),
+                       vertex(idx[f + 2].vertex_index), material};
+            if (!isFinite(t.a) || !isFinite(t.b) || !isFinite(t.c))
+                r.fail(filePath, "OBJ file '" + file + "' has a vertex that is not a finite number");
+            // Zero-area triangles have no normal and no surface: they are left out (and counted).
+            if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0) {
+                ++scene.droppedDegenerateTriangles;
+                continue;
+            }
+            scene.triangles.push_back(t);
+            ++added;
+        }
+    }
+    if (added == 0) r.fail(filePath, "OBJ file '" + file + "' has no triangles");
+}
+
+void readObject(const Reader& r, const json& j, const std::string& path,
+                const std::unordered_map<std::string, std::uint32_t>& materialIds,
+                const FileResolver& resolver, Scene& scene) {
+    r.requireObject(j, path);
+    const std::string typePath = JsonLineMap::child(path, "type");
+    if (!j.contains("type")) r.fail(typePath, "every object needs a type: sphere, triangle or mesh");
+    const std::string type = r.string(j["type"], typePath);
+
+    std::uint32_t material = 0;  // the default material
+    optional(j, path, "material", [&](const json& v, const std::string& p) {
+        const std::string name = r.string(v, p);
+        const auto it = materialIds.find(name);
+        if (it == materialIds.end()) r.fail(p, "no material named '" + name + "' in 'materials'");
+        material = it->second;
+    });
+
+    if (type == "sphere") {
+        r.checkKeys(j, path, {"type", "material", "center", "radius"});
+        Sphere s;
+        s.material = material;
+        optional(j, path, "center", [&](const json& v, const std::string& p) { s.center = r.vec3(v, p); });
+        const std::string radiusPath = JsonLineMap::child(path, "radius");
+        if (!j.contains("radius")) r.fail(radiusPath, "a sphere needs a radius");
+        s.radius = r.positive(j["radius"], radiusPath);
+        scene.spheres.push_back(s);
+    } else if (type == "triangle") {
+        r.checkKeys(j, path, {"type", "material", "vertices"});
+        const std::string vp = JsonLineMap::child(path, "vertices");
+        if (!j.contains("vertices") || !j["vertices"].is_array() || j["vertices"].size() != 3)
+            r.fail(vp, "a triangle needs 3 vertices [[x,y,z], [x,y,z], [x,y,z]]");
+        Triangle t{r.vec3(j["vertices"][0], JsonLineMap::element(vp, 0)),
+                   r.vec3(j["vertices"][1], JsonLineMap::element(vp, 1)),
+                   r.vec3(j["vertices"][2], JsonLineMap::element(vp, 2)), material};
+        if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0)
+            r.fail(vp, "the triangle has zero area (its vertices are on one line)");
+        scene.triangles.push_back(t);
+    } else if (type == "mesh") {
+        r.checkKeys(j, path, {"type", "material", "file", "scale", "translate"});
+        readMesh(r, j, path, material, resolver, scene);
+    } else {
+        r.fail(typePath, "unknown object type '" + type + "' (expected sphere, triangle or mesh)");
+    }
+}
+
+}  // namespace
+
+Scene loadSceneText(std::string_view text, const std::string& fileName,
+                    const FileResolver& resolver) {
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end(), nullptr, true, /*ignore_comments=*/true);
+    } catch (const json::parse_error& e) {
+        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
+        std::string what = e.what();
+        const auto at = what.find("parse error");
+        what = at == std::string::npos ? what : what.substr(at);
+        // Line of the failing byte, counted here so the message starts like every other one.
+        int line = 1;
+        for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) line += text[i] == '\n';
+        throw SceneError(fileName, line, "", "malformed JSON: " + what);
+    }
+    const Reader r(fileName, text);
+    if (!r.lines().duplicates().empty()) {
+        const auto& [path, line] = r.lines().duplicates().front();
+        throw SceneError(fileName, line, path, "key given twice");
+    }
+    if (!root.is_object()) r.fail("", "a scene file holds one JSON object {...}");
+    r.checkKeys(root, "",
+                {"description", "camera", "background", "ambient", "lights", "materials", "objects",
+                 "render"});
+
+    Scene scene;
+    scene.name = fileName;
+    optional(root, "", "description",
+             [&](const json& v, const std::string& p) { scene.description = r.string(v, p); });
+    optional(root, "", "camera",
+             [&](const json& v, const std::string& p) { readCamera(r, v, p, scene.camera); });
+    if (!root.contains("camera")) readCamera(r, json::object(), "camera", scene.camera);
+    optional(root, "", "render",
+             [&](const json& v, const std::string& p) { readRender(r, v, p, scene.settings); });
+    optional(root, "", "background",
+             [&](const json& v, const std::string& p) { scene.background = r.color(v, p, false); });
+    optional(root, "", "ambient",
+             [&](const json& v, const std::string& p) { scene.ambient = r.color(v, p, false); });
+
+    optional(root, "", "lights", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) r.fail(p, "expected an array of lights, got " + Reader::typeName(v));
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const std::string lp = JsonLineMap::element(p, i);
+            const json& l = v[i];
+            r.requireObject(l, lp);
+            r.checkKeys(l, lp, {"position", "color", "intensity"});
+            PointLight light;
+            if (!l.contains("position")) r.fail(JsonLineMap::child(lp, "position"), "a light needs a position");
+            light.position = r.vec3(l["position"], JsonLineMap::child(lp, "position"));
+            Color color(1.0);
+            double intensity = 1.0;
+            optional(l, lp, "color", [&](const json& c, const std::string& cp) { color = r.color(c, cp, false); });
+            optional(l, lp, "intensity",
+                     [&](const json& c, const std::string& cp) { intensity = r.nonNegative(c, cp); });
+            light.intensity = color * intensity;
+            scene.lights.push_back(light);
+        }
+    });
+
+    scene.materials.push_back(Material{});  // id 0: the default material
+    std::unordered_map<std::string, std::uint32_t> materialIds;
+    optional(root, "", "materials", [&](const json& v, const std::string& p) {
+        if (!v.is_object())
+            r.fail(p, "expected an object of named materials, got " + Reader::typeName(v));
+        for (const auto& [name, m] : v.items()) {
+            materialIds[name] = static_cast<std::uint32_t>(scene.materials.size());
+            scene.materials.push_back(readMaterial(r, m, JsonLineMap::child(p, name), name));
+        }
+    });
+
+    if (!root.contains("objects") || !root["objects"].is_array() || root["objects"].empty())
+        r.fail("objects", "the scene is empty: 'objects' must list at least one object");
+    const json& objects = root["objects"];
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        readObject(r, objects[i], JsonLineMap::element("objects", i), materialIds, resolver, scene);
+    return scene;
+}
+
+namespace {
+std::optional<std::string> readWholeFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in || std::filesystem::is_directory(path)) return std::nullopt;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+Scene loadSceneFile(const std::string& path) {
+    const auto text = readWholeFile(path);
+    if (!text) throw SceneError(path, 0, "", "cannot open the scene file");
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    return loadSceneText(*text, path, [folder](const std::string& rel) {
+        return readWholeFile(folder / rel);
+    });
+}
+
+std::vector<std::string> builtinSceneNames() {
+    std::vector<std::string> names;
+    for (const std::string& f : embeddedFileNames())
+        if (f.size() > 5 && f.ends_with(".json")) names.push_back(f.substr(0, f.size() - 5));
+    return names;
+}
+
+Scene loadBuiltinScene(const std::string& name) {
+    const auto text = embeddedFile(name + ".json");
+    if (!text) throw SceneError(name, 0, "", "no built-in scene of that name");
+    Scene scene = loadSceneText(*text, "scenes/" + name + ".json", [](const std::string& rel) {
+        const auto data = embeddedFile(rel);
+        return data ? std::optional<std::string>(std::string(*data)) : std::nullopt;
+    });
+    scene.name = name;
+    return scene;
+}
+
+Scene loadScene(const std::string& nameOrPath) {
+    if (embeddedFile(nameOrPath + ".json")) return loadBuiltinScene(nameOrPath);
+    if (!std::filesystem::exists(nameOrPath)) {
+        std::string names;
+        for (const auto& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+        throw SceneError(nameOrPath, 0, "",
+                         "no such scene file, and no built-in scene of that name (built-in: " +
+                             names + ")");
+    }
+    return loadSceneFile(nameOrPath);
+}
+
+}  // namespace raystep

@@ -1,0 +1,183 @@
+#include "raystep/tracer.h"
+
+#include "raystep/shading.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+
+namespace raystep {
+
+double rayOffset(const Vec3& p) {
+    // Relative to the magnitude of the point: double keeps ~1e-16 relative error, so 1e-9 clears
+    // the rounding of the hit point by a wide margin at any scene scale. (Issue 3 adds the
+    // error-bound offsets of pbrt and an epsilon switch to show acne.)
+    return 1e-9 * (1.0 + maxAbsComponent(p));
+}
+
+Color Tracer::trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng,
+                    RayCounters& counters) const {
+    return trace(ray, kind, depth, false, rng, counters);
+}
+
+Color Tracer::trace(const Ray& ray, RayKind kind, int depth, bool diffuseBranched, Pcg32& rng,
+                    RayCounters& counters) const {
+    ++counters[kind];
+    const std::optional<Hit> hit = intersect(accel_, ray, counters.traversal);
+    if (!hit) return scene_.background;
+    return shade(ray, *hit, depth, diffuseBranched, rng, counters);
+}
+
+Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranched, Pcg32& rng,
+                    RayCounters& counters) const {
+    const Material& m = scene_.materialOf(hit.prim);
+    const Vec3 p = ray.at(hit.t);
+    const Vec3 outward = scene_.normalAt(hit, p);
+    const Vec3 d = glm::normalize(ray.dir);
+    const bool entering = glm::dot(d, outward) < 0.0;
+    const Vec3 n = entering ? outward : -outward;  // faces the incoming ray
+    const Vec3 toViewer = -d;
+    const Color kd = m.diffuseAt(p);
+    const double offset = rayOffset(p);
+    const Vec3 above = p + offset * n;  // origin for rays leaving on the viewer's side
+    const Vec3 below = p - offset * n;  // origin for rays entering the surface
+
+    // Ambient stands in for indirect light; when diffuse bounces compute it, it must go.
+    Color radiance = settings_.diffuseSamples > 0 ? Color(0.0) : scene_.ambient * kd;
+
+    // Local model: a shadow ray per light, then Phong's diffuse and specular terms.
+    for (const PointLight& light : scene_.lights) {
+        Vec3 toLight = light.position - above;
+        const double dist = glm::length(toLight);
+        if (!(dist > 0.0)) continue;
+        toLight /= dist;
+        if (glm::dot(n, toLight) <= 0.0) continue;  // light behind the surface: no ray needed
+        ++counters[RayKind::Shadow];
+        if (occluded(accel_, Ray{above, toLight, 0.0, dist}, counters.traversal)) continue;
+        const PhongTerms t = phong(n, toLight, toViewer, light.intensity, kd, m.ks, m.n);
+        radiance += t.diffuse + t.specular;
+    }
+
+    if (depth >= settings_.bounces) return radiance;
+
+    const auto traceChild = [&](const Vec3& origin, const Vec3& dir, RayKind kind) {
+        return trace(Ray{origin, dir, 0.0, kInfinity}, kind, depth + 1, diffuseBranched, rng,
+                     counters);
+    };
+    // Reflection ray: one ray in, one ray out.
+    if (!isBlack(m.reflect))
+        radiance += m.reflect * traceChild(above, reflect(d, n), RayKind::Reflection);
+    // Transparency ray by Snell's law; past the critical angle all of it reflects.
+    if (!isBlack(m.transparency)) {
+        const double eta = entering ? 1.0 / m.ior : m.ior;
+        if (const auto t = refract(d, n, eta))
+            radiance += m.transparency * traceChild(below, *t, RayKind::Refraction);
+        else
+            radiance += m.transparency * traceChild(above, reflect(d, n), RayKind::Reflection);
+    }
+    // Diffuse bounces: one ray in, infinitely many out, estimated with random directions.
+    // Cosine-weighted directions make the estimate of the Lambertian integral kd * mean(L).
+    if (settings_.diffuseSamples > 0 && !isBlack(kd)) {
+        const int count = diffuseBranched ? 1 : settings_.diffuseSamples;
+        Color sum(0.0);
+        for (int i = 0; i < count; ++i) {
+            const double u1 = rng.uniform();
+            const double u2 = rng.uniform();
+            const Vec3 dir = cosineSampleHemisphere(n, u1, u2);
+            sum += trace(Ray{above, dir, 0.0, kInfinity}, RayKind::Diffuse, depth + 1, true, rng,
+                         counters);
+        }
+        radiance += kd * sum / static_cast<double>(count);
+    }
+    return radiance;
+}
+
+Color Tracer::renderPixel(int x, int y, const RenderOptions& options,
+                          RayCounters& counters) const {
+    const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
+    Pcg32 rng(options.seed, pixelIndex);
+    const Camera& cam = scene_.camera;
+    if (options.spp == 1)
+        return trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
+                     RayKind::Primary, 0, rng, counters);
+    // Jittered sampling: the pixel is cut into a near-square grid of strata, one sample in each.
+    const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.spp))));
+    const int rows = (options.spp + cols - 1) / cols;
+    Color sum(0.0);
+    for (int s = 0; s < options.spp; ++s) {
+        const double jx = ((s % cols) + rng.uniform()) / cols;
+        const double jy = ((s / cols) + rng.uniform()) / rows;
+        sum += trace(cam.generateRay(x + jx, y + jy, options.width, options.height),
+                     RayKind::Primary, 0, rng, counters);
+    }
+    return sum / static_cast<double>(options.spp);
+}
+
+RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                    const ProgressFn& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result;
+    result.image = Image(options.width, options.height);
+    result.costPerPixel.assign(result.image.pixels.size(), 0);
+    const Tracer tracer(scene, accel, options.trace);
+
+    constexpr int kTile = 16;
+    const int tilesX = (options.width + kTile - 1) / kTile;
+    const int tilesY = (options.height + kTile - 1) / kTile;
+    const int tileCount = tilesX * tilesY;
+
+    std::atomic<bool> cancelled{false};
+    std::atomic<int> tilesDone{0};
+    std::mutex totalsMutex;
+    std::mutex progressMutex;
+
+    const auto renderTile = [&](int tile) {
+        const int x0 = (tile % tilesX) * kTile;
+        const int y0 = (tile / tilesX) * kTile;
+        const int x1 = std::min(x0 + kTile, options.width);
+        const int y1 = std::min(y0 + kTile, options.height);
+        RayCounters tileCounters;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                RayCounters pixel;
+                result.image.at(x, y) = tracer.renderPixel(x, y, options, pixel);
+                result.costPerPixel[static_cast<std::size_t>(y) * options.width + x] =
+                    pixel.traversal.primitiveTests;
+                tileCounters += pixel;
+            }
+        }
+        {
+            const std::lock_guard lock(totalsMutex);
+            result.counters += tileCounters;
+        }
+        const int done = ++tilesDone;
+        // Progress is reported by whichever worker is free to; the others do not wait.
+        if (progress && progressMutex.try_lock()) {
+            if (!progress(static_cast<double>(done) / tileCount)) cancelled = true;
+            progressMutex.unlock();
+        }
+    };
+
+    const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1),
+                          [&](const tbb::blocked_range<int>& r) {
+                              for (int tile = r.begin(); tile != r.end(); ++tile) {
+                                  if (cancelled) return;
+                                  renderTile(tile);
+                              }
+                          });
+    });
+    result.cancelled = cancelled;
+    if (progress && !result.cancelled) progress(1.0);
+    result.renderMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace raystep

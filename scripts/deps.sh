@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages raystep needs; sourced by run.sh and test.sh.
+# Every package the build or the tests use is listed here, so a fresh machine needs nothing by hand.
+
+RAYSTEP_BUILD_PACKAGES=(
+  build-essential cmake pkg-config
+  libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev
+)
+RAYSTEP_TEST_PACKAGES=(
+  googletest libgtest-dev libbenchmark-dev
+)
+
+# ensure_packages PKG...: install those that are not installed yet (apt-get, as root or through sudo).
+ensure_packages() {
+  local missing=()
+  local p
+  for p in "$@"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then sudo="sudo"; else
+      echo "raystep: missing packages (${missing[*]}) and not root: install them as root first" >&2
+      return 1
+    fi
+  fi
+  echo "raystep: installing ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# configure_and_build DIR [CMAKE ARGS...]: configure once, then build incrementally with -j2.
+configure_and_build() {
+  local dir="$1"; shift
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    cmake -S "$RAYSTEP_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@"
+  else
+    cmake -S "$RAYSTEP_ROOT" -B "$dir" "$@" >/dev/null
+  fi
+  cmake --build "$dir" -j2
+}

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test through ctest:
+# first the Release build, then the core's tests again under AddressSanitizer + UBSan.
+set -euo pipefail
+RAYSTEP_ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+source "$RAYSTEP_ROOT/scripts/deps.sh"
+
+ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}" "${RAYSTEP_TEST_PACKAGES[@]}"
+
+echo "== Release build and tests"
+configure_and_build "$RAYSTEP_ROOT/build"
+ctest --test-dir "$RAYSTEP_ROOT/build" --output-on-failure -j2
+
+echo "== Core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+configure_and_build "$RAYSTEP_ROOT/build-asan" -DRAYSTEP_SANITIZE=ON -DRAYSTEP_BUILD_BENCH=OFF
+ctest --test-dir "$RAYSTEP_ROOT/build-asan" --output-on-failure -j2 -L core
