@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -198,6 +200,25 @@ struct MeshTransform {
     Vec3 translate{0.0};
 };
 
+/// tinyobjloader reads "nan", "inf", "1e999" or "abc" in a vertex without complaint (as 0 or
+/// infinity): find the first such coordinate, with its line, before handing the text over.
+std::optional<std::pair<int, std::string>> findBadObjVertex(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+        std::istringstream fields(line.substr(2));
+        std::string token;
+        for (int k = 0; k < 3 && fields >> token; ++k) {
+            char* end = nullptr;
+            const double v = std::strtod(token.c_str(), &end);
+            if (end != token.c_str() + token.size() || !std::isfinite(v))
+                return std::make_pair(lineNo, token);
+        }
+    }
+    return std::nullopt;
+}
+
 void readMesh(const Reader& r, const json& j, const std::string& path, std::uint32_t material,
               const FileResolver& resolver, Scene& scene) {
     const std::string filePath = JsonLineMap::child(path, "file");
@@ -214,6 +235,9 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
 
     const std::optional<std::string> text = resolver(file);
     if (!text) r.fail(filePath, "cannot open OBJ file '" + file + "'");
+    if (auto bad = findBadObjVertex(*text))
+        r.fail(filePath, "OBJ file '" + file + "' line " + std::to_string(bad->first) +
+                             ": vertex coordinate '" + bad->second + "' is not a finite number");
     tinyobj::ObjReader obj;
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
@@ -224,7 +248,11 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
         r.fail(filePath, "cannot read OBJ file '" + file + "': " + err);
     }
     const auto& verts = obj.GetAttrib().vertices;
+    const auto vertexCount = static_cast<int>(verts.size() / 3);
     const auto vertex = [&](int index) {
+        // tinyobjloader only warns about indices past the end; they must not be read.
+        if (index < 0 || index >= vertexCount)
+            r.fail(filePath, "OBJ file '" + file + "' has a face with a vertex index out of range");
         const Vec3 v(verts[3 * index], verts[3 * index + 1], verts[3 * index + 2]);
         return v * xf.scale + xf.translate;
     };
@@ -235,7 +263,7 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
             Triangle t{vertex(idx[f].vertex_index), vertex(idx[f + 1].vertex_index),
                        vertex(idx[f + 2].vertex_index), material};
             if (!isFinite(t.a) || !isFinite(t.b) || !isFinite(t.c))
-                r.fail(filePath, "OBJ file '" + file + "' has a vertex that is not a finite number");
+                r.fail(filePath, "OBJ file '" + file + "': the scale makes a vertex overflow");
             // Zero-area triangles have no normal and no surface: they are left out (and counted).
             if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0) {
                 ++scene.droppedDegenerateTriangles;
@@ -299,6 +327,18 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
     json root;
     try {
         root = json::parse(text.begin(), text.end(), nullptr, true, /*ignore_comments=*/true);
+    } catch (const json::out_of_range& e) {
+        // A number too large for a double ("1e999"): nlohmann names the token, not the place.
+        std::string what = e.what();
+        const auto q0 = what.find('\'');
+        const auto q1 = what.rfind('\'');
+        const std::string token = q0 < q1 ? what.substr(q0 + 1, q1 - q0 - 1) : std::string();
+        const auto at = token.empty() ? std::string_view::npos : text.find(token);
+        const int line = at == std::string_view::npos
+                             ? 1
+                             : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+        throw SceneError(fileName, line, "",
+                         "number '" + token + "' is out of range: values must be finite");
     } catch (const json::parse_error& e) {
         // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
         std::string what = e.what();

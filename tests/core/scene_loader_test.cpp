@@ -1,0 +1,312 @@
+// The scene loader: every built-in scene loads, good files give the documented defaults, and each
+// kind of bad input fails with the file, the line and the key of the problem.
+#include "raystep/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace raystep {
+namespace {
+
+const FileResolver kNoFiles = [](const std::string&) { return std::optional<std::string>(); };
+
+Scene load(const std::string& text, const FileResolver& resolver = kNoFiles) {
+    return loadSceneText(text, "test.json", resolver);
+}
+
+constexpr const char* kMinimal = R"({"objects": [{"type": "sphere", "radius": 1}]})";
+
+TEST(SceneLoader, EveryBuiltinSceneLoads) {
+    const auto names = builtinSceneNames();
+    EXPECT_EQ(names, (std::vector<std::string>{"cornell", "default", "stadium", "whitted"}));
+    for (const auto& name : names) {
+        const Scene s = loadBuiltinScene(name);
+        EXPECT_EQ(s.name, name);
+        EXPECT_FALSE(s.description.empty()) << name;
+        EXPECT_GT(s.primitiveCount(), 0u) << name;
+        EXPECT_FALSE(s.lights.empty()) << name;
+    }
+}
+
+TEST(SceneLoader, StadiumIsADenseMeshInALargeRoom) {
+    const Scene s = loadBuiltinScene("stadium");
+    EXPECT_GE(s.triangles.size(), 50000u);
+    EXPECT_EQ(s.droppedDegenerateTriangles, 0u);
+    const Bounds3 room = s.bounds();
+    Bounds3 knot;
+    for (const Triangle& t : s.triangles)
+        if (s.materials[t.material].name == "knot") {
+            knot.extend(t.a);
+            knot.extend(t.b);
+            knot.extend(t.c);
+        }
+    // "Mostly empty": the dense mesh fills well under a thousandth of the room's volume.
+    const auto volume = [](const Bounds3& b) {
+        const Vec3 d = b.diagonal();
+        return d.x * d.y * d.z;
+    };
+    EXPECT_LT(volume(knot) / volume(room), 1e-3);
+}
+
+TEST(SceneLoader, CornellBoxHasRedAndGreenWalls) {
+    const Scene s = loadBuiltinScene("cornell");
+    int red = 0, green = 0;
+    for (const Triangle& t : s.triangles) {
+        const Color kd = s.materials[t.material].kd;
+        red += kd.r > 3 * kd.g;
+        green += kd.g > 3 * kd.r;
+    }
+    EXPECT_EQ(red, 2);
+    EXPECT_EQ(green, 2);
+}
+
+TEST(SceneLoader, DefaultsOfAMinimalScene) {
+    const Scene s = load(kMinimal);
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_EQ(s.spheres[0].center, Vec3(0.0));
+    EXPECT_EQ(s.spheres[0].material, 0u);  // the default material
+    EXPECT_EQ(s.materials[0].kd, Color(0.8));
+    EXPECT_EQ(s.camera.eye, Vec3(0, 0, 5));
+    EXPECT_EQ(s.camera.fovDeg, 45.0);
+    EXPECT_EQ(s.settings.width, 640);
+    EXPECT_EQ(s.settings.bounces, 5);
+    EXPECT_EQ(s.settings.spp, 1);
+    EXPECT_EQ(s.settings.diffuseSamples, 0);
+    EXPECT_TRUE(s.lights.empty());
+}
+
+TEST(SceneLoader, ReadsEveryKey) {
+    const Scene s = load(R"(
+    // comments are allowed
+    {
+      "description": "all keys",
+      "camera": {"eye": [1, 2, 3], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 60},
+      "render": {"width": 32, "height": 16, "bounces": 2, "spp": 9, "diffuse_samples": 4},
+      "background": [0.1, 0.2, 0.3],
+      "ambient": 0.25,
+      "lights": [{"position": [0, 5, 0], "color": [1, 0.5, 0.25], "intensity": 2}],
+      "materials": {"m": {"kd": [0.5, 0.4, 0.3], "ks": 0.2, "n": 7, "reflect": 0.3,
+                          "transparency": [0.1, 0.2, 0.3], "ior": 1.33,
+                          "checker": {"color": 0.05, "size": 0.5}}},
+      "objects": [
+        {"type": "sphere", "material": "m", "center": [1, 1, 1], "radius": 2},
+        /* block comment */
+        {"type": "triangle", "material": "m", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+      ]
+    })");
+    EXPECT_EQ(s.description, "all keys");
+    EXPECT_EQ(s.camera.up, Vec3(0, 0, 1));
+    EXPECT_EQ(s.camera.fovDeg, 60.0);
+    EXPECT_EQ(s.settings.width, 32);
+    EXPECT_EQ(s.settings.height, 16);
+    EXPECT_EQ(s.settings.spp, 9);
+    EXPECT_EQ(s.settings.diffuseSamples, 4);
+    EXPECT_EQ(s.background, Color(0.1, 0.2, 0.3));
+    EXPECT_EQ(s.ambient, Color(0.25));
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].intensity, Color(2, 1, 0.5));
+    const Material& m = s.materials[s.spheres[0].material];
+    EXPECT_EQ(m.name, "m");
+    EXPECT_EQ(m.kd, Color(0.5, 0.4, 0.3));
+    EXPECT_EQ(m.ks, Color(0.2));
+    EXPECT_EQ(m.n, 7.0);
+    EXPECT_EQ(m.reflect, Color(0.3));
+    EXPECT_EQ(m.transparency, Color(0.1, 0.2, 0.3));
+    EXPECT_EQ(m.ior, 1.33);
+    EXPECT_TRUE(m.checker.enabled);
+    EXPECT_EQ(m.checker.size, 0.5);
+    EXPECT_EQ(s.triangles.size(), 1u);
+    EXPECT_EQ(s.primitiveCount(), 2u);
+}
+
+TEST(SceneLoader, CheckerAlternatesInCubes) {
+    Material m;
+    m.kd = Color(1.0);
+    m.checker = {true, Color(0.0), 2.0};
+    EXPECT_EQ(m.diffuseAt(Vec3(0.5, 0.0, 0.5)), Color(1.0));  // cube (0,0,0): even
+    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 0.5)), Color(0.0));  // cube (1,0,0): odd
+    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 2.5)), Color(1.0));  // cube (1,0,1): even
+    EXPECT_EQ(m.diffuseAt(Vec3(-0.5, 0.0, 0.5)), Color(0.0)); // cube (-1,0,0): odd
+}
+
+TEST(SceneLoader, MeshFromObjWithTransform) {
+    const std::string obj =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f 1 2 3 4\n"   // a quad: triangulated into two
+        "v 2 2 2\nf 1 1 5\n";  // a degenerate triangle: dropped and counted
+    const FileResolver resolver = [&](const std::string& name) {
+        return name == "quad.obj" ? std::optional<std::string>(obj) : std::nullopt;
+    };
+    const Scene s = load(R"({"objects": [{"type": "mesh", "file": "quad.obj",
+                                          "scale": [2, 3, 1], "translate": [10, 0, 0]}]})",
+                         resolver);
+    ASSERT_EQ(s.triangles.size(), 2u);
+    EXPECT_EQ(s.droppedDegenerateTriangles, 1u);
+    // The quad becomes the rectangle [10, 12] x [0, 3]: corners only, total area 2 * 3.
+    double area = 0.0;
+    for (const Triangle& t : s.triangles) {
+        area += 0.5 * glm::length(glm::cross(t.b - t.a, t.c - t.a));
+        for (const Vec3& p : {t.a, t.b, t.c}) {
+            EXPECT_TRUE(p.x == 10 || p.x == 12) << p.x;
+            EXPECT_TRUE(p.y == 0 || p.y == 3) << p.y;
+            EXPECT_EQ(p.z, 0.0);
+        }
+    }
+    EXPECT_EQ(area, 6.0);
+}
+
+TEST(SceneLoader, FileResolvesMeshesBesideIt) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("raystep-loader-" + std::to_string(::getpid()));
+    fs::create_directories(dir / "meshes");
+    std::ofstream(dir / "meshes" / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::ofstream(dir / "scene.json")
+        << R"({"objects": [{"type": "mesh", "file": "meshes/tri.obj"}]})";
+    const Scene s = loadSceneFile((dir / "scene.json").string());
+    EXPECT_EQ(s.triangles.size(), 1u);
+    const Scene same = loadScene((dir / "scene.json").string());
+    EXPECT_EQ(same.triangles.size(), 1u);
+    fs::remove_all(dir);
+}
+
+TEST(SceneLoader, MissingFileNamesIt) {
+    try {
+        loadScene("/nonexistent/scene.json");
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.file(), "/nonexistent/scene.json");
+        EXPECT_NE(std::string(e.what()).find("built-in: cornell, default, stadium, whitted"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// One bad input, the line and key the error must name, and a word of its message.
+struct BadCase {
+    const char* name;
+    const char* text;
+    int line;
+    const char* key;
+    const char* message;
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class SceneLoaderBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SceneLoaderBadInput, FailsWithFileLineAndKey) {
+    const BadCase& c = GetParam();
+    const FileResolver resolver = [](const std::string& name) {
+        if (name == "empty.obj") return std::optional<std::string>("# nothing\n");
+        if (name == "nan.obj") return std::optional<std::string>("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+        if (name == "inf.obj") return std::optional<std::string>("v 0 0 1e999\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        if (name == "index.obj") return std::optional<std::string>("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+        return std::optional<std::string>();
+    };
+    try {
+        load(c.text, resolver);
+        FAIL() << "expected a SceneError for " << c.name;
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(e.file(), "test.json");
+        EXPECT_EQ(e.line(), c.line) << what;
+        EXPECT_EQ(e.key(), c.key) << what;
+        EXPECT_NE(what.find(c.message), std::string::npos) << what;
+        // One line: "file:line: key 'k': message".
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(what.rfind("test.json:" + std::to_string(c.line) + ": ", 0), 0u) << what;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SceneLoaderBadInput,
+    ::testing::Values(
+        BadCase{"MalformedJson", "{\n  \"objects\": [\n    {\"type\": \"sphere\",, }\n  ]\n}", 3, "",
+                "malformed JSON"},
+        BadCase{"TrailingGarbage", "{\"objects\": []}\n}", 2, "", "malformed JSON"},
+        BadCase{"NaNLiteral", "{\"objects\": [\n{\"type\": \"sphere\", \"radius\": NaN}]}", 2, "",
+                "malformed JSON"},
+        BadCase{"NotAnObject", "[1, 2]", 1, "", "one JSON object"},
+        BadCase{"UnknownTopKey", "{\n\"objects\": [{\"type\": \"sphere\", \"radius\": 1}],\n\"lihgts\": []}",
+                3, "lihgts", "unknown key"},
+        BadCase{"UnknownSphereKey",
+                "{\"objects\": [\n{\"type\": \"sphere\",\n \"radius\": 1,\n \"colour\": 1}]}", 4,
+                "objects[0].colour", "unknown key"},
+        BadCase{"WrongType", "{\"objects\": [{\"type\": \"sphere\",\n\"radius\": \"big\"}]}", 2,
+                "objects[0].radius", "expected a number"},
+        BadCase{"NegativeRadius", "{\"objects\": [\n\n{\"type\": \"sphere\", \"radius\": -1}]}", 3,
+                "objects[0].radius", "greater than 0"},
+        BadCase{"ZeroRadius", "{\"objects\": [{\"type\": \"sphere\", \"radius\": 0}]}", 1,
+                "objects[0].radius", "greater than 0"},
+        BadCase{"InfiniteNumber",
+                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"center\": [0, 1e999, 0]}]}",
+                2, "", "number '1e999' is out of range"},
+        BadCase{"EmptyScene", "{\"objects\": []}", 1, "objects", "empty"},
+        BadCase{"NoObjectsKey", "{\"background\": 0.5}", 1, "objects", "empty"},
+        BadCase{"CameraWithoutDirection",
+                "{\"camera\": {\"eye\": [1, 2, 3],\n \"look_at\": [1, 2, 3]},\n\"objects\": [{\"type\": "
+                "\"sphere\", \"radius\": 1}]}",
+                2, "camera.look_at", "no direction"},
+        BadCase{"UpParallelToView",
+                "{\"camera\": {\"eye\": [0, 5, 0], \"look_at\": [0, 0, 0],\n\"up\": [0, 1, 0]},\n"
+                "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+                2, "camera.up", "parallel"},
+        BadCase{"FovTooWide", "{\"camera\": {\n\"fov\": 180}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+                2, "camera.fov", "below 180"},
+        BadCase{"ImageOverCap",
+                "{\"render\": {\"width\": 100000}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+                1, "render.width", "between 1 and 8192"},
+        BadCase{"ZeroHeight",
+                "{\"render\": {\n\"height\": 0}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+                2, "render.height", "between 1 and 8192"},
+        BadCase{"FractionalSpp",
+                "{\"render\": {\"spp\": 2.5}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}", 1,
+                "render.spp", "whole number"},
+        BadCase{"MissingObj", "{\"objects\": [\n{\"type\": \"mesh\",\n\"file\": \"missing.obj\"}]}", 3,
+                "objects[0].file", "cannot open OBJ file 'missing.obj'"},
+        BadCase{"EmptyObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"empty.obj\"}]}", 1,
+                "objects[0].file", "no triangles"},
+        BadCase{"NanInObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"nan.obj\"}]}", 1,
+                "objects[0].file", "line 2: vertex coordinate 'nan' is not a finite number"},
+        BadCase{"InfinityInObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"inf.obj\"}]}", 1,
+                "objects[0].file", "line 1: vertex coordinate '1e999'"},
+        BadCase{"ObjIndexOutOfRange", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"index.obj\"}]}", 1,
+                "objects[0].file", "out of range"},
+        BadCase{"ZeroMeshScale",
+                "{\"objects\": [{\"type\": \"mesh\", \"file\": \"x.obj\",\n\"scale\": 0}]}", 2,
+                "objects[0].scale", "must not be zero"},
+        BadCase{"UnknownMaterial",
+                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"material\": \"gold\"}]}", 2,
+                "objects[0].material", "no material named 'gold'"},
+        BadCase{"KdAboveOne",
+                "{\"materials\": {\"m\": {\n\"kd\": [0.5, 1.5, 0.5]}}, \"objects\": [{\"type\": "
+                "\"sphere\", \"radius\": 1}]}",
+                2, "materials.m.kd", "at most 1"},
+        BadCase{"NegativeLightIntensity",
+                "{\"lights\": [{\"position\": [0, 1, 0],\n\"intensity\": -2}], \"objects\": "
+                "[{\"type\": \"sphere\", \"radius\": 1}]}",
+                2, "lights[0].intensity", "negative"},
+        BadCase{"LightWithoutPosition",
+                "{\"lights\": [\n{}], \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}", 2,
+                "lights[0].position", "needs a position"},
+        BadCase{"ZeroCheckerSize",
+                "{\"materials\": {\"m\": {\"checker\": {\n\"size\": 0}}}, \"objects\": [{\"type\": "
+                "\"sphere\", \"radius\": 1}]}",
+                2, "materials.m.checker.size", "greater than 0"},
+        BadCase{"ZeroAreaTriangle",
+                "{\"objects\": [{\"type\": \"triangle\",\n\"vertices\": [[0,0,0],[1,1,1],[2,2,2]]}]}", 2,
+                "objects[0].vertices", "zero area"},
+        BadCase{"TriangleWithTwoVertices",
+                "{\"objects\": [{\"type\": \"triangle\", \"vertices\": [[0,0,0],[1,1,1]]}]}", 1,
+                "objects[0].vertices", "3 vertices"},
+        BadCase{"UnknownType", "{\"objects\": [{\n\"type\": \"cube\"}]}", 2, "objects[0].type",
+                "unknown object type 'cube'"},
+        BadCase{"DuplicateKey",
+                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"radius\": 2}]}", 2,
+                "objects[0].radius", "given twice"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace raystep
