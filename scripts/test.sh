@@ -15,4 +15,4 @@ echo "== Core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 configure_and_build "$RAYSTEP_ROOT/build-asan" -DRAYSTEP_SANITIZE=ON -DRAYSTEP_BUILD_BENCH=OFF
-ctest --test-dir "$RAYSTEP_ROOT/build-asan" --output-on-failure -j2 -L core
+ctest --test-dir "$RAYSTEP_ROOT/build-asan" --output-on-failure -j2 -L 'core|cli'

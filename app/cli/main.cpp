@@ -179,6 +179,10 @@ int main(int argc, char** argv) {
     render->add_option("--stats", r.stats, "Write ray counts and timings as JSON");
     render->add_option("--heatmap", r.heatmap, "Write primitive tests per pixel as a PNG heat map");
 
+    // CLI11 would only say "A subcommand is required": name the word it did not know.
+    const std::string first = argc > 1 ? argv[1] : "";
+    if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render")
+        return fail(std::string("unknown command '") + argv[1] + "' (expected: scenes, render)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

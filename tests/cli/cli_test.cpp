@@ -1,0 +1,145 @@
+// raystep-cli end to end, as a lecturer's script would call it: exit codes, one-line errors,
+// and no output file at all when the input is bad.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
+
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int code;
+    std::string out;
+    std::string err;
+};
+
+class Cli : public ::testing::Test {
+protected:
+    fs::path dir = fs::temp_directory_path() /
+                   ("raystep-cli-" + std::to_string(::getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+
+    static std::string slurp(const fs::path& p) {
+        std::ifstream in(p);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    CliRun run(const std::string& args) {
+        const std::string cmd = std::string("cd '") + dir.string() + "' && '" RAYSTEP_CLI "' " +
+                                args + " > out.txt 2> err.txt < /dev/null";
+        const int status = std::system(cmd.c_str());
+        CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
+              slurp(dir / "err.txt")};
+        fs::remove(dir / "out.txt");
+        fs::remove(dir / "err.txt");
+        return r;
+    }
+    /// Bad input: exit code 2, exactly one line on stderr containing `expected`, no file written.
+    void expectBadInput(const std::string& args, const std::string& expected) {
+        const CliRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
+        EXPECT_TRUE(fs::is_empty(dir)) << "bad input left files behind: " << args;
+    }
+    void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
+};
+
+TEST_F(Cli, ListsBuiltinScenes) {
+    const CliRun r = run("scenes");
+    EXPECT_EQ(r.code, 0);
+    for (const char* name : {"default", "whitted", "cornell", "stadium"})
+        EXPECT_NE(r.out.find(name), std::string::npos) << name;
+}
+
+TEST_F(Cli, RendersWithStatsAndHeatmap) {
+    const CliRun r = run("render whitted -o w.png --width 40 --height 30 --spp 4 --bounces 3 "
+                      "--stats s.json --heatmap h.png --threads 2 --seed 7");
+    ASSERT_EQ(r.code, 0) << r.err;
+    int w = 0, h = 0, n = 0;
+    ASSERT_TRUE(stbi_info((dir / "w.png").c_str(), &w, &h, &n));
+    EXPECT_EQ(w, 40);
+    EXPECT_EQ(h, 30);
+    ASSERT_TRUE(stbi_info((dir / "h.png").c_str(), &w, &h, &n));
+    EXPECT_EQ(w, 40);
+    const auto stats = nlohmann::json::parse(slurp(dir / "s.json"));
+    EXPECT_EQ(stats["width"], 40);
+    EXPECT_EQ(stats["height"], 30);
+    EXPECT_EQ(stats["rays"]["primary"], 40 * 30 * 4);
+    EXPECT_GT(stats["rays"]["shadow"].get<int>(), 0);
+    EXPECT_GT(stats["rays"]["reflection"].get<int>(), 0);
+    EXPECT_GT(stats["rays"]["refraction"].get<int>(), 0);
+    EXPECT_EQ(stats["rays"]["diffuse"], 0);
+    EXPECT_EQ(stats["node_visits"], 0);
+    EXPECT_EQ(stats["mailbox_skips"], 0);
+    // Brute force over 4 primitives: at least 4 tests per nearest-hit ray.
+    EXPECT_GE(stats["primitive_tests"].get<long>(), 4L * 40 * 30 * 4);
+    EXPECT_GT(stats["render_ms"].get<double>(), 0.0);
+    EXPECT_EQ(stats["seed"], 7);
+}
+
+TEST_F(Cli, DefaultSceneAndOutputName) {
+    const CliRun r = run("render --width 16 --height 12");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "default.png"));
+    EXPECT_NE(r.out.find("default.png"), std::string::npos);
+}
+
+TEST_F(Cli, SceneFileWithMesh) {
+    write("tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+    write("scene.json", R"({"lights": [{"position": [0, 0, 5]}],
+                            "objects": [{"type": "mesh", "file": "tri.obj"}]})");
+    const CliRun r = run("render scene.json -o img.png --width 8 --height 8");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "img.png"));
+}
+
+TEST_F(Cli, HelpExitsZero) {
+    const CliRun r = run("render --help");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_NE(r.out.find("--diffuse-samples"), std::string::npos);
+}
+
+TEST_F(Cli, BadCommandLineValues) {
+    expectBadInput("render --width 0", "--width");
+    expectBadInput("render --width 9000", "--width");
+    expectBadInput("render --height abc", "--height");
+    expectBadInput("render --spp nan", "--spp");
+    expectBadInput("render --bounces -1", "--bounces");
+    expectBadInput("render --threads 0", "--threads");
+    expectBadInput("render --seed inf", "--seed");
+    expectBadInput("render --no-such-flag", "no-such-flag");
+    expectBadInput("frobnicate", "frobnicate");
+    expectBadInput("render --accel octree", "--accel octree");
+    expectBadInput("render --accel kdtree", "not implemented yet");
+    expectBadInput("render -o picture.jpg", "*.png");
+    expectBadInput("render -o missing/dir/x.png", "does not exist");
+    expectBadInput("render --stats missing/s.json", "does not exist");
+}
+
+TEST_F(Cli, BadSceneFilesNameFileLineAndKey) {
+    expectBadInput("render nosuchscene", "nosuchscene: no such scene file");
+    write("bad.json", "{\n  \"objects\": [\n    {\"type\": \"sphere\", \"radius\": -2}\n  ]\n}\n");
+    const CliRun r = run("render bad.json -o x.png");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("bad.json:3: key 'objects[0].radius': must be greater than 0"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    write("bad.json", "{\"objects\": [");
+    EXPECT_EQ(run("render bad.json -o x.png").code, 2);
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+}  // namespace
