@@ -32,13 +32,21 @@ ensure_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-# configure_and_build DIR [CMAKE ARGS...]: configure once, then build incrementally with -j2.
-configure_and_build() {
+# configure DIR [CMAKE ARGS...]: configure (Release unless told otherwise); quiet after the first time.
+configure() {
   local dir="$1"; shift
   if [ ! -f "$dir/CMakeCache.txt" ]; then
     cmake -S "$RAYSTEP_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@"
   else
     cmake -S "$RAYSTEP_ROOT" -B "$dir" "$@" >/dev/null
   fi
-  cmake --build "$dir" -j2
+}
+
+# build DIR [TARGET...]: incremental build with -j2 (all targets when none is named).
+build() {
+  local dir="$1"; shift
+  local targets=()
+  local t
+  for t in "$@"; do targets+=(--target "$t"); done
+  cmake --build "$dir" -j2 "${targets[@]}"
 }

@@ -5,7 +5,8 @@ RAYSTEP_ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 source "$RAYSTEP_ROOT/scripts/deps.sh"
 
 ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}"
-configure_and_build "$RAYSTEP_ROOT/build" -DRAYSTEP_BUILD_BENCH=OFF
+configure "$RAYSTEP_ROOT/build"
+build "$RAYSTEP_ROOT/build" raystep-cli
 
 # The replay GUI is not built yet (issue 5): until it is, and whenever there is no display,
 # render the default scene with the command-line tool.

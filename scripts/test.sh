@@ -8,11 +8,13 @@ source "$RAYSTEP_ROOT/scripts/deps.sh"
 ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}" "${RAYSTEP_TEST_PACKAGES[@]}"
 
 echo "== Release build and tests"
-configure_and_build "$RAYSTEP_ROOT/build"
+configure "$RAYSTEP_ROOT/build"
+build "$RAYSTEP_ROOT/build"
 ctest --test-dir "$RAYSTEP_ROOT/build" --output-on-failure -j2
 
 echo "== Core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-configure_and_build "$RAYSTEP_ROOT/build-asan" -DRAYSTEP_SANITIZE=ON -DRAYSTEP_BUILD_BENCH=OFF
+configure "$RAYSTEP_ROOT/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYSTEP_SANITIZE=ON
+build "$RAYSTEP_ROOT/build-asan"
 ctest --test-dir "$RAYSTEP_ROOT/build-asan" --output-on-failure -j2 -L 'core|cli'
