@@ -11,7 +11,7 @@ std::optional<Hit> BruteForce::intersect(Ray ray, TraversalCounters& counters) c
     for (std::uint32_t p = 0; p < n; ++p) {
         ++counters.primitiveTests;
         // intersectPrimitive shortens ray.tMax, so later primitives must be closer to win.
-        if (scene_->intersectPrimitive(p, ray, hit)) closest = hit;
+        if (scene_->intersectPrimitive(p, ray, hit, kernels_)) closest = hit;
     }
     return closest;
 }
@@ -21,7 +21,7 @@ bool BruteForce::occluded(Ray ray, TraversalCounters& counters) const {
     const std::uint32_t n = scene_->primitiveCount();
     for (std::uint32_t p = 0; p < n; ++p) {
         ++counters.primitiveTests;
-        if (scene_->intersectPrimitive(p, ray, hit)) return true;
+        if (scene_->intersectPrimitive(p, ray, hit, kernels_)) return true;
     }
     return false;
 }
@@ -44,8 +44,8 @@ std::string_view accelKindName(AccelKind kind) {
     return "?";
 }
 
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind) {
-    if (kind == AccelKind::BruteForce) return BruteForce(scene);
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels) {
+    if (kind == AccelKind::BruteForce) return BruteForce(scene, kernels);
     throw std::runtime_error("--accel " + std::string(accelKindName(kind)) +
                              ": not implemented yet; only 'bruteforce' is available in this version");
 }

@@ -1,6 +1,6 @@
 #include "raystep/scene.h"
 
-#include "raystep/intersect.h"
+#include "raystep/kernels.h"
 
 namespace raystep {
 
@@ -14,23 +14,64 @@ Color Material::diffuseAt(const Vec3& p) const {
     return (parity & 1) ? checker.color : kd;
 }
 
-bool Scene::intersectPrimitive(std::uint32_t prim, Ray& ray, Hit& hit) const {
-    if (isSphere(prim)) {
-        const Sphere& s = spheres[prim];
-        const auto t = intersectSphere<double>(ray.origin, ray.dir, s.center, s.radius, ray.tMin,
-                                               ray.tMax);
-        if (!t) return false;
-        ray.tMax = *t;
-        hit = Hit{*t, prim, 0.0, 0.0};
+namespace {
+
+template <typename T>
+TVec3<T> cast(const Vec3& v) {
+    return TVec3<T>(v);
+}
+
+template <typename T>
+bool intersectPrimitiveIn(const Scene& scene, std::uint32_t prim, Ray& ray, Hit& hit,
+                          const KernelOptions& k) {
+    const TVec3<T> o = cast<T>(ray.origin);
+    const TVec3<T> d = cast<T>(ray.dir);
+    const T tMin = static_cast<T>(ray.tMin);
+    const T tMax = static_cast<T>(ray.tMax);
+    if (scene.isSphere(prim)) {
+        const Sphere& s = scene.spheres[prim];
+        const auto t = intersectSphere<T>(k.sphere, o, d, cast<T>(s.center), T(s.radius), tMin, tMax);
+        // In float, tMax itself was rounded: keep the double interval strict.
+        if (!t || !(double(*t) < ray.tMax)) return false;
+        ray.tMax = double(*t);
+        hit = Hit{double(*t), prim, 0.0, 0.0};
         return true;
     }
-    const Triangle& tri = triangle(prim);
-    const auto h = intersectTriangleMT<double>(ray.origin, ray.dir, tri.a, tri.b, tri.c, ray.tMin,
-                                               ray.tMax);
-    if (!h) return false;
-    ray.tMax = h->t;
-    hit = Hit{h->t, prim, h->u, h->v};
+    const Triangle& tri = scene.triangle(prim);
+    const auto h = intersectTriangle<T>(k.triangle, o, d, cast<T>(tri.a), cast<T>(tri.b),
+                                        cast<T>(tri.c), tMin, tMax);
+    if (!h || !(double(h->t) < ray.tMax)) return false;
+    ray.tMax = double(h->t);
+    hit = Hit{double(h->t), prim, double(h->u), double(h->v)};
     return true;
+}
+
+template <typename T>
+SurfacePoint surfacePointIn(const Scene& scene, const Hit& hit, const Ray& ray) {
+    PointWithError<T> pe;
+    if (scene.isSphere(hit.prim)) {
+        const Sphere& s = scene.spheres[hit.prim];
+        pe = spherePoint<T>(cast<T>(ray.origin), cast<T>(ray.dir), T(hit.t), cast<T>(s.center),
+                            T(s.radius));
+    } else {
+        const Triangle& t = scene.triangle(hit.prim);
+        pe = trianglePoint<T>(cast<T>(t.a), cast<T>(t.b), cast<T>(t.c), T(hit.u), T(hit.v));
+    }
+    return {Vec3(pe.p), Vec3(pe.error)};
+}
+
+}  // namespace
+
+bool Scene::intersectPrimitive(std::uint32_t prim, Ray& ray, Hit& hit,
+                               const KernelOptions& kernels) const {
+    if (kernels.precision == Precision::Float)
+        return intersectPrimitiveIn<float>(*this, prim, ray, hit, kernels);
+    return intersectPrimitiveIn<double>(*this, prim, ray, hit, kernels);
+}
+
+SurfacePoint Scene::surfacePoint(const Hit& hit, const Ray& ray, Precision precision) const {
+    if (precision == Precision::Float) return surfacePointIn<float>(*this, hit, ray);
+    return surfacePointIn<double>(*this, hit, ray);
 }
 
 Bounds3 Scene::primitiveBounds(std::uint32_t prim) const {

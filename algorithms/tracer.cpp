@@ -12,11 +12,16 @@
 
 namespace raystep {
 
-double rayOffset(const Vec3& p) {
-    // Relative to the magnitude of the point: double keeps ~1e-16 relative error, so 1e-9 clears
-    // the rounding of the hit point by a wide margin at any scene scale. (Issue 3 adds the
-    // error-bound offsets of pbrt and an epsilon switch to show acne.)
-    return 1e-9 * (1.0 + maxAbsComponent(p));
+Vec3 spawnRayOrigin(const SurfacePoint& sp, const Vec3& n, const Vec3& w, Precision precision,
+                    RayOffsetMethod method) {
+    if (method == RayOffsetMethod::Epsilon)
+        return sp.p + (glm::dot(w, n) < 0.0 ? -kFixedRayEpsilon : kFixedRayEpsilon) * n;
+    // In the precision the next ray will be tested in: its rounding is what must be cleared.
+    if (precision == Precision::Float) {
+        const PointWithError<float> pe{glm::vec3(sp.p), glm::vec3(sp.error)};
+        return Vec3(offsetRayOrigin<float>(pe, glm::vec3(n), glm::vec3(w)));
+    }
+    return offsetRayOrigin<double>({sp.p, sp.error}, n, w);
 }
 
 Color Tracer::trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng,
@@ -35,49 +40,53 @@ Color Tracer::trace(const Ray& ray, RayKind kind, int depth, bool diffuseBranche
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranched, Pcg32& rng,
                     RayCounters& counters) const {
     const Material& m = scene_.materialOf(hit.prim);
-    const Vec3 p = ray.at(hit.t);
+    const KernelOptions& kernels = kernelsOf(accel_);
+    const SurfacePoint sp = scene_.surfacePoint(hit, ray, kernels.precision);
+    const Vec3& p = sp.p;
     const Vec3 outward = scene_.normalAt(hit, p);
     const Vec3 d = glm::normalize(ray.dir);
     const bool entering = glm::dot(d, outward) < 0.0;
     const Vec3 n = entering ? outward : -outward;  // faces the incoming ray
     const Vec3 toViewer = -d;
     const Color kd = m.diffuseAt(p);
-    const double offset = rayOffset(p);
-    const Vec3 above = p + offset * n;  // origin for rays leaving on the viewer's side
-    const Vec3 below = p - offset * n;  // origin for rays entering the surface
+    const auto originFor = [&](const Vec3& dir) {
+        return spawnRayOrigin(sp, n, dir, kernels.precision, settings_.rayOffset);
+    };
 
     // Ambient stands in for indirect light; when diffuse bounces compute it, it must go.
     Color radiance = settings_.diffuseSamples > 0 ? Color(0.0) : scene_.ambient * kd;
 
     // Local model: a shadow ray per light, then Phong's diffuse and specular terms.
     for (const PointLight& light : scene_.lights) {
-        Vec3 toLight = light.position - above;
-        const double dist = glm::length(toLight);
-        if (!(dist > 0.0)) continue;
-        toLight /= dist;
+        Vec3 toLight = light.position - p;
+        if (!(glm::length(toLight) > 0.0)) continue;
+        toLight = glm::normalize(toLight);
         if (glm::dot(n, toLight) <= 0.0) continue;  // light behind the surface: no ray needed
+        const Vec3 origin = originFor(toLight);
+        const double dist = glm::length(light.position - origin);
         ++counters[RayKind::Shadow];
-        if (occluded(accel_, Ray{above, toLight, 0.0, dist}, counters.traversal)) continue;
+        if (occluded(accel_, Ray{origin, toLight, 0.0, dist}, counters.traversal)) continue;
         const PhongTerms t = phong(n, toLight, toViewer, light.intensity, kd, m.ks, m.n);
         radiance += t.diffuse + t.specular;
     }
 
     if (depth >= settings_.bounces) return radiance;
 
-    const auto traceChild = [&](const Vec3& origin, const Vec3& dir, RayKind kind) {
-        return trace(Ray{origin, dir, 0.0, kInfinity}, kind, depth + 1, diffuseBranched, rng,
+    const auto traceChild = [&](const Vec3& dir, RayKind kind, bool branched) {
+        return trace(Ray{originFor(dir), dir, 0.0, kInfinity}, kind, depth + 1, branched, rng,
                      counters);
     };
     // Reflection ray: one ray in, one ray out.
     if (!isBlack(m.reflect))
-        radiance += m.reflect * traceChild(above, reflect(d, n), RayKind::Reflection);
+        radiance += m.reflect * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
     // Transparency ray by Snell's law; past the critical angle all of it reflects.
     if (!isBlack(m.transparency)) {
         const double eta = entering ? 1.0 / m.ior : m.ior;
         if (const auto t = refract(d, n, eta))
-            radiance += m.transparency * traceChild(below, *t, RayKind::Refraction);
+            radiance += m.transparency * traceChild(*t, RayKind::Refraction, diffuseBranched);
         else
-            radiance += m.transparency * traceChild(above, reflect(d, n), RayKind::Reflection);
+            radiance +=
+                m.transparency * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
     }
     // Diffuse bounces: one ray in, infinitely many out, estimated with random directions.
     // Cosine-weighted directions make the estimate of the Lambertian integral kd * mean(L).
@@ -87,9 +96,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranc
         for (int i = 0; i < count; ++i) {
             const double u1 = rng.uniform();
             const double u2 = rng.uniform();
-            const Vec3 dir = cosineSampleHemisphere(n, u1, u2);
-            sum += trace(Ray{above, dir, 0.0, kInfinity}, RayKind::Diffuse, depth + 1, true, rng,
-                         counters);
+            sum += traceChild(cosineSampleHemisphere(n, u1, u2), RayKind::Diffuse, true);
         }
         radiance += kd * sum / static_cast<double>(count);
     }

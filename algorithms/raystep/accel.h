@@ -28,7 +28,8 @@ struct TraversalCounters {
 /// The slides' loop: test every primitive, keep the closest.
 class BruteForce {
 public:
-    explicit BruteForce(const Scene& scene) : scene_(&scene) {}
+    BruteForce(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
+    const KernelOptions& kernels() const { return kernels_; }
     /// Nearest hit in (ray.tMin, ray.tMax).
     std::optional<Hit> intersect(Ray ray, TraversalCounters& counters) const;
     /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
@@ -36,6 +37,7 @@ public:
 
 private:
     const Scene* scene_;
+    KernelOptions kernels_;
 };
 
 enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
@@ -48,7 +50,12 @@ using Accelerator = std::variant<BruteForce>;
 
 /// Builds the chosen structure over `scene` (which must outlive it).
 /// Throws std::runtime_error for a structure that is not implemented yet.
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind);
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels = {});
+
+/// The kernels and precision the structure tests primitives with.
+inline const KernelOptions& kernelsOf(const Accelerator& accel) {
+    return std::visit([](const auto& a) -> const KernelOptions& { return a.kernels(); }, accel);
+}
 
 inline std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray,
                                     TraversalCounters& counters) {

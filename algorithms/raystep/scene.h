@@ -2,6 +2,7 @@
 // The scene model: only what the lessons need (pinhole camera, point lights, spheres,
 // triangles, Phong materials with reflection, transparency and a checker texture).
 #include "raystep/camera.h"
+#include "raystep/kernels.h"
 #include "raystep/math.h"
 #include "raystep/ray.h"
 
@@ -69,6 +70,12 @@ struct Hit {
     double u = 0.0, v = 0.0;  // barycentric coordinates on triangles
 };
 
+/// A hit point with a conservative bound on each coordinate's absolute error.
+struct SurfacePoint {
+    Vec3 p;
+    Vec3 error;
+};
+
 struct Scene {
     std::string name;         // built-in name or file path
     std::string description;  // one line, shown by `raystep-cli scenes`
@@ -90,8 +97,13 @@ struct Scene {
     const Triangle& triangle(std::uint32_t prim) const { return triangles[prim - spheres.size()]; }
 
     /// The slides' "r intersects p": updates `hit` when primitive `prim` is hit nearer than
-    /// ray.tMax (and shortens ray.tMax).
-    bool intersectPrimitive(std::uint32_t prim, Ray& ray, Hit& hit) const;
+    /// ray.tMax (and shortens ray.tMax), with the chosen kernel and precision.
+    bool intersectPrimitive(std::uint32_t prim, Ray& ray, Hit& hit,
+                            const KernelOptions& kernels = {}) const;
+
+    /// The hit point with its error bound, computed in the kernels' precision (from the
+    /// barycentrics on triangles, reprojected onto spheres).
+    SurfacePoint surfacePoint(const Hit& hit, const Ray& ray, Precision precision) const;
 
     Bounds3 primitiveBounds(std::uint32_t prim) const;
     Bounds3 bounds() const;

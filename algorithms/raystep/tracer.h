@@ -14,6 +14,7 @@ namespace raystep {
 struct TraceSettings {
     int bounces = 5;         // depth of secondary rays: 0 = primary rays only (plus shadow rays)
     int diffuseSamples = 0;  // diffuse bounce rays at the first diffuse hit of a path; 0 = none
+    RayOffsetMethod rayOffset = RayOffsetMethod::Robust;  // where secondary rays start
 };
 
 struct RenderOptions {
@@ -82,7 +83,9 @@ using ProgressFn = std::function<bool(double fraction)>;
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const ProgressFn& progress = {});
 
-/// Distance secondary rays start off the surface at p, along the normal (avoids self-hits).
-double rayOffset(const Vec3& p);
+/// Origin of a secondary ray leaving the surface point `sp` (unit normal n, either side) in
+/// direction w: past the point's error box (robust) or a fixed 1e-4 along the normal (epsilon).
+Vec3 spawnRayOrigin(const SurfacePoint& sp, const Vec3& n, const Vec3& w, Precision precision,
+                    RayOffsetMethod method);
 
 }  // namespace raystep
