@@ -102,7 +102,9 @@ const Material& Scene::materialOf(std::uint32_t prim) const {
 Vec3 Scene::normalAt(const Hit& hit, const Vec3& p) const {
     if (isSphere(hit.prim)) {
         const Sphere& s = spheres[hit.prim];
-        return glm::normalize(p - s.center);
+        const Vec3 radial = p - s.center;
+        // Only a wrong t (the textbook kernel at its limits) lands on the centre itself.
+        return glm::length(radial) > 0.0 ? glm::normalize(radial) : Vec3(0.0, 0.0, 1.0);
     }
     return triangle(hit.prim).normal();
 }

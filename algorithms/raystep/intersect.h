@@ -339,7 +339,9 @@ template <typename T>
 PointWithError<T> spherePoint(const TVec3<T>& o, const TVec3<T>& d, T t, const TVec3<T>& center,
                               T radius) {
     TVec3<T> local = (o + t * d) - center;
-    local *= radius / glm::length(local);
+    const T len = glm::length(local);
+    // A t far off (the textbook formula at 1e8) can put the "hit" at the centre: no direction.
+    if (len > T(0)) local *= radius / len;
     const TVec3<T> p = center + local;
     return {p, gamma<T>(5) * glm::abs(local) + gamma<T>(2) * (glm::abs(center) + glm::abs(p))};
 }

@@ -1,4 +1,6 @@
 // raystep-cli: the renderer from the command line, for lecturers' scripts and for tests.
+#include "common.h"
+#include "intersect_command.h"
 #include "progress.h"
 
 #include "raystep/accel.h"
@@ -21,19 +23,17 @@ namespace {
 
 using namespace raystep;
 
-constexpr int kExitBadInput = 2;
-
-/// The one-line error every bad input gets.
-int fail(const std::string& message) {
-    std::cerr << "raystep-cli: error: " << message << "\n";
-    return kExitBadInput;
-}
+using cli::fail;
 
 struct RenderArgs {
     std::string scene = "default";
     std::string output;
     std::optional<int> width, height, bounces, spp, diffuseSamples;
     std::string accel = "bruteforce";
+    std::string precision = "double";
+    std::string rayOffset = "robust";
+    std::string triangleMethod = "watertight";
+    std::string sphereMethod = "stable";
     int threads = 0;
     std::uint64_t seed = 1;
     std::string stats;
@@ -78,6 +78,17 @@ int runRender(const RenderArgs& a) {
     }
     const auto accelKind = parseAccelKind(a.accel);
     if (!accelKind) return fail("--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh");
+    KernelOptions kernels;
+    const auto precision = parsePrecision(a.precision);
+    if (!precision) return fail("--precision " + a.precision + ": expected float or double");
+    const auto offset = parseRayOffset(a.rayOffset);
+    if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
+    const auto triangleMethod = parseTriangleMethod(a.triangleMethod);
+    if (!triangleMethod)
+        return fail("--triangle-method " + a.triangleMethod + ": expected plane, moller-trumbore or watertight");
+    const auto sphereMethod = parseSphereMethod(a.sphereMethod);
+    if (!sphereMethod) return fail("--sphere-method " + a.sphereMethod + ": expected textbook or stable");
+    kernels = {*precision, *sphereMethod, *triangleMethod};
 
     Scene scene;
     try {
@@ -94,10 +105,11 @@ int runRender(const RenderArgs& a) {
     opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene.settings.diffuseSamples);
     opt.threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
     opt.seed = a.seed;
+    opt.trace.rayOffset = *offset;
 
     std::optional<Accelerator> accel;
     try {
-        accel = buildAccelerator(scene, *accelKind);
+        accel = buildAccelerator(scene, *accelKind, kernels);
     } catch (const std::exception& e) {
         return fail(e.what());
     }
@@ -122,6 +134,10 @@ int runRender(const RenderArgs& a) {
             j["bounces"] = opt.trace.bounces;
             j["diffuse_samples"] = opt.trace.diffuseSamples;
             j["accel"] = a.accel;
+            j["precision"] = a.precision;
+            j["ray_offset"] = a.rayOffset;
+            j["triangle_method"] = a.triangleMethod;
+            j["sphere_method"] = a.sphereMethod;
             j["threads"] = opt.threads;
             j["seed"] = opt.seed;
             j["primitives"] = {{"spheres", scene.spheres.size()},
@@ -174,6 +190,16 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1024));
     render->add_option("--accel", r.accel, "Accelerator: bruteforce, grid, kdtree or bvh")
         ->capture_default_str();
+    render->add_option("--precision", r.precision, "Intersection arithmetic: float or double")
+        ->capture_default_str();
+    render->add_option("--ray-offset", r.rayOffset,
+                       "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
+        ->capture_default_str();
+    render->add_option("--triangle-method", r.triangleMethod,
+                       "Ray-triangle test: plane, moller-trumbore or watertight")
+        ->capture_default_str();
+    render->add_option("--sphere-method", r.sphereMethod, "Ray-sphere test: textbook or stable")
+        ->capture_default_str();
     render->add_option("--threads", r.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
     render->add_option("--seed", r.seed, "Seed of the random numbers")->capture_default_str();
     render->add_option("--stats", r.stats, "Write ray counts and timings as JSON");
@@ -181,8 +207,12 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render")
-        return fail(std::string("unknown command '") + argv[1] + "' (expected: scenes, render)");
+    if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render" &&
+        first != "intersect")
+        return fail(std::string("unknown command '") + argv[1] + "' (expected: scenes, render, intersect)");
+    cli::IntersectArgs intersectArgs;
+    cli::addIntersectCommand(app, intersectArgs);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -194,5 +224,6 @@ int main(int argc, char** argv) {
     }
 
     if (app.got_subcommand("scenes")) return listScenes();
+    if (app.got_subcommand("intersect")) return cli::runIntersect(intersectArgs);
     return runRender(r);
 }

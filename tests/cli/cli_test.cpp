@@ -142,4 +142,85 @@ TEST_F(Cli, BadSceneFilesNameFileLineAndKey) {
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+TEST_F(Cli, IntersectTriangleJson) {
+    // Down onto z = 0 at (0.25, 0.5): t = 1, weights of b and c are the x and y coordinates.
+    for (const char* method : {"plane", "moller-trumbore", "watertight"}) {
+        for (const char* precision : {"float", "double"}) {
+            const CliRun r = run(std::string("intersect --ray 0.25,0.5,1:0,0,-1 --triangle "
+                                             "0,0,0:1,0,0:0,1,0 --json --method ") +
+                                 method + " --precision " + precision);
+            ASSERT_EQ(r.code, 0) << r.err;
+            const auto j = nlohmann::json::parse(r.out);
+            EXPECT_EQ(j["hit"], true);
+            EXPECT_EQ(j["t"], 1.0);
+            EXPECT_EQ(j["u"], 0.25);
+            EXPECT_EQ(j["v"], 0.5);
+            EXPECT_EQ(j["point"], nlohmann::json::parse("[0.25, 0.5, 0.0]"));
+            EXPECT_EQ(j["method"], method);
+            EXPECT_EQ(j["precision"], precision);
+        }
+    }
+}
+
+TEST_F(Cli, IntersectMissAndSphere) {
+    CliRun r = run("intersect --ray 0.8,0.8,1:0,0,-1 --triangle 0,0,0:1,0,0:0,1,0 --json");
+    ASSERT_EQ(r.code, 0);
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["hit"], false);
+    EXPECT_TRUE(j["t"].is_null());
+    EXPECT_TRUE(j["point"].is_null());
+    // A unit sphere 1e8 away: t = 1e8 - 1 (stable), the textbook formula is a radius off.
+    r = run("intersect --ray 0,0,0:0,0,1 --sphere 0,0,1e8:1 --json");
+    j = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(j["t"].get<double>(), 1e8 - 1, 1e-7);
+    r = run("intersect --ray 0,0,0:0,0,1 --sphere 0,0,1e8:1 --json --method textbook");
+    j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["t"].get<double>(), 1e8);
+    EXPECT_EQ(j["steps"]["discriminant"], 0.0);
+}
+
+TEST_F(Cli, IntersectTextShowsTheWorking) {
+    CliRun r = run("intersect --ray 0,0,0:0,0,1 --sphere 0,0,5:1 --method textbook");
+    ASSERT_EQ(r.code, 0);
+    // a = 1, b = 2 d.(o - c) = -10, c = 25 - 1 = 24, b^2 - 4ac = 4, t = (10 - 2) / 2 = 4.
+    EXPECT_NE(r.out.find("discriminant         4\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("hit at t = 4\n"), std::string::npos) << r.out;
+    r = run("intersect --ray 0.25,0.5,1:0,0,-1 --triangle 0,0,0:1,0,0:0,1,0 --method plane");
+    EXPECT_NE(r.out.find("normal               (0, 0, 1)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("barycentric u = 0.25, v = 0.5"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, IntersectBadInput) {
+    const std::string tri = " --triangle 0,0,0:1,0,0:0,1,0";
+    expectBadInput("intersect --ray 0,0,nan:0,0,1" + tri, "6 finite numbers");
+    expectBadInput("intersect --ray 0,0,inf:0,0,1" + tri, "6 finite numbers");
+    expectBadInput("intersect --ray 0,0,1e999:0,0,1" + tri, "6 finite numbers");
+    expectBadInput("intersect --ray 0,0,1:0,0" + tri, "6 finite numbers");
+    expectBadInput("intersect --ray 0,0,1:0,0,0" + tri, "must not be zero");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1 --triangle 0,0,0:1,0,0", "9 finite numbers");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1 --sphere 0,0,0:-1", "greater than 0");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1 --sphere 0,0,0:1 --method watertight", "sphere methods");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --method stable", "triangle methods");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --precision half", "--precision half");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --sphere 0,0,0:1", "excludes");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1", "--triangle or --sphere");
+}
+
+TEST_F(Cli, RenderNumericOptions) {
+    const CliRun r = run("render default --width 16 --height 12 --precision float --ray-offset epsilon "
+                         "--triangle-method moller-trumbore --sphere-method textbook --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto stats = nlohmann::json::parse(slurp(dir / "s.json"));
+    EXPECT_EQ(stats["precision"], "float");
+    EXPECT_EQ(stats["ray_offset"], "epsilon");
+    EXPECT_EQ(stats["triangle_method"], "moller-trumbore");
+    EXPECT_EQ(stats["sphere_method"], "textbook");
+    fs::remove(dir / "default.png");
+    fs::remove(dir / "s.json");
+    expectBadInput("render --precision quad", "--precision quad");
+    expectBadInput("render --ray-offset none", "--ray-offset none");
+    expectBadInput("render --triangle-method fast", "--triangle-method fast");
+    expectBadInput("render --sphere-method fast", "--sphere-method fast");
+}
+
 }  // namespace
