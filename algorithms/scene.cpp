@@ -109,4 +109,15 @@ Vec3 Scene::normalAt(const Hit& hit, const Vec3& p) const {
     return triangle(hit.prim).normal();
 }
 
+Scene transformScene(Scene s, double scale, const Vec3& shift) {
+    const auto map = [&](Vec3& p) { p = p * scale + shift; };
+    for (Triangle& t : s.triangles) map(t.a), map(t.b), map(t.c);
+    for (Sphere& sp : s.spheres) map(sp.center), sp.radius *= scale;
+    for (PointLight& l : s.lights) map(l.position);
+    for (Material& m : s.materials) m.checker.size *= scale;
+    map(s.camera.eye);
+    map(s.camera.lookAt);
+    return s;
+}
+
 }  // namespace raystep

@@ -143,8 +143,10 @@ void readCamera(const Reader& r, const json& j, const std::string& path, Camera&
         cam.fovDeg = r.positive(v, p);
         if (cam.fovDeg >= 180.0) r.fail(p, "field of view must be below 180 degrees");
     });
+    // Relative to the camera's own coordinates, so a scene at 1e-9 or 1e9 passes alike.
     const Vec3 forward = cam.lookAt - cam.eye;
-    if (glm::length(forward) <= 1e-12 * (1.0 + maxAbsComponent(cam.eye)))
+    const double scale = std::max(maxAbsComponent(cam.eye), maxAbsComponent(cam.lookAt));
+    if (!(glm::length(forward) > 1e-12 * scale) || !isFinite(glm::normalize(forward)))
         r.fail(JsonLineMap::child(path, "look_at"),
                "the camera has no direction: look_at equals eye");
     const Vec3 side = glm::cross(glm::normalize(forward), cam.up);

@@ -4,7 +4,8 @@ set -euo pipefail
 RAYSTEP_ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 source "$RAYSTEP_ROOT/scripts/deps.sh"
 
-ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}"
+# One build folder serves both scripts, and configuring it needs the test libraries too.
+ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}" "${RAYSTEP_TEST_PACKAGES[@]}"
 configure "$RAYSTEP_ROOT/build"
 build "$RAYSTEP_ROOT/build" raystep-cli
 

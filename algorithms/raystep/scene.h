@@ -112,4 +112,9 @@ struct Scene {
     Vec3 normalAt(const Hit& hit, const Vec3& p) const;
 };
 
+/// The scene with every position mapped by p -> p * scale + shift (sizes, checker cubes and the
+/// camera follow): the same picture at another scale or far from the origin, for the lessons on
+/// numerical robustness and for tests at the extremes.
+Scene transformScene(Scene scene, double scale, const Vec3& shift);
+
 }  // namespace raystep

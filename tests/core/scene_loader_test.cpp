@@ -121,6 +121,19 @@ TEST(SceneLoader, ReadsEveryKey) {
     EXPECT_EQ(s.primitiveCount(), 2u);
 }
 
+TEST(SceneLoader, TinyAndHugeScenesLoadAlike) {
+    // The same scene at 1e-12 and 1e12: no absolute tolerance may reject either.
+    for (const char* text :
+         {R"({"camera": {"eye": [0, 0, 5e-12], "look_at": [0, 0, 0]},
+              "objects": [{"type": "sphere", "radius": 1e-12}]})",
+          R"({"camera": {"eye": [0, 0, 5e12], "look_at": [0, 0, 0]},
+              "objects": [{"type": "sphere", "radius": 1e12}]})"}) {
+        const Scene s = load(text);
+        const Ray r = s.camera.generateRay(32, 24, 64, 48);
+        EXPECT_NEAR(r.dir.z, -1.0, 1e-12);
+    }
+}
+
 TEST(SceneLoader, CheckerAlternatesInCubes) {
     Material m;
     m.kd = Color(1.0);

@@ -205,6 +205,28 @@ TEST(Render, SameImageAndCountsForAnyThreadCount) {
     EXPECT_NE(render(s, accel, opt).image.pixels, one.image.pixels);
 }
 
+TEST(Render, SameImageAtEveryScale) {
+    // Floating point is relative: with error-bound ray offsets the picture must not depend on
+    // the scene's scale. (A fixed epsilon fails this: see docs/accuracy.md.)
+    const Scene base = loadBuiltinScene("default");
+    RenderOptions opt;
+    opt.width = 48;
+    opt.height = 36;
+    opt.trace.bounces = 4;
+    const auto renderAt = [&](double scale) {
+        const Scene s = transformScene(base, scale, Vec3(0.0));
+        const Accelerator accel = buildAccelerator(s, AccelKind::BruteForce);
+        return toSrgb8(render(s, accel, opt).image);
+    };
+    const std::vector<std::uint8_t> reference = renderAt(1.0);
+    for (double scale : {1e-6, 1e-3, 1e3, 1e6}) {
+        const std::vector<std::uint8_t> img = renderAt(scale);
+        int differ = 0;
+        for (std::size_t i = 0; i < img.size(); ++i) differ += std::abs(int(img[i]) - int(reference[i])) > 2;
+        EXPECT_LE(differ, 3) << "scale " << scale;  // a silhouette pixel may round the other way
+    }
+}
+
 TEST(Render, CountsFollowTheOptions) {
     const Scene s = loadBuiltinScene("default");
     const Accelerator accel = buildAccelerator(s, AccelKind::BruteForce);
