@@ -36,18 +36,23 @@ std::optional<AccelKind> parseAccelKind(std::string_view name) {
 
 std::string_view accelKindName(AccelKind kind) {
     switch (kind) {
-        case AccelKind::BruteForce: return "bruteforce";
-        case AccelKind::Grid: return "grid";
-        case AccelKind::KdTree: return "kdtree";
-        case AccelKind::Bvh: return "bvh";
+        case AccelKind::BruteForce:
+            return "bruteforce";
+        case AccelKind::Grid:
+            return "grid";
+        case AccelKind::KdTree:
+            return "kdtree";
+        case AccelKind::Bvh:
+            return "bvh";
     }
     return "?";
 }
 
 Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels) {
     if (kind == AccelKind::BruteForce) return BruteForce(scene, kernels);
-    throw std::runtime_error("--accel " + std::string(accelKindName(kind)) +
-                             ": not implemented yet; only 'bruteforce' is available in this version");
+    throw std::runtime_error(
+        "--accel " + std::string(accelKindName(kind)) +
+        ": not implemented yet; only 'bruteforce' is available in this version");
 }
 
 }  // namespace raystep

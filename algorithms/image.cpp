@@ -2,12 +2,12 @@
 
 #include <stb/stb_image_write.h>
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace raystep {
 
@@ -38,7 +38,8 @@ std::array<std::uint8_t, 3> heatmapColor(double s) {
     const double w = f - i;
     std::array<std::uint8_t, 3> c{};
     for (int k = 0; k < 3; ++k)
-        c[k] = static_cast<std::uint8_t>(std::lround(kStops[i][k] * (1 - w) + kStops[i + 1][k] * w));
+        c[k] =
+            static_cast<std::uint8_t>(std::lround(kStops[i][k] * (1 - w) + kStops[i + 1][k] * w));
     return c;
 }
 
@@ -48,7 +49,8 @@ std::vector<std::uint8_t> heatmapRgb8(const std::vector<std::uint64_t>& cost, in
     for (auto c : cost) maxCost = std::max(maxCost, c);
     std::vector<std::uint8_t> out(static_cast<std::size_t>(width) * height * 3);
     for (std::size_t i = 0; i < out.size() / 3; ++i) {
-        const double s = maxCost ? static_cast<double>(cost[i]) / static_cast<double>(maxCost) : 0.0;
+        const double s =
+            maxCost ? static_cast<double>(cost[i]) / static_cast<double>(maxCost) : 0.0;
         const auto c = heatmapColor(s);
         std::memcpy(&out[3 * i], c.data(), 3);
     }

@@ -93,9 +93,8 @@ void JsonLineMap::value(const std::string& path) {
         string();
     } else {
         // Number or literal: runs to the next delimiter.
-        while (i_ < s_.size() && s_[i_] != ',' && s_[i_] != ']' && s_[i_] != '}' &&
-               s_[i_] != ' ' && s_[i_] != '\n' && s_[i_] != '\t' && s_[i_] != '\r' &&
-               s_[i_] != '/')
+        while (i_ < s_.size() && s_[i_] != ',' && s_[i_] != ']' && s_[i_] != '}' && s_[i_] != ' ' &&
+               s_[i_] != '\n' && s_[i_] != '\t' && s_[i_] != '\r' && s_[i_] != '/')
             ++i_;
     }
 }

@@ -23,16 +23,25 @@ std::optional<RayOffsetMethod> parseRayOffset(std::string_view s) {
     if (s == "robust") return RayOffsetMethod::Robust;
     return std::nullopt;
 }
-std::string_view name(Precision p) { return p == Precision::Float ? "float" : "double"; }
-std::string_view name(SphereMethod m) { return m == SphereMethod::Textbook ? "textbook" : "stable"; }
+std::string_view name(Precision p) {
+    return p == Precision::Float ? "float" : "double";
+}
+std::string_view name(SphereMethod m) {
+    return m == SphereMethod::Textbook ? "textbook" : "stable";
+}
 std::string_view name(TriangleMethod m) {
     switch (m) {
-        case TriangleMethod::Plane: return "plane";
-        case TriangleMethod::MollerTrumbore: return "moller-trumbore";
-        case TriangleMethod::Watertight: break;
+        case TriangleMethod::Plane:
+            return "plane";
+        case TriangleMethod::MollerTrumbore:
+            return "moller-trumbore";
+        case TriangleMethod::Watertight:
+            break;
     }
     return "watertight";
 }
-std::string_view name(RayOffsetMethod m) { return m == RayOffsetMethod::Epsilon ? "epsilon" : "robust"; }
+std::string_view name(RayOffsetMethod m) {
+    return m == RayOffsetMethod::Epsilon ? "epsilon" : "robust";
+}
 
 }  // namespace raystep

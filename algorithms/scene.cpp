@@ -9,8 +9,8 @@ Color Material::diffuseAt(const Vec3& p) const {
     // A tiny shift keeps planes at integer multiples of size (a floor at y = 0) off the
     // boundary between two cubes, where rounding would speckle the pattern.
     const Vec3 q = glm::floor(p / checker.size + 1e-7);
-    const auto parity = static_cast<long long>(q.x) + static_cast<long long>(q.y) +
-                        static_cast<long long>(q.z);
+    const auto parity =
+        static_cast<long long>(q.x) + static_cast<long long>(q.y) + static_cast<long long>(q.z);
     return (parity & 1) ? checker.color : kd;
 }
 
@@ -30,7 +30,8 @@ bool intersectPrimitiveIn(const Scene& scene, std::uint32_t prim, Ray& ray, Hit&
     const T tMax = static_cast<T>(ray.tMax);
     if (scene.isSphere(prim)) {
         const Sphere& s = scene.spheres[prim];
-        const auto t = intersectSphere<T>(k.sphere, o, d, cast<T>(s.center), T(s.radius), tMin, tMax);
+        const auto t =
+            intersectSphere<T>(k.sphere, o, d, cast<T>(s.center), T(s.radius), tMin, tMax);
         // In float, tMax itself was rounded: keep the double interval strict.
         if (!t || !(double(*t) < ray.tMax)) return false;
         ray.tMax = double(*t);

@@ -3,8 +3,8 @@
 #include "raystep/json_lines.h"
 #include "raystep/resources.h"
 
-#include <nlohmann/json.hpp>
 #include <tiny_obj_loader.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -33,7 +33,7 @@ std::string joinNames(std::initializer_list<const char*> names) {
 
 /// Typed access to the parsed JSON that fails with file, line and key.
 class Reader {
-public:
+  public:
     Reader(std::string file, std::string_view text) : file_(std::move(file)), lines_(text) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& message) const {
@@ -121,7 +121,7 @@ public:
         return s.str();
     }
 
-private:
+  private:
     std::string file_;
     JsonLineMap lines_;
 };
@@ -158,10 +158,12 @@ void readCamera(const Reader& r, const json& j, const std::string& path, Camera&
 void readRender(const Reader& r, const json& j, const std::string& path, RenderSettings& s) {
     r.requireObject(j, path);
     r.checkKeys(j, path, {"width", "height", "bounces", "spp", "diffuse_samples"});
-    optional(j, path, "width",
-             [&](const json& v, const std::string& p) { s.width = r.integer(v, p, 1, kMaxImageSide); });
-    optional(j, path, "height",
-             [&](const json& v, const std::string& p) { s.height = r.integer(v, p, 1, kMaxImageSide); });
+    optional(j, path, "width", [&](const json& v, const std::string& p) {
+        s.width = r.integer(v, p, 1, kMaxImageSide);
+    });
+    optional(j, path, "height", [&](const json& v, const std::string& p) {
+        s.height = r.integer(v, p, 1, kMaxImageSide);
+    });
     optional(j, path, "bounces",
              [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, 64); });
     optional(j, path, "spp",
@@ -177,20 +179,24 @@ Material readMaterial(const Reader& r, const json& j, const std::string& path,
     r.checkKeys(j, path, {"kd", "ks", "n", "reflect", "transparency", "ior", "checker"});
     Material m;
     m.name = name;
-    optional(j, path, "kd", [&](const json& v, const std::string& p) { m.kd = r.color(v, p, true); });
-    optional(j, path, "ks", [&](const json& v, const std::string& p) { m.ks = r.color(v, p, true); });
+    optional(j, path, "kd",
+             [&](const json& v, const std::string& p) { m.kd = r.color(v, p, true); });
+    optional(j, path, "ks",
+             [&](const json& v, const std::string& p) { m.ks = r.color(v, p, true); });
     optional(j, path, "n", [&](const json& v, const std::string& p) { m.n = r.nonNegative(v, p); });
     optional(j, path, "reflect",
              [&](const json& v, const std::string& p) { m.reflect = r.color(v, p, true); });
     optional(j, path, "transparency",
              [&](const json& v, const std::string& p) { m.transparency = r.color(v, p, true); });
-    optional(j, path, "ior", [&](const json& v, const std::string& p) { m.ior = r.positive(v, p); });
+    optional(j, path, "ior",
+             [&](const json& v, const std::string& p) { m.ior = r.positive(v, p); });
     optional(j, path, "checker", [&](const json& v, const std::string& p) {
         r.requireObject(v, p);
         r.checkKeys(v, p, {"color", "size"});
         m.checker.enabled = true;
-        optional(v, p, "color",
-                 [&](const json& c, const std::string& cp) { m.checker.color = r.color(c, cp, true); });
+        optional(v, p, "color", [&](const json& c, const std::string& cp) {
+            m.checker.color = r.color(c, cp, true);
+        });
         optional(v, p, "size",
                  [&](const json& c, const std::string& cp) { m.checker.size = r.positive(c, cp); });
     });
@@ -283,7 +289,8 @@ void readObject(const Reader& r, const json& j, const std::string& path,
                 const FileResolver& resolver, Scene& scene) {
     r.requireObject(j, path);
     const std::string typePath = JsonLineMap::child(path, "type");
-    if (!j.contains("type")) r.fail(typePath, "every object needs a type: sphere, triangle or mesh");
+    if (!j.contains("type"))
+        r.fail(typePath, "every object needs a type: sphere, triangle or mesh");
     const std::string type = r.string(j["type"], typePath);
 
     std::uint32_t material = 0;  // the default material
@@ -298,7 +305,8 @@ void readObject(const Reader& r, const json& j, const std::string& path,
         r.checkKeys(j, path, {"type", "material", "center", "radius"});
         Sphere s;
         s.material = material;
-        optional(j, path, "center", [&](const json& v, const std::string& p) { s.center = r.vec3(v, p); });
+        optional(j, path, "center",
+                 [&](const json& v, const std::string& p) { s.center = r.vec3(v, p); });
         const std::string radiusPath = JsonLineMap::child(path, "radius");
         if (!j.contains("radius")) r.fail(radiusPath, "a sphere needs a radius");
         s.radius = r.positive(j["radius"], radiusPath);
@@ -336,9 +344,10 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
         const auto q1 = what.rfind('\'');
         const std::string token = q0 < q1 ? what.substr(q0 + 1, q1 - q0 - 1) : std::string();
         const auto at = token.empty() ? std::string_view::npos : text.find(token);
-        const int line = at == std::string_view::npos
-                             ? 1
-                             : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+        const int line =
+            at == std::string_view::npos
+                ? 1
+                : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
         throw SceneError(fileName, line, "",
                          "number '" + token + "' is out of range: values must be finite");
     } catch (const json::parse_error& e) {
@@ -383,13 +392,16 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
             r.requireObject(l, lp);
             r.checkKeys(l, lp, {"position", "color", "intensity"});
             PointLight light;
-            if (!l.contains("position")) r.fail(JsonLineMap::child(lp, "position"), "a light needs a position");
+            if (!l.contains("position"))
+                r.fail(JsonLineMap::child(lp, "position"), "a light needs a position");
             light.position = r.vec3(l["position"], JsonLineMap::child(lp, "position"));
             Color color(1.0);
             double intensity = 1.0;
-            optional(l, lp, "color", [&](const json& c, const std::string& cp) { color = r.color(c, cp, false); });
-            optional(l, lp, "intensity",
-                     [&](const json& c, const std::string& cp) { intensity = r.nonNegative(c, cp); });
+            optional(l, lp, "color",
+                     [&](const json& c, const std::string& cp) { color = r.color(c, cp, false); });
+            optional(l, lp, "intensity", [&](const json& c, const std::string& cp) {
+                intensity = r.nonNegative(c, cp);
+            });
             light.intensity = color * intensity;
             scene.lights.push_back(light);
         }
@@ -428,9 +440,8 @@ Scene loadSceneFile(const std::string& path) {
     const auto text = readWholeFile(path);
     if (!text) throw SceneError(path, 0, "", "cannot open the scene file");
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    return loadSceneText(*text, path, [folder](const std::string& rel) {
-        return readWholeFile(folder / rel);
-    });
+    return loadSceneText(*text, path,
+                         [folder](const std::string& rel) { return readWholeFile(folder / rel); });
 }
 
 std::vector<std::string> builtinSceneNames() {
@@ -456,9 +467,9 @@ Scene loadScene(const std::string& nameOrPath) {
     if (!std::filesystem::exists(nameOrPath)) {
         std::string names;
         for (const auto& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
-        throw SceneError(nameOrPath, 0, "",
-                         "no such scene file, and no built-in scene of that name (built-in: " +
-                             names + ")");
+        throw SceneError(
+            nameOrPath, 0, "",
+            "no such scene file, and no built-in scene of that name (built-in: " + names + ")");
     }
     return loadSceneFile(nameOrPath);
 }

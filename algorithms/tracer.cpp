@@ -103,8 +103,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranc
     return radiance;
 }
 
-Color Tracer::renderPixel(int x, int y, const RenderOptions& options,
-                          RayCounters& counters) const {
+Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const {
     const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
     Pcg32 rng(options.seed, pixelIndex);
     const Camera& cam = scene_.camera;

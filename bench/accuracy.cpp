@@ -33,7 +33,9 @@ constexpr std::array kTriangleMethods = {TriangleMethod::Plane, TriangleMethod::
 constexpr std::array kSphereMethods = {SphereMethod::Textbook, SphereMethod::Stable};
 constexpr std::array kPrecisions = {Precision::Float, Precision::Double};
 
-void progress(const std::string& what) { std::fprintf(stderr, "raystep_accuracy: %s\n", what.c_str()); }
+void progress(const std::string& what) {
+    std::fprintf(stderr, "raystep_accuracy: %s\n", what.c_str());
+}
 
 D3 randomUnit(Pcg32& rng) {
     for (;;) {
@@ -44,9 +46,11 @@ D3 randomUnit(Pcg32& rng) {
 }
 
 template <typename T>
-bool hitsTriangle(TriangleMethod m, const D3& o, const D3& d, const D3& a, const D3& b, const D3& c) {
+bool hitsTriangle(TriangleMethod m, const D3& o, const D3& d, const D3& a, const D3& b,
+                  const D3& c) {
     using V = TVec3<T>;
-    return intersectTriangle<T>(m, V(o), V(d), V(a), V(b), V(c), T(0), std::numeric_limits<T>::infinity())
+    return intersectTriangle<T>(m, V(o), V(d), V(a), V(b), V(c), T(0),
+                                std::numeric_limits<T>::infinity())
         .has_value();
 }
 
@@ -69,12 +73,13 @@ struct Mesh {
 Mesh icosphere() {
     const double g = (1 + std::sqrt(5.0)) / 2;
     Mesh m;
-    for (D3 p : {D3(-1, g, 0), D3(1, g, 0), D3(-1, -g, 0), D3(1, -g, 0), D3(0, -1, g), D3(0, 1, g),
-                 D3(0, -1, -g), D3(0, 1, -g), D3(g, 0, -1), D3(g, 0, 1), D3(-g, 0, -1), D3(-g, 0, 1)})
+    for (D3 p :
+         {D3(-1, g, 0), D3(1, g, 0), D3(-1, -g, 0), D3(1, -g, 0), D3(0, -1, g), D3(0, 1, g),
+          D3(0, -1, -g), D3(0, 1, -g), D3(g, 0, -1), D3(g, 0, 1), D3(-g, 0, -1), D3(-g, 0, 1)})
         m.v.push_back(glm::normalize(p));
-    m.f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-           {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-           {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    m.f = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+           {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+           {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int level = 0; level < 2; ++level) {
         std::map<std::pair<int, int>, int> mid;
         const auto midpoint = [&](int i, int j) {
@@ -105,11 +110,13 @@ ordered_json measureCracks(int rays) {
             edgeFaces[std::minmax(m.f[fi][k], m.f[fi][(k + 1) % 3])].push_back(fi);
             vertexFaces[m.f[fi][k]].push_back(fi);
         }
-    const std::vector<std::pair<std::pair<int, int>, std::vector<int>>> edges(edgeFaces.begin(), edgeFaces.end());
+    const std::vector<std::pair<std::pair<int, int>, std::vector<int>>> edges(edgeFaces.begin(),
+                                                                              edgeFaces.end());
     const auto frontFacing = [&](const std::vector<int>& faces, const D3& o) {
         for (int fi : faces) {
             const auto& f = m.f[fi];
-            if (glm::dot(glm::cross(m.v[f[1]] - m.v[f[0]], m.v[f[2]] - m.v[f[0]]), o - m.v[f[0]]) <= 0)
+            if (glm::dot(glm::cross(m.v[f[1]] - m.v[f[0]], m.v[f[2]] - m.v[f[0]]), o - m.v[f[0]]) <=
+                0)
                 return false;
         }
         return true;
@@ -131,7 +138,8 @@ ordered_json measureCracks(int rays) {
         } else {
             const auto& e = edges[static_cast<std::size_t>(rng.uniform() * edges.size())];
             faces = &e.second;
-            target = m.v[e.first.first] + (0.02 + 0.96 * rng.uniform()) * (m.v[e.first.second] - m.v[e.first.first]);
+            target = m.v[e.first.first] +
+                     (0.02 + 0.96 * rng.uniform()) * (m.v[e.first.second] - m.v[e.first.first]);
         }
         if (!frontFacing(*faces, o)) continue;  // the ray must enter the solid right there
         ++i;
@@ -152,7 +160,8 @@ ordered_json measureCracks(int rays) {
                 std::vector<int> ring;
                 for (int fi : *faces)
                     for (int k = 0; k < 3; ++k)
-                        ring.insert(ring.end(), vertexFaces[m.f[fi][k]].begin(), vertexFaces[m.f[fi][k]].end());
+                        ring.insert(ring.end(), vertexFaces[m.f[fi][k]].begin(),
+                                    vertexFaces[m.f[fi][k]].end());
                 if (hitsAny(p, tm, ring)) continue;
                 // A crack only if the ray the kernel saw (rounded to its precision) truly meets
                 // the surface there: near a silhouette, rounding can move it off the mesh.
@@ -168,9 +177,9 @@ ordered_json measureCracks(int rays) {
                     }
                     return false;
                 };
-                if (exactlyHits(*faces) || exactlyHits(ring))
+                if (exactlyHits(*faces) || exactlyHits(ring)) {
                     cracks[std::string(name(tm)) + "/" + std::string(name(p))][vertex]++;
-                else
+                } else
                     ++offSurface[std::string(name(tm)) + "/" + std::string(name(p))];
             }
     }
@@ -185,7 +194,8 @@ ordered_json measureCracks(int rays) {
                            {"edge_misses", c[0]},
                            {"vertex_misses", c[1]},
                            {"crack_rate", double(c[0] + c[1]) / double(edgeRays + vertexRays)},
-                           {"rays_rounded_off_the_mesh", offSurface[std::string(name(tm)) + "/" + std::string(name(p))]}});
+                           {"rays_rounded_off_the_mesh",
+                            offSurface[std::string(name(tm)) + "/" + std::string(name(p))]}});
         }
     return out;
 }
@@ -198,9 +208,14 @@ struct ErrorStats {
     long misses = 0;
     ordered_json json(long total) {
         std::sort(rel.begin(), rel.end());
-        const auto q = [&](double f) { return rel.empty() ? 0.0 : rel[std::min(rel.size() - 1, std::size_t(f * rel.size()))]; };
-        return {{"rays", total}, {"wrong_misses", misses}, {"median_rel_error", q(0.5)},
-                {"p99_rel_error", q(0.99)}, {"max_rel_error", rel.empty() ? 0.0 : rel.back()}};
+        const auto q = [&](double f) {
+            return rel.empty() ? 0.0 : rel[std::min(rel.size() - 1, std::size_t(f * rel.size()))];
+        };
+        return {{"rays", total},
+                {"wrong_misses", misses},
+                {"median_rel_error", q(0.5)},
+                {"p99_rel_error", q(0.99)},
+                {"max_rel_error", rel.empty() ? 0.0 : rel.back()}};
     }
 };
 
@@ -228,7 +243,8 @@ ordered_json measureTriangleT(int rays) {
             for (Precision p : kPrecisions) {
                 const bool f = p == Precision::Float;
                 const D3 ro = f ? roundTo<float>(o) : o, rd = f ? roundTo<float>(d) : d;
-                const D3 ra = f ? roundTo<float>(a) : a, rb = f ? roundTo<float>(b) : b, rc = f ? roundTo<float>(c) : c;
+                const D3 ra = f ? roundTo<float>(a) : a, rb = f ? roundTo<float>(b) : b,
+                         rc = f ? roundTo<float>(c) : c;
                 const exact::Reference ref = exact::triangle(ro, rd, ra, rb, rc);
                 if (!ref.hit) continue;
                 for (TriangleMethod tm : kTriangleMethods) {
@@ -236,11 +252,14 @@ ordered_json measureTriangleT(int rays) {
                     double t;
                     bool hit;
                     if (f) {
-                        const auto h = intersectTriangle<float>(tm, glm::vec3(ro), glm::vec3(rd), glm::vec3(ra), glm::vec3(rb), glm::vec3(rc), 0.f, INFINITY);
+                        const auto h = intersectTriangle<float>(tm, glm::vec3(ro), glm::vec3(rd),
+                                                                glm::vec3(ra), glm::vec3(rb),
+                                                                glm::vec3(rc), 0.f, INFINITY);
                         hit = h.has_value();
                         t = hit ? h->t : 0;
                     } else {
-                        const auto h = intersectTriangle<double>(tm, ro, rd, ra, rb, rc, 0.0, INFINITY);
+                        const auto h =
+                            intersectTriangle<double>(tm, ro, rd, ra, rb, rc, 0.0, INFINITY);
                         hit = h.has_value();
                         t = hit ? h->t : 0;
                     }
@@ -254,7 +273,8 @@ ordered_json measureTriangleT(int rays) {
         }
         for (Precision p : kPrecisions)
             for (TriangleMethod tm : kTriangleMethods) {
-                ordered_json j = stats[std::string(name(tm)) + "/" + std::string(name(p))].json(rays);
+                ordered_json j =
+                    stats[std::string(name(tm)) + "/" + std::string(name(p))].json(rays);
                 j["method"] = name(tm);
                 j["precision"] = name(p);
                 j["scale"] = scale;
@@ -286,7 +306,9 @@ ordered_json measureSphereT(int rays) {
                     ErrorStats& s = stats[std::string(name(sm)) + "/" + std::string(name(p))];
                     std::optional<double> t;
                     if (f) {
-                        if (auto h = intersectSphere<float>(sm, glm::vec3(o), glm::vec3(rd), glm::vec3(rc), 1.f, 0.f, INFINITY)) t = *h;
+                        if (auto h = intersectSphere<float>(sm, glm::vec3(o), glm::vec3(rd),
+                                                            glm::vec3(rc), 1.f, 0.f, INFINITY))
+                            t = *h;
                     } else {
                         t = intersectSphere<double>(sm, o, rd, rc, 1.0, 0.0, INFINITY);
                     }
@@ -300,7 +322,8 @@ ordered_json measureSphereT(int rays) {
         }
         for (Precision p : kPrecisions)
             for (SphereMethod sm : kSphereMethods) {
-                ordered_json j = stats[std::string(name(sm)) + "/" + std::string(name(p))].json(rays);
+                ordered_json j =
+                    stats[std::string(name(sm)) + "/" + std::string(name(p))].json(rays);
                 j["method"] = name(sm);
                 j["precision"] = name(p);
                 j["distance"] = distance;
@@ -374,7 +397,8 @@ ordered_json measureAcne(int side) {
                         if (truth < 0) continue;
                         const D3 origin = spawnRayOrigin(sp, n, toLight, p, om);
                         const double dist = glm::length(scene.lights[0].position - origin);
-                        const bool blocked = occluded(accel, Ray{origin, toLight, 0.0, dist}, counters);
+                        const bool blocked =
+                            occluded(accel, Ray{origin, toLight, 0.0, dist}, counters);
                         if (truth == 1) {
                             ++lit;
                             acne += blocked;
@@ -421,7 +445,9 @@ ordered_json measureStadium(int width, int height, const std::string& imageDir) 
     for (const Config& c : configs) {
         progress("stadium " + c.key);
         const Scene s = transformScene(base, c.scale, c.shift);
-        const Accelerator accel = buildAccelerator(s, AccelKind::BruteForce, {c.precision, SphereMethod::Stable, TriangleMethod::Watertight});
+        const Accelerator accel =
+            buildAccelerator(s, AccelKind::BruteForce,
+                             {c.precision, SphereMethod::Stable, TriangleMethod::Watertight});
         RenderOptions opt;
         opt.width = width;
         opt.height = height;
@@ -429,7 +455,8 @@ ordered_json measureStadium(int width, int height, const std::string& imageDir) 
         opt.trace.rayOffset = c.offset;
         images[c.key] = toSrgb8(render(s, accel, opt).image);
         if (!imageDir.empty())
-            writePng(imageDir + "/accuracy-stadium-" + c.key + ".png", images[c.key], width, height);
+            writePng(imageDir + "/accuracy-stadium-" + c.key + ".png", images[c.key], width,
+                     height);
     }
     const auto compare = [&](const std::string& a, const std::string& b) {
         long differ = 0, differMuch = 0;
@@ -441,7 +468,10 @@ ordered_json measureStadium(int width, int height, const std::string& imageDir) 
             differ += m > 0;
             differMuch += m > 16;
         }
-        return ordered_json{{"a", a}, {"b", b}, {"pixels", A.size() / 3}, {"differ", differ},
+        return ordered_json{{"a", a},
+                            {"b", b},
+                            {"pixels", A.size() / 3},
+                            {"differ", differ},
                             {"differ_by_more_than_16", differMuch}};
     };
     ordered_json out = ordered_json::array();
@@ -461,11 +491,15 @@ int main(int argc, char** argv) {
     std::string outPath, imageDir;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--rays" && i + 1 < argc) rays = std::max(1000, std::atoi(argv[++i]));
-        else if (arg == "--out" && i + 1 < argc) outPath = argv[++i];
-        else if (arg == "--images" && i + 1 < argc) imageDir = argv[++i];
+        if (arg == "--rays" && i + 1 < argc)
+            rays = std::max(1000, std::atoi(argv[++i]));
+        else if (arg == "--out" && i + 1 < argc)
+            outPath = argv[++i];
+        else if (arg == "--images" && i + 1 < argc)
+            imageDir = argv[++i];
         else {
-            std::fprintf(stderr, "usage: raystep_accuracy [--rays N] [--out FILE.json] [--images DIR]\n");
+            std::fprintf(stderr,
+                         "usage: raystep_accuracy [--rays N] [--out FILE.json] [--images DIR]\n");
             return 2;
         }
     }
@@ -480,7 +514,9 @@ int main(int argc, char** argv) {
     j["acne"] = measureAcne(256);
     j["stadium"] = measureStadium(160, 120, imageDir);
     const std::string text = j.dump(2) + "\n";
-    if (outPath.empty()) std::cout << text;
-    else writeFileAtomic(outPath, text);
+    if (outPath.empty())
+        std::cout << text;
+    else
+        writeFileAtomic(outPath, text);
     return 0;
 }

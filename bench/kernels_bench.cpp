@@ -30,7 +30,8 @@ const TrianglePairs<T>& trianglePairs() {
         for (int i = 0; i < kPairs; ++i) {
             const Triangle& t = s.triangles[static_cast<std::size_t>(rng.uniform() * 51200)];
             const D3 centroid = (t.a + t.b + t.c) / 3.0;
-            const D3 jitter = (D3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5) * glm::length(t.b - t.a);
+            const D3 jitter =
+                (D3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5) * glm::length(t.b - t.a);
             const D3 origin = centroid + D3(rng.uniform() - 0.5, rng.uniform() - 0.5, 1.0) * 5.0;
             p.o.push_back(TVec3<T>(origin));
             p.d.push_back(TVec3<T>(centroid + jitter - origin));
@@ -52,8 +53,8 @@ void BM_Triangle(benchmark::State& state) {
     for (auto _ : state) {
         for (int i = 0; i < kPairs; ++i) {
             const int r = i & reuseMask;
-            const auto h = intersectTriangle<T>(method, p.o[r], p.d[r], p.a[i], p.b[i], p.c[i], T(0),
-                                                std::numeric_limits<T>::infinity());
+            const auto h = intersectTriangle<T>(method, p.o[r], p.d[r], p.a[i], p.b[i], p.c[i],
+                                                T(0), std::numeric_limits<T>::infinity());
             hits += h.has_value();
             benchmark::DoNotOptimize(h);
         }
@@ -62,8 +63,12 @@ void BM_Triangle(benchmark::State& state) {
     state.SetLabel(std::string(name(method)) + " hit share " +
                    std::to_string(double(hits) / double(state.iterations() * kPairs)).substr(0, 4));
 }
-BENCHMARK(BM_Triangle<float>)->ArgsProduct({{0, 1, 2}, {1, 16}})->ArgNames({"method", "rays_reused"});
-BENCHMARK(BM_Triangle<double>)->ArgsProduct({{0, 1, 2}, {1, 16}})->ArgNames({"method", "rays_reused"});
+BENCHMARK(BM_Triangle<float>)
+    ->ArgsProduct({{0, 1, 2}, {1, 16}})
+    ->ArgNames({"method", "rays_reused"});
+BENCHMARK(BM_Triangle<double>)
+    ->ArgsProduct({{0, 1, 2}, {1, 16}})
+    ->ArgNames({"method", "rays_reused"});
 
 template <typename T>
 void BM_Sphere(benchmark::State& state) {

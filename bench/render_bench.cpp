@@ -10,8 +10,8 @@ using namespace raystep;
 
 /// One full render per iteration; reports ms per frame and, as rates, millions of rays (all kinds),
 /// of primary rays and of primitive tests a second.
-void renderScene(benchmark::State& state, const char* sceneName, int width, int height,
-                 int bounces, int spp, int diffuseSamples) {
+void renderScene(benchmark::State& state, const char* sceneName, int width, int height, int bounces,
+                 int spp, int diffuseSamples) {
     const Scene scene = loadBuiltinScene(sceneName);
     const Accelerator accel = buildAccelerator(scene, AccelKind::BruteForce);
     RenderOptions opt;
@@ -40,19 +40,32 @@ void renderScene(benchmark::State& state, const char* sceneName, int width, int 
 void BM_Default800x600_BruteForce(benchmark::State& state) {
     renderScene(state, "default", 800, 600, 2, 1, 0);
 }
-BENCHMARK(BM_Default800x600_BruteForce)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Default800x600_BruteForce)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The teapot in a stadium: brute force pays for every one of its 51,212 primitives per ray.
 void BM_Stadium64x48_BruteForce(benchmark::State& state) {
     renderScene(state, "stadium", 64, 48, 1, 1, 0);
 }
-BENCHMARK(BM_Stadium64x48_BruteForce)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Stadium64x48_BruteForce)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Colour bleeding's price: the Cornell box with 16 diffuse samples.
 void BM_Cornell128_Diffuse16(benchmark::State& state) {
     renderScene(state, "cornell", 128, 128, 3, 1, 16);
 }
-BENCHMARK(BM_Cornell128_Diffuse16)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Cornell128_Diffuse16)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

@@ -11,4 +11,5 @@ mkdir -p "$RAYSTEP_ROOT/docs/data" "$RAYSTEP_ROOT/docs/images"
   --benchmark_out="$RAYSTEP_ROOT/docs/data/kernels_bench.json" --benchmark_out_format=json
 "$RAYSTEP_ROOT/build/bench/raystep_accuracy" --out "$RAYSTEP_ROOT/docs/data/accuracy.json" \
   --images "$RAYSTEP_ROOT/docs/images"
-python3 "$RAYSTEP_ROOT/scripts/plot_accuracy.py"
+# Debian's interpreter: python3-matplotlib is installed for it, whatever python3 is first on PATH.
+/usr/bin/python3 "$RAYSTEP_ROOT/scripts/plot_accuracy.py"

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Draws the figures of docs/accuracy.md from the measurements.
 
 Inputs (made by scripts/measure_accuracy.sh):
@@ -48,9 +48,8 @@ def kernel_speeds():
         args = dict(p.split(":") for p in parts[1:] if ":" in p)
         method = int(args["method"])
         if kind == "BM_Triangle":
-            if args.get("rays_reused") != "16":
-                continue
-            speeds[("triangle", names[method], precision)] = b["items_per_second"] / 1e6
+            key = "triangle" if args.get("rays_reused") == "16" else "triangle-own"
+            speeds[(key, names[method], precision)] = b["items_per_second"] / 1e6
         else:
             speeds[("sphere", sphere_names[method], precision)] = b["items_per_second"] / 1e6
     return speeds
@@ -129,7 +128,43 @@ def main():
     ax.legend(fontsize=8, ncol=2)
     ax.grid(True, which="both", alpha=0.3)
     save(fig, "accuracy-triangle-t-error.svg")
+    print_tables(acc, speeds)
     return 0
+
+
+def print_tables(acc, speeds):
+    """Markdown tables for docs/accuracy.md, printed so the page can be refreshed by hand."""
+    print("\n| triangle method | precision | M tests/s (own ray) | M tests/s (ray reused 16x) | crack rate | t error p99 (scale 1) |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    t1 = {(r["method"], r["precision"]): r for r in acc["triangle_t_error"] if r["scale"] == 1.0}
+    for c in acc["cracks"]:
+        own = speeds.get(("triangle-own", c["method"], c["precision"]), float("nan"))
+        reused = speeds[("triangle", c["method"], c["precision"])]
+        print(f'| {c["method"]} | {c["precision"]} | {own:.1f} | {reused:.1f} | '
+              f'{c["edge_misses"] + c["vertex_misses"]} / {c["edge_rays"] + c["vertex_rays"]} = {c["crack_rate"]:.2e} | '
+              f'{t1[(c["method"], c["precision"])]["p99_rel_error"]:.1e} |')
+    print("\n| sphere method | precision | M tests/s | distance where t error first exceeds 1e-6 | misses of a sphere that is hit |")
+    print("| --- | --- | --- | --- | --- |")
+    for method in ("textbook", "stable"):
+        for precision in ("float", "double"):
+            rows = [r for r in acc["sphere_t_error"] if r["method"] == method and r["precision"] == precision]
+            bad = [r["distance"] for r in rows if r["max_rel_error"] > 1e-6]
+            misses = [f'{r["wrong_misses"]} at {r["distance"]:.0e}' for r in rows if r["wrong_misses"]]
+            print(f'| {method} | {precision} | {speeds[("sphere", method, precision)]:.1f} | '
+                  f'{f"{bad[0]:.0e}" if bad else "never (up to 1e8)"} | {", ".join(misses) if misses else "none"} |')
+    print("\n| scale | float epsilon acne / leaks | float robust | double epsilon | double robust |")
+    print("| --- | --- | --- | --- | --- |")
+    for scale in sorted({r["scale"] for r in acc["acne"]}):
+        cells = []
+        for precision in ("float", "double"):
+            for offset in ("epsilon", "robust"):
+                r = next(r for r in acc["acne"] if r["scale"] == scale and r["precision"] == precision and r["ray_offset"] == offset)
+                cells.append(f'{100 * r["acne_share"]:.2f}% / {100 * r["leak_share"]:.2f}%')
+        print(f"| {scale:.0e} | " + " | ".join(cells) + " |")
+    print("\n| render A | render B | pixels that differ | differ by more than 16/255 |")
+    print("| --- | --- | --- | --- |")
+    for c in acc["stadium"]:
+        print(f'| {c["a"]} | {c["b"]} | {c["differ"]} of {c["pixels"]} | {c["differ_by_more_than_16"]} |')
 
 
 if __name__ == "__main__":

@@ -27,7 +27,7 @@ struct TraversalCounters {
 
 /// The slides' loop: test every primitive, keep the closest.
 class BruteForce {
-public:
+  public:
     BruteForce(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
     const KernelOptions& kernels() const { return kernels_; }
     /// Nearest hit in (ray.tMin, ray.tMax).
@@ -35,7 +35,7 @@ public:
     /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
     bool occluded(Ray ray, TraversalCounters& counters) const;
 
-private:
+  private:
     const Scene* scene_;
     KernelOptions kernels_;
 };

@@ -14,7 +14,8 @@ struct Image {
     int height = 0;
     std::vector<Color> pixels;  // row-major, top row first
     Image() = default;
-    Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, Color(0.0)) {}
+    Image(int w, int h)
+        : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, Color(0.0)) {}
     Color& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
     const Color& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
 };
@@ -27,7 +28,8 @@ std::vector<std::uint8_t> toSrgb8(const Image& image);
 
 /// Heat map of per-pixel cost: `cost` (width*height values) mapped linearly from 0 to its
 /// maximum onto a perceptually ordered scale (black-purple-orange-yellow), as RGB bytes.
-std::vector<std::uint8_t> heatmapRgb8(const std::vector<std::uint64_t>& cost, int width, int height);
+std::vector<std::uint8_t> heatmapRgb8(const std::vector<std::uint64_t>& cost, int width,
+                                      int height);
 
 /// The colour scale itself at s in [0, 1] (exposed for the legend and for tests).
 std::array<std::uint8_t, 3> heatmapColor(double s);

@@ -61,6 +61,17 @@ struct TriangleHit {
 // ---------------------------------------------------------------------------------------------
 // Ray-sphere
 
+namespace detail {
+/// The smaller of the roots t0 <= t1 that lies in (tMin, tMax): from outside the near side, from
+/// inside the far side.
+template <typename T>
+std::optional<T> nearestRoot(T t0, T t1, T tMin, T tMax) {
+    if (t0 > tMin && t0 < tMax) return t0;
+    if (t1 > tMin && t1 < tMax) return t1;
+    return std::nullopt;
+}
+}  // namespace detail
+
 /// The slides' textbook quadratic: a t^2 + b t + c = 0 with a = d.d, b = 2 d.(o-c),
 /// c = |o-c|^2 - r^2, t = (-b -+ sqrt(b^2 - 4ac)) / 2a. Loses digits to cancellation when the
 /// sphere is far or small (b^2 ~ 4ac) and in the root near zero.
@@ -83,18 +94,15 @@ std::optional<T> intersectSphereTextbook(const TVec3<T>& o, const TVec3<T>& d,
     const T t1 = (-b + sq) / (T(2) * a);
     steps("t0", t0);
     steps("t1", t1);
-    if (t0 > tMin && t0 < tMax) return t0;
-    if (t1 > tMin && t1 < tMax) return t1;
-    return std::nullopt;
+    return detail::nearestRoot(t0, t1, tMin, tMax);
 }
 
 /// The numerically stable form (Haines et al., Ray Tracing Gems ch. 7): the discriminant from
 /// the ray's closest approach |f - (f.d / d.d) d| (no b^2 - 4ac cancellation), and the roots as
 /// q = -(b' + sign(b') sqrt(disc)), t0 = q / a, t1 = c / q (no -b + sqrt cancellation).
 template <typename T, typename Steps = NoSteps>
-std::optional<T> intersectSphereStable(const TVec3<T>& o, const TVec3<T>& d,
-                                       const TVec3<T>& center, T radius, T tMin, T tMax,
-                                       Steps&& steps = {}) {
+std::optional<T> intersectSphereStable(const TVec3<T>& o, const TVec3<T>& d, const TVec3<T>& center,
+                                       T radius, T tMin, T tMax, Steps&& steps = {}) {
     const TVec3<T> f = o - center;
     const T a = glm::dot(d, d);
     const T b = glm::dot(f, d);  // half of the textbook b
@@ -114,9 +122,7 @@ std::optional<T> intersectSphereStable(const TVec3<T>& o, const TVec3<T>& d,
     if (t0 > t1) std::swap(t0, t1);
     steps("t0", t0);
     steps("t1", t1);
-    if (t0 > tMin && t0 < tMax) return t0;
-    if (t1 > tMin && t1 < tMax) return t1;
-    return std::nullopt;
+    return detail::nearestRoot(t0, t1, tMin, tMax);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -192,7 +198,7 @@ int maxDimension(const TVec3<T>& v) {
 template <typename W>
 struct Sheared {
     W ax, ay, az, bx, by, bz, cx, cy, cz;  // vertices with the ray along +z from the origin
-    W U, V, Wc;                             // 2D edge functions: weights of a, b, c
+    W U, V, Wc;                            // 2D edge functions: weights of a, b, c
 };
 
 template <typename W, typename T>
@@ -276,7 +282,8 @@ std::optional<TriangleHit<T>> intersectTriangleWatertight(const TVec3<T>& o, con
     steps("t error bound", deltaT);
     if (!(t > tMin && t < tMax)) return std::nullopt;
     if (!(t > deltaT)) {
-        const auto [tw, deltaTw] = detail::distanceWithBound(detail::shear<Wd>(o, d, a, b, c, kx, ky, kz));
+        const auto [tw, deltaTw] =
+            detail::distanceWithBound(detail::shear<Wd>(o, d, a, b, c, kx, ky, kz));
         if (!(tw > deltaTw)) return std::nullopt;  // t may truly be 0 or less: no hit
     }
     const T invDet = T(1) / det;
@@ -325,8 +332,7 @@ struct PointWithError {
 /// The hit point from barycentrics, b0 a + b1 b + b2 c: more accurate than o + t d, with the bound
 /// gamma(7) (|b0 a| + |b1 b| + |b2 c|).
 template <typename T>
-PointWithError<T> trianglePoint(const TVec3<T>& a, const TVec3<T>& b, const TVec3<T>& c, T u,
-                                T v) {
+PointWithError<T> trianglePoint(const TVec3<T>& a, const TVec3<T>& b, const TVec3<T>& c, T u, T v) {
     const T w = T(1) - u - v;
     const TVec3<T> p = w * a + u * b + v * c;
     const TVec3<T> absSum = glm::abs(w * a) + glm::abs(u * b) + glm::abs(v * c);

@@ -10,7 +10,7 @@
 namespace raystep {
 
 class JsonLineMap {
-public:
+  public:
     /// `text` must already have parsed as JSON (comments allowed); the map only scans it.
     explicit JsonLineMap(std::string_view text);
 
@@ -27,7 +27,7 @@ public:
         return path + "[" + std::to_string(index) + "]";
     }
 
-private:
+  private:
     void value(const std::string& path);
     void skipSpace();
     std::string string();

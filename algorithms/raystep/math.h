@@ -15,17 +15,23 @@ using Color = glm::dvec3;  // linear RGB radiance
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
-inline double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
+inline double maxComponent(const Vec3& v) {
+    return std::max({v.x, v.y, v.z});
+}
 inline double maxAbsComponent(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 inline bool isFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-inline bool isBlack(const Color& c) { return c.x <= 0.0 && c.y <= 0.0 && c.z <= 0.0; }
+inline bool isBlack(const Color& c) {
+    return c.x <= 0.0 && c.y <= 0.0 && c.z <= 0.0;
+}
 
 /// Mirror direction d about the normal n (both need not face each other): d - 2 (d.n) n.
-inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
+inline Vec3 reflect(const Vec3& d, const Vec3& n) {
+    return d - 2.0 * glm::dot(d, n) * n;
+}
 
 /// Axis-aligned bounding box in 3D.
 struct Bounds3 {

@@ -6,7 +6,7 @@
 namespace raystep {
 
 class Pcg32 {
-public:
+  public:
     Pcg32(std::uint64_t seed, std::uint64_t stream) {
         inc_ = (stream << 1u) | 1u;
         state_ = 0;
@@ -24,7 +24,7 @@ public:
     /// Uniform in [0, 1).
     double uniform() { return next() * 0x1p-32; }
 
-private:
+  private:
     std::uint64_t state_;
     std::uint64_t inc_;
 };

@@ -66,7 +66,7 @@ constexpr int kMaxImageSide = 8192;
 /// Intersection with one primitive of the scene.
 struct Hit {
     double t = kInfinity;
-    std::uint32_t prim = 0;  // primitive id (spheres first, then triangles)
+    std::uint32_t prim = 0;   // primitive id (spheres first, then triangles)
     double u = 0.0, v = 0.0;  // barycentric coordinates on triangles
 };
 

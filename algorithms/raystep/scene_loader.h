@@ -13,13 +13,13 @@ namespace raystep {
 
 /// A scene that cannot be loaded: which file, which line, which key, and why.
 class SceneError : public std::runtime_error {
-public:
+  public:
     SceneError(std::string file, int line, std::string key, const std::string& message);
     const std::string& file() const { return file_; }
     int line() const { return line_; }  // 0 when the error is about the file as a whole
     const std::string& key() const { return key_; }
 
-private:
+  private:
     std::string file_;
     int line_;
     std::string key_;

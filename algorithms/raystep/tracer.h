@@ -46,7 +46,7 @@ struct RayCounters {
 
 /// Traces the ray tree of single rays; stateless apart from references, so threads share one.
 class Tracer {
-public:
+  public:
     Tracer(const Scene& scene, const Accelerator& accel, TraceSettings settings)
         : scene_(scene), accel_(accel), settings_(settings) {}
 
@@ -56,7 +56,7 @@ public:
     /// Radiance of pixel (x, y) averaged over `spp` samples, with that pixel's own random stream.
     Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const;
 
-private:
+  private:
     Color trace(const Ray& ray, RayKind kind, int depth, bool diffuseBranched, Pcg32& rng,
                 RayCounters& counters) const;
     Color shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranched, Pcg32& rng,

@@ -36,7 +36,8 @@ std::optional<std::vector<std::vector<double>>> parseGroups(const std::string& t
         const std::size_t end = text.find(':', start);
         const bool last = g + 1 == sizes.size();
         if (last != (end == std::string::npos)) return std::nullopt;
-        const auto numbers = parseNumbers(text.substr(start, last ? std::string::npos : end - start));
+        const auto numbers =
+            parseNumbers(text.substr(start, last ? std::string::npos : end - start));
         if (!numbers || static_cast<int>(numbers->size()) != sizes[g]) return std::nullopt;
         groups.push_back(*numbers);
         start = end + 1;
@@ -44,7 +45,9 @@ std::optional<std::vector<std::vector<double>>> parseGroups(const std::string& t
     return groups;
 }
 
-glm::dvec3 vec(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+glm::dvec3 vec(const std::vector<double>& v) {
+    return {v[0], v[1], v[2]};
+}
 
 template <typename T>
 std::string fmt(T v) {
@@ -79,8 +82,12 @@ Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
     if (isTriangle) {
         const TVec3<T> a(vec(shape[0])), b(vec(shape[1])), c(vec(shape[2]));
         if (const auto h = intersectTriangle<T>(tm, to, td, a, b, c, T(0), inf, out.log)) {
-            out = {true, double(h->t), double(h->u), double(h->v),
-                   glm::dvec3(trianglePoint<T>(a, b, c, h->u, h->v).p), std::move(out.log)};
+            out = {true,
+                   double(h->t),
+                   double(h->u),
+                   double(h->v),
+                   glm::dvec3(trianglePoint<T>(a, b, c, h->u, h->v).p),
+                   std::move(out.log)};
         }
     } else {
         const TVec3<T> centre(vec(shape[0]));
@@ -103,10 +110,12 @@ int runIntersect(const IntersectArgs& a) {
     if (d == glm::dvec3(0.0)) return fail("--ray " + a.ray + ": the direction must not be zero");
     const bool isTriangle = !a.triangle.empty();
     if (!isTriangle && a.sphere.empty()) return fail("intersect: give --triangle or --sphere");
-    const auto shape = isTriangle ? parseGroups(a.triangle, {3, 3, 3}) : parseGroups(a.sphere, {3, 1});
+    const auto shape =
+        isTriangle ? parseGroups(a.triangle, {3, 3, 3}) : parseGroups(a.sphere, {3, 1});
     if (!shape) {
         return isTriangle
-                   ? fail("--triangle " + a.triangle + ": expected ax,ay,az:bx,by,bz:cx,cy,cz (9 finite numbers)")
+                   ? fail("--triangle " + a.triangle +
+                          ": expected ax,ay,az:bx,by,bz:cx,cy,cz (9 finite numbers)")
                    : fail("--sphere " + a.sphere + ": expected cx,cy,cz:r (4 finite numbers)");
     }
     if (!isTriangle && !((*shape)[1][0] > 0.0))
@@ -119,7 +128,9 @@ int runIntersect(const IntersectArgs& a) {
     if (!a.method.empty()) {
         if (isTriangle) {
             const auto m = parseTriangleMethod(a.method);
-            if (!m) return fail("--method " + a.method + ": triangle methods are plane, moller-trumbore, watertight");
+            if (!m)
+                return fail("--method " + a.method +
+                            ": triangle methods are plane, moller-trumbore, watertight");
             tm = *m;
         } else {
             const auto m = parseSphereMethod(a.method);
@@ -161,16 +172,18 @@ int runIntersect(const IntersectArgs& a) {
         std::printf("sphere     centre %s  radius %s\n", p(vec((*shape)[0])).c_str(),
                     isFloat ? fmt(float((*shape)[1][0])).c_str() : fmt((*shape)[1][0]).c_str());
     std::printf("method     %s, in %s\n\n", methodName.c_str(), a.precision.c_str());
-    for (const auto& s : r.log.steps) std::printf("  %-20s %s\n", s.name, fmtStep(s, isFloat).c_str());
+    for (const auto& s : r.log.steps)
+        std::printf("  %-20s %s\n", s.name, fmtStep(s, isFloat).c_str());
     std::printf("\n");
     const auto num = [&](double x) { return isFloat ? fmt(float(x)) : fmt(x); };
     if (!r.hit) {
         std::printf("result     miss\n");
     } else if (isTriangle) {
-        std::printf("result     hit at t = %s\n           point %s\n"
-                    "           barycentric u = %s, v = %s (weights of a, b, c: %s, %s, %s)\n",
-                    num(r.t).c_str(), p(r.point).c_str(), num(r.u).c_str(), num(r.v).c_str(),
-                    num(1 - r.u - r.v).c_str(), num(r.u).c_str(), num(r.v).c_str());
+        std::printf(
+            "result     hit at t = %s\n           point %s\n"
+            "           barycentric u = %s, v = %s (weights of a, b, c: %s, %s, %s)\n",
+            num(r.t).c_str(), p(r.point).c_str(), num(r.u).c_str(), num(r.v).c_str(),
+            num(1 - r.u - r.v).c_str(), num(r.u).c_str(), num(r.v).c_str());
     } else {
         std::printf("result     hit at t = %s\n           point %s\n", num(r.t).c_str(),
                     p(r.point).c_str());

@@ -11,13 +11,13 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <tbb/info.h>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
-#include <tbb/info.h>
 
 namespace {
 
@@ -66,18 +66,21 @@ int listScenes() {
 }
 
 int runRender(const RenderArgs& a) {
-    const std::string output = a.output.empty() ? std::filesystem::path(a.scene).stem().string() + ".png"
-                                                : a.output;
-    if (!hasExtension(output, ".png")) return fail("-o " + output + ": the image is written as PNG; name it *.png");
+    const std::string output =
+        a.output.empty() ? std::filesystem::path(a.scene).stem().string() + ".png" : a.output;
+    if (!hasExtension(output, ".png"))
+        return fail("-o " + output + ": the image is written as PNG; name it *.png");
     if (!a.heatmap.empty() && !hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
     for (const auto& [opt, path] : {std::pair<std::string, std::string>{"-o", output},
-                                    {"--stats", a.stats}, {"--heatmap", a.heatmap}}) {
+                                    {"--stats", a.stats},
+                                    {"--heatmap", a.heatmap}}) {
         if (path.empty()) continue;
         if (auto problem = checkWritable(opt, path)) return fail(*problem);
     }
     const auto accelKind = parseAccelKind(a.accel);
-    if (!accelKind) return fail("--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh");
+    if (!accelKind)
+        return fail("--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh");
     KernelOptions kernels;
     const auto precision = parsePrecision(a.precision);
     if (!precision) return fail("--precision " + a.precision + ": expected float or double");
@@ -85,9 +88,11 @@ int runRender(const RenderArgs& a) {
     if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
     const auto triangleMethod = parseTriangleMethod(a.triangleMethod);
     if (!triangleMethod)
-        return fail("--triangle-method " + a.triangleMethod + ": expected plane, moller-trumbore or watertight");
+        return fail("--triangle-method " + a.triangleMethod +
+                    ": expected plane, moller-trumbore or watertight");
     const auto sphereMethod = parseSphereMethod(a.sphereMethod);
-    if (!sphereMethod) return fail("--sphere-method " + a.sphereMethod + ": expected textbook or stable");
+    if (!sphereMethod)
+        return fail("--sphere-method " + a.sphereMethod + ": expected textbook or stable");
     kernels = {*precision, *sphereMethod, *triangleMethod};
 
     Scene scene;
@@ -180,27 +185,33 @@ int main(int argc, char** argv) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");
     render->add_option("scene", r.scene, "Built-in scene name or scene file (default: default)");
     render->add_option("-o,--output", r.output, "Output PNG (default: <scene>.png)");
-    render->add_option("--width", r.width, "Image width in pixels")->check(CLI::Range(1, kMaxImageSide));
-    render->add_option("--height", r.height, "Image height in pixels")->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--width", r.width, "Image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--height", r.height, "Image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
     render->add_option("--bounces", r.bounces, "Depth of secondary rays (0 = primary rays only)")
         ->check(CLI::Range(0, 64));
     render->add_option("--spp", r.spp, "Jittered samples per pixel")->check(CLI::Range(1, 4096));
-    render->add_option("--diffuse-samples", r.diffuseSamples,
-                       "Random diffuse bounce rays at the first diffuse hit (0 = none)")
+    render
+        ->add_option("--diffuse-samples", r.diffuseSamples,
+                     "Random diffuse bounce rays at the first diffuse hit (0 = none)")
         ->check(CLI::Range(0, 1024));
     render->add_option("--accel", r.accel, "Accelerator: bruteforce, grid, kdtree or bvh")
         ->capture_default_str();
     render->add_option("--precision", r.precision, "Intersection arithmetic: float or double")
         ->capture_default_str();
-    render->add_option("--ray-offset", r.rayOffset,
-                       "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
+    render
+        ->add_option("--ray-offset", r.rayOffset,
+                     "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
         ->capture_default_str();
-    render->add_option("--triangle-method", r.triangleMethod,
-                       "Ray-triangle test: plane, moller-trumbore or watertight")
+    render
+        ->add_option("--triangle-method", r.triangleMethod,
+                     "Ray-triangle test: plane, moller-trumbore or watertight")
         ->capture_default_str();
     render->add_option("--sphere-method", r.sphereMethod, "Ray-sphere test: textbook or stable")
         ->capture_default_str();
-    render->add_option("--threads", r.threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
+    render->add_option("--threads", r.threads, "Threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
     render->add_option("--seed", r.seed, "Seed of the random numbers")->capture_default_str();
     render->add_option("--stats", r.stats, "Write ray counts and timings as JSON");
     render->add_option("--heatmap", r.heatmap, "Write primitive tests per pixel as a PNG heat map");
@@ -209,7 +220,8 @@ int main(int argc, char** argv) {
     const std::string first = argc > 1 ? argv[1] : "";
     if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render" &&
         first != "intersect")
-        return fail(std::string("unknown command '") + argv[1] + "' (expected: scenes, render, intersect)");
+        return fail(std::string("unknown command '") + argv[1] +
+                    "' (expected: scenes, render, intersect)");
     cli::IntersectArgs intersectArgs;
     cli::addIntersectCommand(app, intersectArgs);
 

@@ -11,7 +11,9 @@ ProgressBar::ProgressBar(std::string label)
       enabled_(::isatty(STDERR_FILENO) == 1),
       start_(std::chrono::steady_clock::now()) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+    finish();
+}
 
 bool ProgressBar::update(double fraction) {
     if (!enabled_ || finished_) return true;

@@ -6,14 +6,14 @@
 namespace raystep::cli {
 
 class ProgressBar {
-public:
+  public:
     explicit ProgressBar(std::string label);
     ~ProgressBar();
     /// Redraws when the shown percentage changes; always returns true (never cancels).
     bool update(double fraction);
     void finish();
 
-private:
+  private:
     std::string label_;
     bool enabled_;
     int lastPercent_ = -1;

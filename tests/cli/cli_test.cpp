@@ -1,8 +1,8 @@
 // raystep-cli end to end, as a lecturer's script would call it: exit codes, one-line errors,
 // and no output file at all when the input is bad.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
@@ -21,7 +21,7 @@ struct CliRun {
 };
 
 class Cli : public ::testing::Test {
-protected:
+  protected:
     fs::path dir = fs::temp_directory_path() /
                    ("raystep-cli-" + std::to_string(::getpid()) + "-" +
                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -39,7 +39,7 @@ protected:
                                 args + " > out.txt 2> err.txt < /dev/null";
         const int status = std::system(cmd.c_str());
         CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
-              slurp(dir / "err.txt")};
+                 slurp(dir / "err.txt")};
         fs::remove(dir / "out.txt");
         fs::remove(dir / "err.txt");
         return r;
@@ -53,7 +53,9 @@ protected:
         EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
         EXPECT_TRUE(fs::is_empty(dir)) << "bad input left files behind: " << args;
     }
-    void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
+    void write(const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+    }
 };
 
 TEST_F(Cli, ListsBuiltinScenes) {
@@ -64,8 +66,9 @@ TEST_F(Cli, ListsBuiltinScenes) {
 }
 
 TEST_F(Cli, RendersWithStatsAndHeatmap) {
-    const CliRun r = run("render whitted -o w.png --width 40 --height 30 --spp 4 --bounces 3 "
-                      "--stats s.json --heatmap h.png --threads 2 --seed 7");
+    const CliRun r =
+        run("render whitted -o w.png --width 40 --height 30 --spp 4 --bounces 3 "
+            "--stats s.json --heatmap h.png --threads 2 --seed 7");
     ASSERT_EQ(r.code, 0) << r.err;
     int w = 0, h = 0, n = 0;
     ASSERT_TRUE(stbi_info((dir / "w.png").c_str(), &w, &h, &n));
@@ -199,7 +202,8 @@ TEST_F(Cli, IntersectBadInput) {
     expectBadInput("intersect --ray 0,0,1:0,0,0" + tri, "must not be zero");
     expectBadInput("intersect --ray 0,0,1:0,0,-1 --triangle 0,0,0:1,0,0", "9 finite numbers");
     expectBadInput("intersect --ray 0,0,1:0,0,-1 --sphere 0,0,0:-1", "greater than 0");
-    expectBadInput("intersect --ray 0,0,1:0,0,-1 --sphere 0,0,0:1 --method watertight", "sphere methods");
+    expectBadInput("intersect --ray 0,0,1:0,0,-1 --sphere 0,0,0:1 --method watertight",
+                   "sphere methods");
     expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --method stable", "triangle methods");
     expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --precision half", "--precision half");
     expectBadInput("intersect --ray 0,0,1:0,0,-1" + tri + " --sphere 0,0,0:1", "excludes");
@@ -207,8 +211,9 @@ TEST_F(Cli, IntersectBadInput) {
 }
 
 TEST_F(Cli, RenderNumericOptions) {
-    const CliRun r = run("render default --width 16 --height 12 --precision float --ray-offset epsilon "
-                         "--triangle-method moller-trumbore --sphere-method textbook --stats s.json");
+    const CliRun r =
+        run("render default --width 16 --height 12 --precision float --ray-offset epsilon "
+            "--triangle-method moller-trumbore --sphere-method textbook --stats s.json");
     ASSERT_EQ(r.code, 0) << r.err;
     const auto stats = nlohmann::json::parse(slurp(dir / "s.json"));
     EXPECT_EQ(stats["precision"], "float");

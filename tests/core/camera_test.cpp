@@ -23,10 +23,10 @@ TEST(Camera, RaysThroughCentreEdgesAndCorner) {
     const Ray centre = cam.generateRay(100, 50, 200, 100);
     EXPECT_EQ(centre.origin, Vec3(0.0));
     expectDir(centre, Vec3(0, 0, -1));
-    expectDir(cam.generateRay(100, 0, 200, 100), Vec3(0, 1, -1));    // top edge
-    expectDir(cam.generateRay(100, 100, 200, 100), Vec3(0, -1, -1)); // bottom edge
-    expectDir(cam.generateRay(200, 50, 200, 100), Vec3(2, 0, -1));   // right edge
-    expectDir(cam.generateRay(0, 0, 200, 100), Vec3(-2, 1, -1));     // top-left corner
+    expectDir(cam.generateRay(100, 0, 200, 100), Vec3(0, 1, -1));     // top edge
+    expectDir(cam.generateRay(100, 100, 200, 100), Vec3(0, -1, -1));  // bottom edge
+    expectDir(cam.generateRay(200, 50, 200, 100), Vec3(2, 0, -1));    // right edge
+    expectDir(cam.generateRay(0, 0, 200, 100), Vec3(-2, 1, -1));      // top-left corner
 }
 
 TEST(Camera, FrameFollowsLookAtAndUp) {

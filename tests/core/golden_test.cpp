@@ -17,7 +17,9 @@ struct GoldenCase {
     int width, height, spp, bounces, diffuseSamples;
 };
 
-void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.scene; }
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+    *os << c.scene;
+}
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
 

@@ -13,9 +13,9 @@ namespace {
 TEST(Image, LinearToSrgb) {
     EXPECT_EQ(linearToSrgb8(0.0), 0);
     EXPECT_EQ(linearToSrgb8(1.0), 255);
-    EXPECT_EQ(linearToSrgb8(0.5), 188);    // 1.055 * 0.5^(1/2.4) - 0.055 = 0.73536 -> 187.52
-    EXPECT_EQ(linearToSrgb8(0.001), 3);    // linear segment: 12.92 * 0.001 * 255 = 3.29
-    EXPECT_EQ(linearToSrgb8(0.2), 124);    // 1.055 * 0.2^(1/2.4) - 0.055 = 0.48453 -> 123.56
+    EXPECT_EQ(linearToSrgb8(0.5), 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.73536 -> 187.52
+    EXPECT_EQ(linearToSrgb8(0.001), 3);  // linear segment: 12.92 * 0.001 * 255 = 3.29
+    EXPECT_EQ(linearToSrgb8(0.2), 124);  // 1.055 * 0.2^(1/2.4) - 0.055 = 0.48453 -> 123.56
     EXPECT_EQ(linearToSrgb8(-0.5), 0);
     EXPECT_EQ(linearToSrgb8(7.0), 255);
     EXPECT_EQ(linearToSrgb8(std::nan("")), 0);
@@ -35,7 +35,7 @@ TEST(Image, HeatmapScaleEndsAndStops) {
 }
 
 class ImageFiles : public ::testing::Test {
-protected:
+  protected:
     std::filesystem::path dir =
         std::filesystem::temp_directory_path() / ("raystep-image-" + std::to_string(::getpid()));
     void SetUp() override { std::filesystem::create_directories(dir); }

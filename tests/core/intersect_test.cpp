@@ -51,7 +51,12 @@ std::vector<TriangleCase> triangleCases() {
         {"ZeroAreaTriangle", {0.5, 0, 1}, {0, 0, -1}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}},
         {"NeedleTriangleInside", {0.75, std::ldexp(1.0, -22), 1}, {0, 0, -1}, a, b, {1, n, 0}},
         {"NeedleTriangleJustOutside", {0.75, n, 1}, {0, 0, -1}, a, b, {1, n, 0}},
-        {"TinyGeometry1e-9", {0.25 * tiny, 0.5 * tiny, tiny}, {0, 0, -1}, a * tiny, b * tiny, c * tiny},
+        {"TinyGeometry1e-9",
+         {0.25 * tiny, 0.5 * tiny, tiny},
+         {0, 0, -1},
+         a * tiny,
+         b * tiny,
+         c * tiny},
         {"FarOffset1e6", far + D3(0.25, 0.5, 1), {0, 0, -1}, far + a, far + b, far + c},
         {"FarOffsetOblique1e6", far + D3(-1, -2, 3), {1.25, 2.5, -3}, far + a, far + b, far + c},
         {"ThroughEdgeMidpoint", {0.5, 0.5, 1}, {0, 0, -1}, a, b, c},
@@ -118,8 +123,8 @@ TYPED_TEST(TriangleKernels, NamedCasesAgainstExactArithmetic) {
         for (TriangleMethod m :
              {TriangleMethod::Plane, TriangleMethod::MollerTrumbore, TriangleMethod::Watertight}) {
             SCOPED_TRACE(tc.name + " / " + std::string(name(m)));
-            const auto h = intersectTriangle<T>(m, tv<T>(o), tv<T>(d), tv<T>(a), tv<T>(b),
-                                                tv<T>(c), T(0), inf);
+            const auto h = intersectTriangle<T>(m, tv<T>(o), tv<T>(d), tv<T>(a), tv<T>(b), tv<T>(c),
+                                                T(0), inf);
             // Edges and vertices: only the watertight test promises the exact closed triangle;
             // the others may fall either way by one rounding there (their crack rate is measured
             // in bench/ and docs/accuracy.md).
@@ -148,15 +153,20 @@ TYPED_TEST(SphereKernels, NamedCasesAgainstFiftyDigits) {
         if (std::is_same_v<T, float> && sc.name == "FarOblique1e8") continue;
         const auto t = intersectSphereStable<T>(tv<T>(o), tv<T>(d), tv<T>(c), T(r), T(0), inf);
         ASSERT_EQ(t.has_value(), ref.hit);
-        if (ref.hit) EXPECT_NEAR(double(*t), ref.t, tTolerance<T>() * ref.t);
+        if (ref.hit) {
+            EXPECT_NEAR(double(*t), ref.t, tTolerance<T>() * ref.t);
+        }
         // The textbook quadratic agrees on hit or miss everywhere but at the extremes.
         const bool extreme = sc.name.find("1e8") != std::string::npos ||
                              sc.name.find("1e-9") != std::string::npos ||
                              sc.name.find("Tangent") != std::string::npos;
         if (!extreme) {
-            const auto tb = intersectSphereTextbook<T>(tv<T>(o), tv<T>(d), tv<T>(c), T(r), T(0), inf);
+            const auto tb =
+                intersectSphereTextbook<T>(tv<T>(o), tv<T>(d), tv<T>(c), T(r), T(0), inf);
             ASSERT_EQ(tb.has_value(), ref.hit);
-            if (ref.hit) EXPECT_NEAR(double(*tb), ref.t, 1e3 * tTolerance<T>() * ref.t);
+            if (ref.hit) {
+                EXPECT_NEAR(double(*tb), ref.t, 1e3 * tTolerance<T>() * ref.t);
+            }
         }
     }
 }
@@ -173,7 +183,8 @@ TEST(SphereKernels, TextbookLosesTheFarSphereStableKeepsIt) {
 }
 
 TEST(SphereKernels, TextbookLosesTheTinySphere) {
-    // Radius 1e-9 at distance 1: t = 1 - 1e-9. c = 1 - 1e-18 rounds to 1 and the textbook root is 1.
+    // Radius 1e-9 at distance 1: t = 1 - 1e-9. c = 1 - 1e-18 rounds to 1 and the textbook root
+    // is 1.
     const D3 o(0), d(0, 0, 1), c(0, 0, 1);
     const auto textbook = intersectSphereTextbook<double>(o, d, c, 1e-9, 0.0, kInfinity);
     const auto stable = intersectSphereStable<double>(o, d, c, 1e-9, 0.0, kInfinity);
@@ -252,11 +263,13 @@ TYPED_TEST(TriangleKernels, WatertightNeverMissesSharedEdgesOrVertices) {
             }
             const std::vector<int> faces = facesSeeing(o, v0, v1);
             if (faces.empty()) continue;
-            const D3 target = vertex ? m.v[v0] : m.v[v0] + (0.05 + 0.9 * rng.uniform()) * (m.v[v1] - m.v[v0]);
+            const D3 target =
+                vertex ? m.v[v0] : m.v[v0] + (0.05 + 0.9 * rng.uniform()) * (m.v[v1] - m.v[v0]);
             const D3 d = D3(tv<T>(target)) - D3(tv<T>(o));
             ++tested;
             ASSERT_GE(hitsAmong<T>(m, faces, o, d, TriangleMethod::Watertight), 1)
-                << "crack at scale " << scale << (vertex ? " through a vertex" : " through an edge");
+                << "crack at scale " << scale
+                << (vertex ? " through a vertex" : " through an edge");
         }
         EXPECT_GT(tested, 2000);
     }
@@ -276,16 +289,19 @@ TYPED_TEST(BoxKernel, ZeroComponentsOfBothSignsNeverMakeNaN) {
     for (T zero : {T(0.0), T(-0.0)}) {
         // Inside the x slab (even on its face x = 0), moving along z only.
         for (T x : {T(0), T(0.5), T(1)}) {
-            const auto r = intersectBox<T>(TVec3<T>(x, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf);
+            const auto r =
+                intersectBox<T>(TVec3<T>(x, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf);
             ASSERT_TRUE(r);
             EXPECT_FALSE(std::isnan(r->first) || std::isnan(r->second));
-            EXPECT_EQ(r->first, T(2));                        // enters at z = 0
-            EXPECT_GE(r->second, T(3));                       // leaves at z = 1 (widened)
+            EXPECT_EQ(r->first, T(2));   // enters at z = 0
+            EXPECT_GE(r->second, T(3));  // leaves at z = 1 (widened)
             EXPECT_LE(r->second, T(3) * (1 + 4 * std::numeric_limits<T>::epsilon()));
         }
         // Outside the x slab with a zero x component: parallel and outside, a miss.
-        EXPECT_FALSE(intersectBox<T>(TVec3<T>(1.5, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf));
-        EXPECT_FALSE(intersectBox<T>(TVec3<T>(-0.5, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf));
+        EXPECT_FALSE(
+            intersectBox<T>(TVec3<T>(1.5, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf));
+        EXPECT_FALSE(
+            intersectBox<T>(TVec3<T>(-0.5, 0.5, -2), TVec3<T>(zero, zero, 1), lo, hi, T(0), inf));
     }
 }
 
@@ -296,7 +312,8 @@ TYPED_TEST(BoxKernel, AgainstExactSlabs) {
     const TVec3<T> lo(-1, -2, -0.5), hi(2, 1, 0.5);
     int disagreements = 0;
     for (int i = 0; i < 20000; ++i) {
-        const TVec3<T> o(T(6 * rng.uniform() - 3), T(6 * rng.uniform() - 3), T(6 * rng.uniform() - 3));
+        const TVec3<T> o(T(6 * rng.uniform() - 3), T(6 * rng.uniform() - 3),
+                         T(6 * rng.uniform() - 3));
         TVec3<T> d(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5));
         if (i % 3 == 0) d[i % 3 == 0 ? (i / 3) % 3 : 0] = (i % 2) ? T(0.0) : T(-0.0);
         // Exact: intersect the three slab intervals in rationals.
@@ -308,8 +325,10 @@ TYPED_TEST(BoxKernel, AgainstExactSlabs) {
                 miss = o[k] < lo[k] || o[k] > hi[k];
                 continue;
             }
-            Rational t0 = (Rational(double(lo[k])) - Rational(double(o[k]))) / Rational(double(d[k]));
-            Rational t1 = (Rational(double(hi[k])) - Rational(double(o[k]))) / Rational(double(d[k]));
+            Rational t0 =
+                (Rational(double(lo[k])) - Rational(double(o[k]))) / Rational(double(d[k]));
+            Rational t1 =
+                (Rational(double(hi[k])) - Rational(double(o[k]))) / Rational(double(d[k]));
             if (t0 > t1) std::swap(t0, t1);
             if (t0 > tNear) tNear = t0;
             if (unbounded || t1 < tFar) tFar = t1;
@@ -322,7 +341,9 @@ TYPED_TEST(BoxKernel, AgainstExactSlabs) {
             EXPECT_LE(r->first, r->second);
         }
         // Conservative: every exact hit is found; a false hit may only be a grazing one.
-        if (exactHit) ASSERT_TRUE(r.has_value()) << i;
+        if (exactHit) {
+            ASSERT_TRUE(r.has_value()) << i;
+        }
         disagreements += exactHit != r.has_value();
     }
     EXPECT_LE(disagreements, 2);
@@ -336,19 +357,21 @@ TYPED_TEST(TriangleKernels, RobustOffsetClearsTheSurfaceAtEveryScale) {
     using T = TypeParam;
     for (double scale : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
         const D3 shift = D3(0.37, -0.21, 0.73) * scale * 10.0;
-        const D3 a = rounded<T>(shift + D3(0, 0, 0) * scale), b = rounded<T>(shift + D3(1, 0.2, 0.1) * scale),
+        const D3 a = rounded<T>(shift + D3(0, 0, 0) * scale),
+                 b = rounded<T>(shift + D3(1, 0.2, 0.1) * scale),
                  c = rounded<T>(shift + D3(0.3, 1, -0.2) * scale);
         const TVec3<T> n = glm::normalize(glm::cross(tv<T>(b) - tv<T>(a), tv<T>(c) - tv<T>(a)));
         Pcg32 rng(5, 5);
         for (int i = 0; i < 2000; ++i) {
             const T u = T(0.05 + 0.4 * rng.uniform()), v = T(0.05 + 0.4 * rng.uniform());
             const PointWithError<T> pe = trianglePoint<T>(tv<T>(a), tv<T>(b), tv<T>(c), u, v);
-            TVec3<T> w = glm::normalize(TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
+            TVec3<T> w = glm::normalize(
+                TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
             if (std::abs(glm::dot(w, n)) < T(1e-3)) continue;
             const TVec3<T> origin = offsetRayOrigin<T>(pe, n, w);
             for (TriangleMethod m : {TriangleMethod::MollerTrumbore, TriangleMethod::Watertight}) {
-                const auto self = intersectTriangle<T>(m, origin, w, tv<T>(a), tv<T>(b), tv<T>(c), T(0),
-                                                       std::numeric_limits<T>::infinity());
+                const auto self = intersectTriangle<T>(m, origin, w, tv<T>(a), tv<T>(b), tv<T>(c),
+                                                       T(0), std::numeric_limits<T>::infinity());
                 ASSERT_FALSE(self) << "self-hit at scale " << scale << " with " << name(m);
             }
         }
@@ -365,21 +388,26 @@ TYPED_TEST(SphereKernels, RobustOffsetClearsTheSurfaceAtEveryScale) {
         const T radius = T(scale);
         Pcg32 rng(8, 8);
         for (int i = 0; i < 2000; ++i) {
-            const TVec3<T> dir = glm::normalize(TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
-            const TVec3<T> o = centre - dir * (radius * T(3)) + TVec3<T>(T(0.3 * scale * rng.uniform()));
+            const TVec3<T> dir = glm::normalize(
+                TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
+            const TVec3<T> o =
+                centre - dir * (radius * T(3)) + TVec3<T>(T(0.3 * scale * rng.uniform()));
             const auto t = intersectSphereStable<T>(o, dir, centre, radius, T(0), inf);
             if (!t) continue;
             const PointWithError<T> pe = spherePoint<T>(o, dir, *t, centre, radius);
             const TVec3<T> n = glm::normalize(pe.p - centre);
-            const TVec3<T> w = glm::normalize(TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
+            const TVec3<T> w = glm::normalize(
+                TVec3<T>(T(rng.uniform() - 0.5), T(rng.uniform() - 0.5), T(rng.uniform() - 0.5)));
             const T cosine = glm::dot(w, n);
             if (std::abs(cosine) < T(1e-2)) continue;
-            const auto again = intersectSphereStable<T>(offsetRayOrigin<T>(pe, n, w), w, centre, radius, T(0), inf);
+            const auto again = intersectSphereStable<T>(offsetRayOrigin<T>(pe, n, w), w, centre,
+                                                        radius, T(0), inf);
             if (cosine > 0) {
                 ASSERT_FALSE(again) << "self-hit leaving the sphere at scale " << scale;
             } else {
                 ASSERT_TRUE(again) << "lost the far side at scale " << scale;
-                ASSERT_GT(*again, T(0.5) * T(2) * radius * -cosine) << "self-hit at scale " << scale;
+                ASSERT_GT(*again, T(0.5) * T(2) * radius * -cosine)
+                    << "self-hit at scale " << scale;
             }
         }
     }

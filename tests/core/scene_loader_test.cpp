@@ -123,10 +123,9 @@ TEST(SceneLoader, ReadsEveryKey) {
 
 TEST(SceneLoader, TinyAndHugeScenesLoadAlike) {
     // The same scene at 1e-12 and 1e12: no absolute tolerance may reject either.
-    for (const char* text :
-         {R"({"camera": {"eye": [0, 0, 5e-12], "look_at": [0, 0, 0]},
+    for (const char* text : {R"({"camera": {"eye": [0, 0, 5e-12], "look_at": [0, 0, 0]},
               "objects": [{"type": "sphere", "radius": 1e-12}]})",
-          R"({"camera": {"eye": [0, 0, 5e12], "look_at": [0, 0, 0]},
+                             R"({"camera": {"eye": [0, 0, 5e12], "look_at": [0, 0, 0]},
               "objects": [{"type": "sphere", "radius": 1e12}]})"}) {
         const Scene s = load(text);
         const Ray r = s.camera.generateRay(32, 24, 64, 48);
@@ -138,16 +137,16 @@ TEST(SceneLoader, CheckerAlternatesInCubes) {
     Material m;
     m.kd = Color(1.0);
     m.checker = {true, Color(0.0), 2.0};
-    EXPECT_EQ(m.diffuseAt(Vec3(0.5, 0.0, 0.5)), Color(1.0));  // cube (0,0,0): even
-    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 0.5)), Color(0.0));  // cube (1,0,0): odd
-    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 2.5)), Color(1.0));  // cube (1,0,1): even
-    EXPECT_EQ(m.diffuseAt(Vec3(-0.5, 0.0, 0.5)), Color(0.0)); // cube (-1,0,0): odd
+    EXPECT_EQ(m.diffuseAt(Vec3(0.5, 0.0, 0.5)), Color(1.0));   // cube (0,0,0): even
+    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 0.5)), Color(0.0));   // cube (1,0,0): odd
+    EXPECT_EQ(m.diffuseAt(Vec3(2.5, 0.0, 2.5)), Color(1.0));   // cube (1,0,1): even
+    EXPECT_EQ(m.diffuseAt(Vec3(-0.5, 0.0, 0.5)), Color(0.0));  // cube (-1,0,0): odd
 }
 
 TEST(SceneLoader, MeshFromObjWithTransform) {
     const std::string obj =
         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-        "f 1 2 3 4\n"   // a quad: triangulated into two
+        "f 1 2 3 4\n"          // a quad: triangulated into two
         "v 2 2 2\nf 1 1 5\n";  // a degenerate triangle: dropped and counted
     const FileResolver resolver = [&](const std::string& name) {
         return name == "quad.obj" ? std::optional<std::string>(obj) : std::nullopt;
@@ -172,7 +171,8 @@ TEST(SceneLoader, MeshFromObjWithTransform) {
 
 TEST(SceneLoader, FileResolvesMeshesBesideIt) {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("raystep-loader-" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("raystep-loader-" + std::to_string(::getpid()));
     fs::create_directories(dir / "meshes");
     std::ofstream(dir / "meshes" / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     std::ofstream(dir / "scene.json")
@@ -205,7 +205,9 @@ struct BadCase {
     const char* message;
 };
 
-void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BadCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 class SceneLoaderBadInput : public ::testing::TestWithParam<BadCase> {};
 
@@ -213,9 +215,12 @@ TEST_P(SceneLoaderBadInput, FailsWithFileLineAndKey) {
     const BadCase& c = GetParam();
     const FileResolver resolver = [](const std::string& name) {
         if (name == "empty.obj") return std::optional<std::string>("# nothing\n");
-        if (name == "nan.obj") return std::optional<std::string>("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
-        if (name == "inf.obj") return std::optional<std::string>("v 0 0 1e999\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-        if (name == "index.obj") return std::optional<std::string>("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+        if (name == "nan.obj")
+            return std::optional<std::string>("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+        if (name == "inf.obj")
+            return std::optional<std::string>("v 0 0 1e999\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        if (name == "index.obj")
+            return std::optional<std::string>("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
         return std::optional<std::string>();
     };
     try {
@@ -236,14 +241,15 @@ TEST_P(SceneLoaderBadInput, FailsWithFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, SceneLoaderBadInput,
     ::testing::Values(
-        BadCase{"MalformedJson", "{\n  \"objects\": [\n    {\"type\": \"sphere\",, }\n  ]\n}", 3, "",
-                "malformed JSON"},
+        BadCase{"MalformedJson", "{\n  \"objects\": [\n    {\"type\": \"sphere\",, }\n  ]\n}", 3,
+                "", "malformed JSON"},
         BadCase{"TrailingGarbage", "{\"objects\": []}\n}", 2, "", "malformed JSON"},
         BadCase{"NaNLiteral", "{\"objects\": [\n{\"type\": \"sphere\", \"radius\": NaN}]}", 2, "",
                 "malformed JSON"},
         BadCase{"NotAnObject", "[1, 2]", 1, "", "one JSON object"},
-        BadCase{"UnknownTopKey", "{\n\"objects\": [{\"type\": \"sphere\", \"radius\": 1}],\n\"lihgts\": []}",
-                3, "lihgts", "unknown key"},
+        BadCase{"UnknownTopKey",
+                "{\n\"objects\": [{\"type\": \"sphere\", \"radius\": 1}],\n\"lihgts\": []}", 3,
+                "lihgts", "unknown key"},
         BadCase{"UnknownSphereKey",
                 "{\"objects\": [\n{\"type\": \"sphere\",\n \"radius\": 1,\n \"colour\": 1}]}", 4,
                 "objects[0].colour", "unknown key"},
@@ -253,46 +259,54 @@ INSTANTIATE_TEST_SUITE_P(
                 "objects[0].radius", "greater than 0"},
         BadCase{"ZeroRadius", "{\"objects\": [{\"type\": \"sphere\", \"radius\": 0}]}", 1,
                 "objects[0].radius", "greater than 0"},
-        BadCase{"InfiniteNumber",
-                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"center\": [0, 1e999, 0]}]}",
-                2, "", "number '1e999' is out of range"},
+        BadCase{
+            "InfiniteNumber",
+            "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"center\": [0, 1e999, 0]}]}", 2,
+            "", "number '1e999' is out of range"},
         BadCase{"EmptyScene", "{\"objects\": []}", 1, "objects", "empty"},
         BadCase{"NoObjectsKey", "{\"background\": 0.5}", 1, "objects", "empty"},
         BadCase{"CameraWithoutDirection",
-                "{\"camera\": {\"eye\": [1, 2, 3],\n \"look_at\": [1, 2, 3]},\n\"objects\": [{\"type\": "
+                "{\"camera\": {\"eye\": [1, 2, 3],\n \"look_at\": [1, 2, 3]},\n\"objects\": "
+                "[{\"type\": "
                 "\"sphere\", \"radius\": 1}]}",
                 2, "camera.look_at", "no direction"},
         BadCase{"UpParallelToView",
                 "{\"camera\": {\"eye\": [0, 5, 0], \"look_at\": [0, 0, 0],\n\"up\": [0, 1, 0]},\n"
                 "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
                 2, "camera.up", "parallel"},
-        BadCase{"FovTooWide", "{\"camera\": {\n\"fov\": 180}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
-                2, "camera.fov", "below 180"},
+        BadCase{
+            "FovTooWide",
+            "{\"camera\": {\n\"fov\": 180}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+            2, "camera.fov", "below 180"},
         BadCase{"ImageOverCap",
-                "{\"render\": {\"width\": 100000}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+                "{\"render\": {\"width\": 100000}, \"objects\": [{\"type\": \"sphere\", "
+                "\"radius\": 1}]}",
                 1, "render.width", "between 1 and 8192"},
-        BadCase{"ZeroHeight",
-                "{\"render\": {\n\"height\": 0}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
-                2, "render.height", "between 1 and 8192"},
-        BadCase{"FractionalSpp",
-                "{\"render\": {\"spp\": 2.5}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}", 1,
-                "render.spp", "whole number"},
-        BadCase{"MissingObj", "{\"objects\": [\n{\"type\": \"mesh\",\n\"file\": \"missing.obj\"}]}", 3,
-                "objects[0].file", "cannot open OBJ file 'missing.obj'"},
+        BadCase{
+            "ZeroHeight",
+            "{\"render\": {\n\"height\": 0}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}",
+            2, "render.height", "between 1 and 8192"},
+        BadCase{
+            "FractionalSpp",
+            "{\"render\": {\"spp\": 2.5}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}", 1,
+            "render.spp", "whole number"},
+        BadCase{"MissingObj", "{\"objects\": [\n{\"type\": \"mesh\",\n\"file\": \"missing.obj\"}]}",
+                3, "objects[0].file", "cannot open OBJ file 'missing.obj'"},
         BadCase{"EmptyObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"empty.obj\"}]}", 1,
                 "objects[0].file", "no triangles"},
         BadCase{"NanInObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"nan.obj\"}]}", 1,
                 "objects[0].file", "line 2: vertex coordinate 'nan' is not a finite number"},
         BadCase{"InfinityInObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"inf.obj\"}]}", 1,
                 "objects[0].file", "line 1: vertex coordinate '1e999'"},
-        BadCase{"ObjIndexOutOfRange", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"index.obj\"}]}", 1,
+        BadCase{"ObjIndexOutOfRange",
+                "{\"objects\": [{\"type\": \"mesh\", \"file\": \"index.obj\"}]}", 1,
                 "objects[0].file", "out of range"},
         BadCase{"ZeroMeshScale",
                 "{\"objects\": [{\"type\": \"mesh\", \"file\": \"x.obj\",\n\"scale\": 0}]}", 2,
                 "objects[0].scale", "must not be zero"},
         BadCase{"UnknownMaterial",
-                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"material\": \"gold\"}]}", 2,
-                "objects[0].material", "no material named 'gold'"},
+                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"material\": \"gold\"}]}",
+                2, "objects[0].material", "no material named 'gold'"},
         BadCase{"KdAboveOne",
                 "{\"materials\": {\"m\": {\n\"kd\": [0.5, 1.5, 0.5]}}, \"objects\": [{\"type\": "
                 "\"sphere\", \"radius\": 1}]}",
@@ -308,9 +322,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "{\"materials\": {\"m\": {\"checker\": {\n\"size\": 0}}}, \"objects\": [{\"type\": "
                 "\"sphere\", \"radius\": 1}]}",
                 2, "materials.m.checker.size", "greater than 0"},
-        BadCase{"ZeroAreaTriangle",
-                "{\"objects\": [{\"type\": \"triangle\",\n\"vertices\": [[0,0,0],[1,1,1],[2,2,2]]}]}", 2,
-                "objects[0].vertices", "zero area"},
+        BadCase{
+            "ZeroAreaTriangle",
+            "{\"objects\": [{\"type\": \"triangle\",\n\"vertices\": [[0,0,0],[1,1,1],[2,2,2]]}]}",
+            2, "objects[0].vertices", "zero area"},
         BadCase{"TriangleWithTwoVertices",
                 "{\"objects\": [{\"type\": \"triangle\", \"vertices\": [[0,0,0],[1,1,1]]}]}", 1,
                 "objects[0].vertices", "3 vertices"},

@@ -1,32 +1,30 @@
 // The local model and the secondary-ray directions against values computed by hand.
-#include "raystep/rng.h"
 #include "raystep/shading.h"
+#include "raystep/rng.h"
+
+#include "expect_color.h"
 
 #include <gtest/gtest.h>
 
 namespace raystep {
 namespace {
 
-void expectColor(const Color& c, const Color& e, double tol = 1e-12) {
-    EXPECT_NEAR(c.r, e.r, tol);
-    EXPECT_NEAR(c.g, e.g, tol);
-    EXPECT_NEAR(c.b, e.b, tol);
-}
+using test::expectColor;
 
 TEST(Phong, DiffuseAndSpecularByHand) {
     // Light at cos a = 0.8 from the normal; the viewer sits exactly on the mirrored light ray.
     const Vec3 n(0, 0, 1), toLight(0, 0.6, 0.8), toViewer(0, -0.6, 0.8);
     const PhongTerms t = phong(n, toLight, toViewer, Color(1.0), Color(0.5), Color(0.25), 10.0);
-    expectColor(t.diffuse, Color(0.4));   // 1 * 0.5 * 0.8
-    expectColor(t.specular, Color(0.25)); // 1 * 0.25 * 1^10
+    expectColor(t.diffuse, Color(0.4));    // 1 * 0.5 * 0.8
+    expectColor(t.specular, Color(0.25));  // 1 * 0.25 * 1^10
 }
 
 TEST(Phong, SpecularFallsOffAsCosToTheN) {
     // Viewer along the normal: the mirrored light (0, -0.6, 0.8) makes cos b = 0.8; 0.8^2 = 0.64.
     const PhongTerms t = phong(Vec3(0, 0, 1), Vec3(0, 0.6, 0.8), Vec3(0, 0, 1), Color(2, 1, 0),
                                Color(0.5), Color(0.25), 2.0);
-    expectColor(t.diffuse, Color(0.8, 0.4, 0.0));         // I * 0.5 * 0.8 per channel
-    expectColor(t.specular, Color(0.32, 0.16, 0.0));      // I * 0.25 * 0.64
+    expectColor(t.diffuse, Color(0.8, 0.4, 0.0));     // I * 0.5 * 0.8 per channel
+    expectColor(t.specular, Color(0.32, 0.16, 0.0));  // I * 0.25 * 0.64
 }
 
 TEST(Phong, LightBehindGivesNothing) {

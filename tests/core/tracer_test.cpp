@@ -1,17 +1,18 @@
 // The tracer on scenes small enough to shade by hand: each expected colour is worked out in the
 // comment beside it from the lecture's formulas, not from the code under test.
-#include "raystep/scene_loader.h"
 #include "raystep/tracer.h"
+#include "raystep/scene_loader.h"
+
+#include "expect_color.h"
 
 #include <gtest/gtest.h>
 
 namespace raystep {
 namespace {
 
+// Shading sums a handful of terms: agreement to 1e-9 is exact for these purposes.
 void expectColor(const Color& c, const Color& e, double tol = 1e-9) {
-    EXPECT_NEAR(c.r, e.r, tol);
-    EXPECT_NEAR(c.g, e.g, tol);
-    EXPECT_NEAR(c.b, e.b, tol);
+    test::expectColor(c, e, tol);
 }
 
 std::uint32_t addMaterial(Scene& s, Material m) {
@@ -22,8 +23,10 @@ std::uint32_t addMaterial(Scene& s, Material m) {
 
 /// A square of side 2 * half in the plane y = 0, as two triangles.
 void addFloor(Scene& s, std::uint32_t material, double half = 50.0) {
-    s.triangles.push_back({Vec3(-half, 0, -half), Vec3(-half, 0, half), Vec3(half, 0, half), material});
-    s.triangles.push_back({Vec3(-half, 0, -half), Vec3(half, 0, half), Vec3(half, 0, -half), material});
+    s.triangles.push_back(
+        {Vec3(-half, 0, -half), Vec3(-half, 0, half), Vec3(half, 0, half), material});
+    s.triangles.push_back(
+        {Vec3(-half, 0, -half), Vec3(half, 0, half), Vec3(half, 0, -half), material});
 }
 
 struct Traced {
@@ -222,7 +225,8 @@ TEST(Render, SameImageAtEveryScale) {
     for (double scale : {1e-6, 1e-3, 1e3, 1e6}) {
         const std::vector<std::uint8_t> img = renderAt(scale);
         int differ = 0;
-        for (std::size_t i = 0; i < img.size(); ++i) differ += std::abs(int(img[i]) - int(reference[i])) > 2;
+        for (std::size_t i = 0; i < img.size(); ++i)
+            differ += std::abs(int(img[i]) - int(reference[i])) > 2;
         EXPECT_LE(differ, 3) << "scale " << scale;  // a silhouette pixel may round the other way
     }
 }

@@ -20,9 +20,15 @@ struct Reference {
 struct R3 {
     Rational x, y, z;
 };
-inline R3 r3(const glm::dvec3& v) { return {Rational(v.x), Rational(v.y), Rational(v.z)}; }
-inline R3 sub(const R3& a, const R3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Rational dot(const R3& a, const R3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline R3 r3(const glm::dvec3& v) {
+    return {Rational(v.x), Rational(v.y), Rational(v.z)};
+}
+inline R3 sub(const R3& a, const R3& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline Rational dot(const R3& a, const R3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline R3 cross(const R3& a, const R3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
