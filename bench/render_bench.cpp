@@ -11,14 +11,21 @@ using namespace raystep;
 /// One full render per iteration; reports ms per frame and, as rates, millions of rays (all kinds),
 /// of primary rays and of primitive tests a second.
 void renderScene(benchmark::State& state, const char* sceneName, int width, int height, int bounces,
-                 int spp, int diffuseSamples) {
+                 int spp, int diffuseSamples, bool fastKernels = false) {
     const Scene scene = loadBuiltinScene(sceneName);
-    const Accelerator accel = buildAccelerator(scene, AccelKind::BruteForce);
+    // The fast choices: float, Moller-Trumbore, textbook spheres, fixed epsilon (docs/accuracy.md).
+    const KernelOptions kernels = fastKernels
+                                      ? KernelOptions{Precision::Float, SphereMethod::Textbook,
+                                                      TriangleMethod::MollerTrumbore}
+                                      : KernelOptions{};
+    const Accelerator accel = buildAccelerator(scene, AccelKind::BruteForce, kernels);
     RenderOptions opt;
+    opt.trace.rayOffset = fastKernels ? RayOffsetMethod::Epsilon : RayOffsetMethod::Robust;
     opt.width = width;
     opt.height = height;
     opt.spp = spp;
-    opt.trace = {bounces, diffuseSamples};
+    opt.trace.bounces = bounces;
+    opt.trace.diffuseSamples = diffuseSamples;
     opt.threads = static_cast<int>(state.range(0));
     std::uint64_t rays = 0, primary = 0, tests = 0;
     for (auto _ : state) {
@@ -48,6 +55,26 @@ BENCHMARK(BM_Default800x600_BruteForce)
     ->UseRealTime();
 
 // The teapot in a stadium: brute force pays for every one of its 51,212 primitives per ray.
+// The same with the fast numerical choices: the price of the accurate defaults, in one run.
+void BM_Default800x600_BruteForce_FastKernels(benchmark::State& state) {
+    renderScene(state, "default", 800, 600, 2, 1, 0, true);
+}
+BENCHMARK(BM_Default800x600_BruteForce_FastKernels)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_Stadium64x48_BruteForce_FastKernels(benchmark::State& state) {
+    renderScene(state, "stadium", 64, 48, 1, 1, 0, true);
+}
+BENCHMARK(BM_Stadium64x48_BruteForce_FastKernels)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 void BM_Stadium64x48_BruteForce(benchmark::State& state) {
     renderScene(state, "stadium", 64, 48, 1, 1, 0);
 }

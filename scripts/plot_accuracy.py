@@ -4,7 +4,7 @@
 Inputs (made by scripts/measure_accuracy.sh):
   docs/data/accuracy.json        raystep_accuracy --out
   docs/data/kernels_bench.json   raystep_bench_kernels --benchmark_out (Google Benchmark JSON)
-Outputs: docs/images/accuracy-*.svg
+Outputs: docs/images/accuracy-*.png
 """
 import json
 import pathlib
@@ -30,7 +30,7 @@ def line(precision):
 
 def save(fig, name):
     fig.tight_layout()
-    fig.savefig(OUT / name)
+    fig.savefig(OUT / name, dpi=110)
     plt.close(fig)
     print("wrote", OUT / name)
 
@@ -73,7 +73,7 @@ def main():
     ax.set_ylabel("crack rate through shared edges and vertices")
     ax.set_title("Ray-triangle: speed against watertightness")
     ax.grid(True, which="both", alpha=0.3)
-    save(fig, "accuracy-triangle-trade.svg")
+    save(fig, "accuracy-triangle-trade.png")
 
     # Sphere t error against distance.
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -94,7 +94,7 @@ def main():
     ax.set_title("Ray-sphere: textbook quadratic against the stable form")
     ax.legend(fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
-    save(fig, "accuracy-sphere-t-error.svg")
+    save(fig, "accuracy-sphere-t-error.png")
 
     # Acne and leaks against scene scale.
     fig, axes = plt.subplots(1, 2, figsize=(9.6, 3.8), sharex=True)
@@ -111,7 +111,7 @@ def main():
         ax.set_title(title, fontsize=10)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=8)
-    save(fig, "accuracy-acne.svg")
+    save(fig, "accuracy-acne.png")
 
     # Triangle t error per method, precision and scale.
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -127,7 +127,7 @@ def main():
     ax.set_title("Ray-triangle: error of t against exact arithmetic")
     ax.legend(fontsize=8, ncol=2)
     ax.grid(True, which="both", alpha=0.3)
-    save(fig, "accuracy-triangle-t-error.svg")
+    save(fig, "accuracy-triangle-t-error.png")
     print_tables(acc, speeds)
     return 0
 
