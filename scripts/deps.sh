@@ -4,10 +4,10 @@
 
 RAYSTEP_BUILD_PACKAGES=(
   build-essential cmake pkg-config
-  libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev libboost-dev
 )
 RAYSTEP_TEST_PACKAGES=(
-  googletest libgtest-dev libbenchmark-dev libboost-dev
+  googletest libgtest-dev libbenchmark-dev
 )
 
 # ensure_packages PKG...: install those that are not installed yet (apt-get, as root or through sudo).

@@ -1,5 +1,6 @@
 // raystep-cli: the renderer from the command line, for lecturers' scripts and for tests.
 #include "common.h"
+#include "dda_command.h"
 #include "intersect_command.h"
 #include "progress.h"
 
@@ -219,11 +220,13 @@ int main(int argc, char** argv) {
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
     if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render" &&
-        first != "intersect")
+        first != "intersect" && first != "dda")
         return fail(std::string("unknown command '") + argv[1] +
-                    "' (expected: scenes, render, intersect)");
+                    "' (expected: scenes, render, intersect, dda)");
     cli::IntersectArgs intersectArgs;
     cli::addIntersectCommand(app, intersectArgs);
+    cli::DdaArgs ddaArgs;
+    cli::addDdaCommand(app, ddaArgs);
 
     try {
         app.parse(argc, argv);
@@ -237,5 +240,6 @@ int main(int argc, char** argv) {
 
     if (app.got_subcommand("scenes")) return listScenes();
     if (app.got_subcommand("intersect")) return cli::runIntersect(intersectArgs);
+    if (app.got_subcommand("dda")) return cli::runDda(ddaArgs);
     return runRender(r);
 }

@@ -228,4 +228,60 @@ TEST_F(Cli, RenderNumericOptions) {
     expectBadInput("render --sphere-method fast", "--sphere-method fast");
 }
 
+TEST_F(Cli, DdaJsonFollowsTheLecture) {
+    // 4 x 3 unit cells from (0.5, 0.25) along (1, 0.6): tDelta = (1, 1/0.6); by hand the walk is
+    // (0,0) -X-> (1,0) -Y-> (1,1) -X-> (2,1) -X-> (3,1) -Y-> (3,2).
+    const CliRun r = run("dda --grid 4,3 --min 0,0 --max 4,3 --origin 0.5,0.25 --dir 1,0.6 --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto steps = nlohmann::json::parse(r.out)["steps"];
+    ASSERT_EQ(steps.size(), 6u);
+    const int cells[6][2] = {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {3, 1}, {3, 2}};
+    const int axes[6] = {-1, 0, 1, 0, 0, 1};
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(steps[i]["cell"][0], cells[i][0]) << i;
+        EXPECT_EQ(steps[i]["cell"][1], cells[i][1]) << i;
+        if (axes[i] < 0) {
+            EXPECT_TRUE(steps[i]["axis"].is_null());
+        } else {
+            EXPECT_EQ(steps[i]["axis"], axes[i]) << i;
+        }
+        EXPECT_EQ(steps[i]["tDelta"][0], 1.0);
+        EXPECT_NEAR(steps[i]["tDelta"][1].get<double>(), 1 / 0.6, 1e-15);
+    }
+    EXPECT_EQ(steps[0]["tMax"][0], 0.5);                                // (1 - 0.5) / 1
+    EXPECT_NEAR(steps[0]["tMax"][1].get<double>(), 0.75 / 0.6, 1e-15);  // (1 - 0.25) / 0.6
+    EXPECT_EQ(steps[0]["t_enter"], 0.0);
+    EXPECT_EQ(steps[0]["t_exit"], 0.5);
+    EXPECT_EQ(steps[5]["t_exit"], 3.5);  // leaves through x = 4
+}
+
+TEST_F(Cli, DdaTableAndMiss) {
+    CliRun r = run("dda --grid 3,3,3 --min 0,0,0 --max 3,3,3 --origin -1,-1,-1 --dir 1,1,1");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("X+Y+Z (tie: through a grid edge or vertex)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("leaves the grid"), std::string::npos);
+    r = run("dda --grid 3,3 --min 0,0 --max 3,3 --origin -1,5 --dir 1,0 --json");
+    ASSERT_EQ(r.code, 0);
+    EXPECT_TRUE(nlohmann::json::parse(r.out)["steps"].empty());
+}
+
+TEST_F(Cli, DdaBadInput) {
+    const std::string box = " --min 0,0 --max 3,3 --origin 0.5,0.5 --dir 1,1";
+    expectBadInput("dda --grid 3" + box, "NX,NY or NX,NY,NZ");
+    expectBadInput("dda --grid 3,0" + box, "whole numbers");
+    expectBadInput("dda --grid 3,2.5" + box, "whole numbers");
+    expectBadInput("dda --grid 3,3 --min 0,0,0 --max 3,3 --origin 0.5,0.5 --dir 1,1",
+                   "--min 0,0,0");
+    expectBadInput("dda --grid 3,3 --min 0,0 --max 3,-3 --origin 0.5,0.5 --dir 1,1",
+                   "greater than --min");
+    expectBadInput("dda --grid 3,3 --min 0,0 --max 3,3 --origin nan,0.5 --dir 1,1",
+                   "--origin nan,0.5");
+    expectBadInput("dda --grid 3,3 --min 0,0 --max 3,3 --origin 0.5,0.5 --dir 0,0",
+                   "must not be zero");
+    expectBadInput("dda --grid 3,3 --min 0,0 --max 3,1e999 --origin 0.5,0.5 --dir 1,1", "--max");
+    expectBadInput(
+        "dda --grid 3,3 --min 0,0 --max 3,1e300 --origin 0.5,0.5 --dir 1,1 --precision float",
+        "too large for float");
+}
+
 }  // namespace

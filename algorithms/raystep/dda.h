@@ -1,0 +1,235 @@
+#pragma once
+// The 3D-DDA of Amanatides & Woo (1987), in 2D and 3D from one template: walk a regular grid
+// cell by cell along a ray, from one cell boundary to the next. The lecture's variables are all
+// here (X, Y, Z as `cell`, tMax, tDelta, step); what differs from the slides is how the next axis
+// is chosen. `tMaxX < tMaxY` is decided on the crossing times computed afresh from the ray (not
+// summed up step after step, which drifts over hundreds of cells), with a floating-point filter
+// and, when the filter cannot tell, exact rational arithmetic. An exact tie (the ray through a grid
+// vertex or edge) steps every tied axis at once, so a cell the ray only touches is never visited.
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace raystep {
+
+template <int N>
+using IVecN = glm::vec<N, int, glm::defaultp>;
+template <int N, typename T>
+using VecN = glm::vec<N, T, glm::defaultp>;
+
+/// A regular grid over [lo, hi] with res[i] cells along axis i; boundary k of axis i lies at
+/// lo + k (hi - lo) / res, for k = 0 .. res.
+template <int N, typename T = double>
+struct GridSpec {
+    VecN<N, T> lo{T(0)};
+    VecN<N, T> hi{T(1)};
+    IVecN<N> res{1};
+    T cellSize(int axis) const { return (hi[axis] - lo[axis]) / T(res[axis]); }
+};
+
+/// A time along the ray: either a given value (tMin, tMax) or the crossing of boundary k of an
+/// axis, kept symbolic so it can be compared exactly.
+struct Crossing {
+    bool plain = true;
+    double t = 0.0;    // the value (plain), or its floating-point estimate
+    double err = 0.0;  // bound on |t - exact| (0 for plain values)
+    // The exact value is (lo + k (hi - lo) / res - o) / d.
+    double lo = 0.0, hi = 0.0, o = 0.0, d = 1.0;
+    int res = 1;
+    long k = 0;
+};
+
+namespace detail {
+/// Sign of a - b in exact rational arithmetic (the rare case the filter cannot decide).
+int compareCrossingsExact(const Crossing& a, const Crossing& b);
+}  // namespace detail
+
+/// Sign of a - b, exact: floating point when the error bounds separate them, rationals otherwise.
+inline int compareCrossings(const Crossing& a, const Crossing& b) {
+    if (a.t + a.err < b.t - b.err) return -1;
+    if (a.t - a.err > b.t + b.err) return 1;
+    if (a.plain && b.plain) return (a.t > b.t) - (a.t < b.t);
+    return detail::compareCrossingsExact(a, b);
+}
+
+/// The walk itself. Construct it, then read cell() and step with next() until it returns false.
+template <int N, typename T = double>
+class Dda {
+  public:
+    Dda(const GridSpec<N, T>& grid, const VecN<N, T>& origin, const VecN<N, T>& dir, T tMin = T(0),
+        T tMax = std::numeric_limits<T>::infinity())
+        : grid_(grid), o_(origin), d_(dir) {
+        enter_ = plainTime(double(tMin));
+        exit_ = plainTime(double(tMax));
+        for (int i = 0; i < N; ++i) {
+            step_[i] = d_[i] > T(0) ? 1 : (d_[i] < T(0) ? -1 : 0);
+            tDelta_[i] =
+                step_[i] ? std::abs(grid_.cellSize(i) / d_[i]) : std::numeric_limits<T>::infinity();
+            if (step_[i] == 0) {
+                // Parallel to this axis: inside its slab or never in the grid.
+                if (o_[i] < grid_.lo[i] || o_[i] > grid_.hi[i]) return;
+                continue;
+            }
+            // The slab [lo, hi] of this axis: entered at one end boundary, left at the other.
+            const Crossing in = crossing(i, step_[i] > 0 ? 0 : grid_.res[i]);
+            const Crossing out = crossing(i, step_[i] > 0 ? grid_.res[i] : 0);
+            const int cmp = compareCrossings(in, enter_);
+            if (cmp > 0) {
+                enter_ = in;
+                enteredThrough_ = 1u << i;
+            } else if (cmp == 0 && enteredThrough_) {
+                enteredThrough_ |= 1u << i;  // in through a grid edge or corner
+            }
+            if (compareCrossings(out, exit_) < 0) exit_ = out;
+        }
+        // Only an interval of positive length crosses the interior of a cell.
+        if (compareCrossings(enter_, exit_) >= 0) return;
+        for (int i = 0; i < N; ++i) cell_[i] = firstCell(i);
+        valid_ = true;
+        lastAxes_ = enteredThrough_;
+    }
+
+    /// True while the walk is in a cell of the grid.
+    bool valid() const { return valid_; }
+    const IVecN<N>& cell() const { return cell_; }
+    const IVecN<N>& step() const { return step_; }
+    const VecN<N, T>& tDelta() const { return tDelta_; }
+    /// tMax of each axis: where the ray crosses the next boundary of that axis (inf if parallel).
+    VecN<N, T> tMax() const {
+        VecN<N, T> m;
+        for (int i = 0; i < N; ++i)
+            m[i] =
+                step_[i] ? T(crossing(i, nextBoundary(i)).t) : std::numeric_limits<T>::infinity();
+        return m;
+    }
+    /// Where the ray enters and leaves the current cell (clipped to [tMin, tMax]).
+    T tEnter() const { return T(enter_.t); }
+    T tExit() const {
+        const auto [next, axes] = nextCrossing();
+        return T(axes && compareCrossings(next, exit_) < 0 ? next.t : exit_.t);
+    }
+    /// Axes stepped to reach the current cell (a bit each; two or three bits on an exact tie).
+    /// For the first cell: the axis of the grid face the ray came in through, or 0 from inside.
+    unsigned axesTaken() const { return lastAxes_; }
+
+    /// The lecture's step: move to the neighbour across the nearest boundary. False when the ray
+    /// leaves the grid (or reaches tMax) in the current cell.
+    bool next() {
+        if (!valid_) return false;
+        const auto [next, axes] = nextCrossing();
+        if (axes == 0 || compareCrossings(next, exit_) >= 0) {
+            valid_ = false;
+            return false;
+        }
+        for (int i = 0; i < N; ++i) {
+            if (!(axes & (1u << i))) continue;
+            cell_[i] += step_[i];
+            if (cell_[i] < 0 || cell_[i] >= grid_.res[i]) {
+                valid_ = false;
+                return false;
+            }
+        }
+        enter_ = next;
+        lastAxes_ = axes;
+        return true;
+    }
+
+  private:
+    static Crossing plainTime(double t) {
+        Crossing c;
+        c.t = t;
+        return c;
+    }
+
+    /// Crossing of boundary k of `axis`, with a bound on the rounding of its estimate: about
+    /// eight roundings of the magnitudes involved (generous; the exact test settles the rest).
+    Crossing crossing(int axis, long k) const {
+        Crossing c;
+        c.plain = false;
+        c.lo = double(grid_.lo[axis]);
+        c.hi = double(grid_.hi[axis]);
+        c.res = grid_.res[axis];
+        c.k = k;
+        c.o = double(o_[axis]);
+        c.d = double(d_[axis]);
+        const double b = c.lo + double(k) * ((c.hi - c.lo) / c.res);
+        c.t = (b - c.o) / c.d;
+        constexpr double u = std::numeric_limits<double>::epsilon();
+        c.err = 16 * u * (3 * (std::abs(c.lo) + std::abs(c.hi)) + std::abs(c.o)) / std::abs(c.d);
+        return c;
+    }
+    long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
+
+    /// The nearest boundary crossing ahead, and every axis that crosses at that same time.
+    std::pair<Crossing, unsigned> nextCrossing() const {
+        Crossing best;
+        unsigned axes = 0;
+        for (int i = 0; i < N; ++i) {
+            if (!step_[i]) continue;
+            const Crossing c = crossing(i, nextBoundary(i));
+            const int cmp = axes ? compareCrossings(c, best) : -1;
+            if (cmp < 0) {
+                best = c;
+                axes = 1u << i;
+            } else if (cmp == 0) {
+                axes |= 1u << i;
+            }
+        }
+        return {best, axes};
+    }
+
+    /// The cell of `axis` just after the entry time: found from an estimate, then corrected with
+    /// exact comparisons of boundary crossings against the entry time.
+    int firstCell(int axis) const {
+        const int res = grid_.res[axis];
+        if (step_[axis] == 0) {
+            // Parallel: the cell holding the origin's coordinate (b_k <= o < b_k+1; o = hi: last).
+            int k = int(std::floor((double(o_[axis]) - grid_.lo[axis]) / grid_.cellSize(axis)));
+            k = std::clamp(k, 0, res - 1);
+            const auto below = [&](long j) {  // boundary j <= o, decided exactly
+                Crossing c = crossing(axis, j);
+                c.o = double(o_[axis]);
+                c.d = 1.0;  // (b_j - o) / 1
+                c.t = double(grid_.lo[axis]) + double(j) * grid_.cellSize(axis) - c.o;
+                c.err = 16 * std::numeric_limits<double>::epsilon() *
+                        (3 * (std::abs(c.lo) + std::abs(c.hi)) + std::abs(c.o));
+                return compareCrossings(c, plainTime(0.0)) <= 0;
+            };
+            while (k > 0 && !below(k)) --k;
+            while (k + 1 < res && below(k + 1)) ++k;
+            return k;
+        }
+        // Boundaries already crossed at the entry time: crossing <= enter.
+        const auto crossed = [&](long j) {
+            return compareCrossings(crossing(axis, j), enter_) <= 0;
+        };
+        const double p = double(o_[axis]) + enter_.t * double(d_[axis]);
+        int k = int(std::floor((p - grid_.lo[axis]) / grid_.cellSize(axis)));
+        k = std::clamp(k, 0, res - 1);
+        if (step_[axis] > 0) {
+            // Cell k: boundary k crossed, boundary k+1 not yet.
+            while (k > 0 && !crossed(k)) --k;
+            while (k + 1 < res && crossed(k + 1)) ++k;
+        } else {
+            // Moving down, cell k: boundary k+1 crossed, boundary k not yet.
+            while (k + 1 < res && !crossed(k + 1)) ++k;
+            while (k > 0 && crossed(k)) --k;
+        }
+        return k;
+    }
+
+    GridSpec<N, T> grid_;
+    VecN<N, T> o_, d_;
+    IVecN<N> step_{0};
+    IVecN<N> cell_{0};
+    VecN<N, T> tDelta_{T(0)};
+    Crossing enter_, exit_;
+    unsigned enteredThrough_ = 0;
+    unsigned lastAxes_ = 0;
+    bool valid_ = false;
+};
+
+}  // namespace raystep
