@@ -48,11 +48,12 @@ std::string_view accelKindName(AccelKind kind) {
     return "?";
 }
 
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels) {
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
+                             const AccelOptions& options) {
     if (kind == AccelKind::BruteForce) return BruteForce(scene, kernels);
-    throw std::runtime_error(
-        "--accel " + std::string(accelKindName(kind)) +
-        ": not implemented yet; only 'bruteforce' is available in this version");
+    if (kind == AccelKind::Grid) return UniformGrid(scene, kernels, options.grid);
+    throw std::runtime_error("--accel " + std::string(accelKindName(kind)) +
+                             ": not implemented yet; available: bruteforce, grid");
 }
 
 }  // namespace raystep

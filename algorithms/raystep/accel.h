@@ -1,7 +1,10 @@
 #pragma once
 // The accelerator interface: "given the scene, find the nearest hit of a ray efficiently".
 // A closed set of structures dispatched through std::variant (no virtual call per ray).
-// Brute force is the slides' RaySceneIntersection; grid, kd-tree and BVH come with issue 4.
+// Brute force is the slides' RaySceneIntersection; the uniform grid walks cells with the 3D-DDA;
+// kd-tree and BVH are still to come (issue 4).
+#include "raystep/accel_types.h"
+#include "raystep/grid.h"
 #include "raystep/ray.h"
 #include "raystep/scene.h"
 
@@ -11,19 +14,6 @@
 #include <variant>
 
 namespace raystep {
-
-/// What one query cost: counted in locals by the caller and summed per pixel.
-struct TraversalCounters {
-    std::uint64_t primitiveTests = 0;
-    std::uint64_t nodeVisits = 0;
-    std::uint64_t mailboxSkips = 0;
-    TraversalCounters& operator+=(const TraversalCounters& o) {
-        primitiveTests += o.primitiveTests;
-        nodeVisits += o.nodeVisits;
-        mailboxSkips += o.mailboxSkips;
-        return *this;
-    }
-};
 
 /// The slides' loop: test every primitive, keep the closest.
 class BruteForce {
@@ -46,11 +36,17 @@ enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
 std::optional<AccelKind> parseAccelKind(std::string_view name);
 std::string_view accelKindName(AccelKind kind);
 
-using Accelerator = std::variant<BruteForce>;
+using Accelerator = std::variant<BruteForce, UniformGrid>;
+
+/// Build parameters of the structures (each reads its own).
+struct AccelOptions {
+    GridOptions grid;
+};
 
 /// Builds the chosen structure over `scene` (which must outlive it).
 /// Throws std::runtime_error for a structure that is not implemented yet.
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels = {});
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels = {},
+                             const AccelOptions& options = {});
 
 /// The kernels and precision the structure tests primitives with.
 inline const KernelOptions& kernelsOf(const Accelerator& accel) {

@@ -51,7 +51,14 @@ int compareCrossingsExact(const Crossing& a, const Crossing& b);
 inline int compareCrossings(const Crossing& a, const Crossing& b) {
     if (a.t + a.err < b.t - b.err) return -1;
     if (a.t - a.err > b.t + b.err) return 1;
-    if (a.plain && b.plain) return (a.t > b.t) - (a.t < b.t);
+    // Known exactly (a given value, or a ray starting on the boundary): compare as they are.
+    if (a.err == 0.0 && b.err == 0.0) return (a.t > b.t) - (a.t < b.t);
+    // Two boundaries of the same axis and ray: their order is the order of k along d.
+    if (!a.plain && !b.plain && a.lo == b.lo && a.hi == b.hi && a.res == b.res && a.o == b.o &&
+        a.d == b.d) {
+        const long byK = (a.k > b.k) - (a.k < b.k);
+        return static_cast<int>(a.d > 0 ? byK : -byK);
+    }
     return detail::compareCrossingsExact(a, b);
 }
 
@@ -144,21 +151,35 @@ class Dda {
         return c;
     }
 
-    /// Crossing of boundary k of `axis`, with a bound on the rounding of its estimate: about
-    /// eight roundings of the magnitudes involved (generous; the exact test settles the rest).
+    /// Crossing of boundary k of `axis`, with a bound on the rounding of its estimate. The grid's
+    /// own faces (k = 0, res) are exact; inner boundaries carry the rounding of lo + k (hi-lo)/res.
+    /// The error of (b - o) / d is then relative to |b - o|, which keeps the bound tight for a
+    /// ray starting right next to a boundary (a shadow ray leaving a floor on the grid's face).
     Crossing crossing(int axis, long k) const {
+        return crossingOf(grid_, axis, k, double(o_[axis]), double(d_[axis]));
+    }
+    static Crossing crossingOf(const GridSpec<N, T>& grid, int axis, long k, double o, double d) {
         Crossing c;
         c.plain = false;
-        c.lo = double(grid_.lo[axis]);
-        c.hi = double(grid_.hi[axis]);
-        c.res = grid_.res[axis];
+        c.lo = double(grid.lo[axis]);
+        c.hi = double(grid.hi[axis]);
+        c.res = grid.res[axis];
         c.k = k;
-        c.o = double(o_[axis]);
-        c.d = double(d_[axis]);
-        const double b = c.lo + double(k) * ((c.hi - c.lo) / c.res);
-        c.t = (b - c.o) / c.d;
-        constexpr double u = std::numeric_limits<double>::epsilon();
-        c.err = 16 * u * (3 * (std::abs(c.lo) + std::abs(c.hi)) + std::abs(c.o)) / std::abs(c.d);
+        c.o = o;
+        c.d = d;
+        constexpr double eps = std::numeric_limits<double>::epsilon();
+        double b, errB;
+        if (k == 0) {
+            b = c.lo, errB = 0.0;
+        } else if (k == c.res) {
+            b = c.hi, errB = 0.0;
+        } else {
+            b = c.lo + double(k) * ((c.hi - c.lo) / c.res);
+            errB = 4 * eps * (std::abs(c.lo) + std::abs(c.hi));
+        }
+        const double diff = b - c.o;
+        c.t = diff / c.d;
+        c.err = 2 * ((errB + eps * std::abs(diff)) / std::abs(c.d) + eps * std::abs(c.t));
         return c;
     }
     long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
@@ -190,12 +211,8 @@ class Dda {
             int k = int(std::floor((double(o_[axis]) - grid_.lo[axis]) / grid_.cellSize(axis)));
             k = std::clamp(k, 0, res - 1);
             const auto below = [&](long j) {  // boundary j <= o, decided exactly
-                Crossing c = crossing(axis, j);
-                c.o = double(o_[axis]);
-                c.d = 1.0;  // (b_j - o) / 1
-                c.t = double(grid_.lo[axis]) + double(j) * grid_.cellSize(axis) - c.o;
-                c.err = 16 * std::numeric_limits<double>::epsilon() *
-                        (3 * (std::abs(c.lo) + std::abs(c.hi)) + std::abs(c.o));
+                // (b_j - o) / 1 compared with 0: the sign of b_j - o.
+                const Crossing c = crossingOf(grid_, axis, j, double(o_[axis]), 1.0);
                 return compareCrossings(c, plainTime(0.0)) <= 0;
             };
             while (k > 0 && !below(k)) --k;

@@ -14,6 +14,7 @@
 
 #include <tbb/info.h>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -35,6 +36,9 @@ struct RenderArgs {
     std::string rayOffset = "robust";
     std::string triangleMethod = "watertight";
     std::string sphereMethod = "stable";
+    double gridLambda = 4.0;
+    std::string gridRes;
+    std::string mailbox = "on";
     int threads = 0;
     std::uint64_t seed = 1;
     std::string stats;
@@ -95,6 +99,26 @@ int runRender(const RenderArgs& a) {
     if (!sphereMethod)
         return fail("--sphere-method " + a.sphereMethod + ": expected textbook or stable");
     kernels = {*precision, *sphereMethod, *triangleMethod};
+    AccelOptions accelOptions;
+    if (!std::isfinite(a.gridLambda) || !(a.gridLambda > 0))
+        return fail("--grid-lambda " + std::to_string(a.gridLambda) +
+                    ": must be a finite number greater than 0");
+    accelOptions.grid.lambda = a.gridLambda;
+    if (!a.gridRes.empty()) {
+        const auto res = cli::parseNumbers(a.gridRes);
+        bool ok = res && res->size() == 3;
+        for (std::size_t i = 0; ok && i < 3; ++i)
+            ok = (*res)[i] == std::floor((*res)[i]) && (*res)[i] >= 1 &&
+                 (*res)[i] <= GridOptions::kMaxCellsPerAxis;
+        if (!ok)
+            return fail("--grid-res " + a.gridRes +
+                        ": expected NX,NY,NZ, whole numbers from 1 to " +
+                        std::to_string(GridOptions::kMaxCellsPerAxis));
+        accelOptions.grid.res = std::array<int, 3>{int((*res)[0]), int((*res)[1]), int((*res)[2])};
+    }
+    if (a.mailbox != "on" && a.mailbox != "off")
+        return fail("--mailbox " + a.mailbox + ": expected on or off");
+    accelOptions.grid.mailbox = a.mailbox == "on";
 
     Scene scene;
     try {
@@ -115,7 +139,7 @@ int runRender(const RenderArgs& a) {
 
     std::optional<Accelerator> accel;
     try {
-        accel = buildAccelerator(scene, *accelKind, kernels);
+        accel = buildAccelerator(scene, *accelKind, kernels, accelOptions);
     } catch (const std::exception& e) {
         return fail(e.what());
     }
@@ -144,6 +168,13 @@ int runRender(const RenderArgs& a) {
             j["ray_offset"] = a.rayOffset;
             j["triangle_method"] = a.triangleMethod;
             j["sphere_method"] = a.sphereMethod;
+            if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
+                const auto& res = grid->spec().res;
+                j["grid"] = {{"cells", {res.x, res.y, res.z}},
+                             {"references", grid->references()},
+                             {"empty_cells", grid->emptyCells()},
+                             {"mailbox", a.mailbox}};
+            }
             j["threads"] = opt.threads;
             j["seed"] = opt.seed;
             j["primitives"] = {{"spheres", scene.spheres.size()},
@@ -210,6 +241,14 @@ int main(int argc, char** argv) {
                      "Ray-triangle test: plane, moller-trumbore or watertight")
         ->capture_default_str();
     render->add_option("--sphere-method", r.sphereMethod, "Ray-sphere test: textbook or stable")
+        ->capture_default_str();
+    render
+        ->add_option("--grid-lambda", r.gridLambda,
+                     "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
+        ->capture_default_str();
+    render->add_option("--grid-res", r.gridRes,
+                       "Grid: cells per axis NX,NY,NZ instead of the rule");
+    render->add_option("--mailbox", r.mailbox, "Grid: test each primitive once per ray (on, off)")
         ->capture_default_str();
     render->add_option("--threads", r.threads, "Threads (default: all cores)")
         ->check(CLI::Range(1, 1024));

@@ -228,6 +228,25 @@ TEST_F(Cli, RenderNumericOptions) {
     expectBadInput("render --sphere-method fast", "--sphere-method fast");
 }
 
+TEST_F(Cli, RenderWithTheGrid) {
+    const CliRun r =
+        run("render default --accel grid --width 24 --height 18 --grid-res 8,2,8 "
+            "--stats g.json -o g.png");
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_EQ(run("render default --width 24 --height 18 -o b.png").code, 0);
+    EXPECT_EQ(slurp(dir / "g.png"), slurp(dir / "b.png"));  // the same image, byte for byte
+    const auto stats = nlohmann::json::parse(slurp(dir / "g.json"));
+    EXPECT_EQ(stats["grid"]["cells"], nlohmann::json::parse("[8, 2, 8]"));
+    EXPECT_GT(stats["node_visits"].get<long>(), 0);
+    EXPECT_GT(stats["mailbox_skips"].get<long>(), 0);
+    for (const char* f : {"g.png", "b.png", "g.json"}) fs::remove(dir / f);
+    expectBadInput("render --accel grid --grid-res 8,8", "--grid-res 8,8");
+    expectBadInput("render --accel grid --grid-res 8,0,8", "whole numbers");
+    expectBadInput("render --accel grid --grid-lambda 0", "--grid-lambda");
+    expectBadInput("render --accel grid --grid-lambda nan", "--grid-lambda");
+    expectBadInput("render --accel grid --mailbox maybe", "--mailbox maybe");
+}
+
 TEST_F(Cli, DdaJsonFollowsTheLecture) {
     // 4 x 3 unit cells from (0.5, 0.25) along (1, 0.6): tDelta = (1, 1/0.6); by hand the walk is
     // (0,0) -X-> (1,0) -Y-> (1,1) -X-> (2,1) -X-> (3,1) -Y-> (3,2).

@@ -275,7 +275,7 @@ TEST(Render, ProgressReachesOneAndCanCancel) {
 
 TEST(Accelerator, UnbuiltStructuresAreAClearError) {
     const Scene s = loadBuiltinScene("default");
-    for (auto kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+    for (auto kind : {AccelKind::KdTree, AccelKind::Bvh}) {
         try {
             buildAccelerator(s, kind);
             FAIL() << "expected an error";

@@ -1,0 +1,158 @@
+// Every accelerator must find what brute force finds: the same nearest primitive at the same t,
+// for seeded random rays of every awkward kind, on every built-in scene.
+#include "raystep/accel.h"
+#include "raystep/rng.h"
+#include "raystep/scene_loader.h"
+#include "raystep/tracer.h"
+
+#include <gtest/gtest.h>
+
+namespace raystep {
+namespace {
+
+Vec3 randomDirection(Pcg32& rng) {
+    for (;;) {
+        const Vec3 v(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
+        if (glm::length(v) > 0.1 && glm::length(v) <= 1) return glm::normalize(v);
+    }
+}
+
+/// Rays from inside the scene's bounds, from outside, axis-parallel (with -0.0), grazing the
+/// scene's faces, and the camera's own.
+std::vector<Ray> testRays(const Scene& s, int count, std::uint64_t seed) {
+    Pcg32 rng(seed, 17);
+    const Bounds3 b = s.bounds();
+    const Vec3 d = b.diagonal();
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 inside = b.lo + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * d;
+        Ray r;
+        switch (i % 5) {
+            case 0:  // from inside, any direction
+                r = {inside, randomDirection(rng)};
+                break;
+            case 1:  // from outside, aimed at a point inside
+                r.origin = inside + randomDirection(rng) * (2.0 * glm::length(d));
+                r.dir = glm::normalize(inside - r.origin);
+                break;
+            case 2: {  // axis-parallel, signs and zeros of both kinds
+                Vec3 dir(0.0);
+                const int axis = static_cast<int>(rng.uniform() * 3);
+                dir[axis] = rng.uniform() < 0.5 ? -1.0 : 1.0;
+                for (int k = 0; k < 3; ++k)
+                    if (k != axis) dir[k] = rng.uniform() < 0.5 ? -0.0 : 0.0;
+                r = {inside, dir};
+                break;
+            }
+            case 3: {  // grazing: along a face of the bounds
+                Vec3 o = inside;
+                const int axis = static_cast<int>(rng.uniform() * 3);
+                o[axis] = rng.uniform() < 0.5 ? b.lo[axis] : b.hi[axis];
+                Vec3 dir = randomDirection(rng);
+                dir[axis] = 0.0;
+                if (glm::length(dir) == 0.0) dir[(axis + 1) % 3] = 1.0;
+                r = {o, glm::normalize(dir)};
+                break;
+            }
+            default: {  // the camera's primary rays
+                r = s.camera.generateRay(rng.uniform() * 64, rng.uniform() * 48, 64, 48);
+                break;
+            }
+        }
+        rays.push_back(r);
+    }
+    return rays;
+}
+
+void expectSameHits(const Scene& s, const Accelerator& accel, int count, const std::string& what) {
+    const Accelerator brute = buildAccelerator(s, AccelKind::BruteForce);
+    int hits = 0;
+    for (const Ray& r : testRays(s, count, 11)) {
+        TraversalCounters c1, c2;
+        const auto expected = intersect(brute, r, c1);
+        const auto got = intersect(accel, r, c2);
+        ASSERT_EQ(got.has_value(), expected.has_value()) << what;
+        EXPECT_EQ(occluded(accel, r, c2), expected.has_value()) << what;
+        if (!expected) continue;
+        ++hits;
+        EXPECT_EQ(got->prim, expected->prim) << what;
+        EXPECT_EQ(got->t, expected->t) << what;
+    }
+    EXPECT_GT(hits, count / 4) << what;
+}
+
+class EveryScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryScene, GridFindsWhatBruteForceFinds) {
+    const Scene s = loadBuiltinScene(GetParam());
+    const int count = s.primitiveCount() > 1000 ? 400 : 3000;
+    for (bool mailbox : {true, false}) {
+        AccelOptions opt;
+        opt.grid.mailbox = mailbox;
+        expectSameHits(s, buildAccelerator(s, AccelKind::Grid, {}, opt), count,
+                       GetParam() + (mailbox ? " with mailbox" : " without mailbox"));
+    }
+    AccelOptions coarse, fine;
+    coarse.grid.res = std::array<int, 3>{1, 1, 1};
+    fine.grid.res = std::array<int, 3>{97, 3, 61};
+    expectSameHits(s, buildAccelerator(s, AccelKind::Grid, {}, coarse), count / 4,
+                   GetParam() + " 1x1x1");
+    expectSameHits(s, buildAccelerator(s, AccelKind::Grid, {}, fine), count / 4,
+                   GetParam() + " 97x3x61");
+}
+
+INSTANTIATE_TEST_SUITE_P(Builtin, EveryScene,
+                         ::testing::Values("default", "whitted", "cornell", "stadium"));
+
+TEST(Grid, RenderMatchesBruteForce) {
+    for (const char* name : {"default", "whitted"}) {
+        const Scene s = loadBuiltinScene(name);
+        RenderOptions opt;
+        opt.width = 40;
+        opt.height = 30;
+        opt.trace.bounces = 4;
+        const RenderResult brute = render(s, buildAccelerator(s, AccelKind::BruteForce), opt);
+        const RenderResult grid = render(s, buildAccelerator(s, AccelKind::Grid), opt);
+        EXPECT_EQ(grid.image.pixels, brute.image.pixels) << name;
+        EXPECT_EQ(grid.counters.rays, brute.counters.rays) << name;
+        EXPECT_GT(grid.counters.traversal.nodeVisits, 0u);
+    }
+}
+
+TEST(Grid, ClearyWyvillResolution) {
+    // A 2 x 1 x 1 box holding N spheres: cells per axis d_i cbrt(lambda N / V).
+    Scene s;
+    s.materials.push_back(Material{});
+    for (int i = 0; i < 250; ++i)
+        s.spheres.push_back({Vec3(0.1 + 1.8 * (i % 10) / 9.0, 0.5, 0.5), 0.1, 0});
+    s.spheres.push_back({Vec3(0.5, 0.5, 0.5), 0.5, 0});
+    s.spheres.push_back({Vec3(1.5, 0.5, 0.5), 0.5, 0});
+    // Bounds are [0, 2] x [0, 1] x [0, 1]: V = 2, N = 252, lambda 4: cbrt(504) = 7.96 per unit.
+    const UniformGrid g(s, {}, GridOptions{});
+    EXPECT_EQ(g.spec().res, IVecN<3>(16, 8, 8));
+    EXPECT_EQ(g.cellCount(), 16u * 8u * 8u);
+    // A primitive is listed in every cell its bounds overlap: the big spheres cover 8 x 8 x 8.
+    EXPECT_GE(g.references(), 2u * 8u * 8u * 8u);
+}
+
+TEST(Grid, MailboxSavesRepeatedTests) {
+    // The floor's two big triangles lie in every cell of its layer: without the mailbox a ray
+    // along the floor tests them again in every cell.
+    const Scene s = loadBuiltinScene("default");
+    AccelOptions on, off;
+    off.grid.mailbox = false;
+    const Accelerator withBox = buildAccelerator(s, AccelKind::Grid, {}, on);
+    const Accelerator without = buildAccelerator(s, AccelKind::Grid, {}, off);
+    TraversalCounters a, b;
+    const Ray grazing{Vec3(-11.9, 0.05, -11.9), glm::normalize(Vec3(1, 0, 1))};
+    const auto h1 = intersect(withBox, grazing, a);
+    const auto h2 = intersect(without, grazing, b);
+    ASSERT_EQ(h1.has_value(), h2.has_value());
+    EXPECT_GT(a.mailboxSkips, 0u);
+    EXPECT_EQ(b.mailboxSkips, 0u);
+    EXPECT_EQ(a.primitiveTests + a.mailboxSkips, b.primitiveTests);
+    EXPECT_EQ(a.nodeVisits, b.nodeVisits);
+}
+
+}  // namespace
+}  // namespace raystep
