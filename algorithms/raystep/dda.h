@@ -158,6 +158,11 @@ class Dda {
     Crossing crossing(int axis, long k) const {
         return crossingOf(grid_, axis, k, double(o_[axis]), double(d_[axis]));
     }
+    /// Knuth's TwoSum: s = fl(a + b) is exact iff the rounding error it recovers is zero.
+    static bool sumIsExact(double a, double b, double s) {
+        const double bb = s - a;
+        return (a - (s - bb)) + (b - bb) == 0.0;
+    }
     static Crossing crossingOf(const GridSpec<N, T>& grid, int axis, long k, double o, double d) {
         Crossing c;
         c.plain = false;
@@ -174,12 +179,22 @@ class Dda {
         } else if (k == c.res) {
             b = c.hi, errB = 0.0;
         } else {
-            b = c.lo + double(k) * ((c.hi - c.lo) / c.res);
-            errB = 4 * eps * (std::abs(c.lo) + std::abs(c.hi));
+            const double width = c.hi - c.lo;
+            const double size = width / c.res;
+            const double offset = double(k) * size;
+            b = c.lo + offset;
+            // Error-free checks (a two-sum residual, fma residuals): was every step exact? On
+            // round grids it is, and then b is the boundary itself (a camera on x = 0, say).
+            const bool exact =
+                sumIsExact(c.hi, -c.lo, width) && std::fma(size, double(c.res), -width) == 0.0 &&
+                std::fma(double(k), size, -offset) == 0.0 && sumIsExact(c.lo, offset, b);
+            errB = exact ? 0.0 : 4 * eps * (std::abs(c.lo) + std::abs(c.hi));
         }
         const double diff = b - c.o;
         c.t = diff / c.d;
-        c.err = 2 * ((errB + eps * std::abs(diff)) / std::abs(c.d) + eps * std::abs(c.t));
+        c.err = (errB == 0.0 && diff == 0.0)
+                    ? 0.0  // the ray starts exactly on this boundary: t = 0, exactly
+                    : 2 * ((errB + eps * std::abs(diff)) / std::abs(c.d) + eps * std::abs(c.t));
         return c;
     }
     long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
