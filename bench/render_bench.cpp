@@ -11,14 +11,15 @@ using namespace raystep;
 /// One full render per iteration; reports ms per frame and, as rates, millions of rays (all kinds),
 /// of primary rays and of primitive tests a second.
 void renderScene(benchmark::State& state, const char* sceneName, int width, int height, int bounces,
-                 int spp, int diffuseSamples, bool fastKernels = false) {
+                 int spp, int diffuseSamples, bool fastKernels = false,
+                 AccelKind kind = AccelKind::BruteForce) {
     const Scene scene = loadBuiltinScene(sceneName);
     // The fast choices: float, Moller-Trumbore, textbook spheres, fixed epsilon (docs/accuracy.md).
     const KernelOptions kernels = fastKernels
                                       ? KernelOptions{Precision::Float, SphereMethod::Textbook,
                                                       TriangleMethod::MollerTrumbore}
                                       : KernelOptions{};
-    const Accelerator accel = buildAccelerator(scene, AccelKind::BruteForce, kernels);
+    const Accelerator accel = buildAccelerator(scene, kind, kernels);
     RenderOptions opt;
     opt.trace.rayOffset = fastKernels ? RayOffsetMethod::Epsilon : RayOffsetMethod::Robust;
     opt.width = width;
@@ -79,6 +80,25 @@ void BM_Stadium64x48_BruteForce(benchmark::State& state) {
     renderScene(state, "stadium", 64, 48, 1, 1, 0);
 }
 BENCHMARK(BM_Stadium64x48_BruteForce)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The uniform grid on the same frames (Cleary-Wyvill, lambda 4, mailbox on).
+void BM_Default800x600_Grid(benchmark::State& state) {
+    renderScene(state, "default", 800, 600, 2, 1, 0, false, AccelKind::Grid);
+}
+BENCHMARK(BM_Default800x600_Grid)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_Stadium64x48_Grid(benchmark::State& state) {
+    renderScene(state, "stadium", 64, 48, 1, 1, 0, false, AccelKind::Grid);
+}
+BENCHMARK(BM_Stadium64x48_Grid)
     ->Arg(2)
     ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
