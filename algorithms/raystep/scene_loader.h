@@ -41,10 +41,6 @@ Scene loadBuiltinScene(const std::string& name);
 /// A built-in name, else a file path; the error for neither names both possibilities.
 Scene loadScene(const std::string& nameOrPath);
 
-struct BuiltinSceneInfo {
-    std::string name;
-    std::string description;
-};
 std::vector<std::string> builtinSceneNames();
 
 }  // namespace raystep
