@@ -128,18 +128,18 @@ class Reader {
 
 /// Runs `f(value, path)` on obj[key] when present.
 template <typename F>
-void optional(const json& obj, const std::string& path, const char* key, F&& f) {
+void ifPresent(const json& obj, const std::string& path, const char* key, F&& f) {
     if (auto it = obj.find(key); it != obj.end()) f(*it, JsonLineMap::child(path, key));
 }
 
 void readCamera(const Reader& r, const json& j, const std::string& path, Camera& cam) {
     r.requireObject(j, path);
     r.checkKeys(j, path, {"eye", "look_at", "up", "fov"});
-    optional(j, path, "eye", [&](const json& v, const std::string& p) { cam.eye = r.vec3(v, p); });
-    optional(j, path, "look_at",
-             [&](const json& v, const std::string& p) { cam.lookAt = r.vec3(v, p); });
-    optional(j, path, "up", [&](const json& v, const std::string& p) { cam.up = r.vec3(v, p); });
-    optional(j, path, "fov", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "eye", [&](const json& v, const std::string& p) { cam.eye = r.vec3(v, p); });
+    ifPresent(j, path, "look_at",
+              [&](const json& v, const std::string& p) { cam.lookAt = r.vec3(v, p); });
+    ifPresent(j, path, "up", [&](const json& v, const std::string& p) { cam.up = r.vec3(v, p); });
+    ifPresent(j, path, "fov", [&](const json& v, const std::string& p) {
         cam.fovDeg = r.positive(v, p);
         if (cam.fovDeg >= 180.0) r.fail(p, "field of view must be below 180 degrees");
     });
@@ -158,17 +158,17 @@ void readCamera(const Reader& r, const json& j, const std::string& path, Camera&
 void readRender(const Reader& r, const json& j, const std::string& path, RenderSettings& s) {
     r.requireObject(j, path);
     r.checkKeys(j, path, {"width", "height", "bounces", "spp", "diffuse_samples"});
-    optional(j, path, "width", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "width", [&](const json& v, const std::string& p) {
         s.width = r.integer(v, p, 1, kMaxImageSide);
     });
-    optional(j, path, "height", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "height", [&](const json& v, const std::string& p) {
         s.height = r.integer(v, p, 1, kMaxImageSide);
     });
-    optional(j, path, "bounces",
-             [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, 64); });
-    optional(j, path, "spp",
-             [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, 4096); });
-    optional(j, path, "diffuse_samples", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "bounces",
+              [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, 64); });
+    ifPresent(j, path, "spp",
+              [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, 4096); });
+    ifPresent(j, path, "diffuse_samples", [&](const json& v, const std::string& p) {
         s.diffuseSamples = r.integer(v, p, 0, 1024);
     });
 }
@@ -179,26 +179,28 @@ Material readMaterial(const Reader& r, const json& j, const std::string& path,
     r.checkKeys(j, path, {"kd", "ks", "n", "reflect", "transparency", "ior", "checker"});
     Material m;
     m.name = name;
-    optional(j, path, "kd",
-             [&](const json& v, const std::string& p) { m.kd = r.color(v, p, true); });
-    optional(j, path, "ks",
-             [&](const json& v, const std::string& p) { m.ks = r.color(v, p, true); });
-    optional(j, path, "n", [&](const json& v, const std::string& p) { m.n = r.nonNegative(v, p); });
-    optional(j, path, "reflect",
-             [&](const json& v, const std::string& p) { m.reflect = r.color(v, p, true); });
-    optional(j, path, "transparency",
-             [&](const json& v, const std::string& p) { m.transparency = r.color(v, p, true); });
-    optional(j, path, "ior",
-             [&](const json& v, const std::string& p) { m.ior = r.positive(v, p); });
-    optional(j, path, "checker", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "kd",
+              [&](const json& v, const std::string& p) { m.kd = r.color(v, p, true); });
+    ifPresent(j, path, "ks",
+              [&](const json& v, const std::string& p) { m.ks = r.color(v, p, true); });
+    ifPresent(j, path, "n",
+              [&](const json& v, const std::string& p) { m.n = r.nonNegative(v, p); });
+    ifPresent(j, path, "reflect",
+              [&](const json& v, const std::string& p) { m.reflect = r.color(v, p, true); });
+    ifPresent(j, path, "transparency",
+              [&](const json& v, const std::string& p) { m.transparency = r.color(v, p, true); });
+    ifPresent(j, path, "ior",
+              [&](const json& v, const std::string& p) { m.ior = r.positive(v, p); });
+    ifPresent(j, path, "checker", [&](const json& v, const std::string& p) {
         r.requireObject(v, p);
         r.checkKeys(v, p, {"color", "size"});
         m.checker.enabled = true;
-        optional(v, p, "color", [&](const json& c, const std::string& cp) {
+        ifPresent(v, p, "color", [&](const json& c, const std::string& cp) {
             m.checker.color = r.color(c, cp, true);
         });
-        optional(v, p, "size",
-                 [&](const json& c, const std::string& cp) { m.checker.size = r.positive(c, cp); });
+        ifPresent(v, p, "size", [&](const json& c, const std::string& cp) {
+            m.checker.size = r.positive(c, cp);
+        });
     });
     return m;
 }
@@ -233,13 +235,13 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
     if (!j.contains("file")) r.fail(filePath, "a mesh needs the OBJ file to load");
     const std::string file = r.string(j["file"], filePath);
     MeshTransform xf;
-    optional(j, path, "scale", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "scale", [&](const json& v, const std::string& p) {
         xf.scale = v.is_number() ? Vec3(r.number(v, p)) : r.vec3(v, p);
         if (xf.scale.x == 0.0 || xf.scale.y == 0.0 || xf.scale.z == 0.0)
             r.fail(p, "scale must not be zero (the mesh would be flat)");
     });
-    optional(j, path, "translate",
-             [&](const json& v, const std::string& p) { xf.translate = r.vec3(v, p); });
+    ifPresent(j, path, "translate",
+              [&](const json& v, const std::string& p) { xf.translate = r.vec3(v, p); });
 
     const std::optional<std::string> text = resolver(file);
     if (!text) r.fail(filePath, "cannot open OBJ file '" + file + "'");
@@ -294,7 +296,7 @@ void readObject(const Reader& r, const json& j, const std::string& path,
     const std::string type = r.string(j["type"], typePath);
 
     std::uint32_t material = 0;  // the default material
-    optional(j, path, "material", [&](const json& v, const std::string& p) {
+    ifPresent(j, path, "material", [&](const json& v, const std::string& p) {
         const std::string name = r.string(v, p);
         const auto it = materialIds.find(name);
         if (it == materialIds.end()) r.fail(p, "no material named '" + name + "' in 'materials'");
@@ -305,8 +307,8 @@ void readObject(const Reader& r, const json& j, const std::string& path,
         r.checkKeys(j, path, {"type", "material", "center", "radius"});
         Sphere s;
         s.material = material;
-        optional(j, path, "center",
-                 [&](const json& v, const std::string& p) { s.center = r.vec3(v, p); });
+        ifPresent(j, path, "center",
+                  [&](const json& v, const std::string& p) { s.center = r.vec3(v, p); });
         const std::string radiusPath = JsonLineMap::child(path, "radius");
         if (!j.contains("radius")) r.fail(radiusPath, "a sphere needs a radius");
         s.radius = r.positive(j["radius"], radiusPath);
@@ -372,19 +374,20 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
 
     Scene scene;
     scene.name = fileName;
-    optional(root, "", "description",
-             [&](const json& v, const std::string& p) { scene.description = r.string(v, p); });
-    optional(root, "", "camera",
-             [&](const json& v, const std::string& p) { readCamera(r, v, p, scene.camera); });
+    ifPresent(root, "", "description",
+              [&](const json& v, const std::string& p) { scene.description = r.string(v, p); });
+    ifPresent(root, "", "camera",
+              [&](const json& v, const std::string& p) { readCamera(r, v, p, scene.camera); });
     if (!root.contains("camera")) readCamera(r, json::object(), "camera", scene.camera);
-    optional(root, "", "render",
-             [&](const json& v, const std::string& p) { readRender(r, v, p, scene.settings); });
-    optional(root, "", "background",
-             [&](const json& v, const std::string& p) { scene.background = r.color(v, p, false); });
-    optional(root, "", "ambient",
-             [&](const json& v, const std::string& p) { scene.ambient = r.color(v, p, false); });
+    ifPresent(root, "", "render",
+              [&](const json& v, const std::string& p) { readRender(r, v, p, scene.settings); });
+    ifPresent(root, "", "background", [&](const json& v, const std::string& p) {
+        scene.background = r.color(v, p, false);
+    });
+    ifPresent(root, "", "ambient",
+              [&](const json& v, const std::string& p) { scene.ambient = r.color(v, p, false); });
 
-    optional(root, "", "lights", [&](const json& v, const std::string& p) {
+    ifPresent(root, "", "lights", [&](const json& v, const std::string& p) {
         if (!v.is_array()) r.fail(p, "expected an array of lights, got " + Reader::typeName(v));
         for (std::size_t i = 0; i < v.size(); ++i) {
             const std::string lp = JsonLineMap::element(p, i);
@@ -397,9 +400,9 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
             light.position = r.vec3(l["position"], JsonLineMap::child(lp, "position"));
             Color color(1.0);
             double intensity = 1.0;
-            optional(l, lp, "color",
-                     [&](const json& c, const std::string& cp) { color = r.color(c, cp, false); });
-            optional(l, lp, "intensity", [&](const json& c, const std::string& cp) {
+            ifPresent(l, lp, "color",
+                      [&](const json& c, const std::string& cp) { color = r.color(c, cp, false); });
+            ifPresent(l, lp, "intensity", [&](const json& c, const std::string& cp) {
                 intensity = r.nonNegative(c, cp);
             });
             light.intensity = color * intensity;
@@ -409,7 +412,7 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
 
     scene.materials.push_back(Material{});  // id 0: the default material
     std::unordered_map<std::string, std::uint32_t> materialIds;
-    optional(root, "", "materials", [&](const json& v, const std::string& p) {
+    ifPresent(root, "", "materials", [&](const json& v, const std::string& p) {
         if (!v.is_object())
             r.fail(p, "expected an object of named materials, got " + Reader::typeName(v));
         for (const auto& [name, m] : v.items()) {
