@@ -1,5 +1,7 @@
 #include "raystep/accel.h"
 
+#include "raystep/names.h"
+
 #include <stdexcept>
 
 namespace raystep {
@@ -26,26 +28,18 @@ bool BruteForce::occluded(Ray ray, TraversalCounters& counters) const {
     return false;
 }
 
-std::optional<AccelKind> parseAccelKind(std::string_view name) {
-    if (name == "bruteforce") return AccelKind::BruteForce;
-    if (name == "grid") return AccelKind::Grid;
-    if (name == "kdtree") return AccelKind::KdTree;
-    if (name == "bvh") return AccelKind::Bvh;
-    return std::nullopt;
-}
+namespace {
+constexpr NameTable<AccelKind, 4> kAccelNames{{{AccelKind::BruteForce, "bruteforce"},
+                                               {AccelKind::Grid, "grid"},
+                                               {AccelKind::KdTree, "kdtree"},
+                                               {AccelKind::Bvh, "bvh"}}};
+}  // namespace
 
+std::optional<AccelKind> parseAccelKind(std::string_view name) {
+    return valueNamed(kAccelNames, name);
+}
 std::string_view accelKindName(AccelKind kind) {
-    switch (kind) {
-        case AccelKind::BruteForce:
-            return "bruteforce";
-        case AccelKind::Grid:
-            return "grid";
-        case AccelKind::KdTree:
-            return "kdtree";
-        case AccelKind::Bvh:
-            return "bvh";
-    }
-    return "?";
+    return nameOf(kAccelNames, kind);
 }
 
 Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,

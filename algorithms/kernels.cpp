@@ -1,47 +1,45 @@
 #include "raystep/kernels.h"
 
+#include "raystep/names.h"
+
 namespace raystep {
 
+namespace {
+constexpr NameTable<Precision, 2> kPrecisionNames{
+    {{Precision::Float, "float"}, {Precision::Double, "double"}}};
+constexpr NameTable<SphereMethod, 2> kSphereNames{
+    {{SphereMethod::Textbook, "textbook"}, {SphereMethod::Stable, "stable"}}};
+constexpr NameTable<TriangleMethod, 3> kTriangleNames{
+    {{TriangleMethod::Plane, "plane"},
+     {TriangleMethod::MollerTrumbore, "moller-trumbore"},
+     {TriangleMethod::Watertight, "watertight"}}};
+constexpr NameTable<RayOffsetMethod, 2> kOffsetNames{
+    {{RayOffsetMethod::Epsilon, "epsilon"}, {RayOffsetMethod::Robust, "robust"}}};
+}  // namespace
+
 std::optional<Precision> parsePrecision(std::string_view s) {
-    if (s == "float") return Precision::Float;
-    if (s == "double") return Precision::Double;
-    return std::nullopt;
+    return valueNamed(kPrecisionNames, s);
 }
 std::optional<SphereMethod> parseSphereMethod(std::string_view s) {
-    if (s == "textbook") return SphereMethod::Textbook;
-    if (s == "stable") return SphereMethod::Stable;
-    return std::nullopt;
+    return valueNamed(kSphereNames, s);
 }
 std::optional<TriangleMethod> parseTriangleMethod(std::string_view s) {
-    if (s == "plane") return TriangleMethod::Plane;
-    if (s == "moller-trumbore") return TriangleMethod::MollerTrumbore;
-    if (s == "watertight") return TriangleMethod::Watertight;
-    return std::nullopt;
+    return valueNamed(kTriangleNames, s);
 }
 std::optional<RayOffsetMethod> parseRayOffset(std::string_view s) {
-    if (s == "epsilon") return RayOffsetMethod::Epsilon;
-    if (s == "robust") return RayOffsetMethod::Robust;
-    return std::nullopt;
+    return valueNamed(kOffsetNames, s);
 }
 std::string_view name(Precision p) {
-    return p == Precision::Float ? "float" : "double";
+    return nameOf(kPrecisionNames, p);
 }
 std::string_view name(SphereMethod m) {
-    return m == SphereMethod::Textbook ? "textbook" : "stable";
+    return nameOf(kSphereNames, m);
 }
 std::string_view name(TriangleMethod m) {
-    switch (m) {
-        case TriangleMethod::Plane:
-            return "plane";
-        case TriangleMethod::MollerTrumbore:
-            return "moller-trumbore";
-        case TriangleMethod::Watertight:
-            break;
-    }
-    return "watertight";
+    return nameOf(kTriangleNames, m);
 }
 std::string_view name(RayOffsetMethod m) {
-    return m == RayOffsetMethod::Epsilon ? "epsilon" : "robust";
+    return nameOf(kOffsetNames, m);
 }
 
 }  // namespace raystep

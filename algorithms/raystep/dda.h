@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace raystep {
@@ -141,6 +142,7 @@ class Dda {
         }
         enter_ = next;
         lastAxes_ = axes;
+        pending_.reset();  // a new cell: its next crossing is still to be found
         return true;
     }
 
@@ -199,8 +201,13 @@ class Dda {
     }
     long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
 
-    /// The nearest boundary crossing ahead, and every axis that crosses at that same time.
-    std::pair<Crossing, unsigned> nextCrossing() const {
+    /// The nearest boundary crossing ahead, and every axis that crosses at that same time;
+    /// computed once per cell (tExit() and next() both need it).
+    const std::pair<Crossing, unsigned>& nextCrossing() const {
+        if (!pending_) pending_ = computeNextCrossing();
+        return *pending_;
+    }
+    std::pair<Crossing, unsigned> computeNextCrossing() const {
         Crossing best;
         unsigned axes = 0;
         for (int i = 0; i < N; ++i) {
@@ -262,6 +269,7 @@ class Dda {
     unsigned enteredThrough_ = 0;
     unsigned lastAxes_ = 0;
     bool valid_ = false;
+    mutable std::optional<std::pair<Crossing, unsigned>> pending_;
 };
 
 }  // namespace raystep
