@@ -26,19 +26,36 @@ Vec3 spawnRayOrigin(const SurfacePoint& sp, const Vec3& n, const Vec3& w, Precis
 
 Color Tracer::trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng,
                     RayCounters& counters) const {
-    return trace(ray, kind, depth, false, rng, counters);
+    NullRecorder rec;
+    return trace(ray, kind, depth, kNoId, false, rng, counters, rec);
 }
 
-Color Tracer::trace(const Ray& ray, RayKind kind, int depth, bool diffuseBranched, Pcg32& rng,
-                    RayCounters& counters) const {
+namespace {
+/// Records one weighted shading term (only when recording).
+template <typename Rec>
+void recordTerm(Rec& rec, std::uint32_t ray, ShadingTermKind term, std::uint32_t light,
+                const Color& c) {
+    if constexpr (Rec::kEnabled) rec(ShadingTerm{ray, term, light, {c.x, c.y, c.z}});
+}
+}  // namespace
+
+template <typename Rec>
+Color Tracer::trace(const Ray& ray, RayKind kind, int depth, std::uint32_t parent,
+                    bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const {
     ++counters[kind];
-    const std::optional<Hit> hit = intersect(accel_, ray, counters.traversal);
-    if (!hit) return scene_.background;
-    return shade(ray, *hit, depth, diffuseBranched, rng, counters);
+    const std::uint32_t rayId = rec.beginRay(ray, kind, depth, parent);
+    const std::optional<Hit> hit = intersect(accel_, ray, counters.traversal, rec, rayId);
+    if (!hit) {
+        if constexpr (Rec::kEnabled) rec(RayMiss{rayId});
+        return scene_.background;
+    }
+    if constexpr (Rec::kEnabled) rec(RayHit{rayId, hit->prim, hit->t, hit->u, hit->v});
+    return shade(ray, rayId, *hit, depth, diffuseBranched, rng, counters, rec);
 }
 
-Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranched, Pcg32& rng,
-                    RayCounters& counters) const {
+template <typename Rec>
+Color Tracer::shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int depth,
+                    bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const {
     const Material& m = scene_.materialOf(hit.prim);
     const KernelOptions& kernels = kernelsOf(accel_);
     const SurfacePoint sp = scene_.surfacePoint(hit, ray, kernels.precision);
@@ -55,9 +72,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranc
 
     // Ambient stands in for indirect light; when diffuse bounces compute it, it must go.
     Color radiance = settings_.diffuseSamples > 0 ? Color(0.0) : scene_.ambient * kd;
+    recordTerm(rec, rayId, ShadingTermKind::Ambient, kNoId, radiance);
 
     // Local model: a shadow ray per light, then Phong's diffuse and specular terms.
-    for (const PointLight& light : scene_.lights) {
+    for (std::uint32_t li = 0; li < scene_.lights.size(); ++li) {
+        const PointLight& light = scene_.lights[li];
         Vec3 toLight = light.position - p;
         if (!(glm::length(toLight) > 0.0)) continue;
         toLight = glm::normalize(toLight);
@@ -65,28 +84,41 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranc
         const Vec3 origin = originFor(toLight);
         const double dist = glm::length(light.position - origin);
         ++counters[RayKind::Shadow];
-        if (occluded(accel_, Ray{origin, toLight, 0.0, dist}, counters.traversal)) continue;
+        const Ray shadow{origin, toLight, 0.0, dist};
+        const std::uint32_t shadowId = rec.beginRay(shadow, RayKind::Shadow, depth + 1, rayId);
+        if (occluded(accel_, shadow, counters.traversal, rec, shadowId)) {
+            if constexpr (Rec::kEnabled) rec(RayHit{shadowId, kNoId, kInfinity, 0.0, 0.0});
+            continue;
+        }
+        if constexpr (Rec::kEnabled) rec(RayMiss{shadowId});
         const PhongTerms t = phong(n, toLight, toViewer, light.intensity, kd, m.ks, m.n);
+        recordTerm(rec, rayId, ShadingTermKind::Diffuse, li, t.diffuse);
+        recordTerm(rec, rayId, ShadingTermKind::Specular, li, t.specular);
         radiance += t.diffuse + t.specular;
     }
 
     if (depth >= settings_.bounces) return radiance;
 
     const auto traceChild = [&](const Vec3& dir, RayKind kind, bool branched) {
-        return trace(Ray{originFor(dir), dir, 0.0, kInfinity}, kind, depth + 1, branched, rng,
-                     counters);
+        return trace(Ray{originFor(dir), dir, 0.0, kInfinity}, kind, depth + 1, rayId, branched,
+                     rng, counters, rec);
     };
     // Reflection ray: one ray in, one ray out.
-    if (!isBlack(m.reflect))
-        radiance += m.reflect * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
+    if (!isBlack(m.reflect)) {
+        const Color c = m.reflect * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
+        recordTerm(rec, rayId, ShadingTermKind::Reflected, kNoId, c);
+        radiance += c;
+    }
     // Transparency ray by Snell's law; past the critical angle all of it reflects.
     if (!isBlack(m.transparency)) {
         const double eta = entering ? 1.0 / m.ior : m.ior;
+        Color c;
         if (const auto t = refract(d, n, eta))
-            radiance += m.transparency * traceChild(*t, RayKind::Refraction, diffuseBranched);
+            c = m.transparency * traceChild(*t, RayKind::Refraction, diffuseBranched);
         else
-            radiance +=
-                m.transparency * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
+            c = m.transparency * traceChild(reflect(d, n), RayKind::Reflection, diffuseBranched);
+        recordTerm(rec, rayId, ShadingTermKind::Transmitted, kNoId, c);
+        radiance += c;
     }
     // Diffuse bounces: one ray in, infinitely many out, estimated with random directions.
     // Cosine-weighted directions make the estimate of the Lambertian integral kd * mean(L).
@@ -98,18 +130,34 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranc
             const double u2 = rng.uniform();
             sum += traceChild(cosineSampleHemisphere(n, u1, u2), RayKind::Diffuse, true);
         }
-        radiance += kd * sum / static_cast<double>(count);
+        const Color c = kd * sum / static_cast<double>(count);
+        recordTerm(rec, rayId, ShadingTermKind::DiffuseBounce, kNoId, c);
+        radiance += c;
     }
     return radiance;
 }
 
 Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const {
+    NullRecorder rec;
+    return pixel(x, y, options, counters, rec);
+}
+
+Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters,
+                          EventLog& log) const {
+    const Color c = pixel(x, y, options, counters, log);
+    log(PixelResult{static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), {c.x, c.y, c.z}});
+    return c;
+}
+
+template <typename Rec>
+Color Tracer::pixel(int x, int y, const RenderOptions& options, RayCounters& counters,
+                    Rec& rec) const {
     const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
     Pcg32 rng(options.seed, pixelIndex);
     const Camera& cam = scene_.camera;
     if (options.spp == 1)
         return trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
-                     RayKind::Primary, 0, rng, counters);
+                     RayKind::Primary, 0, kNoId, false, rng, counters, rec);
     // Jittered sampling: the pixel is cut into a near-square grid of strata, one sample in each.
     const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.spp))));
     const int rows = (options.spp + cols - 1) / cols;
@@ -118,7 +166,7 @@ Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounter
         const double jx = ((s % cols) + rng.uniform()) / cols;
         const double jy = ((s / cols) + rng.uniform()) / rows;
         sum += trace(cam.generateRay(x + jx, y + jy, options.width, options.height),
-                     RayKind::Primary, 0, rng, counters);
+                     RayKind::Primary, 0, kNoId, false, rng, counters, rec);
     }
     return sum / static_cast<double>(options.spp);
 }

@@ -2,9 +2,12 @@
 // The accelerator interface: "given the scene, find the nearest hit of a ray efficiently".
 // A closed set of structures dispatched through std::variant (no virtual call per ray).
 // Brute force is the slides' RaySceneIntersection; the uniform grid walks cells with the 3D-DDA;
-// kd-tree and BVH are still to come (issue 4).
+// the kd-tree subdivides space, the BVH the objects.
 #include "raystep/accel_types.h"
+#include "raystep/bvh.h"
+#include "raystep/events.h"
 #include "raystep/grid.h"
+#include "raystep/kdtree.h"
 #include "raystep/ray.h"
 #include "raystep/scene.h"
 
@@ -16,19 +19,57 @@
 namespace raystep {
 
 /// The slides' loop: test every primitive, keep the closest.
-class BruteForce {
+template <typename Prims>
+class BruteForceT {
   public:
-    BruteForce(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
-    const KernelOptions& kernels() const { return kernels_; }
+    using RayT = typename Prims::RayT;
+    using HitT = typename Prims::HitT;
+    explicit BruteForceT(Prims prims) : prims_(std::move(prims)) {}
+    const Prims& primitives() const { return prims_; }
+    const KernelOptions& kernels() const { return prims_.kernels(); }
+
     /// Nearest hit in (ray.tMin, ray.tMax).
-    std::optional<Hit> intersect(Ray ray, TraversalCounters& counters) const;
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const {
+        NullRecorder rec;
+        return loop<false>(ray, counters, rec, kNoId);
+    }
     /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
-    bool occluded(Ray ray, TraversalCounters& counters) const;
+    bool occluded(RayT ray, TraversalCounters& counters) const {
+        NullRecorder rec;
+        return loop<true>(ray, counters, rec, kNoId).has_value();
+    }
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                                  std::uint32_t rayId) const {
+        return loop<false>(ray, counters, log, rayId);
+    }
+    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const {
+        return loop<true>(ray, counters, log, rayId).has_value();
+    }
 
   private:
-    const Scene* scene_;
-    KernelOptions kernels_;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> loop(RayT ray, TraversalCounters& counters, Rec& rec,
+                             std::uint32_t rayId) const {
+        std::optional<HitT> closest;
+        HitT hit;
+        const std::uint32_t n = prims_.count();
+        for (std::uint32_t p = 0; p < n; ++p) {
+            ++counters.primitiveTests;
+            // intersect shortens ray.tMax, so later primitives must be closer to win.
+            const bool isHit = prims_.intersect(p, ray, hit);
+            if constexpr (Rec::kEnabled)
+                rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
+            if (isHit) {
+                if constexpr (AnyHit) return hit;
+                closest = hit;
+            }
+        }
+        return closest;
+    }
+
+    Prims prims_;
 };
+using BruteForce = BruteForceT<ScenePrims>;
 
 enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
 
@@ -36,17 +77,23 @@ enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
 std::optional<AccelKind> parseAccelKind(std::string_view name);
 std::string_view accelKindName(AccelKind kind);
 
-using Accelerator = std::variant<BruteForce, UniformGrid>;
+using KdTree3 = KdTree<ScenePrims>;
+using Bvh3 = Bvh<ScenePrims>;
+using Accelerator = std::variant<BruteForce, UniformGrid, KdTree3, Bvh3>;
 
 /// Build parameters of the structures (each reads its own).
 struct AccelOptions {
     GridOptions grid;
+    KdTreeOptions kdtree;
+    BvhOptions bvh;
 };
 
 /// Builds the chosen structure over `scene` (which must outlive it).
-/// Throws std::runtime_error for a structure that is not implemented yet.
 Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels = {},
                              const AccelOptions& options = {});
+/// The same build with the tree's construction (nodes, candidates, leaves) recorded into `log`.
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
+                             const AccelOptions& options, EventLog& log);
 
 /// The kernels and precision the structure tests primitives with.
 inline const KernelOptions& kernelsOf(const Accelerator& accel) {
@@ -60,5 +107,31 @@ inline std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray,
 inline bool occluded(const Accelerator& accel, const Ray& ray, TraversalCounters& counters) {
     return std::visit([&](const auto& a) { return a.occluded(ray, counters); }, accel);
 }
+/// The queries with a recorder: NullRecorder calls the plain ones above.
+template <typename Rec>
+std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray, TraversalCounters& counters,
+                             Rec& rec, std::uint32_t rayId) {
+    if constexpr (Rec::kEnabled)
+        return std::visit([&](const auto& a) { return a.intersect(ray, counters, rec, rayId); },
+                          accel);
+    else
+        return intersect(accel, ray, counters);
+}
+template <typename Rec>
+bool occluded(const Accelerator& accel, const Ray& ray, TraversalCounters& counters, Rec& rec,
+              std::uint32_t rayId) {
+    if constexpr (Rec::kEnabled)
+        return std::visit([&](const auto& a) { return a.occluded(ray, counters, rec, rayId); },
+                          accel);
+    else
+        return occluded(accel, ray, counters);
+}
+
+/// What a structure's build made, for `raystep-cli build` and `compare`.
+struct BuildSummary {
+    TreeStats stats;
+    std::string description;  // e.g. "grid 64x48x64", "kdtree sah"
+};
+BuildSummary summarize(const Accelerator& accel);
 
 }  // namespace raystep

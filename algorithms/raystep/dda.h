@@ -115,6 +115,8 @@ class Dda {
     }
     /// Where the ray enters and leaves the current cell (clipped to [tMin, tMax]).
     T tEnter() const { return T(enter_.t); }
+    /// Where the ray leaves the grid (or reaches tMax).
+    T tLeave() const { return T(exit_.t); }
     T tExit() const {
         const auto [next, axes] = nextCrossing();
         return T(axes && compareCrossings(next, exit_) < 0 ? next.t : exit_.t);

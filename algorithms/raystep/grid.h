@@ -1,9 +1,11 @@
 #pragma once
 // The uniform grid of the lecture: primitives listed in every cell their bounds overlap, and the
-// ray walked cell by cell with the 3D-DDA, testing only what the cells it crosses hold.
+// ray walked cell by cell with the DDA, testing only what the cells it crosses hold. One template
+// for the 3D scene and the lecture's 2D pictures.
 #include "raystep/accel_types.h"
 #include "raystep/dda.h"
-#include "raystep/scene.h"
+#include "raystep/events.h"
+#include "raystep/prims.h"
 
 #include <array>
 #include <optional>
@@ -19,32 +21,46 @@ struct GridOptions {
     static constexpr int kMaxCellsPerAxis = 512;
 };
 
-class UniformGrid {
+template <typename Prims>
+class UniformGridT {
   public:
-    UniformGrid(const Scene& scene, KernelOptions kernels, const GridOptions& options);
+    static constexpr int N = Prims::N;
+    using RayT = typename Prims::RayT;
+    using HitT = typename Prims::HitT;
 
-    std::optional<Hit> intersect(Ray ray, TraversalCounters& counters) const;
-    bool occluded(Ray ray, TraversalCounters& counters) const;
-    const KernelOptions& kernels() const { return kernels_; }
+    UniformGridT(Prims prims, const GridOptions& options);
 
-    const GridSpec<3, double>& spec() const { return spec_; }
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const;
+    bool occluded(RayT ray, TraversalCounters& counters) const;
+    /// The same queries, recording the DDA's set-up, every cell, test and mailbox skip.
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                                  std::uint32_t rayId) const;
+    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const;
+
+    const Prims& primitives() const { return prims_; }
+    const KernelOptions& kernels() const { return prims_.kernels(); }
+    const GridSpec<N, double>& spec() const { return spec_; }
     std::size_t cellCount() const { return cellStart_.size() - 1; }
     std::size_t references() const { return cellPrims_.size(); }
     std::size_t emptyCells() const;
-    /// The primitives listed in cell (x, y, z).
-    std::span<const std::uint32_t> cell(int x, int y, int z) const;
+    double buildMs() const { return buildMs_; }
+    /// The primitives listed in a cell.
+    std::span<const std::uint32_t> cell(const IVecN<N>& c) const;
 
   private:
-    template <bool AnyHit>
-    std::optional<Hit> walk(Ray ray, TraversalCounters& counters) const;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> walk(RayT ray, TraversalCounters& counters, Rec& rec,
+                             std::uint32_t rayId) const;
+    std::size_t index(const IVecN<N>& c) const;
 
-    const Scene* scene_;
-    KernelOptions kernels_;
+    Prims prims_;
     bool mailbox_;
-    GridSpec<3, double> spec_;
-    std::vector<std::uint32_t>
-        cellStart_;  // cell c holds cellPrims_[cellStart_[c] .. cellStart_[c+1])
+    GridSpec<N, double> spec_;
+    std::vector<std::uint32_t> cellStart_;  // cell c holds cellPrims_[cellStart_[c] .. [c+1])
     std::vector<std::uint32_t> cellPrims_;
+    double buildMs_ = 0.0;
 };
+
+using UniformGrid = UniformGridT<ScenePrims>;
 
 }  // namespace raystep

@@ -55,12 +55,20 @@ class Tracer {
 
     /// Radiance of pixel (x, y) averaged over `spp` samples, with that pixel's own random stream.
     Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const;
+    /// The same pixel with its whole ray tree recorded into `log`: every ray, DDA step, node,
+    /// test, hit and shading term, then the pixel's colour. Same colour as renderPixel.
+    Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters,
+                      EventLog& log) const;
 
   private:
-    Color trace(const Ray& ray, RayKind kind, int depth, bool diffuseBranched, Pcg32& rng,
-                RayCounters& counters) const;
-    Color shade(const Ray& ray, const Hit& hit, int depth, bool diffuseBranched, Pcg32& rng,
-                RayCounters& counters) const;
+    template <typename Rec>
+    Color pixel(int x, int y, const RenderOptions& options, RayCounters& counters, Rec& rec) const;
+    template <typename Rec>
+    Color trace(const Ray& ray, RayKind kind, int depth, std::uint32_t parent, bool diffuseBranched,
+                Pcg32& rng, RayCounters& counters, Rec& rec) const;
+    template <typename Rec>
+    Color shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int depth,
+                bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const;
 
     const Scene& scene_;
     const Accelerator& accel_;

@@ -101,21 +101,58 @@ TEST_P(EveryScene, GridFindsWhatBruteForceFinds) {
                    GetParam() + " 97x3x61");
 }
 
+TEST_P(EveryScene, KdTreeFindsWhatBruteForceFinds) {
+    const Scene s = loadBuiltinScene(GetParam());
+    const int count = s.primitiveCount() > 1000 ? 400 : 3000;
+    for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+        for (bool mailbox : {true, false}) {
+            AccelOptions opt;
+            opt.kdtree.split = split;
+            opt.kdtree.mailbox = mailbox;
+            expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, opt), count,
+                           GetParam() + " kdtree " + std::string(name(split)) +
+                               (mailbox ? "" : " without mailbox"));
+        }
+    }
+    // Extremes of the parameters: one level only, and huge leaves.
+    AccelOptions shallow, fat;
+    shallow.kdtree.maxDepth = 1;
+    fat.kdtree.leafSize = 50;
+    expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, shallow), count / 4,
+                   GetParam() + " kdtree depth 1");
+    expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, fat), count / 4,
+                   GetParam() + " kdtree leaf size 50");
+}
+
+TEST_P(EveryScene, BvhFindsWhatBruteForceFinds) {
+    const Scene s = loadBuiltinScene(GetParam());
+    const int count = s.primitiveCount() > 1000 ? 400 : 3000;
+    for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+        AccelOptions opt;
+        opt.bvh.split = split;
+        expectSameHits(s, buildAccelerator(s, AccelKind::Bvh, {}, opt), count,
+                       GetParam() + " bvh " + std::string(name(split)));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Builtin, EveryScene,
                          ::testing::Values("default", "whitted", "cornell", "stadium"));
 
-TEST(Grid, RenderMatchesBruteForce) {
-    for (const char* name : {"default", "whitted"}) {
-        const Scene s = loadBuiltinScene(name);
+TEST(Accelerators, RendersMatchBruteForce) {
+    for (const char* scene : {"default", "whitted", "cornell"}) {
+        const Scene s = loadBuiltinScene(scene);
         RenderOptions opt;
         opt.width = 40;
         opt.height = 30;
         opt.trace.bounces = 4;
         const RenderResult brute = render(s, buildAccelerator(s, AccelKind::BruteForce), opt);
-        const RenderResult grid = render(s, buildAccelerator(s, AccelKind::Grid), opt);
-        EXPECT_EQ(grid.image.pixels, brute.image.pixels) << name;
-        EXPECT_EQ(grid.counters.rays, brute.counters.rays) << name;
-        EXPECT_GT(grid.counters.traversal.nodeVisits, 0u);
+        for (AccelKind kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+            const RenderResult r = render(s, buildAccelerator(s, kind), opt);
+            const std::string what = std::string(scene) + " " + std::string(accelKindName(kind));
+            EXPECT_EQ(r.image.pixels, brute.image.pixels) << what;
+            EXPECT_EQ(r.counters.rays, brute.counters.rays) << what;
+            EXPECT_GT(r.counters.traversal.nodeVisits, 0u) << what;
+        }
     }
 }
 
@@ -128,7 +165,7 @@ TEST(Grid, ClearyWyvillResolution) {
     s.spheres.push_back({Vec3(0.5, 0.5, 0.5), 0.5, 0});
     s.spheres.push_back({Vec3(1.5, 0.5, 0.5), 0.5, 0});
     // Bounds are [0, 2] x [0, 1] x [0, 1]: V = 2, N = 252, lambda 4: cbrt(504) = 7.96 per unit.
-    const UniformGrid g(s, {}, GridOptions{});
+    const UniformGrid g(ScenePrims(s, {}), GridOptions{});
     EXPECT_EQ(g.spec().res, IVecN<3>(16, 8, 8));
     EXPECT_EQ(g.cellCount(), 16u * 8u * 8u);
     // A primitive is listed in every cell its bounds overlap: the big spheres cover 8 x 8 x 8.

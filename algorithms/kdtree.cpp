@@ -1,0 +1,494 @@
+#include "raystep/kdtree.h"
+
+#include "raystep/mailbox.h"
+#include "raystep/names.h"
+#include "raystep/scene2d.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+
+namespace raystep {
+
+namespace {
+constexpr NameTable<SplitMethod, 3> kSplitNames{{{SplitMethod::Midpoint, "midpoint"},
+                                                 {SplitMethod::Median, "median"},
+                                                 {SplitMethod::Sah, "sah"}}};
+
+// Wald & Havran's split events: where a primitive's (clipped) bounds start and end along an
+// axis, or lie flat in a plane. Sorted by (axis, position, type): at one position, the primitives
+// that end come first, then the flat ones, then those that start.
+enum class EventType : std::uint8_t { End = 0, Planar = 1, Start = 2 };
+struct SplitEvent {
+    double pos;
+    std::uint32_t prim;
+    std::uint8_t axis;
+    EventType type;
+    bool operator<(const SplitEvent& o) const {
+        if (axis != o.axis) return axis < o.axis;
+        if (pos != o.pos) return pos < o.pos;
+        return type < o.type;
+    }
+};
+
+enum class Side : std::uint8_t { Both, Left, Right };
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr int kMaxDepthCap = 60;  // the traversal stack holds one entry per level
+}  // namespace
+
+std::optional<SplitMethod> parseSplitMethod(std::string_view s) {
+    return valueNamed(kSplitNames, s);
+}
+std::string_view name(SplitMethod m) {
+    return nameOf(kSplitNames, m);
+}
+
+/// The build: state shared by the recursion.
+template <typename Prims, typename Rec>
+class KdBuilder {
+  public:
+    static constexpr int N = Prims::N;
+    using Box = BoxN<N>;
+
+    KdBuilder(const Prims& prims, const KdTreeOptions& opt, int maxDepth, Rec& rec,
+              std::vector<KdNode>& nodes, std::vector<std::uint32_t>& ids, TreeStats& stats)
+        : prims_(prims),
+          opt_(opt),
+          maxDepth_(maxDepth),
+          rec_(rec),
+          nodes_(nodes),
+          ids_(ids),
+          stats_(stats) {
+        primBounds_.resize(prims.count());
+        for (std::uint32_t p = 0; p < prims.count(); ++p) primBounds_[p] = prims.bounds(p);
+    }
+
+    void run(const Box& box) {
+        const std::uint32_t n = prims_.count();
+        if (opt_.split == SplitMethod::Sah) {
+            side_.assign(n, Side::Both);
+            std::vector<SplitEvent> events;
+            events.reserve(std::size_t(2) * N * n);
+            for (std::uint32_t p = 0; p < n; ++p)
+                addEvents(p, primBounds_[p].clippedTo(box), events);
+            std::sort(events.begin(), events.end());
+            buildSah(std::move(events), n, box, 0, kNoId);
+        } else {
+            std::vector<std::uint32_t> all(n);
+            for (std::uint32_t p = 0; p < n; ++p) all[p] = p;
+            buildSimple(std::move(all), box, 0, kNoId);
+        }
+    }
+
+  private:
+    static void addEvents(std::uint32_t p, const Box& b, std::vector<SplitEvent>& out) {
+        for (int a = 0; a < N; ++a) {
+            const auto axis = static_cast<std::uint8_t>(a);
+            if (b.lo[a] == b.hi[a]) {
+                out.push_back({b.lo[a], p, axis, EventType::Planar});
+            } else {
+                out.push_back({b.lo[a], p, axis, EventType::Start});
+                out.push_back({b.hi[a], p, axis, EventType::End});
+            }
+        }
+    }
+
+    std::uint32_t openNode(const Box& box, int depth, std::uint32_t count, std::uint32_t parent) {
+        const auto id = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        stats_.maxDepth = std::max<std::uint32_t>(stats_.maxDepth, depth);
+        if constexpr (Rec::kEnabled) {
+            rec_.node(id, box.lo3(), box.hi3());
+            rec_(BuildNode{id, parent, static_cast<std::uint32_t>(depth), count});
+        }
+        return id;
+    }
+
+    void makeLeaf(std::uint32_t id, std::vector<std::uint32_t> prims, LeafReason reason,
+                  int depth) {
+        std::sort(prims.begin(), prims.end());  // tested in id order, as brute force does
+        KdNode& node = nodes_[id];
+        node.axis = KdNode::kLeaf;
+        node.index = static_cast<std::uint32_t>(ids_.size());
+        node.count = static_cast<std::uint32_t>(prims.size());
+        ids_.insert(ids_.end(), prims.begin(), prims.end());
+        ++stats_.leaves;
+        stats_.emptyLeaves += prims.empty();
+        ++stats_.leafReasons[static_cast<int>(reason)];
+        if constexpr (Rec::kEnabled)
+            rec_(LeafMade{id, reason, node.count, static_cast<std::uint32_t>(depth),
+                          opt_.cIsect * node.count});
+    }
+
+    /// Checks shared by every strategy; true if the node must be a leaf (and makes it).
+    bool leafByCount(std::uint32_t id, std::uint32_t n, int depth,
+                     const std::function<std::vector<std::uint32_t>()>& prims) {
+        if (n <= static_cast<std::uint32_t>(opt_.leafSize)) {
+            makeLeaf(id, prims(), LeafReason::FewPrimitives, depth);
+            return true;
+        }
+        if (depth >= maxDepth_) {
+            makeLeaf(id, prims(), LeafReason::MaxDepth, depth);
+            return true;
+        }
+        return false;
+    }
+
+    static std::pair<Box, Box> splitBox(const Box& box, int axis, double pos) {
+        Box l = box, r = box;
+        l.hi[axis] = pos;
+        r.lo[axis] = pos;
+        return {l, r};
+    }
+
+    /// Wald & Havran: one sweep over the sorted events of each axis evaluates every candidate
+    /// plane; the chosen plane splits the event lists in order, so no sort happens below the root
+    /// except for the few primitives that straddle the plane.
+    void buildSah(std::vector<SplitEvent> events, std::uint32_t n, const Box& box, int depth,
+                  std::uint32_t parent) {
+        const std::uint32_t id = openNode(box, depth, n, parent);
+        const auto nodePrims = [&] {
+            std::vector<std::uint32_t> prims;
+            prims.reserve(n);
+            for (const SplitEvent& e : events)
+                if (e.axis == 0 && e.type != EventType::End) prims.push_back(e.prim);
+            return prims;
+        };
+        if (leafByCount(id, n, depth, nodePrims)) return;
+
+        const double areaC = box.area();
+        const double leafCost = opt_.cIsect * n;
+        double bestCost = kInfinity, bestPos = 0.0;
+        int bestAxis = -1;
+        bool bestPlanarLeft = true;
+        std::size_t i = 0;
+        for (int axis = 0; axis < N; ++axis) {
+            std::uint32_t nl = 0, nr = n;
+            while (i < events.size() && events[i].axis == axis) {
+                const double p = events[i].pos;
+                std::uint32_t ends = 0, planars = 0, starts = 0;
+                while (i < events.size() && events[i].axis == axis && events[i].pos == p &&
+                       events[i].type == EventType::End)
+                    ++ends, ++i;
+                while (i < events.size() && events[i].axis == axis && events[i].pos == p &&
+                       events[i].type == EventType::Planar)
+                    ++planars, ++i;
+                while (i < events.size() && events[i].axis == axis && events[i].pos == p &&
+                       events[i].type == EventType::Start)
+                    ++starts, ++i;
+                nr -= planars + ends;
+                // Only planes strictly inside the node cut it into two smaller boxes.
+                if (p > box.lo[axis] && p < box.hi[axis] && areaC > 0.0) {
+                    const auto [l, r] = splitBox(box, axis, p);
+                    const double pl = l.area() / areaC, pr = r.area() / areaC;
+                    // Primitives lying in the plane go to whichever side is cheaper.
+                    const double costL =
+                        sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl + planars, nr);
+                    const double costR =
+                        sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr + planars);
+                    const bool planarLeft = costL <= costR;
+                    const double cost = planarLeft ? costL : costR;
+                    if constexpr (Rec::kEnabled)
+                        rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis),
+                                            planarLeft ? nl + planars : nl,
+                                            planarLeft ? nr : nr + planars, p, pl, pr, cost});
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        bestPos = p;
+                        bestAxis = axis;
+                        bestPlanarLeft = planarLeft;
+                    }
+                }
+                nl += starts + planars;
+            }
+        }
+        if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
+        if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
+
+        // Which side each primitive goes to, read off its events on the chosen axis.
+        for (const SplitEvent& e : events) side_[e.prim] = Side::Both;
+        for (const SplitEvent& e : events) {
+            if (e.axis != bestAxis) continue;
+            if (e.type == EventType::End && e.pos <= bestPos)
+                side_[e.prim] = Side::Left;
+            else if (e.type == EventType::Start && e.pos >= bestPos)
+                side_[e.prim] = Side::Right;
+            else if (e.type == EventType::Planar) {
+                if (e.pos < bestPos || (e.pos == bestPos && bestPlanarLeft))
+                    side_[e.prim] = Side::Left;
+                else
+                    side_[e.prim] = Side::Right;
+            }
+        }
+        const auto [boxL, boxR] = splitBox(box, bestAxis, bestPos);
+        std::vector<SplitEvent> left, right, bothL, bothR;
+        std::uint32_t nl = 0, nr = 0;
+        for (const SplitEvent& e : events) {
+            const Side s = side_[e.prim];
+            if (s == Side::Left)
+                left.push_back(e);
+            else if (s == Side::Right)
+                right.push_back(e);
+            if (e.axis == 0 && e.type != EventType::End) {  // once per primitive
+                nl += s != Side::Right;
+                nr += s != Side::Left;
+                if (s == Side::Both) {
+                    // A straddling primitive's bounds, clipped to each side, give new events.
+                    addEvents(e.prim, primBounds_[e.prim].clippedTo(boxL), bothL);
+                    addEvents(e.prim, primBounds_[e.prim].clippedTo(boxR), bothR);
+                }
+            }
+        }
+        events.clear();
+        events.shrink_to_fit();
+        std::sort(bothL.begin(), bothL.end());
+        std::sort(bothR.begin(), bothR.end());
+        std::vector<SplitEvent> mergedL(left.size() + bothL.size());
+        std::merge(left.begin(), left.end(), bothL.begin(), bothL.end(), mergedL.begin());
+        std::vector<SplitEvent> mergedR(right.size() + bothR.size());
+        std::merge(right.begin(), right.end(), bothR.begin(), bothR.end(), mergedR.begin());
+        left = {};
+        right = {};
+
+        split(id, bestAxis, bestPos, bestCost, leafCost);
+        buildSah(std::move(mergedL), nl, boxL, depth + 1, id);
+        nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
+        buildSah(std::move(mergedR), nr, boxR, depth + 1, id);
+    }
+
+    void split(std::uint32_t id, int axis, double pos, double cost, double leafCost) {
+        nodes_[id].axis = static_cast<std::uint8_t>(axis);
+        nodes_[id].split = pos;
+        if constexpr (Rec::kEnabled)
+            rec_(SplitChosen{id, static_cast<std::uint8_t>(axis), pos, cost, leafCost});
+    }
+
+    /// Midpoint and median: one plane on the node's longest axis, the middle of the node or the
+    /// median of the primitives' centres.
+    void buildSimple(std::vector<std::uint32_t> prims, const Box& box, int depth,
+                     std::uint32_t parent) {
+        const auto n = static_cast<std::uint32_t>(prims.size());
+        const std::uint32_t id = openNode(box, depth, n, parent);
+        if (leafByCount(id, n, depth, [&] { return prims; })) return;
+
+        const int axis = box.longestAxis();
+        double pos;
+        if (opt_.split == SplitMethod::Midpoint) {
+            pos = box.centroid()[axis];
+        } else {
+            std::vector<double> centres(n);
+            for (std::uint32_t k = 0; k < n; ++k)
+                centres[k] = primBounds_[prims[k]].clippedTo(box).centroid()[axis];
+            std::nth_element(centres.begin(), centres.begin() + n / 2, centres.end());
+            pos = centres[n / 2];
+        }
+        if (!(pos > box.lo[axis] && pos < box.hi[axis]))
+            return makeLeaf(id, std::move(prims), LeafReason::NoSplit, depth);
+
+        std::vector<std::uint32_t> left, right;
+        for (std::uint32_t p : prims) {
+            const Box b = primBounds_[p].clippedTo(box);
+            if (b.hi[axis] <= pos) {
+                left.push_back(p);  // wholly below (a primitive flat in the plane goes left)
+            } else if (b.lo[axis] >= pos) {
+                right.push_back(p);
+            } else {
+                left.push_back(p);
+                right.push_back(p);
+            }
+        }
+        const auto nl = static_cast<std::uint32_t>(left.size());
+        const auto nr = static_cast<std::uint32_t>(right.size());
+        const auto [boxL, boxR] = splitBox(box, axis, pos);
+        const double areaC = box.area();
+        const double pl = areaC > 0 ? boxL.area() / areaC : 0.5;
+        const double pr = areaC > 0 ? boxR.area() / areaC : 0.5;
+        const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
+        if constexpr (Rec::kEnabled)
+            rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr, cost});
+        if (nl == n && nr == n)
+            return makeLeaf(id, std::move(prims), LeafReason::NoProgress, depth);
+        prims = {};
+        split(id, axis, pos, cost, opt_.cIsect * n);
+        buildSimple(std::move(left), boxL, depth + 1, id);
+        nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
+        buildSimple(std::move(right), boxR, depth + 1, id);
+    }
+
+    const Prims& prims_;
+    const KdTreeOptions& opt_;
+    int maxDepth_;
+    Rec& rec_;
+    std::vector<KdNode>& nodes_;
+    std::vector<std::uint32_t>& ids_;
+    TreeStats& stats_;
+    std::vector<Box> primBounds_;
+    std::vector<Side> side_;
+};
+
+/// The tree's SAH cost, node by node from the root box (no empty bonus: the expected cost).
+template <int N>
+double treeSahCost(const std::vector<KdNode>& nodes, std::uint32_t id, const BoxN<N>& box,
+                   const KdTreeOptions& opt) {
+    const KdNode& node = nodes[id];
+    if (node.leaf()) return opt.cIsect * node.count;
+    BoxN<N> l = box, r = box;
+    l.hi[node.axis] = node.split;
+    r.lo[node.axis] = node.split;
+    const double area = box.area();
+    return opt.cTrav + (l.area() / area) * treeSahCost(nodes, id + 1, l, opt) +
+           (r.area() / area) * treeSahCost(nodes, node.index, r, opt);
+}
+
+template <typename Prims>
+KdTree<Prims>::KdTree(Prims prims, const KdTreeOptions& options)
+    : prims_(std::move(prims)), options_(options) {
+    NullRecorder rec;
+    build(rec);
+}
+
+template <typename Prims>
+KdTree<Prims>::KdTree(Prims prims, const KdTreeOptions& options, EventLog& log)
+    : prims_(std::move(prims)), options_(options) {
+    build(log);
+}
+
+template <typename Prims>
+template <typename Rec>
+void KdTree<Prims>::build(Rec& rec) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint32_t n = prims_.count();
+    options_.leafSize = std::max(options_.leafSize, 0);
+    maxDepth_ = options_.maxDepth > 0
+                    ? options_.maxDepth
+                    : static_cast<int>(std::lround(8 + 1.3 * std::log2(std::max(n, 1u))));
+    maxDepth_ = std::min(maxDepth_, kMaxDepthCap);
+    bounds_ = BoxN<N>{};
+    for (std::uint32_t p = 0; p < n; ++p) bounds_.extend(prims_.bounds(p));
+    if (n == 0) bounds_ = BoxN<N>{VecN<N, double>(0.0), VecN<N, double>(0.0)};
+    KdBuilder<Prims, Rec> builder(prims_, options_, maxDepth_, rec, nodes_, primIds_, stats_);
+    builder.run(bounds_);
+    stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
+    stats_.references = primIds_.size();
+    stats_.sahCost =
+        bounds_.area() > 0 ? treeSahCost(nodes_, 0, bounds_, options_) : options_.cIsect * n;
+    stats_.buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <typename Prims>
+template <bool AnyHit, typename Rec>
+auto KdTree<Prims>::traverse(RayT ray, TraversalCounters& counters, Rec& rec,
+                             std::uint32_t rayId) const -> std::optional<HitT> {
+    const VecN<N, double> invDir = inverseDirection<N>(ray.dir);
+    const auto range = intersectBoxN<N>(ray.origin, invDir, bounds_, ray.tMin, ray.tMax);
+    if (!range) {
+        if constexpr (Rec::kEnabled) rec(NodeSkip{rayId, 0, kInfinity, kInfinity});
+        return std::nullopt;
+    }
+    Mailbox* mailbox = options_.mailbox ? &Mailbox::forThisThread() : nullptr;
+    if (mailbox) mailbox->beginRay(prims_.count());
+
+    struct Todo {
+        std::uint32_t node;
+        double tNear, tFar;
+    };
+    Todo todo[kMaxDepthCap + 1];
+    int top = 0;
+    std::optional<HitT> closest;
+    HitT hit;
+    std::uint32_t id = 0;
+    double tNear = range->first, tFar = range->second;
+    for (;;) {
+        // TestTree's early exit: the nearest hit lies before this node, and before every node
+        // still on the stack (they are further along the ray).
+        if (closest && closest->t < tNear) {
+            if constexpr (Rec::kEnabled) {
+                rec(NodeSkip{rayId, id, tNear, tFar});
+                while (top > 0) {
+                    --top;
+                    rec(NodeSkip{rayId, todo[top].node, todo[top].tNear, todo[top].tFar});
+                }
+            }
+            break;
+        }
+        ++counters.nodeVisits;
+        if constexpr (Rec::kEnabled) rec(NodeEnter{rayId, id, tNear, tFar});
+        const KdNode& node = nodes_[id];
+        if (!node.leaf()) {
+            const int axis = node.axis;
+            const double o = ray.origin[axis];
+            // The split plane's t, with its rounding bounded (two roundings, 4 eps is ample):
+            // the children's intervals overlap by that much rather than leave a gap.
+            const double tSplit = (node.split - o) * invDir[axis];
+            const double tSplitLo = tSplit * (1 - 4 * kEps), tSplitHi = tSplit * (1 + 4 * kEps);
+            const bool belowFirst = o < node.split || (o == node.split && ray.dir[axis] <= 0);
+            const std::uint32_t first = belowFirst ? id + 1 : node.index;
+            const std::uint32_t second = belowFirst ? node.index : id + 1;
+            // The sign of tSplit is exact: a rounded difference keeps its sign.
+            if (!(tSplit > 0) || tSplitLo > tFar) {
+                if constexpr (Rec::kEnabled) rec(NodeSkip{rayId, second, tSplit, tSplit});
+                id = first;
+            } else if (tSplitHi < tNear) {
+                if constexpr (Rec::kEnabled) rec(NodeSkip{rayId, first, tSplit, tSplit});
+                id = second;
+            } else {
+                todo[top++] = {second, std::max(tSplitLo, tNear), tFar};
+                id = first;
+                tFar = std::min(tSplitHi, tFar);
+            }
+            continue;
+        }
+        for (std::uint32_t k = 0; k < node.count; ++k) {
+            const std::uint32_t p = primIds_[node.index + k];
+            if (mailbox && mailbox->seen(p)) {
+                ++counters.mailboxSkips;
+                if constexpr (Rec::kEnabled) rec(MailboxSkip{rayId, p});
+                continue;
+            }
+            ++counters.primitiveTests;
+            const bool isHit = AnyHit ? prims_.intersect(p, ray, hit)
+                                      : testForNearest(prims_, p, ray, hit, closest);
+            if constexpr (Rec::kEnabled)
+                rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
+            if (isHit) {
+                if constexpr (AnyHit) return hit;
+                closest = hit;
+            }
+        }
+        if (top == 0) break;
+        --top;
+        id = todo[top].node;
+        tNear = todo[top].tNear;
+        tFar = todo[top].tFar;
+    }
+    return closest;
+}
+
+template <typename Prims>
+auto KdTree<Prims>::intersect(RayT ray, TraversalCounters& counters) const -> std::optional<HitT> {
+    NullRecorder rec;
+    return traverse<false>(ray, counters, rec, kNoId);
+}
+template <typename Prims>
+bool KdTree<Prims>::occluded(RayT ray, TraversalCounters& counters) const {
+    NullRecorder rec;
+    return traverse<true>(ray, counters, rec, kNoId).has_value();
+}
+template <typename Prims>
+auto KdTree<Prims>::intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                              std::uint32_t rayId) const -> std::optional<HitT> {
+    return traverse<false>(ray, counters, log, rayId);
+}
+template <typename Prims>
+bool KdTree<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
+                             std::uint32_t rayId) const {
+    return traverse<true>(ray, counters, log, rayId).has_value();
+}
+
+template class KdTree<ScenePrims>;
+template class KdTree<Scene2DPrims>;
+
+}  // namespace raystep

@@ -1,0 +1,142 @@
+#pragma once
+// What the hierarchies see of a scene, in any dimension: a numbered set of primitives with
+// bounds and a ray test. The 3D scene and the lecture's 2D scenes (segments and circles) both
+// provide one, so the kd-tree and the BVH run the same code on both (DESIGN.md: dimension is a
+// template parameter, never a copy).
+#include "raystep/dda.h"
+#include "raystep/intersect.h"
+#include "raystep/scene.h"
+
+#include <optional>
+#include <utility>
+
+namespace raystep {
+
+/// Axis-aligned box in N dimensions.
+template <int N>
+struct BoxN {
+    using V = VecN<N, double>;
+    V lo{kInfinity};
+    V hi{-kInfinity};
+
+    void extend(const V& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void extend(const BoxN& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    bool empty() const {
+        for (int i = 0; i < N; ++i)
+            if (lo[i] > hi[i]) return true;
+        return false;
+    }
+    V diagonal() const { return hi - lo; }
+    V centroid() const { return 0.5 * (lo + hi); }
+    /// The SAH's "area": the surface area in 3D; in 2D the perimeter (a random line meets a
+    /// convex region with probability proportional to its perimeter, as a random ray meets a
+    /// convex body in proportion to its surface).
+    double area() const {
+        const V d = glm::max(diagonal(), V(0.0));
+        if constexpr (N == 3)
+            return 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
+        else
+            return 2.0 * (d.x + d.y);
+    }
+    int longestAxis() const {
+        const V d = diagonal();
+        int axis = 0;
+        for (int i = 1; i < N; ++i)
+            if (d[i] > d[axis]) axis = i;
+        return axis;
+    }
+    BoxN clippedTo(const BoxN& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
+    /// Padded to three coordinates, for the event log's node table.
+    std::array<double, 3> lo3() const { return pad(lo); }
+    std::array<double, 3> hi3() const { return pad(hi); }
+
+  private:
+    static std::array<double, 3> pad(const V& v) {
+        std::array<double, 3> a{0.0, 0.0, 0.0};
+        for (int i = 0; i < N; ++i) a[i] = v[i];
+        return a;
+    }
+};
+
+inline BoxN<3> toBox(const Bounds3& b) {
+    return {b.lo, b.hi};
+}
+
+/// The slab test in N dimensions with the far side widened by 1 + 2 gamma(3) (Ize 2013), so
+/// rounding never makes a ray miss a box it touches. [tNear, tFar] within [tMin, tMax], or none.
+template <int N>
+std::optional<std::pair<double, double>> intersectBoxN(const VecN<N, double>& o,
+                                                       const VecN<N, double>& invDir,
+                                                       const BoxN<N>& box, double tMin,
+                                                       double tMax) {
+    double tNear = tMin, tFar = tMax;
+    for (int i = 0; i < N; ++i) {
+        if (std::isinf(invDir[i])) {  // parallel to this slab: inside it or never
+            if (o[i] < box.lo[i] || o[i] > box.hi[i]) return std::nullopt;
+            continue;
+        }
+        double t0 = (box.lo[i] - o[i]) * invDir[i];
+        double t1 = (box.hi[i] - o[i]) * invDir[i];
+        if (t0 > t1) std::swap(t0, t1);
+        t1 *= 1.0 + 2.0 * gamma<double>(3);
+        tNear = t0 > tNear ? t0 : tNear;
+        tFar = t1 < tFar ? t1 : tFar;
+        if (tNear > tFar) return std::nullopt;
+    }
+    return std::make_pair(tNear, tFar);
+}
+
+/// 1 / d per axis, with +-infinity for a zero component (the sign of -0.0 kept).
+template <int N>
+VecN<N, double> inverseDirection(const VecN<N, double>& d) {
+    VecN<N, double> inv;
+    for (int i = 0; i < N; ++i) inv[i] = 1.0 / d[i];
+    return inv;
+}
+
+/// Tests primitive `p` for the nearest hit, which is defined as the smallest t and, at equal t
+/// (a ray through a shared edge), the lowest primitive id: brute force's answer, whatever order a
+/// structure meets the primitives in. Shortens ray.tMax and updates `hit` when `p` wins.
+template <typename Prims, typename RayT, typename HitT>
+bool testForNearest(const Prims& prims, std::uint32_t p, RayT& ray, HitT& hit,
+                    const std::optional<HitT>& closest) {
+    if (closest && p < closest->prim) {
+        // A lower id also wins at exactly the same t: let the test accept t == tMax.
+        RayT tie = ray;
+        tie.tMax = std::nextafter(ray.tMax, kInfinity);
+        if (!prims.intersect(p, tie, hit)) return false;
+        ray.tMax = tie.tMax;
+        return true;
+    }
+    return prims.intersect(p, ray, hit);
+}
+
+/// The 3D scene as a primitive set, tested with the chosen kernels.
+class ScenePrims {
+  public:
+    static constexpr int N = 3;
+    using RayT = Ray;
+    using HitT = Hit;
+
+    ScenePrims(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
+    std::uint32_t count() const { return scene_->primitiveCount(); }
+    BoxN<3> bounds(std::uint32_t p) const { return toBox(scene_->primitiveBounds(p)); }
+    /// Updates `hit` and shortens ray.tMax when `p` is hit nearer.
+    bool intersect(std::uint32_t p, Ray& ray, Hit& hit) const {
+        return scene_->intersectPrimitive(p, ray, hit, kernels_);
+    }
+    const Scene& scene() const { return *scene_; }
+    const KernelOptions& kernels() const { return kernels_; }
+
+  private:
+    const Scene* scene_;
+    KernelOptions kernels_;
+};
+
+}  // namespace raystep
