@@ -235,9 +235,19 @@ class KdBuilder {
                 nl += s != Side::Right;
                 nr += s != Side::Left;
                 if (s == Side::Both) {
-                    // A straddling primitive's bounds, clipped to each side, give new events.
-                    addEvents(e.prim, primBounds_[e.prim].clippedTo(boxL), bothL);
-                    addEvents(e.prim, primBounds_[e.prim].clippedTo(boxR), bothR);
+                    // A straddling primitive, clipped to each side, gives new events there
+                    // ("perfect splits"); a side its bounding box overlaps but the primitive
+                    // itself misses does not get it at all.
+                    const Box l = prims_.clippedBounds(e.prim, boxL);
+                    const Box r = prims_.clippedBounds(e.prim, boxR);
+                    if (l.empty())
+                        --nl;
+                    else
+                        addEvents(e.prim, l, bothL);
+                    if (r.empty())
+                        --nr;
+                    else
+                        addEvents(e.prim, r, bothR);
                 }
             }
         }
@@ -280,28 +290,29 @@ class KdBuilder {
         } else {
             std::vector<double> centres(n);
             for (std::uint32_t k = 0; k < n; ++k)
-                centres[k] = primBounds_[prims[k]].clippedTo(box).centroid()[axis];
+                centres[k] = prims_.clippedBounds(prims[k], box).centroid()[axis];
             std::nth_element(centres.begin(), centres.begin() + n / 2, centres.end());
             pos = centres[n / 2];
         }
         if (!(pos > box.lo[axis] && pos < box.hi[axis]))
             return makeLeaf(id, std::move(prims), LeafReason::NoSplit, depth);
 
+        // Each primitive goes to every side its clipped part reaches (one flat in the plane, both).
+        const auto [boxL, boxR] = splitBox(box, axis, pos);
         std::vector<std::uint32_t> left, right;
         for (std::uint32_t p : prims) {
-            const Box b = primBounds_[p].clippedTo(box);
-            if (b.hi[axis] <= pos) {
-                left.push_back(p);  // wholly below (a primitive flat in the plane goes left)
-            } else if (b.lo[axis] >= pos) {
+            const Box& b = primBounds_[p];
+            if (b.hi[axis] < pos) {
+                left.push_back(p);  // wholly on one side: no clipping needed
+            } else if (b.lo[axis] > pos) {
                 right.push_back(p);
             } else {
-                left.push_back(p);
-                right.push_back(p);
+                if (!prims_.clippedBounds(p, boxL).empty()) left.push_back(p);
+                if (!prims_.clippedBounds(p, boxR).empty()) right.push_back(p);
             }
         }
         const auto nl = static_cast<std::uint32_t>(left.size());
         const auto nr = static_cast<std::uint32_t>(right.size());
-        const auto [boxL, boxR] = splitBox(box, axis, pos);
         const double areaC = box.area();
         const double pl = areaC > 0 ? boxL.area() / areaC : 0.5;
         const double pr = areaC > 0 ? boxR.area() / areaC : 0.5;
@@ -360,7 +371,7 @@ template <typename Rec>
 void KdTree<Prims>::build(Rec& rec) {
     const auto start = std::chrono::steady_clock::now();
     const std::uint32_t n = prims_.count();
-    options_.leafSize = std::max(options_.leafSize, 0);
+    if (options_.leafSize <= 0) options_.leafSize = options_.split == SplitMethod::Sah ? 1 : 4;
     maxDepth_ = options_.maxDepth > 0
                     ? options_.maxDepth
                     : static_cast<int>(std::lround(8 + 1.3 * std::log2(std::max(n, 1u))));

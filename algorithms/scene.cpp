@@ -1,6 +1,9 @@
 #include "raystep/scene.h"
 
 #include "raystep/kernels.h"
+#include "raystep/prims.h"
+
+#include <array>
 
 namespace raystep {
 
@@ -108,6 +111,39 @@ Vec3 Scene::normalAt(const Hit& hit, const Vec3& p) const {
         return glm::length(radial) > 0.0 ? glm::normalize(radial) : Vec3(0.0, 0.0, 1.0);
     }
     return triangle(hit.prim).normal();
+}
+
+BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
+    const Vec3 pad = 1e-6 * glm::max(box.diagonal(), Vec3(0.0));
+    const Vec3 lo = box.lo - pad, hi = box.hi + pad;
+    // A triangle clipped by six planes has at most 9 vertices.
+    std::array<Vec3, 12> poly{a, b, c}, next{};
+    std::size_t n = 3;
+    for (int axis = 0; axis < 3 && n > 0; ++axis) {
+        for (int side = 0; side < 2 && n > 0; ++side) {
+            const double plane = side == 0 ? lo[axis] : hi[axis];
+            const auto inside = [&](const Vec3& p) {
+                return side == 0 ? p[axis] >= plane : p[axis] <= plane;
+            };
+            std::size_t m = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec3& p = poly[i];
+                const Vec3& q = poly[(i + 1) % n];
+                if (inside(p)) next[m++] = p;
+                if (inside(p) != inside(q)) {
+                    // The edge crosses the plane: the crossing point, exactly on the plane.
+                    Vec3 x = p + (q - p) * ((plane - p[axis]) / (q[axis] - p[axis]));
+                    x[axis] = plane;
+                    next[m++] = x;
+                }
+            }
+            poly = next;
+            n = m;
+        }
+    }
+    BoxN<3> out;
+    for (std::size_t i = 0; i < n; ++i) out.extend(poly[i]);
+    return n == 0 ? BoxN<3>{} : out.clippedTo(box);
 }
 
 Scene transformScene(Scene s, double scale, const Vec3& shift) {

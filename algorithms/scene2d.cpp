@@ -67,4 +67,30 @@ bool Scene2D::intersectPrimitive(std::uint32_t p, Ray2& ray, Hit2& hit) const {
     return true;
 }
 
+BoxN<2> Scene2DPrims::clippedBounds(std::uint32_t p, const BoxN<2>& box) const {
+    if (scene_->isCircle(p)) return bounds(p).clippedTo(box);
+    // Liang-Barsky: the part of the segment a + s (b - a), s in [0, 1], inside the box (widened
+    // by a millionth so rounding never drops a segment that touches it).
+    const Segment2& seg = scene_->segments[p - scene_->circles.size()];
+    const Vec2 pad = 1e-6 * glm::max(box.diagonal(), Vec2(0.0));
+    const Vec2 lo = box.lo - pad, hi = box.hi + pad;
+    const Vec2 d = seg.b - seg.a;
+    double s0 = 0.0, s1 = 1.0;
+    for (int i = 0; i < 2; ++i) {
+        if (d[i] == 0.0) {
+            if (seg.a[i] < lo[i] || seg.a[i] > hi[i]) return {};
+            continue;
+        }
+        double e0 = (lo[i] - seg.a[i]) / d[i], e1 = (hi[i] - seg.a[i]) / d[i];
+        if (e0 > e1) std::swap(e0, e1);
+        s0 = std::max(s0, e0);
+        s1 = std::min(s1, e1);
+        if (s0 > s1) return {};
+    }
+    BoxN<2> out;
+    out.extend(seg.a + s0 * d);
+    out.extend(seg.a + s1 * d);
+    return out.clippedTo(box);
+}
+
 }  // namespace raystep

@@ -22,14 +22,15 @@ std::optional<SplitMethod> parseSplitMethod(std::string_view s);
 std::string_view name(SplitMethod m);
 
 /// Build parameters, the lecture's names. Defaults after pbrt-v4's kd-tree (traversal 1,
-/// intersection 5, empty bonus 0.5), except the leaf size, which the lessons vary.
+/// intersection 5, empty bonus 0.5, one primitive a leaf for the SAH). Midpoint and median have
+/// no cost to stop them, so their leaves default to 4 primitives.
 struct KdTreeOptions {
     SplitMethod split = SplitMethod::Sah;
     double cTrav = 1.0;       // cost of one traversal step
     double cIsect = 5.0;      // cost of one ray-primitive test
     double emptyBonus = 0.5;  // a split with an empty side costs (1 - emptyBonus) times as much
     int maxDepth = 0;         // 0 = round(8 + 1.3 log2 N) (pbrt)
-    int leafSize = 1;         // a node with this many primitives or fewer becomes a leaf
+    int leafSize = 0;         // this many primitives or fewer make a leaf; 0 = 1 (SAH) or 4
     bool mailbox = true;      // test a primitive listed in several leaves once per ray
 };
 

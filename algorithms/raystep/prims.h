@@ -100,6 +100,11 @@ VecN<N, double> inverseDirection(const VecN<N, double>& d) {
     return inv;
 }
 
+/// Bounds of the part of triangle abc inside `box` (Sutherland-Hodgman against the six planes):
+/// a kd-tree's "perfect split" bounds. Empty when the triangle misses the box. Clipped against
+/// the box widened by a millionth of its size, so rounding never drops a triangle that touches it.
+BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box);
+
 /// Tests primitive `p` for the nearest hit, which is defined as the smallest t and, at equal t
 /// (a ray through a shared edge), the lowest primitive id: brute force's answer, whatever order a
 /// structure meets the primitives in. Shortens ray.tMax and updates `hit` when `p` wins.
@@ -127,6 +132,13 @@ class ScenePrims {
     ScenePrims(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
     std::uint32_t count() const { return scene_->primitiveCount(); }
     BoxN<3> bounds(std::uint32_t p) const { return toBox(scene_->primitiveBounds(p)); }
+    /// Bounds of the part of `p` inside `box` (exact for triangles, the box's share of a
+    /// sphere's bounds otherwise); empty if `p` misses the box.
+    BoxN<3> clippedBounds(std::uint32_t p, const BoxN<3>& box) const {
+        if (scene_->isSphere(p)) return bounds(p).clippedTo(box);
+        const Triangle& t = scene_->triangle(p);
+        return clipTriangleBounds(t.a, t.b, t.c, box);
+    }
     /// Updates `hit` and shortens ray.tMax when `p` is hit nearer.
     bool intersect(std::uint32_t p, Ray& ray, Hit& hit) const {
         return scene_->intersectPrimitive(p, ray, hit, kernels_);

@@ -69,6 +69,8 @@ class Scene2DPrims {
     explicit Scene2DPrims(const Scene2D& scene) : scene_(&scene) {}
     std::uint32_t count() const { return scene_->primitiveCount(); }
     BoxN<2> bounds(std::uint32_t p) const { return scene_->primitiveBounds(p); }
+    /// Bounds of the part of `p` inside `box`; empty if it misses the box.
+    BoxN<2> clippedBounds(std::uint32_t p, const BoxN<2>& box) const;
     bool intersect(std::uint32_t p, Ray2& ray, Hit2& hit) const {
         return scene_->intersectPrimitive(p, ray, hit);
     }

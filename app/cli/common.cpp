@@ -1,7 +1,9 @@
 #include "common.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 namespace raystep::cli {
@@ -28,6 +30,29 @@ std::optional<std::vector<double>> parseNumbers(const std::string& text, char se
         if (end == std::string::npos) return out;
         start = end + 1;
     }
+}
+
+bool hasExtension(const std::string& path, const std::string& ext) {
+    std::string e = std::filesystem::path(path).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+    return e == ext;
+}
+
+std::optional<std::string> checkWritable(const std::string& option, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent))
+        return option + " " + path + ": folder '" + parent.string() + "' does not exist";
+    if (fs::is_directory(path)) return option + " " + path + ": is a folder";
+    return std::nullopt;
+}
+
+std::optional<int> parseInt(const std::string& text, int lo, int hi) {
+    int value = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+    if (value < lo || value > hi) return std::nullopt;
+    return value;
 }
 
 }  // namespace raystep::cli

@@ -1,8 +1,10 @@
 // raystep-cli: the renderer from the command line, for lecturers' scripts and for tests.
+#include "accel_args.h"
 #include "common.h"
 #include "dda_command.h"
 #include "intersect_command.h"
 #include "progress.h"
+#include "tree_commands.h"
 
 #include "raystep/accel.h"
 #include "raystep/image.h"
@@ -31,35 +33,13 @@ struct RenderArgs {
     std::string scene = "default";
     std::string output;
     std::optional<int> width, height, bounces, spp, diffuseSamples;
-    std::string accel = "bruteforce";
-    std::string precision = "double";
+    cli::AccelArgs accel;
     std::string rayOffset = "robust";
-    std::string triangleMethod = "watertight";
-    std::string sphereMethod = "stable";
-    double gridLambda = 4.0;
-    std::string gridRes;
-    std::string mailbox = "on";
     int threads = 0;
     std::uint64_t seed = 1;
     std::string stats;
     std::string heatmap;
 };
-
-bool hasExtension(const std::string& path, const std::string& ext) {
-    std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-    return e == ext;
-}
-
-/// Checks that a file can be created at `path` before any long work is done.
-std::optional<std::string> checkWritable(const std::string& option, const std::string& path) {
-    namespace fs = std::filesystem;
-    const fs::path parent = fs::path(path).parent_path();
-    if (!parent.empty() && !fs::is_directory(parent))
-        return option + " " + path + ": folder '" + parent.string() + "' does not exist";
-    if (fs::is_directory(path)) return option + " " + path + ": is a folder";
-    return std::nullopt;
-}
 
 int listScenes() {
     for (const std::string& name : builtinSceneNames()) {
@@ -73,52 +53,20 @@ int listScenes() {
 int runRender(const RenderArgs& a) {
     const std::string output =
         a.output.empty() ? std::filesystem::path(a.scene).stem().string() + ".png" : a.output;
-    if (!hasExtension(output, ".png"))
+    if (!cli::hasExtension(output, ".png"))
         return fail("-o " + output + ": the image is written as PNG; name it *.png");
-    if (!a.heatmap.empty() && !hasExtension(a.heatmap, ".png"))
+    if (!a.heatmap.empty() && !cli::hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
     for (const auto& [opt, path] : {std::pair<std::string, std::string>{"-o", output},
                                     {"--stats", a.stats},
                                     {"--heatmap", a.heatmap}}) {
         if (path.empty()) continue;
-        if (auto problem = checkWritable(opt, path)) return fail(*problem);
+        if (auto problem = cli::checkWritable(opt, path)) return fail(*problem);
     }
-    const auto accelKind = parseAccelKind(a.accel);
-    if (!accelKind)
-        return fail("--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh");
-    KernelOptions kernels;
-    const auto precision = parsePrecision(a.precision);
-    if (!precision) return fail("--precision " + a.precision + ": expected float or double");
+    cli::AccelChoice choice;
+    if (auto problem = cli::resolveAccel(a.accel, choice)) return fail(*problem);
     const auto offset = parseRayOffset(a.rayOffset);
     if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
-    const auto triangleMethod = parseTriangleMethod(a.triangleMethod);
-    if (!triangleMethod)
-        return fail("--triangle-method " + a.triangleMethod +
-                    ": expected plane, moller-trumbore or watertight");
-    const auto sphereMethod = parseSphereMethod(a.sphereMethod);
-    if (!sphereMethod)
-        return fail("--sphere-method " + a.sphereMethod + ": expected textbook or stable");
-    kernels = {*precision, *sphereMethod, *triangleMethod};
-    AccelOptions accelOptions;
-    if (!std::isfinite(a.gridLambda) || !(a.gridLambda > 0))
-        return fail("--grid-lambda " + std::to_string(a.gridLambda) +
-                    ": must be a finite number greater than 0");
-    accelOptions.grid.lambda = a.gridLambda;
-    if (!a.gridRes.empty()) {
-        const auto res = cli::parseNumbers(a.gridRes);
-        bool ok = res && res->size() == 3;
-        for (std::size_t i = 0; ok && i < 3; ++i)
-            ok = (*res)[i] == std::floor((*res)[i]) && (*res)[i] >= 1 &&
-                 (*res)[i] <= GridOptions::kMaxCellsPerAxis;
-        if (!ok)
-            return fail("--grid-res " + a.gridRes +
-                        ": expected NX,NY,NZ, whole numbers from 1 to " +
-                        std::to_string(GridOptions::kMaxCellsPerAxis));
-        accelOptions.grid.res = std::array<int, 3>{int((*res)[0]), int((*res)[1]), int((*res)[2])};
-    }
-    if (a.mailbox != "on" && a.mailbox != "off")
-        return fail("--mailbox " + a.mailbox + ": expected on or off");
-    accelOptions.grid.mailbox = a.mailbox == "on";
 
     Scene scene;
     try {
@@ -139,7 +87,7 @@ int runRender(const RenderArgs& a) {
 
     std::optional<Accelerator> accel;
     try {
-        accel = buildAccelerator(scene, *accelKind, kernels, accelOptions);
+        accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
     } catch (const std::exception& e) {
         return fail(e.what());
     }
@@ -163,17 +111,23 @@ int runRender(const RenderArgs& a) {
             j["spp"] = opt.spp;
             j["bounces"] = opt.trace.bounces;
             j["diffuse_samples"] = opt.trace.diffuseSamples;
-            j["accel"] = a.accel;
-            j["precision"] = a.precision;
+            j["accel"] = cli::describeAccel(choice);
+            j["precision"] = a.accel.precision;
             j["ray_offset"] = a.rayOffset;
-            j["triangle_method"] = a.triangleMethod;
-            j["sphere_method"] = a.sphereMethod;
+            j["triangle_method"] = a.accel.triangleMethod;
+            j["sphere_method"] = a.accel.sphereMethod;
             if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
                 const auto& res = grid->spec().res;
                 j["grid"] = {{"cells", {res.x, res.y, res.z}},
                              {"references", grid->references()},
                              {"empty_cells", grid->emptyCells()},
-                             {"mailbox", a.mailbox}};
+                             {"mailbox", a.accel.mailbox}};
+            }
+            if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+                const BuildSummary b = summarize(*accel);
+                j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
+                             {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},
+                             {"sah_cost", b.stats.sahCost},   {"build_ms", b.stats.buildMs}};
             }
             j["threads"] = opt.threads;
             j["seed"] = opt.seed;
@@ -228,27 +182,10 @@ int main(int argc, char** argv) {
         ->add_option("--diffuse-samples", r.diffuseSamples,
                      "Random diffuse bounce rays at the first diffuse hit (0 = none)")
         ->check(CLI::Range(0, 1024));
-    render->add_option("--accel", r.accel, "Accelerator: bruteforce, grid, kdtree or bvh")
-        ->capture_default_str();
-    render->add_option("--precision", r.precision, "Intersection arithmetic: float or double")
-        ->capture_default_str();
+    cli::addAccelOptions(render, r.accel);
     render
         ->add_option("--ray-offset", r.rayOffset,
                      "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
-        ->capture_default_str();
-    render
-        ->add_option("--triangle-method", r.triangleMethod,
-                     "Ray-triangle test: plane, moller-trumbore or watertight")
-        ->capture_default_str();
-    render->add_option("--sphere-method", r.sphereMethod, "Ray-sphere test: textbook or stable")
-        ->capture_default_str();
-    render
-        ->add_option("--grid-lambda", r.gridLambda,
-                     "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
-        ->capture_default_str();
-    render->add_option("--grid-res", r.gridRes,
-                       "Grid: cells per axis NX,NY,NZ instead of the rule");
-    render->add_option("--mailbox", r.mailbox, "Grid: test each primitive once per ray (on, off)")
         ->capture_default_str();
     render->add_option("--threads", r.threads, "Threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
@@ -258,14 +195,22 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    if (!first.empty() && first[0] != '-' && first != "scenes" && first != "render" &&
-        first != "intersect" && first != "dda")
+    const std::array<std::string, 7> commands = {"scenes", "render", "intersect", "dda",
+                                                 "build",  "trace",  "compare"};
+    if (!first.empty() && first[0] != '-' &&
+        std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
-                    "' (expected: scenes, render, intersect, dda)");
+                    "' (expected: scenes, render, intersect, dda, build, trace, compare)");
     cli::IntersectArgs intersectArgs;
     cli::addIntersectCommand(app, intersectArgs);
     cli::DdaArgs ddaArgs;
     cli::addDdaCommand(app, ddaArgs);
+    cli::BuildArgs buildArgs;
+    cli::addBuildCommand(app, buildArgs);
+    cli::TraceArgs traceArgs;
+    cli::addTraceCommand(app, traceArgs);
+    cli::CompareArgs compareArgs;
+    cli::addCompareCommand(app, compareArgs);
 
     try {
         app.parse(argc, argv);
@@ -280,5 +225,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("scenes")) return listScenes();
     if (app.got_subcommand("intersect")) return cli::runIntersect(intersectArgs);
     if (app.got_subcommand("dda")) return cli::runDda(ddaArgs);
+    if (app.got_subcommand("build")) return cli::runBuild(buildArgs);
+    if (app.got_subcommand("trace")) return cli::runTrace(traceArgs);
+    if (app.got_subcommand("compare")) return cli::runCompare(compareArgs);
     return runRender(r);
 }

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace {
@@ -125,10 +126,111 @@ TEST_F(Cli, BadCommandLineValues) {
     expectBadInput("render --no-such-flag", "no-such-flag");
     expectBadInput("frobnicate", "frobnicate");
     expectBadInput("render --accel octree", "--accel octree");
-    expectBadInput("render --accel kdtree", "not implemented yet");
+    expectBadInput("render --split octal", "--split octal");
+    expectBadInput("render --accel kdtree --c-isect 0", "--c-isect");
+    expectBadInput("render --accel kdtree --c-trav nan", "--c-trav");
+    expectBadInput("render --accel kdtree --empty-bonus 1.5", "--empty-bonus");
+    expectBadInput("render --accel kdtree --max-depth 99", "--max-depth");
+    expectBadInput("render --accel bvh --leaf-size 0", "--leaf-size");
+    expectBadInput("render --accel bvh --buckets 1", "--buckets");
+    expectBadInput("render --accel grid --grid-res 4,4", "--grid-res");
+    expectBadInput("build --accel octree", "--accel octree");
+    expectBadInput("build nosuchscene", "nosuchscene");
+    expectBadInput("build --events missing/e.json", "does not exist");
+    expectBadInput("trace --pixel 10,10", "--output");
+    expectBadInput("trace --pixel 1,x -o t.json", "--pixel 1,x");
+    expectBadInput("trace --pixel -1,0 -o t.json", "--pixel");
+    expectBadInput("trace --pixel 640,0 -o t.json", "outside the 640x480 image");
+    expectBadInput("trace --pixel 0,0 -o missing/t.json", "does not exist");
+    expectBadInput("compare --accel grid", "compare takes kdtree or bvh");
     expectBadInput("render -o picture.jpg", "*.png");
     expectBadInput("render -o missing/dir/x.png", "does not exist");
     expectBadInput("render --stats missing/s.json", "does not exist");
+}
+
+TEST_F(Cli, BuildReportsTheTree) {
+    for (const char* accel : {"kdtree", "bvh"}) {
+        for (const char* split : {"midpoint", "median", "sah"}) {
+            const CliRun r =
+                run(std::string("build default --json --accel ") + accel + " --split " + split);
+            ASSERT_EQ(r.code, 0) << r.err;
+            const auto j = nlohmann::json::parse(r.out);
+            const std::string what = std::string(accel) + " " + split;
+            EXPECT_EQ(j["structure"], what);
+            // A binary tree: every interior node has two children.
+            EXPECT_EQ(j["nodes"].get<int>(), 2 * j["leaves"].get<int>() - 1) << what;
+            EXPECT_GE(j["references"].get<int>(), 9) << what;  // 9 primitives, each listed
+            EXPECT_GT(j["sah_cost"].get<double>(), 0.0) << what;
+            EXPECT_GE(j["build_ms"].get<double>(), 0.0) << what;
+            EXPECT_GE(j["max_depth"].get<int>(), 1) << what;
+        }
+    }
+    const CliRun grid = run("build default --accel grid --grid-res 4,5,6 --json");
+    ASSERT_EQ(grid.code, 0) << grid.err;
+    EXPECT_EQ(nlohmann::json::parse(grid.out)["nodes"], 4 * 5 * 6);
+    const CliRun text = run("build stadium --accel kdtree");
+    ASSERT_EQ(text.code, 0) << text.err;
+    EXPECT_NE(text.out.find("SAH cost"), std::string::npos);
+}
+
+TEST_F(Cli, BuildEventsAreATraceFile) {
+    const CliRun r = run("build default --accel kdtree --split sah --events b.json --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto report = nlohmann::json::parse(r.out);
+    const auto t = nlohmann::json::parse(slurp(dir / "b.json"));
+    EXPECT_EQ(t["format"], "raystep-trace");
+    EXPECT_EQ(t["version"], 1);
+    EXPECT_EQ(t["what"], "build");
+    std::map<std::string, int> count;
+    for (const auto& e : t["events"]) ++count[e["type"].get<std::string>()];
+    EXPECT_EQ(count["build_node"], report["nodes"].get<int>());
+    EXPECT_EQ(count["leaf_made"], report["leaves"].get<int>());
+    EXPECT_EQ(count["split_chosen"], report["nodes"].get<int>() - report["leaves"].get<int>());
+    EXPECT_GT(count["split_candidate"], count["split_chosen"]);
+    EXPECT_EQ(t["nodes"].size(), report["nodes"].get<std::size_t>());
+    // A cap: the file says how much it dropped, and the user is told on one line.
+    const CliRun capped = run("build default --accel kdtree --events c.json --max-events 10");
+    ASSERT_EQ(capped.code, 0) << capped.err;
+    EXPECT_NE(capped.err.find("event cap of 10 reached"), std::string::npos) << capped.err;
+    const auto c = nlohmann::json::parse(slurp(dir / "c.json"));
+    EXPECT_EQ(c["events"].size(), 10u);
+    EXPECT_GT(c["dropped"].get<int>(), 0);
+}
+
+TEST_F(Cli, TraceRecordsAPixelsRayTree) {
+    const CliRun r = run("trace default --pixel 300,260 --accel grid -o t.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto t = nlohmann::json::parse(slurp(dir / "t.json"));
+    EXPECT_EQ(t["what"], "pixel");
+    EXPECT_EQ(t["pixel"], nlohmann::json::array({300, 260}));
+    EXPECT_EQ(t["rays"][0]["kind"], "primary");
+    EXPECT_TRUE(t["rays"][0]["parent"].is_null());
+    std::map<std::string, int> count;
+    for (const auto& e : t["events"]) ++count[e["type"].get<std::string>()];
+    EXPECT_GT(count["dda_setup"], 0);
+    EXPECT_GT(count["dda_cell"], 0);
+    EXPECT_GT(count["primitive_test"], 0);
+    EXPECT_EQ(count["pixel_result"], 1);
+    EXPECT_EQ(count["ray_begin"], static_cast<int>(t["rays"].size()));
+    EXPECT_EQ(t["events"].back()["type"], "pixel_result");
+}
+
+TEST_F(Cli, CompareShowsThreeSplits) {
+    const CliRun r = run("compare default --json --width 24 --height 18");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["results"].size(), 3u);
+    EXPECT_EQ(j["results"][0]["structure"], "kdtree midpoint");
+    EXPECT_EQ(j["results"][1]["structure"], "kdtree median");
+    EXPECT_EQ(j["results"][2]["structure"], "kdtree sah");
+    for (const auto& row : j["results"]) {
+        EXPECT_EQ(row["rays"], j["results"][0]["rays"]);  // the same rays through each tree
+        EXPECT_GT(row["primitive_tests_per_ray"].get<double>(), 0.0);
+        EXPECT_GT(row["node_visits_per_ray"].get<double>(), 0.0);
+    }
+    const CliRun text = run("compare default --accel bvh --width 24 --height 18");
+    ASSERT_EQ(text.code, 0) << text.err;
+    EXPECT_NE(text.out.find("bvh sah"), std::string::npos);
 }
 
 TEST_F(Cli, BadSceneFilesNameFileLineAndKey) {

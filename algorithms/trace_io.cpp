@@ -1,0 +1,394 @@
+#include "raystep/trace_io.h"
+
+#include "raystep/json_lines.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <type_traits>
+
+namespace raystep {
+
+using nlohmann::ordered_json;
+
+namespace {
+
+// Each event's fields, named once: the writer and the reader both walk this list, so the file
+// and the structs cannot drift apart.
+template <typename F>
+void fields(RayBegin& e, F&& f) {
+    f("ray", e.ray), f("parent", e.parent), f("kind", e.kind), f("depth", e.depth);
+}
+template <typename F>
+void fields(DdaSetup& e, F&& f) {
+    f("ray", e.ray), f("dims", e.dims), f("step", e.step), f("tDelta", e.tDelta);
+    f("t_enter", e.tEnter), f("t_exit", e.tExit);
+}
+template <typename F>
+void fields(DdaCell& e, F&& f) {
+    f("ray", e.ray), f("axes", e.axes), f("cell", e.cell), f("tMax", e.tMax);
+}
+template <typename F>
+void fields(MailboxSkip& e, F&& f) {
+    f("ray", e.ray), f("prim", e.prim);
+}
+template <typename F>
+void fields(PrimitiveTest& e, F&& f) {
+    f("ray", e.ray), f("prim", e.prim), f("hit", e.hit), f("t", e.t);
+}
+template <typename F>
+void fields(NodeEnter& e, F&& f) {
+    f("ray", e.ray), f("node", e.node), f("t_near", e.tNear), f("t_far", e.tFar);
+}
+template <typename F>
+void fields(NodeSkip& e, F&& f) {
+    f("ray", e.ray), f("node", e.node), f("t_near", e.tNear), f("t_far", e.tFar);
+}
+template <typename F>
+void fields(BuildNode& e, F&& f) {
+    f("node", e.node), f("parent", e.parent), f("depth", e.depth), f("prims", e.prims);
+}
+template <typename F>
+void fields(SplitCandidate& e, F&& f) {
+    f("node", e.node), f("axis", e.axis), f("position", e.position), f("nl", e.nl), f("nr", e.nr);
+    f("pl", e.pl), f("pr", e.pr), f("sah_cost", e.sahCost);
+}
+template <typename F>
+void fields(SplitChosen& e, F&& f) {
+    f("node", e.node), f("axis", e.axis), f("position", e.position), f("sah_cost", e.sahCost);
+    f("leaf_cost", e.leafCost);
+}
+template <typename F>
+void fields(LeafMade& e, F&& f) {
+    f("node", e.node), f("reason", e.reason), f("prims", e.prims), f("depth", e.depth);
+    f("leaf_cost", e.leafCost);
+}
+template <typename F>
+void fields(RayHit& e, F&& f) {
+    f("ray", e.ray), f("prim", e.prim), f("t", e.t), f("u", e.u), f("v", e.v);
+}
+template <typename F>
+void fields(RayMiss& e, F&& f) {
+    f("ray", e.ray);
+}
+template <typename F>
+void fields(ShadingTerm& e, F&& f) {
+    f("ray", e.ray), f("term", e.term), f("light", e.light), f("rgb", e.rgb);
+}
+template <typename F>
+void fields(PixelResult& e, F&& f) {
+    f("x", e.x), f("y", e.y), f("rgb", e.rgb);
+}
+
+template <typename E, std::size_t N>
+std::string_view enumName(const std::array<std::string_view, N>& names, E v) {
+    return names[static_cast<std::size_t>(v)];
+}
+
+// Infinity has no JSON spelling: it is written as null (an empty interval end, a miss's t).
+ordered_json number(double v) {
+    if (std::isinf(v) && v > 0) return nullptr;
+    if (std::isinf(v)) return "-inf";
+    return v;
+}
+// kNoId (no parent, no light, no primitive) is written as null.
+ordered_json id(std::uint32_t v) {
+    return v == kNoId ? ordered_json(nullptr) : ordered_json(v);
+}
+
+struct Writer {
+    ordered_json& j;
+    template <typename T>
+    void operator()(const char* key, const T& v) {
+        if constexpr (std::is_same_v<T, RayKind>)
+            j[key] = enumName(kRayKindNames, v);
+        else if constexpr (std::is_same_v<T, LeafReason>)
+            j[key] = enumName(kLeafReasonNames, v);
+        else if constexpr (std::is_same_v<T, ShadingTermKind>)
+            j[key] = enumName(kShadingTermNames, v);
+        else if constexpr (std::is_same_v<T, bool>)
+            j[key] = v;
+        else if constexpr (std::is_same_v<T, double>)
+            j[key] = number(v);
+        else if constexpr (std::is_same_v<T, std::uint32_t>)
+            j[key] = id(v);
+        else if constexpr (std::is_integral_v<T>)
+            j[key] = static_cast<int>(v);
+        else {  // arrays
+            ordered_json a = ordered_json::array();
+            for (const auto& x : v) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(x)>, double>)
+                    a.push_back(number(x));
+                else
+                    a.push_back(static_cast<int>(x));
+            }
+            j[key] = a;
+        }
+    }
+};
+
+class Reader {
+  public:
+    Reader(const std::string& file, std::string_view text) : file_(file), lines_(text) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+        throw TraceError(file_ + ":" + std::to_string(lines_.lineOf(path)) + ": " +
+                         (path.empty() ? "" : "key '" + path + "': ") + message);
+    }
+    const ordered_json& at(const ordered_json& obj, const std::string& path,
+                           const char* key) const {
+        const auto it = obj.find(key);
+        if (it == obj.end()) fail(JsonLineMap::child(path, key), "missing");
+        return *it;
+    }
+    double number(const ordered_json& j, const std::string& path) const {
+        if (j.is_null()) return kInfinity;
+        if (j.is_string() && j.get<std::string>() == "-inf") return -kInfinity;
+        if (!j.is_number()) fail(path, "expected a number (or null for infinity)");
+        const double v = j.get<double>();
+        if (!std::isfinite(v)) fail(path, "must be finite (write null for infinity)");
+        return v;
+    }
+    std::int64_t integer(const ordered_json& j, const std::string& path, std::int64_t lo,
+                         std::int64_t hi) const {
+        if (!j.is_number_integer())
+            fail(path, "expected a whole number from " + std::to_string(lo) + " to " +
+                           std::to_string(hi));
+        const auto v = j.get<std::int64_t>();
+        if (v < lo || v > hi)
+            fail(path, "must be from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return v;
+    }
+    std::uint32_t idValue(const ordered_json& j, const std::string& path) const {
+        if (j.is_null()) return kNoId;
+        return static_cast<std::uint32_t>(integer(j, path, 0, kNoId - 1));
+    }
+    template <typename E, std::size_t N>
+    E enumValue(const std::array<std::string_view, N>& names, const ordered_json& j,
+                const std::string& path) const {
+        if (j.is_string())
+            for (std::size_t i = 0; i < N; ++i)
+                if (names[i] == j.get<std::string>()) return static_cast<E>(i);
+        std::string all;
+        for (auto n : names) all += (all.empty() ? "" : ", ") + std::string(n);
+        fail(path, "expected one of: " + all);
+    }
+
+  private:
+    std::string file_;
+    JsonLineMap lines_;
+};
+
+struct FieldReader {
+    const Reader& r;
+    const ordered_json& j;
+    const std::string& path;
+    template <typename T>
+    void operator()(const char* key, T& v) {
+        const ordered_json& x = r.at(j, path, key);
+        const std::string p = JsonLineMap::child(path, key);
+        if constexpr (std::is_same_v<T, RayKind>)
+            v = r.enumValue<RayKind>(kRayKindNames, x, p);
+        else if constexpr (std::is_same_v<T, LeafReason>)
+            v = r.enumValue<LeafReason>(kLeafReasonNames, x, p);
+        else if constexpr (std::is_same_v<T, ShadingTermKind>)
+            v = r.enumValue<ShadingTermKind>(kShadingTermNames, x, p);
+        else if constexpr (std::is_same_v<T, bool>) {
+            if (!x.is_boolean()) r.fail(p, "expected true or false");
+            v = x.get<bool>();
+        } else if constexpr (std::is_same_v<T, double>)
+            v = r.number(x, p);
+        else if constexpr (std::is_same_v<T, std::uint32_t>)
+            v = r.idValue(x, p);
+        else if constexpr (std::is_integral_v<T>)
+            v = static_cast<T>(
+                r.integer(x, p, std::numeric_limits<T>::min(), std::numeric_limits<T>::max()));
+        else {  // std::array
+            if (!x.is_array() || x.size() != v.size())
+                r.fail(p, "expected an array of " + std::to_string(v.size()));
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                using X = std::decay_t<decltype(v[i])>;
+                const std::string ep = JsonLineMap::element(p, i);
+                if constexpr (std::is_same_v<X, double>)
+                    v[i] = r.number(x[i], ep);
+                else
+                    v[i] = static_cast<X>(r.integer(x[i], ep, std::numeric_limits<X>::min(),
+                                                    std::numeric_limits<X>::max()));
+            }
+        }
+    }
+};
+
+ordered_json vec(const Vec3& v) {
+    return {number(v.x), number(v.y), number(v.z)};
+}
+
+template <std::size_t I = 0>
+Event readEvent(const Reader& r, const std::string& type, const ordered_json& j,
+                const std::string& path) {
+    if constexpr (I == std::variant_size_v<Event>) {
+        std::string all;
+        for (auto n : kEventNames) all += (all.empty() ? "" : ", ") + std::string(n);
+        r.fail(JsonLineMap::child(path, "type"), "unknown event type '" + type + "' (" + all + ")");
+    } else {
+        if (type != kEventNames[I]) return readEvent<I + 1>(r, type, j, path);
+        std::variant_alternative_t<I, Event> e{};
+        fields(e, FieldReader{r, j, path});
+        return e;
+    }
+}
+
+}  // namespace
+
+std::string traceToJson(const EventLog& log, const TraceInfo& info) {
+    ordered_json root;
+    root["format"] = "raystep-trace";
+    root["version"] = kTraceFormatVersion;
+    root["what"] = info.what;
+    root["scene"] = info.scene;
+    root["accel"] = info.accel;
+    if (info.pixelX >= 0) root["pixel"] = {info.pixelX, info.pixelY};
+    if (info.width > 0) root["image"] = {info.width, info.height};
+    root["cap"] = log.cap();
+    root["dropped"] = log.dropped();
+    ordered_json rays = ordered_json::array();
+    for (const RayRecord& r : log.rays())
+        rays.push_back({{"kind", enumName(kRayKindNames, r.kind)},
+                        {"depth", r.depth},
+                        {"parent", id(r.parent)},
+                        {"origin", vec(r.origin)},
+                        {"dir", vec(r.dir)},
+                        {"t_min", number(r.tMin)},
+                        {"t_max", number(r.tMax)}});
+    root["rays"] = std::move(rays);
+    ordered_json nodes = ordered_json::array();
+    for (const NodeRecord& n : log.nodes())
+        nodes.push_back({{"lo", {number(n.lo[0]), number(n.lo[1]), number(n.lo[2])}},
+                         {"hi", {number(n.hi[0]), number(n.hi[1]), number(n.hi[2])}}});
+    root["nodes"] = std::move(nodes);
+    ordered_json events = ordered_json::array();
+    for (const Event& ev : log.events()) {
+        ordered_json j;
+        j["type"] = kEventNames[ev.index()];
+        std::visit(
+            [&](const auto& e) {
+                auto copy = e;
+                fields(copy, Writer{j});
+            },
+            ev);
+        events.push_back(std::move(j));
+    }
+    root["events"] = std::move(events);
+    // One event per line: diffable, and a reader's error names a useful line.
+    std::string out = "{\n";
+    bool first = true;
+    for (auto it = root.begin(); it != root.end(); ++it) {
+        out += first ? "" : ",\n";
+        first = false;
+        out += "  " + ordered_json(it.key()).dump() + ": ";
+        if (it->is_array() && !it->empty()) {
+            out += "[\n";
+            for (std::size_t i = 0; i < it->size(); ++i)
+                out += "    " + (*it)[i].dump() + (i + 1 < it->size() ? ",\n" : "\n");
+            out += "  ]";
+        } else {
+            out += it->dump();
+        }
+    }
+    return out + "\n}\n";
+}
+
+EventLog traceFromJson(std::string_view text, const std::string& fileName, TraceInfo* info) {
+    ordered_json root;
+    try {
+        root = ordered_json::parse(text.begin(), text.end());
+    } catch (const nlohmann::json::exception& e) {
+        std::string what = e.what();
+        const auto at = what.find("parse error");
+        throw TraceError(fileName +
+                         ": malformed JSON: " + (at == std::string::npos ? what : what.substr(at)));
+    }
+    const Reader r(fileName, text);
+    if (!root.is_object()) r.fail("", "a trace file holds one JSON object");
+    const ordered_json& format = r.at(root, "", "format");
+    if (format != "raystep-trace") r.fail("format", "expected \"raystep-trace\"");
+    const auto version = r.integer(r.at(root, "", "version"), "version", 1, 1000000);
+    if (version != kTraceFormatVersion)
+        r.fail("version", "this raystep reads trace version " +
+                              std::to_string(kTraceFormatVersion) + ", the file is version " +
+                              std::to_string(version));
+    EventLog log(std::numeric_limits<std::size_t>::max());
+    if (info) {
+        if (root.contains("scene") && root["scene"].is_string()) info->scene = root["scene"];
+        if (root.contains("accel") && root["accel"].is_string()) info->accel = root["accel"];
+        if (root.contains("what") && root["what"].is_string()) info->what = root["what"];
+        if (root.contains("pixel")) {
+            info->pixelX = static_cast<int>(r.integer(root["pixel"][0], "pixel[0]", 0, 1 << 20));
+            info->pixelY = static_cast<int>(r.integer(root["pixel"][1], "pixel[1]", 0, 1 << 20));
+        }
+    }
+    if (root.contains("dropped"))
+        log.setDropped(static_cast<std::size_t>(
+            r.integer(root["dropped"], "dropped", 0, std::numeric_limits<std::int64_t>::max())));
+
+    const auto vec3 = [&](const ordered_json& j, const std::string& p) {
+        if (!j.is_array() || j.size() != 3) r.fail(p, "expected [x, y, z]");
+        return Vec3(r.number(j[0], JsonLineMap::element(p, 0)),
+                    r.number(j[1], JsonLineMap::element(p, 1)),
+                    r.number(j[2], JsonLineMap::element(p, 2)));
+    };
+    const ordered_json& rays = r.at(root, "", "rays");
+    if (!rays.is_array()) r.fail("rays", "expected an array");
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const std::string p = JsonLineMap::element("rays", i);
+        const ordered_json& j = rays[i];
+        if (!j.is_object()) r.fail(p, "expected an object");
+        RayRecord rec{};
+        rec.kind =
+            r.enumValue<RayKind>(kRayKindNames, r.at(j, p, "kind"), JsonLineMap::child(p, "kind"));
+        rec.depth = static_cast<std::uint8_t>(
+            r.integer(r.at(j, p, "depth"), JsonLineMap::child(p, "depth"), 0, 255));
+        rec.parent = r.idValue(r.at(j, p, "parent"), JsonLineMap::child(p, "parent"));
+        rec.origin = vec3(r.at(j, p, "origin"), JsonLineMap::child(p, "origin"));
+        rec.dir = vec3(r.at(j, p, "dir"), JsonLineMap::child(p, "dir"));
+        rec.tMin = r.number(r.at(j, p, "t_min"), JsonLineMap::child(p, "t_min"));
+        rec.tMax = r.number(r.at(j, p, "t_max"), JsonLineMap::child(p, "t_max"));
+        if (!isFinite(rec.origin) || !isFinite(rec.dir))
+            r.fail(p, "a ray's origin and direction must be finite");
+        log.addRay(rec);
+    }
+    if (root.contains("nodes")) {
+        const ordered_json& nodes = root["nodes"];
+        if (!nodes.is_array()) r.fail("nodes", "expected an array");
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            const std::string p = JsonLineMap::element("nodes", i);
+            const Vec3 lo = vec3(r.at(nodes[i], p, "lo"), JsonLineMap::child(p, "lo"));
+            const Vec3 hi = vec3(r.at(nodes[i], p, "hi"), JsonLineMap::child(p, "hi"));
+            log.node(static_cast<std::uint32_t>(i), {lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z});
+        }
+    }
+    const ordered_json& events = r.at(root, "", "events");
+    if (!events.is_array()) r.fail("events", "expected an array");
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const std::string p = JsonLineMap::element("events", i);
+        const ordered_json& j = events[i];
+        if (!j.is_object()) r.fail(p, "expected an object");
+        const ordered_json& type = r.at(j, p, "type");
+        if (!type.is_string()) r.fail(JsonLineMap::child(p, "type"), "expected a string");
+        const Event e = readEvent(r, type.get<std::string>(), j, p);
+        // Ids must point into the tables, so a replay never reads past them.
+        std::visit(
+            [&](const auto& ev) {
+                if constexpr (requires { ev.ray; })
+                    if (ev.ray != kNoId && ev.ray >= log.rays().size())
+                        r.fail(JsonLineMap::child(p, "ray"),
+                               "ray " + std::to_string(ev.ray) + " is not in 'rays' (" +
+                                   std::to_string(log.rays().size()) + " rays)");
+            },
+            e);
+        log.append(e);
+    }
+    return log;
+}
+
+}  // namespace raystep

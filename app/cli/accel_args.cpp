@@ -1,0 +1,124 @@
+#include "accel_args.h"
+
+#include "common.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace raystep::cli {
+
+void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
+    cmd->add_option("--accel", a.accel, "Accelerator: bruteforce, grid, kdtree or bvh")
+        ->capture_default_str();
+    cmd->add_option("--split", a.split, "kd-tree / BVH split: midpoint, median or sah")
+        ->capture_default_str();
+    cmd->add_option("--c-trav", a.cTrav, "Tree SAH: cost of a traversal step (default 1)");
+    cmd->add_option("--c-isect", a.cIsect, "Tree SAH: cost of a primitive test (default 5)");
+    cmd->add_option("--empty-bonus", a.emptyBonus,
+                    "kd-tree SAH: discount for a split with an empty side, 0..1 (default 0.5)");
+    cmd->add_option("--max-depth", a.maxDepth,
+                    "kd-tree: depth limit (default round(8 + 1.3 log2 N))");
+    cmd->add_option("--leaf-size", a.leafSize,
+                    "Trees: this many primitives or fewer make a leaf (kd: SAH 1, else 4; BVH 4)");
+    cmd->add_option("--buckets", a.buckets, "BVH SAH: bins along the axis (default 12)");
+    cmd->add_option("--grid-lambda", a.gridLambda,
+                    "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
+        ->capture_default_str();
+    cmd->add_option("--grid-res", a.gridRes, "Grid: cells per axis NX,NY,NZ instead of the rule");
+    cmd->add_option("--mailbox", a.mailbox,
+                    "Grid and kd-tree: test each primitive once per ray (on, off)")
+        ->capture_default_str();
+    cmd->add_option("--precision", a.precision, "Intersection arithmetic: float or double")
+        ->capture_default_str();
+    cmd->add_option("--triangle-method", a.triangleMethod,
+                    "Ray-triangle test: plane, moller-trumbore or watertight")
+        ->capture_default_str();
+    cmd->add_option("--sphere-method", a.sphereMethod, "Ray-sphere test: textbook or stable")
+        ->capture_default_str();
+}
+
+namespace {
+std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+}  // namespace
+
+std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
+    const auto kind = parseAccelKind(a.accel);
+    if (!kind) return "--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh";
+    out.kind = *kind;
+    const auto precision = parsePrecision(a.precision);
+    if (!precision) return "--precision " + a.precision + ": expected float or double";
+    const auto triangle = parseTriangleMethod(a.triangleMethod);
+    if (!triangle)
+        return "--triangle-method " + a.triangleMethod +
+               ": expected plane, moller-trumbore or watertight";
+    const auto sphere = parseSphereMethod(a.sphereMethod);
+    if (!sphere) return "--sphere-method " + a.sphereMethod + ": expected textbook or stable";
+    out.kernels = {*precision, *sphere, *triangle};
+
+    const auto split = parseSplitMethod(a.split);
+    if (!split) return "--split " + a.split + ": expected midpoint, median or sah";
+    AccelOptions& o = out.options;
+    o.kdtree.split = o.bvh.split = *split;
+    if (a.cTrav) {
+        if (!std::isfinite(*a.cTrav) || *a.cTrav < 0)
+            return "--c-trav " + fmt(*a.cTrav) + ": must be a finite number, 0 or more";
+        o.kdtree.cTrav = o.bvh.cTrav = *a.cTrav;
+    }
+    if (a.cIsect) {
+        if (!std::isfinite(*a.cIsect) || !(*a.cIsect > 0))
+            return "--c-isect " + fmt(*a.cIsect) + ": must be a finite number greater than 0";
+        o.kdtree.cIsect = o.bvh.cIsect = *a.cIsect;
+    }
+    if (a.emptyBonus) {
+        if (!(*a.emptyBonus >= 0 && *a.emptyBonus <= 1))
+            return "--empty-bonus " + fmt(*a.emptyBonus) + ": must be from 0 to 1";
+        o.kdtree.emptyBonus = *a.emptyBonus;
+    }
+    if (a.maxDepth) {
+        if (*a.maxDepth < 1 || *a.maxDepth > 60)
+            return "--max-depth " + std::to_string(*a.maxDepth) + ": must be from 1 to 60";
+        o.kdtree.maxDepth = *a.maxDepth;
+    }
+    if (a.leafSize) {
+        if (*a.leafSize < 1 || *a.leafSize > 1000000)
+            return "--leaf-size " + std::to_string(*a.leafSize) + ": must be from 1 to 1000000";
+        o.kdtree.leafSize = o.bvh.leafSize = *a.leafSize;
+        o.bvh.maxLeafSize = std::max(o.bvh.maxLeafSize, *a.leafSize);
+    }
+    if (a.buckets) {
+        if (*a.buckets < 2 || *a.buckets > 256)
+            return "--buckets " + std::to_string(*a.buckets) + ": must be from 2 to 256";
+        o.bvh.buckets = *a.buckets;
+    }
+    if (!std::isfinite(a.gridLambda) || !(a.gridLambda > 0))
+        return "--grid-lambda " + fmt(a.gridLambda) + ": must be a finite number greater than 0";
+    o.grid.lambda = a.gridLambda;
+    if (!a.gridRes.empty()) {
+        const auto res = parseNumbers(a.gridRes);
+        bool ok = res && res->size() == 3;
+        for (std::size_t i = 0; ok && i < 3; ++i)
+            ok = (*res)[i] == std::floor((*res)[i]) && (*res)[i] >= 1 &&
+                 (*res)[i] <= GridOptions::kMaxCellsPerAxis;
+        if (!ok)
+            return "--grid-res " + a.gridRes + ": expected NX,NY,NZ, whole numbers from 1 to " +
+                   std::to_string(GridOptions::kMaxCellsPerAxis);
+        o.grid.res = std::array<int, 3>{int((*res)[0]), int((*res)[1]), int((*res)[2])};
+    }
+    if (a.mailbox != "on" && a.mailbox != "off")
+        return "--mailbox " + a.mailbox + ": expected on or off";
+    o.grid.mailbox = o.kdtree.mailbox = a.mailbox == "on";
+    return std::nullopt;
+}
+
+std::string describeAccel(const AccelChoice& c) {
+    std::string s(accelKindName(c.kind));
+    if (c.kind == AccelKind::KdTree || c.kind == AccelKind::Bvh)
+        s += " " + std::string(name(c.options.kdtree.split));
+    return s;
+}
+
+}  // namespace raystep::cli

@@ -1,0 +1,265 @@
+#include "tree_commands.h"
+
+#include "common.h"
+#include "progress.h"
+
+#include "raystep/image.h"
+#include "raystep/scene_loader.h"
+#include "raystep/trace_io.h"
+#include "raystep/tracer.h"
+
+#include <tbb/info.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace raystep::cli {
+
+namespace {
+
+std::optional<Scene> loadOrFail(const std::string& name, int& code) {
+    try {
+        return loadScene(name);
+    } catch (const SceneError& e) {
+        code = fail(e.what());
+        return std::nullopt;
+    }
+}
+
+nlohmann::ordered_json statsJson(const BuildSummary& b) {
+    const TreeStats& s = b.stats;
+    nlohmann::ordered_json reasons;
+    for (std::size_t i = 0; i < kLeafReasonNames.size(); ++i)
+        reasons[std::string(kLeafReasonNames[i])] = s.leafReasons[i];
+    return {
+        {"structure", b.description},    {"nodes", s.nodes},        {"leaves", s.leaves},
+        {"empty_leaves", s.emptyLeaves}, {"max_depth", s.maxDepth}, {"references", s.references},
+        {"sah_cost", s.sahCost},         {"build_ms", s.buildMs},   {"leaf_reasons", reasons}};
+}
+
+void addCapOption(CLI::App* cmd, std::size_t& cap) {
+    cmd->add_option("--max-events", cap, "Stop recording after this many events")
+        ->check(CLI::Range(std::size_t(1), std::size_t(100'000'000)))
+        ->capture_default_str();
+}
+
+}  // namespace
+
+void addBuildCommand(CLI::App& app, BuildArgs& a) {
+    CLI::App* cmd = app.add_subcommand("build", "Build an acceleration structure and report it");
+    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    a.accel.accel = "kdtree";
+    addAccelOptions(cmd, a.accel);
+    cmd->add_flag("--json", a.json, "Print the report as JSON");
+    cmd->add_option("--events", a.events,
+                    "Write the build's events (nodes, split candidates, leaves) as a trace file");
+    addCapOption(cmd, a.maxEvents);
+}
+
+int runBuild(const BuildArgs& a) {
+    AccelChoice choice;
+    if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
+    if (!a.events.empty())
+        if (auto problem = checkWritable("--events", a.events)) return fail(*problem);
+    int code = 0;
+    const auto scene = loadOrFail(a.scene, code);
+    if (!scene) return code;
+
+    EventLog log(a.maxEvents);
+    const Accelerator accel =
+        a.events.empty()
+            ? buildAccelerator(*scene, choice.kind, choice.kernels, choice.options)
+            : buildAccelerator(*scene, choice.kind, choice.kernels, choice.options, log);
+    BuildSummary summary = summarize(accel);
+    summary.description = describeAccel(choice);
+    if (!a.events.empty()) {
+        TraceInfo info;
+        info.what = "build";
+        info.scene = scene->name;
+        info.accel = summary.description;
+        writeFileAtomic(a.events, traceToJson(log, info));
+        if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
+    }
+    if (a.json) {
+        nlohmann::ordered_json j = statsJson(summary);
+        j["scene"] = scene->name;
+        j["primitives"] = scene->primitiveCount();
+        if (!a.events.empty()) j["events"] = log.events().size();
+        std::printf("%s\n", j.dump(2).c_str());
+        return 0;
+    }
+    const TreeStats& s = summary.stats;
+    const double n = std::max(1u, scene->primitiveCount());
+    std::printf("%s on %s (%u primitives)\n", summary.description.c_str(), scene->name.c_str(),
+                scene->primitiveCount());
+    std::printf("  nodes         %u\n  leaves        %u (%u empty)\n  max depth     %u\n", s.nodes,
+                s.leaves, s.emptyLeaves, s.maxDepth);
+    std::printf("  references    %llu (%.2f per primitive)\n",
+                static_cast<unsigned long long>(s.references), s.references / n);
+    std::printf("  SAH cost      %.4g\n  build         %.1f ms\n", s.sahCost, s.buildMs);
+    if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+        std::printf("  leaves made:");
+        for (std::size_t i = 0; i < kLeafReasonNames.size(); ++i)
+            if (s.leafReasons[i])
+                std::printf(" %s %u", kLeafReasonNames[i].data(), s.leafReasons[i]);
+        std::printf("\n");
+    }
+    if (!a.events.empty())
+        std::printf("wrote %s (%zu events)\n", a.events.c_str(), log.events().size());
+    return 0;
+}
+
+void addTraceCommand(CLI::App& app, TraceArgs& a) {
+    CLI::App* cmd =
+        app.add_subcommand("trace", "Record every event of one pixel's ray tree to a trace file");
+    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option("--pixel", a.pixel, "The pixel X,Y (0,0 is the top left)")->required();
+    cmd->add_option("-o,--output", a.output, "Trace file to write (JSON)")->required();
+    cmd->add_option("--width", a.width, "Image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    cmd->add_option("--height", a.height, "Image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    cmd->add_option("--bounces", a.bounces, "Depth of secondary rays")->check(CLI::Range(0, 64));
+    cmd->add_option("--spp", a.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
+    cmd->add_option("--diffuse-samples", a.diffuseSamples, "Diffuse bounce rays")
+        ->check(CLI::Range(0, 1024));
+    cmd->add_option("--seed", a.seed, "Seed of the random numbers")->capture_default_str();
+    addAccelOptions(cmd, a.accel);
+    addCapOption(cmd, a.maxEvents);
+}
+
+int runTrace(const TraceArgs& a) {
+    AccelChoice choice;
+    if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
+    if (auto problem = checkWritable("-o", a.output)) return fail(*problem);
+    const auto xy = parseNumbers(a.pixel);
+    if (!xy || xy->size() != 2 || (*xy)[0] != std::floor((*xy)[0]) ||
+        (*xy)[1] != std::floor((*xy)[1]) || (*xy)[0] < 0 || (*xy)[1] < 0)
+        return fail("--pixel " + a.pixel + ": expected X,Y, two whole numbers 0 or more");
+    int code = 0;
+    const auto scene = loadOrFail(a.scene, code);
+    if (!scene) return code;
+    RenderOptions opt;
+    opt.width = a.width.value_or(scene->settings.width);
+    opt.height = a.height.value_or(scene->settings.height);
+    opt.spp = a.spp.value_or(scene->settings.spp);
+    opt.trace.bounces = a.bounces.value_or(scene->settings.bounces);
+    opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene->settings.diffuseSamples);
+    opt.seed = a.seed;
+    const int x = static_cast<int>((*xy)[0]), y = static_cast<int>((*xy)[1]);
+    if (x >= opt.width || y >= opt.height)
+        return fail("--pixel " + a.pixel + ": outside the " + std::to_string(opt.width) + "x" +
+                    std::to_string(opt.height) + " image");
+
+    const Accelerator accel = buildAccelerator(*scene, choice.kind, choice.kernels, choice.options);
+    const Tracer tracer(*scene, accel, opt.trace);
+    EventLog log(a.maxEvents);
+    RayCounters counters;
+    const Color c = tracer.renderPixel(x, y, opt, counters, log);
+    TraceInfo info;
+    info.what = "pixel";
+    info.scene = scene->name;
+    info.accel = describeAccel(choice);
+    info.pixelX = x;
+    info.pixelY = y;
+    info.width = opt.width;
+    info.height = opt.height;
+    writeFileAtomic(a.output, traceToJson(log, info));
+    if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
+    std::printf("pixel (%d, %d) of %dx%d: colour (%.4f, %.4f, %.4f)\n", x, y, opt.width, opt.height,
+                c.x, c.y, c.z);
+    std::printf("  rays:");
+    for (int k = 0; k < kRayKindCount; ++k)
+        if (counters.rays[k])
+            std::printf(" %s %llu", kRayKindNames[k].data(),
+                        static_cast<unsigned long long>(counters.rays[k]));
+    std::printf("\n  primitive tests %llu, node visits %llu, mailbox skips %llu\n",
+                static_cast<unsigned long long>(counters.traversal.primitiveTests),
+                static_cast<unsigned long long>(counters.traversal.nodeVisits),
+                static_cast<unsigned long long>(counters.traversal.mailboxSkips));
+    std::printf("wrote %s (%zu events, %zu rays)\n", a.output.c_str(), log.events().size(),
+                log.rays().size());
+    return 0;
+}
+
+void addCompareCommand(CLI::App& app, CompareArgs& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "compare", "Midpoint against median against SAH on one scene: build and trace each");
+    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    a.accel.accel = "kdtree";
+    addAccelOptions(cmd, a.accel);
+    cmd->add_option("--width", a.width, "Image width of the rays traced")
+        ->check(CLI::Range(1, kMaxImageSide))
+        ->capture_default_str();
+    cmd->add_option("--height", a.height, "Image height of the rays traced")
+        ->check(CLI::Range(1, kMaxImageSide))
+        ->capture_default_str();
+    cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (default: the scene's)")
+        ->check(CLI::Range(0, 64));
+    cmd->add_option("--threads", a.threads, "Threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_flag("--json", a.json, "Print the table as JSON");
+}
+
+int runCompare(const CompareArgs& a) {
+    AccelChoice base;
+    if (auto problem = resolveAccel(a.accel, base)) return fail(*problem);
+    if (base.kind != AccelKind::KdTree && base.kind != AccelKind::Bvh)
+        return fail("--accel " + a.accel.accel + ": compare takes kdtree or bvh");
+    int code = 0;
+    const auto scene = loadOrFail(a.scene, code);
+    if (!scene) return code;
+    RenderOptions opt;
+    opt.width = a.width;
+    opt.height = a.height;
+    opt.trace.bounces = a.bounces.value_or(scene->settings.bounces);
+    opt.threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+        AccelChoice c = base;
+        c.options.kdtree.split = c.options.bvh.split = split;
+        const Accelerator accel = buildAccelerator(*scene, c.kind, c.kernels, c.options);
+        BuildSummary b = summarize(accel);
+        b.description = describeAccel(c);
+        ProgressBar bar(b.description);
+        const RenderResult r = render(*scene, accel, opt, [&](double f) { return bar.update(f); });
+        bar.finish();
+        const double rays = std::max<double>(1.0, r.counters.totalRays());
+        nlohmann::ordered_json row = statsJson(b);
+        row["rays"] = r.counters.totalRays();
+        row["primitive_tests_per_ray"] = r.counters.traversal.primitiveTests / rays;
+        row["node_visits_per_ray"] = r.counters.traversal.nodeVisits / rays;
+        row["mailbox_skips_per_ray"] = r.counters.traversal.mailboxSkips / rays;
+        row["render_ms"] = r.renderMs;
+        row["mrays_per_s"] = rays / (r.renderMs * 1e3);
+        rows.push_back(row);
+    }
+    if (a.json) {
+        nlohmann::ordered_json j;
+        j["scene"] = scene->name;
+        j["primitives"] = scene->primitiveCount();
+        j["image"] = {opt.width, opt.height};
+        j["bounces"] = opt.trace.bounces;
+        j["threads"] = opt.threads;
+        j["results"] = rows;
+        std::printf("%s\n", j.dump(2).c_str());
+        return 0;
+    }
+    std::printf("%s, %u primitives, %dx%d, %d bounces, %d threads\n", scene->name.c_str(),
+                scene->primitiveCount(), opt.width, opt.height, opt.trace.bounces, opt.threads);
+    std::printf("%-16s %9s %8s %6s %9s %10s %12s %12s %9s\n", "structure", "build ms", "nodes",
+                "depth", "SAH cost", "refs/prim", "tests/ray", "visits/ray", "Mrays/s");
+    const double n = std::max(1u, scene->primitiveCount());
+    for (const auto& row : rows)
+        std::printf("%-16s %9.1f %8u %6u %9.4g %10.2f %12.2f %12.2f %9.3f\n",
+                    row["structure"].get<std::string>().c_str(), row["build_ms"].get<double>(),
+                    row["nodes"].get<unsigned>(), row["max_depth"].get<unsigned>(),
+                    row["sah_cost"].get<double>(), row["references"].get<double>() / n,
+                    row["primitive_tests_per_ray"].get<double>(),
+                    row["node_visits_per_ray"].get<double>(), row["mrays_per_s"].get<double>());
+    return 0;
+}
+
+}  // namespace raystep::cli
