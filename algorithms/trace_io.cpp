@@ -317,7 +317,10 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
         r.fail("version", "this raystep reads trace version " +
                               std::to_string(kTraceFormatVersion) + ", the file is version " +
                               std::to_string(version));
-    EventLog log(std::numeric_limits<std::size_t>::max());
+    std::size_t cap = std::numeric_limits<std::size_t>::max();
+    if (root.contains("cap") && root["cap"].is_number_unsigned())
+        cap = root["cap"].get<std::size_t>();
+    EventLog log(cap);
     if (info) {
         if (root.contains("scene") && root["scene"].is_string()) info->scene = root["scene"];
         if (root.contains("accel") && root["accel"].is_string()) info->accel = root["accel"];
@@ -386,7 +389,7 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
                                    std::to_string(log.rays().size()) + " rays)");
             },
             e);
-        log.append(e);
+        log.append(e);  // past the cap too: the file is what was recorded
     }
     return log;
 }

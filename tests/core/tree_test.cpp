@@ -1,0 +1,425 @@
+// The trees beyond "same hit as brute force": the SAH cost they report against a recomputation
+// written here, the split sweep against counting by hand, the 2D lecture scenes, the event log
+// (its size, its cap, its file) and replay.
+#include "raystep/accel.h"
+#include "raystep/rng.h"
+#include "raystep/scene2d.h"
+#include "raystep/scene_loader.h"
+#include "raystep/trace_io.h"
+#include "raystep/tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace raystep {
+namespace {
+
+/// Surface area of a box, written out (not BoxN::area).
+double surface(const Vec3& lo, const Vec3& hi) {
+    const Vec3 d = hi - lo;
+    return 2 * (d.x * d.y + d.y * d.z + d.z * d.x);
+}
+
+/// The lecture's formula, recursively from the root box: leaf C_isect N; interior
+/// C_trav + A(L)/A(C) Cost(L) + A(R)/A(C) Cost(R).
+double recomputeKdCost(const KdTree3& t, std::uint32_t id, Vec3 lo, Vec3 hi) {
+    const KdNode& n = t.nodes()[id];
+    const KdTreeOptions& o = t.options();
+    if (n.leaf()) return o.cIsect * n.count;
+    Vec3 midHi = hi, midLo = lo;
+    midHi[n.axis] = n.split;
+    midLo[n.axis] = n.split;
+    const double a = surface(lo, hi);
+    return o.cTrav + surface(lo, midHi) / a * recomputeKdCost(t, id + 1, lo, midHi) +
+           surface(midLo, hi) / a * recomputeKdCost(t, n.index, midLo, hi);
+}
+
+TEST(KdTree, SahCostEqualsARecomputation) {
+    for (const char* name : {"default", "cornell", "whitted", "stadium"}) {
+        const Scene s = loadBuiltinScene(name);
+        for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+            KdTreeOptions o;
+            o.split = split;
+            const KdTree3 t(ScenePrims(s, {}), o);
+            const Bounds3 b = s.bounds();
+            const double expected = recomputeKdCost(t, 0, b.lo, b.hi);
+            EXPECT_NEAR(t.stats().sahCost, expected, 1e-9 * expected) << name;
+        }
+    }
+}
+
+TEST(KdTree, SahBeatsMidpointAndMedianOnTheStadium) {
+    // The teapot in a stadium: the SAH cuts away the empty room, the others cannot tell.
+    const Scene s = loadBuiltinScene("stadium");
+    double cost[3];
+    for (int m = 0; m < 3; ++m) {
+        KdTreeOptions o;
+        o.split = static_cast<SplitMethod>(m);
+        cost[m] = KdTree3(ScenePrims(s, {}), o).stats().sahCost;
+    }
+    EXPECT_LT(cost[2], cost[0]);
+    EXPECT_LT(cost[2], cost[1]);
+}
+
+TEST(KdTree, RootCandidatesMatchCountingByHand) {
+    // Four unit squares' worth of spheres on the x axis at 0, 2, 4, 6 (radius 0.5): the sweep
+    // at each candidate plane must count exactly the spheres on each side.
+    Scene s;
+    s.materials.push_back(Material{});
+    for (int i = 0; i < 4; ++i) s.spheres.push_back({Vec3(2.0 * i, 0, 0), 0.5, 0});
+    EventLog log;
+    KdTreeOptions o;
+    const KdTree3 t(ScenePrims(s, {}), o, log);
+    int candidates = 0;
+    for (const Event& e : log.events()) {
+        const auto* c = std::get_if<SplitCandidate>(&e);
+        if (!c || c->node != 0) continue;
+        ++candidates;
+        std::uint32_t nl = 0, nr = 0;
+        for (const Sphere& sp : s.spheres) {
+            const double lo = sp.center[c->axis] - 0.5, hi = sp.center[c->axis] + 0.5;
+            nl += lo < c->position;
+            nr += hi > c->position;
+        }
+        EXPECT_EQ(c->nl, nl) << "axis " << int(c->axis) << " at " << c->position;
+        EXPECT_EQ(c->nr, nr) << "axis " << int(c->axis) << " at " << c->position;
+        // P(L|C) from the box [-0.5, 6.5] x [-0.5, 0.5]^2, by hand for x planes.
+        if (c->axis == 0) {
+            const double x = c->position + 0.5;
+            const double areaL = 2 * (x * 1 + 1 * 1 + 1 * x), areaC = 2 * (7 + 1 + 7);
+            EXPECT_NEAR(c->pl, areaL / areaC, 1e-12);
+        }
+        const double cost = 1.0 + 5.0 * (c->pl * c->nl + c->pr * c->nr);
+        EXPECT_NEAR(c->sahCost, (c->nl == 0 || c->nr == 0) ? 0.5 * cost : cost, 1e-12);
+    }
+    // Along x: the 8 sphere faces minus the two on the box's own faces; y and z: none inside.
+    EXPECT_EQ(candidates, 6);
+    // The best root split is between two spheres, where nothing straddles.
+    const auto chosen = std::find_if(log.events().begin(), log.events().end(),
+                                     [](const Event& e) { return e.index() == 9; });
+    ASSERT_NE(chosen, log.events().end());
+    const auto& c = std::get<SplitChosen>(*chosen);
+    EXPECT_EQ(c.axis, 0);
+    EXPECT_TRUE(c.position == 2.5 || c.position == 3.5 || c.position == 0.5 || c.position == 1.5 ||
+                c.position == 4.5 || c.position == 5.5);
+    EXPECT_EQ(t.stats().references, 4u);
+}
+
+TEST(KdTree, BuildScalesAndStopsAtTheDepthLimit) {
+    const Scene s = loadBuiltinScene("stadium");
+    KdTreeOptions o;
+    o.maxDepth = 5;
+    const KdTree3 t(ScenePrims(s, {}), o);
+    EXPECT_LE(t.stats().maxDepth, 5u);
+    EXPECT_GT(t.stats().leafReasons[static_cast<int>(LeafReason::MaxDepth)], 0u);
+    EXPECT_EQ(t.stats().nodes, 2 * t.stats().leaves - 1);
+}
+
+TEST(Bvh, EveryPrimitiveInExactlyOneLeaf) {
+    const Scene s = loadBuiltinScene("stadium");
+    for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+        BvhOptions o;
+        o.split = split;
+        const Bvh3 b(ScenePrims(s, {}), o);
+        std::vector<int> seen(s.primitiveCount(), 0);
+        for (const auto& n : b.nodes()) {
+            if (!n.leaf()) continue;
+            for (std::uint32_t k = 0; k < n.count; ++k) {
+                const std::uint32_t p = b.primIds()[n.index + k];
+                ++seen[p];
+                // The leaf's box holds the primitive's.
+                const Bounds3 pb = s.primitiveBounds(p);
+                for (int i = 0; i < 3; ++i) {
+                    EXPECT_LE(n.bounds.lo[i], pb.lo[i]);
+                    EXPECT_GE(n.bounds.hi[i], pb.hi[i]);
+                }
+            }
+        }
+        EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(seen.size()));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2D: the lecture's pictures run the same templates.
+
+Scene2D randomScene2D(int count, std::uint64_t seed) {
+    Pcg32 rng(seed, 3);
+    Scene2D s;
+    for (int i = 0; i < count; ++i) {
+        const Vec2 p(rng.uniform() * 20, rng.uniform() * 10);
+        if (i % 3 == 0)
+            s.circles.push_back({p, 0.2 + rng.uniform()});
+        else
+            s.segments.push_back({p, p + Vec2(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2)});
+    }
+    s.segments.push_back({Vec2(0, 0), Vec2(20, 0)});  // axis-parallel, on the box's face
+    s.segments.push_back({Vec2(5, 2), Vec2(5, 8)});
+    return s;
+}
+
+TEST(Trees2D, FindWhatBruteForceFinds) {
+    const Scene2D s = randomScene2D(60, 5);
+    const Scene2DPrims prims(s);
+    const BruteForceT<Scene2DPrims> brute(prims);
+    KdTreeOptions kdo;
+    const KdTree<Scene2DPrims> kdSah(prims, kdo);
+    kdo.split = SplitMethod::Midpoint;
+    const KdTree<Scene2DPrims> kdMid(prims, kdo);
+    const Bvh<Scene2DPrims> bvh(prims, BvhOptions{});
+    const UniformGridT<Scene2DPrims> grid(prims, GridOptions{});
+    // Cleary-Wyvill in 2D: cells per axis d_i sqrt(lambda N / A), by hand from the bounds.
+    const BoxN<2> b = s.bounds();
+    const Vec2 d = b.diagonal();
+    const double perUnit = std::sqrt(4.0 * s.primitiveCount() / (d.x * d.y));
+    EXPECT_EQ(grid.spec().res.x, std::lround(d.x * perUnit));
+    EXPECT_EQ(grid.spec().res.y, std::lround(d.y * perUnit));
+    Pcg32 rng(9, 1);
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Ray2 r;
+        r.origin = Vec2(rng.uniform() * 24 - 2, rng.uniform() * 14 - 2);
+        const double a = rng.uniform() * 2 * kPi;
+        r.dir = i % 7 == 0 ? Vec2(i % 2 ? 1.0 : -1.0, 0.0) : Vec2(std::cos(a), std::sin(a));
+        TraversalCounters c;
+        const auto expected = brute.intersect(r, c);
+        hits += expected.has_value();
+        for (const auto& got : {kdSah.intersect(r, c), kdMid.intersect(r, c), bvh.intersect(r, c),
+                                grid.intersect(r, c)}) {
+            ASSERT_EQ(got.has_value(), expected.has_value()) << i;
+            if (expected) {
+                EXPECT_EQ(got->prim, expected->prim) << i;
+                EXPECT_EQ(got->t, expected->t) << i;
+            }
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(Trees2D, AreaIsThePerimeter) {
+    // In 2D the SAH's "area" is the perimeter: a random line meets a convex region in
+    // proportion to it (Cauchy-Crofton).
+    BoxN<2> b{Vec2(0, 0), Vec2(3, 1)};
+    EXPECT_EQ(b.area(), 8.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The event log.
+
+TEST(Events, SmallPlainAndCapped) {
+    static_assert(sizeof(Event) <= 64);
+    EventLog log(5);
+    for (std::uint32_t i = 0; i < 8; ++i) log(MailboxSkip{0, i});
+    EXPECT_EQ(log.events().size(), 5u);
+    EXPECT_EQ(log.dropped(), 3u);
+    EXPECT_TRUE(log.truncated());
+    EXPECT_NE(capMessage(log).find("event cap of 5 reached: 3 later events"), std::string::npos);
+}
+
+TEST(Events, RecordingChangesNothing) {
+    // The recorded pixel has the colour and the counts of the unrecorded one, for every
+    // structure: recording observes, it does not steer.
+    const Scene s = loadBuiltinScene("default");
+    RenderOptions opt;
+    opt.width = 64;
+    opt.height = 48;
+    opt.trace.bounces = 3;
+    for (AccelKind kind :
+         {AccelKind::BruteForce, AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+        const Accelerator accel = buildAccelerator(s, kind);
+        const Tracer tracer(s, accel, opt.trace);
+        for (auto [x, y] : {std::pair{30, 30}, {40, 20}, {5, 40}}) {
+            RayCounters plain, recorded;
+            EventLog log;
+            const Color a = tracer.renderPixel(x, y, opt, plain);
+            const Color b = tracer.renderPixel(x, y, opt, recorded, log);
+            EXPECT_EQ(a, b);
+            EXPECT_EQ(plain.rays, recorded.rays);
+            EXPECT_EQ(plain.traversal.primitiveTests, recorded.traversal.primitiveTests);
+            // Every test and skip counted is an event, and every ray has its RayBegin.
+            std::uint64_t tests = 0, skips = 0, begins = 0;
+            for (const Event& e : log.events()) {
+                tests += std::holds_alternative<PrimitiveTest>(e);
+                skips += std::holds_alternative<MailboxSkip>(e);
+                begins += std::holds_alternative<RayBegin>(e);
+            }
+            EXPECT_EQ(tests, recorded.traversal.primitiveTests);
+            EXPECT_EQ(skips, recorded.traversal.mailboxSkips);
+            EXPECT_EQ(begins, recorded.totalRays());
+            EXPECT_EQ(log.rays().size(), recorded.totalRays());
+            // Shading terms add up to the pixel's colour (one sample per pixel here).
+            Color sum(0.0);
+            for (const Event& e : log.events())
+                if (const auto* t = std::get_if<ShadingTerm>(&e); t && t->ray == 0)
+                    sum += Color(t->rgb[0], t->rgb[1], t->rgb[2]);
+            const bool primaryHit =
+                std::any_of(log.events().begin(), log.events().end(), [](const Event& e) {
+                    const auto* h = std::get_if<RayHit>(&e);
+                    return h && h->ray == 0;
+                });
+            if (primaryHit) EXPECT_NEAR(glm::length(sum - a), 0.0, 1e-12);
+        }
+    }
+}
+
+TEST(Events, TraceFileRoundTrip) {
+    const Scene s = loadBuiltinScene("whitted");
+    for (AccelKind kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+        EventLog build;
+        const Accelerator accel = buildAccelerator(s, kind, {}, {}, build);
+        RenderOptions opt;
+        const Tracer tracer(s, accel, opt.trace);
+        EventLog log;
+        RayCounters c;
+        tracer.renderPixel(opt.width / 2, opt.height / 2, opt, c, log);
+        for (const EventLog* l : {&build, &log}) {
+            TraceInfo info;
+            info.scene = "whitted";
+            info.what = "pixel";
+            info.pixelX = 3;
+            info.pixelY = 4;
+            const std::string text = traceToJson(*l, info);
+            TraceInfo back;
+            const EventLog read = traceFromJson(text, "t.json", &back);
+            ASSERT_EQ(read.events().size(), l->events().size());
+            for (std::size_t i = 0; i < read.events().size(); ++i)
+                EXPECT_EQ(read.events()[i].index(), l->events()[i].index());
+            // Field by field through the file again: the same text.
+            EXPECT_EQ(traceToJson(read, back), text);
+            ASSERT_EQ(read.rays().size(), l->rays().size());
+            for (std::size_t i = 0; i < read.rays().size(); ++i) {
+                EXPECT_EQ(read.rays()[i].origin, l->rays()[i].origin);
+                EXPECT_EQ(read.rays()[i].dir, l->rays()[i].dir);
+                EXPECT_EQ(read.rays()[i].parent, l->rays()[i].parent);
+            }
+            EXPECT_EQ(back.pixelX, 3);
+            EXPECT_EQ(back.scene, "whitted");
+        }
+    }
+}
+
+TEST(Events, BadTraceFilesNameTheLineAndKey) {
+    const auto expectError = [](const std::string& text, const std::string& expected) {
+        try {
+            traceFromJson(text, "t.json");
+            FAIL() << "no error for: " << text;
+        } catch (const TraceError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    };
+    const std::string head = "{\"format\": \"raystep-trace\", \"version\": 1,\n\"rays\": [],\n";
+    expectError("{", "t.json: malformed JSON");
+    expectError("[]", "t.json:1: a trace file holds one JSON object");
+    expectError("{\"format\": \"x\"}", "key 'format'");
+    expectError("{\"format\": \"raystep-trace\", \"version\": 7}", "version 7");
+    expectError(head + "\"events\": [\n{\"type\": \"warp\"}]}", "t.json:4: key 'events[0].type'");
+    expectError(head + "\"events\": [\n{\"type\": \"ray_miss\"}]}", "key 'events[0].ray': missing");
+    expectError(head + "\"events\": [\n{\"type\": \"ray_miss\", \"ray\": 3}]}",
+                "ray 3 is not in 'rays'");
+    expectError(head + "\"events\": [\n{\"type\": \"mailbox_skip\", \"ray\": null, \"prim\": -1}]}",
+                "key 'events[0].prim'");
+    expectError(head +
+                    "\"events\": [\n{\"type\": \"primitive_test\", \"ray\": null, \"prim\": 1,"
+                    " \"hit\": 1, \"t\": 2}]}",
+                "key 'events[0].hit': expected true or false");
+    expectError(
+        "{\"format\": \"raystep-trace\", \"version\": 1,\n\"rays\": [{\"kind\": \"primary\","
+        " \"depth\": 0, \"parent\": null,\n \"origin\": [0, 0, 1e999]}]}",
+        "malformed JSON");
+}
+
+TEST(Events, ReplayRebuildsTheSameTraversal) {
+    // The rays of a recorded log, traced again from the log alone (no camera, no image), give
+    // exactly the recorded events: the log holds all a replay needs.
+    const Scene s = loadBuiltinScene("default");
+    for (AccelKind kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+        const Accelerator accel = buildAccelerator(s, kind);
+        RenderOptions opt;
+        opt.trace.bounces = 2;
+        const Tracer tracer(s, accel, opt.trace);
+        EventLog log;
+        RayCounters c;
+        tracer.renderPixel(300, 300, opt, c, log);
+        const EventLog read = traceFromJson(traceToJson(log, {}), "t.json");
+        for (std::uint32_t id = 0; id < read.rays().size(); ++id) {
+            const RayRecord& r = read.rays()[id];
+            EventLog again;
+            TraversalCounters tc;
+            const Ray ray{r.origin, r.dir, r.tMin, r.tMax};
+            if (r.kind == RayKind::Shadow)
+                occluded(accel, ray, tc, again, id);
+            else
+                intersect(accel, ray, tc, again, id);
+            // The recorded traversal events of this ray, in order.
+            std::vector<Event> recorded;
+            for (const Event& e : read.events()) {
+                const bool traversal =
+                    std::holds_alternative<DdaSetup>(e) || std::holds_alternative<DdaCell>(e) ||
+                    std::holds_alternative<NodeEnter>(e) || std::holds_alternative<NodeSkip>(e) ||
+                    std::holds_alternative<PrimitiveTest>(e) ||
+                    std::holds_alternative<MailboxSkip>(e);
+                const bool ofRay = std::visit(
+                    [&](const auto& ev) {
+                        if constexpr (requires { ev.ray; })
+                            return ev.ray == id;
+                        else
+                            return false;
+                    },
+                    e);
+                if (traversal && ofRay) recorded.push_back(e);
+            }
+            ASSERT_EQ(again.events().size(), recorded.size()) << "ray " << id;
+            for (std::size_t i = 0; i < recorded.size(); ++i)
+                EXPECT_EQ(again.events()[i].index(), recorded[i].index()) << "ray " << id;
+            EventLog a, b;
+            for (const Event& e : again.events()) a.append(e);
+            for (const Event& e : recorded) b.append(e);
+            EXPECT_EQ(traceToJson(a, {}), traceToJson(b, {})) << "ray " << id;
+        }
+    }
+}
+
+TEST(Events, GridRecordsTheLectureVariables) {
+    // A grid over [0,4]^2 with cells of 1 (one cell deep in z) and the ray from (0.5, 0.2) along
+    // (1, 0.5), by hand: tDelta = (1, 2); tMax starts at (0.5, 1.6); X steps at 0.5 and 1.5,
+    // Y at 1.6, X at 2.5, and the ray leaves at 3.5: cells (0,0) (1,0) (2,0) (2,1) (3,1).
+    Scene s;
+    s.materials.push_back(Material{});
+    s.spheres.push_back({Vec3(2, 2, 0.5), 0.01, 0});
+    s.spheres.push_back({Vec3(0.01, 0.01, 0.01), 0.01, 0});
+    s.spheres.push_back({Vec3(3.99, 3.99, 0.99), 0.01, 0});
+    GridOptions go;
+    go.res = std::array<int, 3>{4, 4, 1};
+    const UniformGrid g(ScenePrims(s, {}), go);
+    EventLog log;
+    TraversalCounters c;
+    g.intersect(Ray{Vec3(0.5, 0.2, 0.5), Vec3(1, 0.5, 0)}, c, log, 0);
+    std::vector<std::array<int, 2>> cells;
+    std::vector<std::array<double, 2>> tMax;
+    const DdaSetup* setup = nullptr;
+    for (const Event& e : log.events()) {
+        if (const auto* d = std::get_if<DdaSetup>(&e)) setup = d;
+        if (const auto* d = std::get_if<DdaCell>(&e)) {
+            cells.push_back({d->cell[0], d->cell[1]});
+            tMax.push_back({d->tMax[0], d->tMax[1]});
+        }
+    }
+    ASSERT_NE(setup, nullptr);
+    EXPECT_EQ(setup->step[0], 1);
+    EXPECT_EQ(setup->step[1], 1);
+    EXPECT_EQ(setup->step[2], 0);
+    EXPECT_DOUBLE_EQ(setup->tDelta[0], 1.0);
+    EXPECT_DOUBLE_EQ(setup->tDelta[1], 2.0);
+    const std::vector<std::array<int, 2>> expected = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {3, 1}};
+    EXPECT_EQ(cells, expected);
+    const std::vector<std::array<double, 2>> expectedTMax = {
+        {0.5, 1.6}, {1.5, 1.6}, {2.5, 1.6}, {2.5, 3.6}, {3.5, 3.6}};
+    ASSERT_EQ(tMax.size(), expectedTMax.size());
+    for (std::size_t i = 0; i < tMax.size(); ++i) {
+        EXPECT_NEAR(tMax[i][0], expectedTMax[i][0], 1e-15) << i;
+        EXPECT_NEAR(tMax[i][1], expectedTMax[i][1], 1e-15) << i;
+    }
+}
+
+}  // namespace
+}  // namespace raystep
