@@ -21,60 +21,77 @@ std::string_view accelKindName(AccelKind kind) {
 }
 
 namespace {
-template <typename Rec>
-Accelerator build(const Scene& scene, AccelKind kind, KernelOptions kernels,
-                  const AccelOptions& options, Rec* log) {
-    const ScenePrims prims(scene, kernels);
+template <typename Prims>
+AcceleratorT<Prims> build(const Prims& prims, AccelKind kind, const AccelOptions& options,
+                          EventLog* log) {
+    GridOptions grid = options.grid;
     switch (kind) {
         case AccelKind::BruteForce:
-            return BruteForce(prims);
+            return BruteForceT<Prims>(prims);
         case AccelKind::Grid:
-            return UniformGrid(prims, options.grid);
+            return UniformGridT<Prims>(prims, grid);
         case AccelKind::KdTree:
-            if (log) return KdTree3(prims, options.kdtree, *log);
-            return KdTree3(prims, options.kdtree);
+            if (log) return KdTree<Prims>(prims, options.kdtree, *log);
+            return KdTree<Prims>(prims, options.kdtree);
         case AccelKind::Bvh:
-            if (log) return Bvh3(prims, options.bvh, *log);
-            return Bvh3(prims, options.bvh);
+            if (log) return Bvh<Prims>(prims, options.bvh, *log);
+            return Bvh<Prims>(prims, options.bvh);
     }
     throw std::logic_error("unknown accelerator kind");
 }
-}  // namespace
 
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
-                             const AccelOptions& options) {
-    return build<EventLog>(scene, kind, kernels, options, nullptr);
-}
-Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
-                             const AccelOptions& options, EventLog& log) {
-    return build(scene, kind, kernels, options, &log);
-}
-
-BuildSummary summarize(const Accelerator& accel) {
+template <typename Prims>
+BuildSummary summarizeT(const AcceleratorT<Prims>& accel) {
+    constexpr int N = Prims::N;
     BuildSummary s;
-    if (const auto* g = std::get_if<UniformGrid>(&accel)) {
+    if (const auto* g = std::get_if<UniformGridT<Prims>>(&accel)) {
         s.stats.nodes = static_cast<std::uint32_t>(g->cellCount());
         s.stats.leaves = s.stats.nodes;
         s.stats.emptyLeaves = static_cast<std::uint32_t>(g->emptyCells());
         s.stats.references = g->references();
         s.stats.buildMs = g->buildMs();
-        const auto& r = g->spec().res;
-        s.description =
-            "grid " + std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
-    } else if (const auto* k = std::get_if<KdTree3>(&accel)) {
+        s.description = "grid ";
+        for (int i = 0; i < N; ++i)
+            s.description += (i ? "x" : "") + std::to_string(g->spec().res[i]);
+    } else if (const auto* k = std::get_if<KdTree<Prims>>(&accel)) {
         s.stats = k->stats();
         s.description = "kdtree " + std::string(name(k->options().split));
-    } else if (const auto* b = std::get_if<Bvh3>(&accel)) {
+    } else if (const auto* b = std::get_if<Bvh<Prims>>(&accel)) {
         s.stats = b->stats();
         s.description = "bvh " + std::string(name(b->options().split));
     } else {
-        const auto& bf = std::get<BruteForce>(accel);
+        const auto& bf = std::get<BruteForceT<Prims>>(accel);
         s.stats.nodes = s.stats.leaves = 1;
         s.stats.references = bf.primitives().count();
         s.stats.sahCost = KdTreeOptions{}.cIsect * bf.primitives().count();  // C_isect N
         s.description = "bruteforce";
     }
     return s;
+}
+}  // namespace
+
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
+                             const AccelOptions& options) {
+    return build(ScenePrims(scene, kernels), kind, options, nullptr);
+}
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
+                             const AccelOptions& options, EventLog& log) {
+    return build(ScenePrims(scene, kernels), kind, options, &log);
+}
+Accelerator2D buildAccelerator2D(const Scene2D& scene, AccelKind kind, const AccelOptions& options,
+                                 EventLog* log) {
+    AccelOptions o = options;
+    // The scene suggests the grid the slides draw, unless the user asked for another.
+    if (!o.grid.res && scene.gridRes)
+        o.grid.res = std::array<int, 3>{scene.gridRes->x, scene.gridRes->y, 1};
+    return build(Scene2DPrims(scene), kind, o, log);
+}
+
+BuildSummary summarize(const Accelerator& accel) {
+    return summarizeT<ScenePrims>(accel);
+}
+BuildSummary summarize(const Accelerator2D& accel) {
+    return summarizeT<Scene2DPrims>(accel);
 }
 
 }  // namespace raystep

@@ -26,11 +26,11 @@ std::optional<double> intersectCircle(const Ray2& ray, const Circle2& c) {
     const double a = glm::dot(ray.dir, ray.dir);
     const double b = glm::dot(f, ray.dir);
     const double cc = glm::dot(f, f) - c.radius * c.radius;
-    // The discriminant as a r^2 - a |f - (b/a) d|^2: no cancellation far from the circle.
+    // b^2 - a cc written as a (r^2 - |f - (b/a) d|^2): no cancellation far from the circle.
     const Vec2 l = f - (b / a) * ray.dir;
     const double disc = a * (c.radius * c.radius - glm::dot(l, l));
     if (disc < 0.0) return std::nullopt;
-    const double q = -b - std::copysign(std::sqrt(a * disc), b);
+    const double q = -b - std::copysign(std::sqrt(disc), b);
     double t0 = q != 0.0 ? cc / q : 0.0, t1 = q / a;
     if (t0 > t1) std::swap(t0, t1);
     if (t0 > ray.tMin && t0 < ray.tMax) return t0;

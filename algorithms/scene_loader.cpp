@@ -368,6 +368,10 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
         throw SceneError(fileName, line, path, "key given twice");
     }
     if (!root.is_object()) r.fail("", "a scene file holds one JSON object {...}");
+    if (root.contains("dimensions") && root["dimensions"] == 2)
+        r.fail("dimensions",
+               "a 2D scene (segments and circles): use it with build, trace, dda or the app's "
+               "2D view, not render");
     r.checkKeys(root, "",
                 {"description", "camera", "background", "ambient", "lights", "materials", "objects",
                  "render"});
@@ -430,6 +434,94 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
 }
 
 namespace {
+Vec2 readVec2(const Reader& r, const json& j, const std::string& path) {
+    if (!j.is_array() || j.size() != 2)
+        r.fail(path, "expected an array of 2 numbers [x, y], got " + Reader::typeName(j));
+    return Vec2(r.number(j[0], JsonLineMap::element(path, 0)),
+                r.number(j[1], JsonLineMap::element(path, 1)));
+}
+}  // namespace
+
+bool isScene2DText(std::string_view text) {
+    try {
+        const json root = json::parse(text.begin(), text.end(), nullptr, true, true);
+        return root.is_object() && root.contains("dimensions") && root["dimensions"] == 2;
+    } catch (const json::exception&) {
+        return false;
+    }
+}
+
+Scene2D loadScene2DText(std::string_view text, const std::string& fileName) {
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end(), nullptr, true, /*ignore_comments=*/true);
+    } catch (const json::exception& e) {
+        std::string what = e.what();
+        const auto at = what.find("parse error");
+        throw SceneError(fileName, 0, "",
+                         "malformed JSON: " + (at == std::string::npos ? what : what.substr(at)));
+    }
+    const Reader r(fileName, text);
+    if (!r.lines().duplicates().empty()) {
+        const auto& [path, line] = r.lines().duplicates().front();
+        throw SceneError(fileName, line, path, "key given twice");
+    }
+    r.requireObject(root, "");
+    r.checkKeys(root, "", {"dimensions", "description", "grid", "ray", "circles", "segments"});
+    if (!root.contains("dimensions") || root["dimensions"] != 2)
+        r.fail("dimensions", "a 2D scene says \"dimensions\": 2");
+    Scene2D scene;
+    scene.name = fileName;
+    ifPresent(root, "", "description",
+              [&](const json& v, const std::string& p) { scene.description = r.string(v, p); });
+    ifPresent(root, "", "grid", [&](const json& v, const std::string& p) {
+        if (!v.is_array() || v.size() != 2) r.fail(p, "expected [NX, NY]");
+        scene.gridRes = IVecN<2>(r.integer(v[0], JsonLineMap::element(p, 0), 1, 512),
+                                 r.integer(v[1], JsonLineMap::element(p, 1), 1, 512));
+    });
+    ifPresent(root, "", "ray", [&](const json& v, const std::string& p) {
+        r.requireObject(v, p);
+        r.checkKeys(v, p, {"origin", "dir"});
+        Ray2 ray;
+        if (!v.contains("origin") || !v.contains("dir"))
+            r.fail(p, "a ray needs an origin and a dir");
+        ray.origin = readVec2(r, v["origin"], JsonLineMap::child(p, "origin"));
+        ray.dir = readVec2(r, v["dir"], JsonLineMap::child(p, "dir"));
+        if (ray.dir == Vec2(0.0)) r.fail(JsonLineMap::child(p, "dir"), "must not be zero");
+        scene.exampleRay = ray;
+    });
+    ifPresent(root, "", "circles", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) r.fail(p, "expected an array of circles");
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const std::string cp = JsonLineMap::element(p, i);
+            r.requireObject(v[i], cp);
+            r.checkKeys(v[i], cp, {"center", "radius"});
+            if (!v[i].contains("center") || !v[i].contains("radius"))
+                r.fail(cp, "a circle needs a center and a radius");
+            scene.circles.push_back({readVec2(r, v[i]["center"], JsonLineMap::child(cp, "center")),
+                                     r.positive(v[i]["radius"], JsonLineMap::child(cp, "radius"))});
+        }
+    });
+    ifPresent(root, "", "segments", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) r.fail(p, "expected an array of segments");
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const std::string sp = JsonLineMap::element(p, i);
+            r.requireObject(v[i], sp);
+            r.checkKeys(v[i], sp, {"from", "to"});
+            if (!v[i].contains("from") || !v[i].contains("to"))
+                r.fail(sp, "a segment needs from and to");
+            const Segment2 seg{readVec2(r, v[i]["from"], JsonLineMap::child(sp, "from")),
+                               readVec2(r, v[i]["to"], JsonLineMap::child(sp, "to"))};
+            if (seg.a == seg.b) r.fail(JsonLineMap::child(sp, "to"), "the segment has no length");
+            scene.segments.push_back(seg);
+        }
+    });
+    if (scene.primitiveCount() == 0)
+        r.fail("segments", "the scene is empty: give at least one circle or segment");
+    return scene;
+}
+
+namespace {
 std::optional<std::string> readWholeFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in || std::filesystem::is_directory(path)) return std::nullopt;
@@ -447,11 +539,21 @@ Scene loadSceneFile(const std::string& path) {
                          [folder](const std::string& rel) { return readWholeFile(folder / rel); });
 }
 
-std::vector<std::string> builtinSceneNames() {
+namespace {
+std::vector<std::string> builtinNames(bool twoD) {
     std::vector<std::string> names;
     for (const std::string& f : embeddedFileNames())
-        if (f.size() > 5 && f.ends_with(".json")) names.push_back(f.substr(0, f.size() - 5));
+        if (f.size() > 5 && f.ends_with(".json") && isScene2DText(*embeddedFile(f)) == twoD)
+            names.push_back(f.substr(0, f.size() - 5));
     return names;
+}
+}  // namespace
+
+std::vector<std::string> builtinSceneNames() {
+    return builtinNames(false);
+}
+std::vector<std::string> builtinScene2DNames() {
+    return builtinNames(true);
 }
 
 Scene loadBuiltinScene(const std::string& name) {
@@ -465,11 +567,26 @@ Scene loadBuiltinScene(const std::string& name) {
     return scene;
 }
 
+std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath) {
+    if (const auto text = embeddedFile(nameOrPath + ".json")) {
+        if (!isScene2DText(*text)) return loadBuiltinScene(nameOrPath);
+        Scene2D s = loadScene2DText(*text, "scenes/" + nameOrPath + ".json");
+        s.name = nameOrPath;
+        return s;
+    }
+    if (std::filesystem::exists(nameOrPath)) {
+        const auto text = readWholeFile(nameOrPath);
+        if (text && isScene2DText(*text)) return loadScene2DText(*text, nameOrPath);
+    }
+    return loadScene(nameOrPath);
+}
+
 Scene loadScene(const std::string& nameOrPath) {
     if (embeddedFile(nameOrPath + ".json")) return loadBuiltinScene(nameOrPath);
     if (!std::filesystem::exists(nameOrPath)) {
         std::string names;
         for (const auto& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+        for (const auto& n : builtinScene2DNames()) names += ", " + n + " (2D)";
         throw SceneError(
             nameOrPath, 0, "",
             "no such scene file, and no built-in scene of that name (built-in: " + names + ")");

@@ -10,6 +10,7 @@
 #include "raystep/kdtree.h"
 #include "raystep/ray.h"
 #include "raystep/scene.h"
+#include "raystep/scene2d.h"
 
 #include <optional>
 #include <string>
@@ -79,7 +80,12 @@ std::string_view accelKindName(AccelKind kind);
 
 using KdTree3 = KdTree<ScenePrims>;
 using Bvh3 = Bvh<ScenePrims>;
-using Accelerator = std::variant<BruteForce, UniformGrid, KdTree3, Bvh3>;
+/// The structures over any primitive set: the 3D scene, or a 2D lecture scene.
+template <typename Prims>
+using AcceleratorT =
+    std::variant<BruteForceT<Prims>, UniformGridT<Prims>, KdTree<Prims>, Bvh<Prims>>;
+using Accelerator = AcceleratorT<ScenePrims>;
+using Accelerator2D = AcceleratorT<Scene2DPrims>;
 
 /// Build parameters of the structures (each reads its own).
 struct AccelOptions {
@@ -94,6 +100,10 @@ Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions k
 /// The same build with the tree's construction (nodes, candidates, leaves) recorded into `log`.
 Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
                              const AccelOptions& options, EventLog& log);
+
+/// The same structures over a 2D scene (segments and circles), optionally recording the build.
+Accelerator2D buildAccelerator2D(const Scene2D& scene, AccelKind kind,
+                                 const AccelOptions& options = {}, EventLog* log = nullptr);
 
 /// The kernels and precision the structure tests primitives with.
 inline const KernelOptions& kernelsOf(const Accelerator& accel) {
@@ -133,5 +143,6 @@ struct BuildSummary {
     std::string description;  // e.g. "grid 64x48x64", "kdtree sah"
 };
 BuildSummary summarize(const Accelerator& accel);
+BuildSummary summarize(const Accelerator2D& accel);
 
 }  // namespace raystep

@@ -40,8 +40,8 @@ struct Scene2D {
     std::string description;
     std::vector<Circle2> circles;
     std::vector<Segment2> segments;
-    std::optional<Ray2> exampleRay;  // the ray the slides follow
-    IVecN<2> gridRes{8, 8};          // the grid the slides draw
+    std::optional<Ray2> exampleRay;   // the ray the slides follow
+    std::optional<IVecN<2>> gridRes;  // the grid the slides draw (else Cleary-Wyvill)
 
     std::uint32_t primitiveCount() const {
         return static_cast<std::uint32_t>(circles.size() + segments.size());

@@ -1,12 +1,14 @@
 #pragma once
 // Scene files (JSON with comments, docs/scene-format.md) and the built-in scenes.
 #include "raystep/scene.h"
+#include "raystep/scene2d.h"
 
 #include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace raystep {
@@ -41,6 +43,15 @@ Scene loadBuiltinScene(const std::string& name);
 /// A built-in name, else a file path; the error for neither names both possibilities.
 Scene loadScene(const std::string& nameOrPath);
 
+/// The built-in 3D scenes, and the 2D ones (the lecture's pictures).
 std::vector<std::string> builtinSceneNames();
+std::vector<std::string> builtinScene2DNames();
+
+/// True if the text is a 2D scene ("dimensions": 2).
+bool isScene2DText(std::string_view text);
+/// Parses a 2D scene (docs/scene-format.md, "2D scenes").
+Scene2D loadScene2DText(std::string_view text, const std::string& fileName);
+/// A built-in name or a file, 3D or 2D.
+std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath);
 
 }  // namespace raystep

@@ -42,10 +42,15 @@ struct RenderArgs {
 };
 
 int listScenes() {
-    for (const std::string& name : builtinSceneNames()) {
-        const Scene s = loadBuiltinScene(name);
-        std::printf("%-10s %7u primitives  %s\n", name.c_str(), s.primitiveCount(),
-                    s.description.c_str());
+    std::vector<std::string> names = builtinSceneNames();
+    for (const std::string& n : builtinScene2DNames()) names.push_back(n);
+    for (const std::string& name : names) {
+        std::visit(
+            [&](const auto& s) {
+                std::printf("%-15s %7u primitives  %s\n", name.c_str(), s.primitiveCount(),
+                            s.description.c_str());
+            },
+            loadAnyScene(name));
     }
     return 0;
 }

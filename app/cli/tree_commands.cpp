@@ -27,6 +27,20 @@ std::optional<Scene> loadOrFail(const std::string& name, int& code) {
     }
 }
 
+struct SceneInfo {
+    std::string name;
+    unsigned dimensions;
+    unsigned primitives;
+};
+SceneInfo infoOf(const std::variant<Scene, Scene2D>& any) {
+    return std::visit(
+        [](const auto& s) {
+            const unsigned dims = std::is_same_v<std::decay_t<decltype(s)>, Scene2D> ? 2 : 3;
+            return SceneInfo{s.name, dims, s.primitiveCount()};
+        },
+        any);
+}
+
 nlohmann::ordered_json statsJson(const BuildSummary& b) {
     const TreeStats& s = b.stats;
     nlohmann::ordered_json reasons;
@@ -62,37 +76,46 @@ int runBuild(const BuildArgs& a) {
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
     if (!a.events.empty())
         if (auto problem = checkWritable("--events", a.events)) return fail(*problem);
-    int code = 0;
-    const auto scene = loadOrFail(a.scene, code);
-    if (!scene) return code;
-
+    std::variant<Scene, Scene2D> any;
+    try {
+        any = loadAnyScene(a.scene);
+    } catch (const SceneError& e) {
+        return fail(e.what());
+    }
     EventLog log(a.maxEvents);
-    const Accelerator accel =
-        a.events.empty()
-            ? buildAccelerator(*scene, choice.kind, choice.kernels, choice.options)
-            : buildAccelerator(*scene, choice.kind, choice.kernels, choice.options, log);
-    BuildSummary summary = summarize(accel);
-    summary.description = describeAccel(choice);
+    EventLog* record = a.events.empty() ? nullptr : &log;
+    BuildSummary summary;
+    const SceneInfo scene = infoOf(any);
+    if (const auto* s2 = std::get_if<Scene2D>(&any)) {
+        summary = summarize(buildAccelerator2D(*s2, choice.kind, choice.options, record));
+    } else {
+        const Scene& s3 = std::get<Scene>(any);
+        summary = summarize(
+            record ? buildAccelerator(s3, choice.kind, choice.kernels, choice.options, log)
+                   : buildAccelerator(s3, choice.kind, choice.kernels, choice.options));
+    }
+    if (choice.kind != AccelKind::Grid) summary.description = describeAccel(choice);
     if (!a.events.empty()) {
         TraceInfo info;
         info.what = "build";
-        info.scene = scene->name;
+        info.scene = scene.name;
         info.accel = summary.description;
         writeFileAtomic(a.events, traceToJson(log, info));
         if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
     }
     if (a.json) {
         nlohmann::ordered_json j = statsJson(summary);
-        j["scene"] = scene->name;
-        j["primitives"] = scene->primitiveCount();
+        j["scene"] = scene.name;
+        j["dimensions"] = scene.dimensions;
+        j["primitives"] = scene.primitives;
         if (!a.events.empty()) j["events"] = log.events().size();
         std::printf("%s\n", j.dump(2).c_str());
         return 0;
     }
     const TreeStats& s = summary.stats;
-    const double n = std::max(1u, scene->primitiveCount());
-    std::printf("%s on %s (%u primitives)\n", summary.description.c_str(), scene->name.c_str(),
-                scene->primitiveCount());
+    const double n = std::max(1u, scene.primitives);
+    std::printf("%s on %s (%uD, %u primitives)\n", summary.description.c_str(), scene.name.c_str(),
+                scene.dimensions, scene.primitives);
     std::printf("  nodes         %u\n  leaves        %u (%u empty)\n  max depth     %u\n", s.nodes,
                 s.leaves, s.emptyLeaves, s.maxDepth);
     std::printf("  references    %llu (%.2f per primitive)\n",
@@ -114,7 +137,9 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
     CLI::App* cmd =
         app.add_subcommand("trace", "Record every event of one pixel's ray tree to a trace file");
     cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
-    cmd->add_option("--pixel", a.pixel, "The pixel X,Y (0,0 is the top left)")->required();
+    cmd->add_option("--pixel", a.pixel, "3D scenes: the pixel X,Y (0,0 is the top left)");
+    cmd->add_option("--ray", a.ray,
+                    "2D scenes: the ray OX,OY,DX,DY (default: the scene's example ray)");
     cmd->add_option("-o,--output", a.output, "Trace file to write (JSON)")->required();
     cmd->add_option("--width", a.width, "Image width in pixels")
         ->check(CLI::Range(1, kMaxImageSide));
@@ -129,17 +154,70 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
     addCapOption(cmd, a.maxEvents);
 }
 
+namespace {
+/// A 2D scene's ray through its structure, every event recorded.
+int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene) {
+    Ray2 ray;
+    if (!a.ray.empty()) {
+        const auto v = parseNumbers(a.ray);
+        if (!v || v->size() != 4 || ((*v)[2] == 0 && (*v)[3] == 0))
+            return fail("--ray " + a.ray + ": expected OX,OY,DX,DY with a non-zero direction");
+        ray = Ray2{Vec2((*v)[0], (*v)[1]), Vec2((*v)[2], (*v)[3])};
+    } else if (scene.exampleRay) {
+        ray = *scene.exampleRay;
+    } else {
+        return fail(scene.name + ": the scene has no example ray; give one with --ray");
+    }
+    const Accelerator2D accel = buildAccelerator2D(scene, choice.kind, choice.options);
+    EventLog log(a.maxEvents);
+    TraversalCounters counters;
+    const std::uint32_t id =
+        log.beginRay(Ray{Vec3(ray.origin, 0.0), Vec3(ray.dir, 0.0), ray.tMin, ray.tMax},
+                     RayKind::Primary, 0, kNoId);
+    const auto hit =
+        std::visit([&](const auto& s) { return s.intersect(ray, counters, log, id); }, accel);
+    if (hit)
+        log(RayHit{id, hit->prim, hit->t, 0.0, 0.0});
+    else
+        log(RayMiss{id});
+    TraceInfo info;
+    info.what = "ray";
+    info.scene = scene.name;
+    info.accel = summarize(accel).description;
+    writeFileAtomic(a.output, traceToJson(log, info));
+    if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
+    if (hit)
+        std::printf("ray (%g, %g) + t (%g, %g): hits primitive %u at t = %.17g\n", ray.origin.x,
+                    ray.origin.y, ray.dir.x, ray.dir.y, hit->prim, hit->t);
+    else
+        std::printf("ray (%g, %g) + t (%g, %g): misses everything\n", ray.origin.x, ray.origin.y,
+                    ray.dir.x, ray.dir.y);
+    std::printf("  primitive tests %llu, cells or nodes visited %llu, mailbox skips %llu\n",
+                static_cast<unsigned long long>(counters.primitiveTests),
+                static_cast<unsigned long long>(counters.nodeVisits),
+                static_cast<unsigned long long>(counters.mailboxSkips));
+    std::printf("wrote %s (%zu events)\n", a.output.c_str(), log.events().size());
+    return 0;
+}
+}  // namespace
+
 int runTrace(const TraceArgs& a) {
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
     if (auto problem = checkWritable("-o", a.output)) return fail(*problem);
+    std::variant<Scene, Scene2D> any;
+    try {
+        any = loadAnyScene(a.scene);
+    } catch (const SceneError& e) {
+        return fail(e.what());
+    }
+    if (const auto* s2 = std::get_if<Scene2D>(&any)) return trace2D(a, choice, *s2);
+    if (a.pixel.empty()) return fail("--pixel X,Y is required for a 3D scene");
     const auto xy = parseNumbers(a.pixel);
     if (!xy || xy->size() != 2 || (*xy)[0] != std::floor((*xy)[0]) ||
         (*xy)[1] != std::floor((*xy)[1]) || (*xy)[0] < 0 || (*xy)[1] < 0)
         return fail("--pixel " + a.pixel + ": expected X,Y, two whole numbers 0 or more");
-    int code = 0;
-    const auto scene = loadOrFail(a.scene, code);
-    if (!scene) return code;
+    const Scene* scene = &std::get<Scene>(any);
     RenderOptions opt;
     opt.width = a.width.value_or(scene->settings.width);
     opt.height = a.height.value_or(scene->settings.height);

@@ -24,6 +24,7 @@ struct TraceArgs {
     std::string scene = "default";
     AccelArgs accel;
     std::string pixel;
+    std::string ray;
     std::string output;
     std::optional<int> width, height, bounces, spp, diffuseSamples;
     std::uint64_t seed = 1;

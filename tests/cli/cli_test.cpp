@@ -54,6 +54,18 @@ class Cli : public ::testing::Test {
         EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
         EXPECT_TRUE(fs::is_empty(dir)) << "bad input left files behind: " << args;
     }
+    /// Bad input in a folder that already holds files: nothing new written.
+    void expectBadInputKeepFiles(const std::string& args, const std::string& expected) {
+        std::size_t before = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++before;
+        const CliRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+        std::size_t after = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++after;
+        EXPECT_EQ(after, before) << args;
+    }
     void write(const std::string& name, const std::string& text) {
         std::ofstream(dir / name) << text;
     }
@@ -213,6 +225,32 @@ TEST_F(Cli, TraceRecordsAPixelsRayTree) {
     EXPECT_EQ(count["pixel_result"], 1);
     EXPECT_EQ(count["ray_begin"], static_cast<int>(t["rays"].size()));
     EXPECT_EQ(t["events"].back()["type"], "pixel_result");
+}
+
+TEST_F(Cli, TwoDimensionalLectureScenes) {
+    // The slides' DDA example: cells (0,0) (1,0) (1,1) (2,1) ..., and the nearest hit found in
+    // cell (3,3) after a farther hit in cell (3,2): t = 2.204 / 0.63 on the short segment.
+    const CliRun r = run("trace lecture-grid --accel grid -o g.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto t = nlohmann::json::parse(slurp(dir / "g.json"));
+    std::vector<std::vector<int>> cells;
+    for (const auto& e : t["events"])
+        if (e["type"] == "dda_cell") cells.push_back({e["cell"][0], e["cell"][1]});
+    ASSERT_GE(cells.size(), 4u);
+    EXPECT_EQ(cells[0], (std::vector<int>{0, 0}));
+    EXPECT_EQ(cells[1], (std::vector<int>{1, 0}));
+    EXPECT_EQ(cells[2], (std::vector<int>{1, 1}));
+    EXPECT_EQ(cells[3], (std::vector<int>{2, 1}));
+    EXPECT_EQ(cells.back(), (std::vector<int>{3, 3}));
+    EXPECT_EQ(t["events"].back()["type"], "ray_hit");
+    EXPECT_NEAR(t["events"].back()["t"].get<double>(), 2.204 / 0.63, 1e-12);
+    const CliRun b = run("build lecture-kdtree --split sah --json");
+    ASSERT_EQ(b.code, 0) << b.err;
+    EXPECT_EQ(nlohmann::json::parse(b.out)["dimensions"], 2);
+    const CliRun own = run("trace lecture-kdtree --accel kdtree --ray 0,0,1,1 -o k.json");
+    ASSERT_EQ(own.code, 0) << own.err;
+    expectBadInputKeepFiles("trace lecture-kdtree --ray 0,0,0,0 -o x.json", "--ray");
+    expectBadInputKeepFiles("render lecture-grid -o x.png", "key 'dimensions': a 2D scene");
 }
 
 TEST_F(Cli, CompareShowsThreeSplits) {

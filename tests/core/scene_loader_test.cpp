@@ -338,3 +338,59 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace raystep
+
+namespace raystep {
+namespace {
+
+TEST(Scene2DLoader, LectureScenesLoad) {
+    EXPECT_EQ(builtinScene2DNames(), (std::vector<std::string>{"lecture-grid", "lecture-kdtree"}));
+    for (const auto& name : builtinScene2DNames()) {
+        const auto any = loadAnyScene(name);
+        ASSERT_TRUE(std::holds_alternative<Scene2D>(any)) << name;
+        const Scene2D& s = std::get<Scene2D>(any);
+        EXPECT_EQ(s.name, name);
+        EXPECT_TRUE(s.exampleRay.has_value()) << name;
+        EXPECT_GT(s.primitiveCount(), 5u) << name;
+    }
+    // A 3D command on a 2D scene is told so, with the file and key.
+    try {
+        loadScene("lecture-grid");
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.key(), "dimensions");
+        EXPECT_NE(std::string(e.what()).find("a 2D scene"), std::string::npos);
+    }
+}
+
+TEST(Scene2DLoader, BadFilesNameLineAndKey) {
+    const auto expectError = [](const std::string& text, int line, const std::string& key,
+                                const std::string& message) {
+        try {
+            loadScene2DText(text, "flat.json");
+            FAIL() << text;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.line(), line) << e.what();
+            EXPECT_EQ(e.key(), key) << e.what();
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    };
+    expectError("{\"dimensions\": 2,\n\"circles\": [{\"center\": [0, 0], \"radius\": -1}]}", 2,
+                "circles[0].radius", "greater than 0");
+    expectError("{\"dimensions\": 2,\n\"segments\": [\n{\"from\": [1, 1], \"to\": [1, 1]}]}", 3,
+                "segments[0].to", "no length");
+    expectError("{\"dimensions\": 2,\n\"segments\": [{\"from\": [1, \"x\"], \"to\": [1, 1]}]}", 2,
+                "segments[0].from[1]", "expected a number");
+    expectError(
+        "{\"dimensions\": 2,\n\"ray\": {\"origin\": [0, 0], \"dir\": [0, 0]},\n"
+        "\"circles\": [{\"center\": [0, 0], \"radius\": 1}]}",
+        2, "ray.dir", "must not be zero");
+    expectError(
+        "{\"dimensions\": 2,\n\"grid\": [0, 4],\n"
+        "\"circles\": [{\"center\": [0, 0], \"radius\": 1}]}",
+        2, "grid[0]", "between 1 and 512");
+    expectError("{\"dimensions\": 2}", 1, "segments", "the scene is empty");
+    expectError("{\"dimensions\": 2,\n\"spheres\": []}", 2, "spheres", "unknown key");
+}
+
+}  // namespace
+}  // namespace raystep

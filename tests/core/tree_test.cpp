@@ -180,7 +180,9 @@ TEST(Trees2D, FindWhatBruteForceFinds) {
         Ray2 r;
         r.origin = Vec2(rng.uniform() * 24 - 2, rng.uniform() * 14 - 2);
         const double a = rng.uniform() * 2 * kPi;
-        r.dir = i % 7 == 0 ? Vec2(i % 2 ? 1.0 : -1.0, 0.0) : Vec2(std::cos(a), std::sin(a));
+        // Directions of any length: the kernels must not assume unit vectors.
+        const double len = 0.1 + 3 * rng.uniform();
+        r.dir = i % 7 == 0 ? Vec2(i % 2 ? len : -len, 0.0) : len * Vec2(std::cos(a), std::sin(a));
         TraversalCounters c;
         const auto expected = brute.intersect(r, c);
         hits += expected.has_value();
@@ -194,6 +196,25 @@ TEST(Trees2D, FindWhatBruteForceFinds) {
         }
     }
     EXPECT_GT(hits, 1000);
+}
+
+TEST(Scene2D, RayCircleAndSegmentByHand) {
+    // The lecture-grid example ray (0.4, 0.4) + t (1, 0.75), not of unit length.
+    const Ray2 r{Vec2(0.4, 0.4), Vec2(1.0, 0.75)};
+    // Circle (4.2, 2.9), radius 0.3: a t^2 + 2 b t + c = 0 with a = 1.5625, b = -5.675,
+    // c = 20.6; the nearer root (5.675 - sqrt(b^2 - a c)) / a, b^2 - a c = 0.018125.
+    const auto t = intersectCircle(r, {Vec2(4.2, 2.9), 0.3});
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, (5.675 - std::sqrt(0.018125)) / 1.5625, 1e-13);
+    // Segment (3.7, 3.5)-(3.9, 3.02): 0.4 + t = 3.7 + 0.2 s, 0.4 + 0.75 t = 3.5 - 0.48 s gives
+    // t = 2.204 / 0.63 by elimination.
+    const auto u = intersectSegment(r, {Vec2(3.7, 3.5), Vec2(3.9, 3.02)});
+    ASSERT_TRUE(u);
+    EXPECT_NEAR(*u, 2.204 / 0.63, 1e-13);
+    // From inside a circle: the far root; behind the ray: nothing.
+    EXPECT_NEAR(*intersectCircle(Ray2{Vec2(0, 0), Vec2(0, 2)}, {Vec2(0, 0), 1.0}), 0.5, 1e-15);
+    EXPECT_FALSE(intersectCircle(Ray2{Vec2(3, 0), Vec2(1, 0)}, {Vec2(0, 0), 1.0}));
+    EXPECT_FALSE(intersectSegment(Ray2{Vec2(0, 0), Vec2(1, 0)}, {Vec2(1, 0), Vec2(2, 0)}));
 }
 
 TEST(Trees2D, AreaIsThePerimeter) {
