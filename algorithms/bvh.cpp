@@ -1,5 +1,6 @@
 #include "raystep/bvh.h"
 
+#include "raystep/fast_prims.h"
 #include "raystep/scene2d.h"
 
 #include <algorithm>
@@ -295,5 +296,6 @@ bool Bvh<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
 
 template class Bvh<ScenePrims>;
 template class Bvh<Scene2DPrims>;
+template class Bvh<FloatScenePrims>;
 
 }  // namespace raystep

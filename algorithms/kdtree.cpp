@@ -2,6 +2,7 @@
 
 #include "raystep/mailbox.h"
 #include "raystep/names.h"
+#include "raystep/fast_prims.h"
 #include "raystep/scene2d.h"
 
 #include <algorithm>
@@ -69,12 +70,9 @@ class KdBuilder {
         const std::uint32_t n = prims_.count();
         if (opt_.split == SplitMethod::Sah) {
             side_.assign(n, Side::Both);
-            std::vector<SplitEvent> events;
-            events.reserve(std::size_t(2) * N * n);
-            for (std::uint32_t p = 0; p < n; ++p)
-                addEvents(p, primBounds_[p].clippedTo(box), events);
-            std::sort(events.begin(), events.end());
-            buildSah(std::move(events), n, box, 0, kNoId);
+            std::vector<Ref> refs(n);
+            for (std::uint32_t p = 0; p < n; ++p) refs[p] = {p, primBounds_[p].clippedTo(box)};
+            buildBinned(std::move(refs), box, 0, kNoId);
         } else {
             std::vector<std::uint32_t> all(n);
             for (std::uint32_t p = 0; p < n; ++p) all[p] = p;
@@ -83,6 +81,110 @@ class KdBuilder {
     }
 
   private:
+    /// A primitive with its bounds clipped to the node (the binned upper levels).
+    struct Ref {
+        std::uint32_t prim;
+        Box b;
+    };
+
+    /// Area of `box` with its extent along `axis` replaced by `width`: the SAH's Area(L) and
+    /// Area(R) in closed form, without building the child boxes.
+    static double areaWithWidth(const Box& box, int axis, double width) {
+        const VecN<N, double> d = box.diagonal();
+        if constexpr (N == 3) {
+            const double e1 = d[(axis + 1) % 3], e2 = d[(axis + 2) % 3];
+            return 2.0 * (width * (e1 + e2) + e1 * e2);
+        } else {
+            return 2.0 * (width + d[1 - axis]);
+        }
+    }
+
+    /// Big nodes: the SAH over `bins` equal bins per axis (min-max binning: where each primitive
+    /// starts and ends), O(n) a node. Below opt_.exactBelow primitives, the exact sweep over
+    /// sorted events takes over (buildSah). Candidates are the bin boundaries.
+    void buildBinned(std::vector<Ref> refs, const Box& box, int depth, std::uint32_t parent) {
+        const auto n = static_cast<std::uint32_t>(refs.size());
+        if (opt_.exactBelow <= 0 || n <= static_cast<std::uint32_t>(opt_.exactBelow)) {
+            std::vector<SplitEvent> events;
+            events.reserve(std::size_t(2) * N * n);
+            for (const Ref& r : refs) addEvents(r.prim, r.b, events);
+            refs = {};
+            std::sort(events.begin(), events.end());
+            return buildSah(std::move(events), n, box, depth, parent);
+        }
+        const std::uint32_t id = openNode(box, depth, n, parent);
+        const auto nodePrims = [&] {
+            std::vector<std::uint32_t> prims(n);
+            for (std::uint32_t k = 0; k < n; ++k) prims[k] = refs[k].prim;
+            return prims;
+        };
+        if (leafByCount(id, n, depth, nodePrims)) return;
+
+        constexpr int kBins = 256;
+        const double areaC = box.area();
+        const double leafCost = opt_.cIsect * n;
+        double bestCost = kInfinity, bestPos = 0.0;
+        int bestAxis = -1;
+        std::array<std::uint32_t, kBins> starts, ends;
+        for (int axis = 0; axis < N; ++axis) {
+            const double lo = box.lo[axis], hi = box.hi[axis];
+            if (!(hi > lo) || !(areaC > 0.0)) continue;
+            const double scale = kBins / (hi - lo);
+            starts.fill(0);
+            ends.fill(0);
+            const auto binOf = [&](double x) {
+                return std::clamp(static_cast<int>((x - lo) * scale), 0, kBins - 1);
+            };
+            for (const Ref& r : refs) {
+                ++starts[binOf(r.b.lo[axis])];
+                ++ends[binOf(r.b.hi[axis])];
+            }
+            std::uint32_t nl = 0, nr = n;
+            for (int b = 1; b < kBins; ++b) {
+                nl += starts[b - 1];  // started in a bin below this boundary
+                nr -= ends[b - 1];    // ended in a bin below it
+                const double pos = lo + (hi - lo) * b / kBins;
+                const double pl = areaWithWidth(box, axis, pos - lo) / areaC;
+                const double pr = areaWithWidth(box, axis, hi - pos) / areaC;
+                const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
+                if constexpr (Rec::kEnabled)
+                    rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr,
+                                        cost});
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestPos = pos;
+                    bestAxis = axis;
+                }
+            }
+        }
+        if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
+        if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
+
+        const auto [boxL, boxR] = splitBox(box, bestAxis, bestPos);
+        std::vector<Ref> left, right;
+        left.reserve(n / 2);
+        right.reserve(n / 2);
+        for (const Ref& r : refs) {
+            const double lo = r.b.lo[bestAxis], hi = r.b.hi[bestAxis];
+            if (hi < bestPos || (hi == bestPos && lo < bestPos) || (lo == hi && lo == bestPos)) {
+                left.push_back(r);  // wholly below (or flat in the plane: left, as the sweep)
+            } else if (lo >= bestPos) {
+                right.push_back(r);
+            } else {
+                // Straddles: clipped to each side ("perfect splits"), dropped where it misses.
+                const Box l = prims_.clippedBounds(r.prim, boxL);
+                const Box rr = prims_.clippedBounds(r.prim, boxR);
+                if (!l.empty()) left.push_back({r.prim, l});
+                if (!rr.empty()) right.push_back({r.prim, rr});
+            }
+        }
+        refs = {};
+        split(id, bestAxis, bestPos, bestCost, leafCost);
+        buildBinned(std::move(left), boxL, depth + 1, id);
+        nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
+        buildBinned(std::move(right), boxR, depth + 1, id);
+    }
+
     static void addEvents(std::uint32_t p, const Box& b, std::vector<SplitEvent>& out) {
         for (int a = 0; a < N; ++a) {
             const auto axis = static_cast<std::uint8_t>(a);
@@ -181,8 +283,8 @@ class KdBuilder {
                 nr -= planars + ends;
                 // Only planes strictly inside the node cut it into two smaller boxes.
                 if (p > box.lo[axis] && p < box.hi[axis] && areaC > 0.0) {
-                    const auto [l, r] = splitBox(box, axis, p);
-                    const double pl = l.area() / areaC, pr = r.area() / areaC;
+                    const double pl = areaWithWidth(box, axis, p - box.lo[axis]) / areaC;
+                    const double pr = areaWithWidth(box, axis, box.hi[axis] - p) / areaC;
                     // Primitives lying in the plane go to whichever side is cheaper.
                     const double costL =
                         sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl + planars, nr);
@@ -501,5 +603,6 @@ bool KdTree<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& lo
 
 template class KdTree<ScenePrims>;
 template class KdTree<Scene2DPrims>;
+template class KdTree<FloatScenePrims>;
 
 }  // namespace raystep

@@ -104,6 +104,57 @@ BENCHMARK(BM_Stadium64x48_Grid)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The hierarchies on the same frames (SAH, the defaults).
+void BM_Default800x600_KdTree(benchmark::State& state) {
+    renderScene(state, "default", 800, 600, 2, 1, 0, false, AccelKind::KdTree);
+}
+BENCHMARK(BM_Default800x600_KdTree)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+void BM_Default800x600_Bvh(benchmark::State& state) {
+    renderScene(state, "default", 800, 600, 2, 1, 0, false, AccelKind::Bvh);
+}
+BENCHMARK(BM_Default800x600_Bvh)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+void BM_Stadium64x48_KdTree(benchmark::State& state) {
+    renderScene(state, "stadium", 64, 48, 1, 1, 0, false, AccelKind::KdTree);
+}
+BENCHMARK(BM_Stadium64x48_KdTree)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+void BM_Stadium64x48_Bvh(benchmark::State& state) {
+    renderScene(state, "stadium", 64, 48, 1, 1, 0, false, AccelKind::Bvh);
+}
+BENCHMARK(BM_Stadium64x48_Bvh)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+// The stadium at a real size, where only the hierarchies are usable.
+void BM_Stadium640x480_KdTree(benchmark::State& state) {
+    renderScene(state, "stadium", 640, 480, 1, 1, 0, false, AccelKind::KdTree);
+}
+BENCHMARK(BM_Stadium640x480_KdTree)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+void BM_Stadium640x480_Bvh(benchmark::State& state) {
+    renderScene(state, "stadium", 640, 480, 1, 1, 0, false, AccelKind::Bvh);
+}
+BENCHMARK(BM_Stadium640x480_Bvh)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // Colour bleeding's price: the Cornell box with 16 diffuse samples.
 void BM_Cornell128_Diffuse16(benchmark::State& state) {
     renderScene(state, "cornell", 128, 128, 3, 1, 16);

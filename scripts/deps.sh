@@ -7,7 +7,7 @@ RAYSTEP_BUILD_PACKAGES=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev libboost-dev
 )
 RAYSTEP_TEST_PACKAGES=(
-  googletest libgtest-dev libbenchmark-dev
+  googletest libgtest-dev libbenchmark-dev libembree-dev
 )
 
 # ensure_packages PKG...: install those that are not installed yet (apt-get, as root or through sudo).

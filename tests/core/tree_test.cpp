@@ -278,7 +278,9 @@ TEST(Events, RecordingChangesNothing) {
                     const auto* h = std::get_if<RayHit>(&e);
                     return h && h->ray == 0;
                 });
-            if (primaryHit) EXPECT_NEAR(glm::length(sum - a), 0.0, 1e-12);
+            if (primaryHit) {
+                EXPECT_NEAR(glm::length(sum - a), 0.0, 1e-12);
+            }
         }
     }
 }

@@ -1,0 +1,106 @@
+// Build time against N (the SAH kd-tree's O(N log N), the BVH for comparison) and the price of
+// recording: bytes per event and the slowdown of a traced ray. Run: build/bench/raystep_bench_build
+// (scripts/measure_build.sh plots the scaling into docs/images/build-scaling.png).
+#include "meshes.h"
+#include "raystep/accel.h"
+#include "raystep/scene_loader.h"
+#include "raystep/tracer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+namespace {
+
+using namespace raystep;
+
+/// The knot tessellated with `around` quads around the tube and 4 x around along it: the
+/// triangles keep their shape as N = 8 around^2 grows.
+const Scene& knot(int around) {
+    static std::map<int, Scene> cache;
+    auto it = cache.find(around);
+    if (it == cache.end()) it = cache.emplace(around, bench::knotScene(4 * around, around)).first;
+    return it->second;
+}
+
+// Arg: quads around the tube; N = 8 around^2 triangles, from 968 to 1,048,352 by fours.
+void BM_KdTreeSahBuild(benchmark::State& state) {
+    const Scene& s = knot(static_cast<int>(state.range(0)));
+    std::uint32_t nodes = 0;
+    for (auto _ : state) {
+        const KdTree3 t(ScenePrims(s, {}), KdTreeOptions{});
+        nodes = t.stats().nodes;
+        benchmark::DoNotOptimize(nodes);
+    }
+    state.counters["N"] = static_cast<double>(s.triangles.size());
+    state.counters["Mtris/s"] = benchmark::Counter(
+        static_cast<double>(s.triangles.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["nodes"] = nodes;
+}
+void BM_BvhSahBuild(benchmark::State& state) {
+    const Scene& s = knot(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        const Bvh3 b(ScenePrims(s, {}), BvhOptions{});
+        benchmark::DoNotOptimize(b.stats().nodes);
+    }
+    state.counters["N"] = static_cast<double>(s.triangles.size());
+    state.counters["Mtris/s"] = benchmark::Counter(
+        static_cast<double>(s.triangles.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_KdTreeSahBuild)
+    ->Arg(11)->Arg(23)->Arg(45)->Arg(91)->Arg(181)->Arg(362)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_BvhSahBuild)
+    ->Arg(11)->Arg(23)->Arg(45)->Arg(91)->Arg(181)->Arg(362)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// Recording: the same pixels of the default scene traced with recording off (NullRecorder: the
+// hooks are discarded at compile time) and on (every event kept in an EventLog).
+void tracePixels(benchmark::State& state, AccelKind kind, bool record) {
+    static const Scene s = loadBuiltinScene("default");
+    const Accelerator accel = buildAccelerator(s, kind);
+    RenderOptions opt;
+    opt.width = 160;
+    opt.height = 120;
+    opt.trace.bounces = 3;
+    const Tracer tracer(s, accel, opt.trace);
+    EventLog log;
+    std::uint64_t events = 0, rays = 0;
+    for (auto _ : state) {
+        for (int y = 0; y < opt.height; ++y)
+            for (int x = 0; x < opt.width; ++x) {
+                RayCounters c;
+                if (record) {
+                    log.clear();
+                    tracer.renderPixel(x, y, opt, c, log);
+                    events += log.events().size();
+                } else {
+                    benchmark::DoNotOptimize(tracer.renderPixel(x, y, opt, c));
+                }
+                rays += c.totalRays();
+            }
+    }
+    state.counters["Mrays/s"] = benchmark::Counter(rays * 1e-6, benchmark::Counter::kIsRate);
+    if (record) {
+        state.counters["events/ray"] = static_cast<double>(events) / rays;
+        state.counters["bytes/event"] = sizeof(Event);
+    }
+}
+void BM_Trace_Grid_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::Grid, false); }
+void BM_Trace_Grid_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::Grid, true); }
+void BM_Trace_KdTree_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::KdTree, false); }
+void BM_Trace_KdTree_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::KdTree, true); }
+void BM_Trace_Bvh_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::Bvh, false); }
+void BM_Trace_Bvh_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::Bvh, true); }
+BENCHMARK(BM_Trace_Grid_RecordingOff)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Trace_Grid_RecordingOn)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Trace_KdTree_RecordingOff)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Trace_KdTree_RecordingOn)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Trace_Bvh_RecordingOff)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Trace_Bvh_RecordingOn)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,42 @@
+#!/usr/bin/env python3
+"""Plots docs/data/build_bench.json: build time against N for the SAH kd-tree and the SAH BVH,
+with c N log2 N fitted through the largest point of each, into docs/images/build-scaling.png."""
+import json
+import math
+import pathlib
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+data = json.loads((ROOT / "docs/data/build_bench.json").read_text())
+
+series = {}
+for b in data["benchmarks"]:
+    name = b["name"].split("/")[0]
+    if not name.endswith("Build"):
+        continue
+    ms = b["real_time"] if b["time_unit"] == "ms" else b["real_time"] / 1e6
+    series.setdefault(name, []).append((b["N"], ms))
+
+fig, ax = plt.subplots(figsize=(6.4, 4.2))
+labels = {"BM_KdTreeSahBuild": "kd-tree, SAH (binned above 4096, then sorted events)",
+          "BM_BvhSahBuild": "BVH, binned SAH"}
+for name, pts in series.items():
+    pts.sort()
+    n = [p[0] for p in pts]
+    t = [p[1] for p in pts]
+    line, = ax.loglog(n, t, "o-", label=labels.get(name, name))
+    c = t[-1] / (n[-1] * math.log2(n[-1]))
+    ax.loglog(n, [c * x * math.log2(x) for x in n], "--", color=line.get_color(), alpha=0.5,
+              label="c N log N through the last point")
+ax.set_xlabel("triangles N")
+ax.set_ylabel("build time (ms, one thread)")
+ax.set_title("Build time against N (torus-knot tube meshes)")
+ax.grid(True, which="both", alpha=0.3)
+ax.legend(fontsize=7)
+fig.tight_layout()
+out = ROOT / "docs/images/build-scaling.png"
+fig.savefig(out, dpi=110)
+print("wrote", out)
