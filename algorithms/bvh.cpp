@@ -151,8 +151,10 @@ class BvhBuilder {
         if constexpr (Rec::kEnabled)
             rec_(SplitChosen{id, static_cast<std::uint8_t>(axis), position, cost, opt_.cIsect * n});
         nodes_[id].axis = static_cast<std::uint8_t>(axis);
-        build(begin, mid, depth + 1, id);
-        const std::uint32_t right = build(mid, end, depth + 1, id);
+        const double fl = double(mid - begin) / n;
+        progress_.child(fl, [&] { build(begin, mid, depth + 1, id); });
+        std::uint32_t right = 0;
+        progress_.child(1 - fl, [&] { right = build(mid, end, depth + 1, id); });
         nodes_[id].index = right;
         return id;
     }
@@ -168,6 +170,7 @@ class BvhBuilder {
         if constexpr (Rec::kEnabled)
             rec_(LeafMade{id, reason, end - begin, static_cast<std::uint32_t>(depth),
                           opt_.cIsect * (end - begin)});
+        progress_.leafDone();
         return id;
     }
 
@@ -178,6 +181,7 @@ class BvhBuilder {
     TreeStats& stats_;
     std::vector<Box> bounds_;
     std::vector<VecN<N, double>> centres_;
+    BuildProgress progress_{opt_.progress};
 };
 
 template <int N>

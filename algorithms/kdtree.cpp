@@ -1,8 +1,8 @@
 #include "raystep/kdtree.h"
 
+#include "raystep/fast_prims.h"
 #include "raystep/mailbox.h"
 #include "raystep/names.h"
-#include "raystep/fast_prims.h"
 #include "raystep/scene2d.h"
 
 #include <algorithm>
@@ -146,7 +146,8 @@ class KdBuilder {
                 const double pos = lo + (hi - lo) * b / kBins;
                 const double pl = areaWithWidth(box, axis, pos - lo) / areaC;
                 const double pr = areaWithWidth(box, axis, hi - pos) / areaC;
-                const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
+                const double cost =
+                    sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
                 if constexpr (Rec::kEnabled)
                     rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr,
                                         cost});
@@ -180,9 +181,10 @@ class KdBuilder {
         }
         refs = {};
         split(id, bestAxis, bestPos, bestCost, leafCost);
-        buildBinned(std::move(left), boxL, depth + 1, id);
+        const double fl = double(left.size()) / double(left.size() + right.size());
+        progress_.child(fl, [&] { buildBinned(std::move(left), boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        buildBinned(std::move(right), boxR, depth + 1, id);
+        progress_.child(1 - fl, [&] { buildBinned(std::move(right), boxR, depth + 1, id); });
     }
 
     static void addEvents(std::uint32_t p, const Box& b, std::vector<SplitEvent>& out) {
@@ -222,6 +224,7 @@ class KdBuilder {
         if constexpr (Rec::kEnabled)
             rec_(LeafMade{id, reason, node.count, static_cast<std::uint32_t>(depth),
                           opt_.cIsect * node.count});
+        progress_.leafDone();
     }
 
     /// Checks shared by every strategy; true if the node must be a leaf (and makes it).
@@ -365,9 +368,10 @@ class KdBuilder {
         right = {};
 
         split(id, bestAxis, bestPos, bestCost, leafCost);
-        buildSah(std::move(mergedL), nl, boxL, depth + 1, id);
+        const double fl = double(nl) / double(nl + nr);
+        progress_.child(fl, [&] { buildSah(std::move(mergedL), nl, boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        buildSah(std::move(mergedR), nr, boxR, depth + 1, id);
+        progress_.child(1 - fl, [&] { buildSah(std::move(mergedR), nr, boxR, depth + 1, id); });
     }
 
     void split(std::uint32_t id, int axis, double pos, double cost, double leafCost) {
@@ -425,9 +429,10 @@ class KdBuilder {
             return makeLeaf(id, std::move(prims), LeafReason::NoProgress, depth);
         prims = {};
         split(id, axis, pos, cost, opt_.cIsect * n);
-        buildSimple(std::move(left), boxL, depth + 1, id);
+        const double fl = double(nl) / double(nl + nr);
+        progress_.child(fl, [&] { buildSimple(std::move(left), boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        buildSimple(std::move(right), boxR, depth + 1, id);
+        progress_.child(1 - fl, [&] { buildSimple(std::move(right), boxR, depth + 1, id); });
     }
 
     const Prims& prims_;
@@ -439,6 +444,7 @@ class KdBuilder {
     TreeStats& stats_;
     std::vector<Box> primBounds_;
     std::vector<Side> side_;
+    BuildProgress progress_{opt_.progress};
 };
 
 /// The tree's SAH cost, node by node from the root box (no empty bonus: the expected cost).

@@ -33,8 +33,8 @@ void BM_KdTreeSahBuild(benchmark::State& state) {
         benchmark::DoNotOptimize(nodes);
     }
     state.counters["N"] = static_cast<double>(s.triangles.size());
-    state.counters["Mtris/s"] = benchmark::Counter(
-        static_cast<double>(s.triangles.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["Mtris/s"] = benchmark::Counter(static_cast<double>(s.triangles.size()) * 1e-6,
+                                                   benchmark::Counter::kIsIterationInvariantRate);
     state.counters["nodes"] = nodes;
 }
 void BM_BvhSahBuild(benchmark::State& state) {
@@ -44,15 +44,25 @@ void BM_BvhSahBuild(benchmark::State& state) {
         benchmark::DoNotOptimize(b.stats().nodes);
     }
     state.counters["N"] = static_cast<double>(s.triangles.size());
-    state.counters["Mtris/s"] = benchmark::Counter(
-        static_cast<double>(s.triangles.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["Mtris/s"] = benchmark::Counter(static_cast<double>(s.triangles.size()) * 1e-6,
+                                                   benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_KdTreeSahBuild)
-    ->Arg(11)->Arg(23)->Arg(45)->Arg(91)->Arg(181)->Arg(362)
+    ->Arg(11)
+    ->Arg(23)
+    ->Arg(45)
+    ->Arg(91)
+    ->Arg(181)
+    ->Arg(362)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_BvhSahBuild)
-    ->Arg(11)->Arg(23)->Arg(45)->Arg(91)->Arg(181)->Arg(362)
+    ->Arg(11)
+    ->Arg(23)
+    ->Arg(45)
+    ->Arg(91)
+    ->Arg(181)
+    ->Arg(362)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
@@ -88,12 +98,24 @@ void tracePixels(benchmark::State& state, AccelKind kind, bool record) {
         state.counters["bytes/event"] = sizeof(Event);
     }
 }
-void BM_Trace_Grid_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::Grid, false); }
-void BM_Trace_Grid_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::Grid, true); }
-void BM_Trace_KdTree_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::KdTree, false); }
-void BM_Trace_KdTree_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::KdTree, true); }
-void BM_Trace_Bvh_RecordingOff(benchmark::State& s) { tracePixels(s, AccelKind::Bvh, false); }
-void BM_Trace_Bvh_RecordingOn(benchmark::State& s) { tracePixels(s, AccelKind::Bvh, true); }
+void BM_Trace_Grid_RecordingOff(benchmark::State& s) {
+    tracePixels(s, AccelKind::Grid, false);
+}
+void BM_Trace_Grid_RecordingOn(benchmark::State& s) {
+    tracePixels(s, AccelKind::Grid, true);
+}
+void BM_Trace_KdTree_RecordingOff(benchmark::State& s) {
+    tracePixels(s, AccelKind::KdTree, false);
+}
+void BM_Trace_KdTree_RecordingOn(benchmark::State& s) {
+    tracePixels(s, AccelKind::KdTree, true);
+}
+void BM_Trace_Bvh_RecordingOff(benchmark::State& s) {
+    tracePixels(s, AccelKind::Bvh, false);
+}
+void BM_Trace_Bvh_RecordingOn(benchmark::State& s) {
+    tracePixels(s, AccelKind::Bvh, true);
+}
 BENCHMARK(BM_Trace_Grid_RecordingOff)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Trace_Grid_RecordingOn)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Trace_KdTree_RecordingOff)->Unit(benchmark::kMillisecond);

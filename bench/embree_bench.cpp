@@ -26,7 +26,8 @@ std::vector<Ray> primaryRays() {
     const Scene& s = mesh();
     std::vector<Ray> rays;
     for (int y = 0; y < 384; ++y)
-        for (int x = 0; x < 512; ++x) rays.push_back(s.camera.generateRay(x + 0.5, y + 0.5, 512, 384));
+        for (int x = 0; x < 512; ++x)
+            rays.push_back(s.camera.generateRay(x + 0.5, y + 0.5, 512, 384));
     return rays;
 }
 
@@ -56,10 +57,12 @@ struct EmbreeScene {
     EmbreeScene() {
         const Scene& s = mesh();
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * s.triangles.size()));
-        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), s.triangles.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              3 * s.triangles.size()));
+        auto* idx = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), s.triangles.size()));
         for (std::size_t i = 0; i < s.triangles.size(); ++i) {
             const Triangle& t = s.triangles[i];
             for (int k = 0; k < 3; ++k) {
@@ -92,7 +95,8 @@ void BM_Embree(benchmark::State& state) {
             RTCRayHit rh{};
             rh.ray.org_x = float(r.origin.x), rh.ray.org_y = float(r.origin.y);
             rh.ray.org_z = float(r.origin.z);
-            rh.ray.dir_x = float(r.dir.x), rh.ray.dir_y = float(r.dir.y), rh.ray.dir_z = float(r.dir.z);
+            rh.ray.dir_x = float(r.dir.x), rh.ray.dir_y = float(r.dir.y),
+            rh.ray.dir_z = float(r.dir.z);
             rh.ray.tnear = 0.0f;
             rh.ray.tfar = std::numeric_limits<float>::infinity();
             rh.ray.mask = ~0u;

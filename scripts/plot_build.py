@@ -21,7 +21,7 @@ for b in data["benchmarks"]:
     series.setdefault(name, []).append((b["N"], ms))
 
 fig, ax = plt.subplots(figsize=(6.4, 4.2))
-labels = {"BM_KdTreeSahBuild": "kd-tree, SAH (binned above 4096, then sorted events)",
+labels = {"BM_KdTreeSahBuild": "kd-tree, SAH (sorted split events, Wald & Havran)",
           "BM_BvhSahBuild": "BVH, binned SAH"}
 for name, pts in series.items():
     pts.sort()

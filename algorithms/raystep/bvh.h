@@ -21,6 +21,7 @@ struct BvhOptions {
     int leafSize = 4;      // midpoint and median: leaves of at most this many primitives
     int maxLeafSize = 16;  // SAH: a leaf may hold more only when no split is cheaper, up to this
     int buckets = 12;      // SAH bins along the axis
+    ProgressFn progress;   // build progress (share of the primitives placed in leaves); may cancel
 };
 
 template <int N>

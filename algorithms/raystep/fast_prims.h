@@ -56,7 +56,8 @@ class FloatScenePrims {
     const Scene* scene_;
     std::vector<FloatSphere> spheres_;
     std::vector<FloatTriangle> triangles_;
-    KernelOptions kernels_{Precision::Float, SphereMethod::Textbook, TriangleMethod::MollerTrumbore};
+    KernelOptions kernels_{Precision::Float, SphereMethod::Textbook,
+                           TriangleMethod::MollerTrumbore};
 };
 
 }  // namespace raystep

@@ -32,9 +32,10 @@ struct KdTreeOptions {
     int maxDepth = 0;         // 0 = round(8 + 1.3 log2 N) (pbrt)
     int leafSize = 0;         // this many primitives or fewer make a leaf; 0 = 1 (SAH) or 4
     bool mailbox = true;      // test a primitive listed in several leaves once per ray
-    // SAH: nodes with more primitives than this choose among 256 bin boundaries per axis (O(n));
-    // smaller ones sweep every event exactly (Wald & Havran). 0 = exact everywhere.
-    int exactBelow = 4096;
+    // SAH: 0 (the default) sweeps every split event exactly (Wald & Havran). N > 0: nodes with
+    // more than N primitives choose among 256 bin boundaries per axis instead (min-max binning).
+    int exactBelow = 0;
+    ProgressFn progress;  // build progress (share of the primitives placed in leaves); may cancel
 };
 
 /// What a build made (`raystep-cli build`).

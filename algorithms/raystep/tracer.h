@@ -83,9 +83,6 @@ struct RenderResult {
     bool cancelled = false;
 };
 
-/// Called now and then with the fraction done; return false to cancel. Calls never overlap.
-using ProgressFn = std::function<bool(double fraction)>;
-
 /// Renders the whole image in tiles on `options.threads` threads. The image and the counters are
 /// the same for any thread count: each pixel has its own random stream.
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,

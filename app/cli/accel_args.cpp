@@ -21,6 +21,9 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
     cmd->add_option("--leaf-size", a.leafSize,
                     "Trees: this many primitives or fewer make a leaf (kd: SAH 1, else 4; BVH 4)");
     cmd->add_option("--buckets", a.buckets, "BVH SAH: bins along the axis (default 12)");
+    cmd->add_option("--bin-above", a.binAbove,
+                    "kd-tree SAH: nodes of more primitives pick among 256 bins per axis "
+                    "(default: the exact event sweep everywhere)");
     cmd->add_option("--grid-lambda", a.gridLambda,
                     "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
         ->capture_default_str();
@@ -88,6 +91,11 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
             return "--leaf-size " + std::to_string(*a.leafSize) + ": must be from 1 to 1000000";
         o.kdtree.leafSize = o.bvh.leafSize = *a.leafSize;
         o.bvh.maxLeafSize = std::max(o.bvh.maxLeafSize, *a.leafSize);
+    }
+    if (a.binAbove) {
+        if (*a.binAbove < 1)
+            return "--bin-above " + std::to_string(*a.binAbove) + ": must be 1 or more";
+        o.kdtree.exactBelow = *a.binAbove;
     }
     if (a.buckets) {
         if (*a.buckets < 2 || *a.buckets > 256)

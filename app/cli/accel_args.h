@@ -14,7 +14,7 @@ struct AccelArgs {
     std::string accel = "bruteforce";
     std::string split = "sah";
     std::optional<double> cTrav, cIsect, emptyBonus;
-    std::optional<int> maxDepth, leafSize, buckets;
+    std::optional<int> maxDepth, leafSize, buckets, binAbove;
     double gridLambda = 4.0;
     std::string gridRes;
     std::string mailbox = "on";

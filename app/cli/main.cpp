@@ -91,10 +91,12 @@ int runRender(const RenderArgs& a) {
     opt.trace.rayOffset = *offset;
 
     std::optional<Accelerator> accel;
-    try {
+    {
+        cli::ProgressBar buildBar("build " + cli::describeAccel(choice));
+        choice.options.kdtree.progress =
+            choice.options.bvh.progress = [&](double f) { return buildBar.update(f); };
         accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
-    } catch (const std::exception& e) {
-        return fail(e.what());
+        buildBar.finish();
     }
 
     cli::ProgressBar bar("render " + scene.name);

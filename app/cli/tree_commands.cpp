@@ -85,6 +85,9 @@ int runBuild(const BuildArgs& a) {
     EventLog log(a.maxEvents);
     EventLog* record = a.events.empty() ? nullptr : &log;
     BuildSummary summary;
+    ProgressBar bar("build " + describeAccel(choice));
+    choice.options.kdtree.progress =
+        choice.options.bvh.progress = [&](double f) { return bar.update(f); };
     const SceneInfo scene = infoOf(any);
     if (const auto* s2 = std::get_if<Scene2D>(&any)) {
         summary = summarize(buildAccelerator2D(*s2, choice.kind, choice.options, record));
@@ -94,6 +97,7 @@ int runBuild(const BuildArgs& a) {
             record ? buildAccelerator(s3, choice.kind, choice.kernels, choice.options, log)
                    : buildAccelerator(s3, choice.kind, choice.kernels, choice.options));
     }
+    bar.finish();
     if (choice.kind != AccelKind::Grid) summary.description = describeAccel(choice);
     if (!a.events.empty()) {
         TraceInfo info;
@@ -298,10 +302,14 @@ int runCompare(const CompareArgs& a) {
     for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
         AccelChoice c = base;
         c.options.kdtree.split = c.options.bvh.split = split;
+        ProgressBar buildBar("build " + describeAccel(c));
+        c.options.kdtree.progress =
+            c.options.bvh.progress = [&](double f) { return buildBar.update(f); };
         const Accelerator accel = buildAccelerator(*scene, c.kind, c.kernels, c.options);
+        buildBar.finish();
         BuildSummary b = summarize(accel);
         b.description = describeAccel(c);
-        ProgressBar bar(b.description);
+        ProgressBar bar("trace " + b.description);
         const RenderResult r = render(*scene, accel, opt, [&](double f) { return bar.update(f); });
         bar.finish();
         const double rays = std::max<double>(1.0, r.counters.totalRays());

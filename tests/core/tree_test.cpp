@@ -446,3 +446,34 @@ TEST(Events, GridRecordsTheLectureVariables) {
 
 }  // namespace
 }  // namespace raystep
+
+namespace raystep {
+namespace {
+
+TEST(Build, ProgressRisesToTheEndAndCanCancel) {
+    const Scene s = loadBuiltinScene("stadium");
+    for (AccelKind kind : {AccelKind::KdTree, AccelKind::Bvh}) {
+        std::vector<double> seen;
+        AccelOptions o;
+        o.kdtree.progress = o.bvh.progress = [&](double f) {
+            seen.push_back(f);
+            return true;
+        };
+        buildAccelerator(s, kind, {}, o);
+        ASSERT_GT(seen.size(), 10u);
+        EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+        EXPECT_GT(seen.back(), 0.98);  // every primitive's share ends in a leaf
+        EXPECT_LE(seen.back(), 1.0);
+        // Asked to stop at 30%: the build stops with BuildCancelled, and soon.
+        int calls = 0;
+        o.kdtree.progress = o.bvh.progress = [&](double f) {
+            ++calls;
+            return f < 0.3;
+        };
+        EXPECT_THROW(buildAccelerator(s, kind, {}, o), BuildCancelled);
+        EXPECT_LT(calls, 40);
+    }
+}
+
+}  // namespace
+}  // namespace raystep
