@@ -1,6 +1,7 @@
 #include "raystep/bvh.h"
 
 #include "raystep/fast_prims.h"
+#include "raystep/mailbox.h"
 #include "raystep/scene2d.h"
 
 #include <algorithm>
@@ -253,18 +254,11 @@ auto Bvh<Prims>::traverse(RayT ray, TraversalCounters& counters, Rec& rec,
                 }
                 continue;
             }
-            for (std::uint32_t k = 0; k < node.count; ++k) {
-                const std::uint32_t p = primIds_[node.index + k];
-                ++counters.primitiveTests;
-                const bool isHit = AnyHit ? prims_.intersect(p, ray, hit)
-                                          : testForNearest(prims_, p, ray, hit, closest);
-                if constexpr (Rec::kEnabled)
-                    rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
-                if (isHit) {
-                    if constexpr (AnyHit) return hit;
-                    closest = hit;
-                }
-            }
+            // Each primitive is in one leaf only: no mailbox needed.
+            for (std::uint32_t k = 0; k < node.count; ++k)
+                if (visitPrimitive<AnyHit>(prims_, primIds_[node.index + k], ray, hit, closest,
+                                           nullptr, counters, rec, rayId))
+                    return hit;
         } else if constexpr (Rec::kEnabled) {
             const auto whole =
                 intersectBoxN<N>(ray.origin, invDir, node.bounds, ray.tMin, kInfinity);

@@ -143,22 +143,10 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
             }
             rec(e);
         }
-        for (std::uint32_t p : cell(dda.cell())) {
-            if (mailbox_ && mailbox.seen(p)) {
-                ++counters.mailboxSkips;
-                if constexpr (Rec::kEnabled) rec(MailboxSkip{rayId, p});
-                continue;
-            }
-            ++counters.primitiveTests;
-            const bool isHit = AnyHit ? prims_.intersect(p, ray, hit)
-                                      : testForNearest(prims_, p, ray, hit, closest);
-            if constexpr (Rec::kEnabled)
-                rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
-            if (isHit) {
-                if constexpr (AnyHit) return hit;
-                closest = hit;
-            }
-        }
+        for (std::uint32_t p : cell(dda.cell()))
+            if (visitPrimitive<AnyHit>(prims_, p, ray, hit, closest, mailbox_ ? &mailbox : nullptr,
+                                       counters, rec, rayId))
+                return hit;
         // A hit beyond this cell may be beaten by a primitive of a later cell: walk on until the
         // nearest hit lies before the cell's far side.
         if (closest && closest->t < dda.tExit()) break;

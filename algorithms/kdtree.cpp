@@ -560,23 +560,10 @@ auto KdTree<Prims>::traverse(RayT ray, TraversalCounters& counters, Rec& rec,
             }
             continue;
         }
-        for (std::uint32_t k = 0; k < node.count; ++k) {
-            const std::uint32_t p = primIds_[node.index + k];
-            if (mailbox && mailbox->seen(p)) {
-                ++counters.mailboxSkips;
-                if constexpr (Rec::kEnabled) rec(MailboxSkip{rayId, p});
-                continue;
-            }
-            ++counters.primitiveTests;
-            const bool isHit = AnyHit ? prims_.intersect(p, ray, hit)
-                                      : testForNearest(prims_, p, ray, hit, closest);
-            if constexpr (Rec::kEnabled)
-                rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
-            if (isHit) {
-                if constexpr (AnyHit) return hit;
-                closest = hit;
-            }
-        }
+        for (std::uint32_t k = 0; k < node.count; ++k)
+            if (visitPrimitive<AnyHit>(prims_, primIds_[node.index + k], ray, hit, closest, mailbox,
+                                       counters, rec, rayId))
+                return hit;
         if (top == 0) break;
         --top;
         id = todo[top].node;

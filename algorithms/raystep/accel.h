@@ -8,6 +8,7 @@
 #include "raystep/events.h"
 #include "raystep/grid.h"
 #include "raystep/kdtree.h"
+#include "raystep/mailbox.h"
 #include "raystep/ray.h"
 #include "raystep/scene.h"
 #include "raystep/scene2d.h"
@@ -53,18 +54,10 @@ class BruteForceT {
                              std::uint32_t rayId) const {
         std::optional<HitT> closest;
         HitT hit;
-        const std::uint32_t n = prims_.count();
-        for (std::uint32_t p = 0; p < n; ++p) {
-            ++counters.primitiveTests;
-            // intersect shortens ray.tMax, so later primitives must be closer to win.
-            const bool isHit = prims_.intersect(p, ray, hit);
-            if constexpr (Rec::kEnabled)
-                rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
-            if (isHit) {
-                if constexpr (AnyHit) return hit;
-                closest = hit;
-            }
-        }
+        // intersect shortens ray.tMax, so later primitives must be closer to win.
+        for (std::uint32_t p = 0; p < prims_.count(); ++p)
+            if (visitPrimitive<AnyHit>(prims_, p, ray, hit, closest, nullptr, counters, rec, rayId))
+                return hit;
         return closest;
     }
 

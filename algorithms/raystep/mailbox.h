@@ -1,7 +1,12 @@
 #pragma once
 // Mailboxing (lecture: "mailboxing"): a primitive listed in several cells or leaves is tested
 // once per ray. Each primitive's box holds the id of the last ray that tested it.
+#include "raystep/accel_types.h"
+#include "raystep/events.h"
+#include "raystep/prims.h"
+
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace raystep {
@@ -30,5 +35,27 @@ class Mailbox {
     std::vector<std::uint64_t> lastRay_;
     std::uint64_t rayId_ = 0;
 };
+
+/// What every structure does with a primitive it meets: skip it if the mailbox says this ray
+/// tested it already (mailbox may be null), else test it, count and record both. Returns true when
+/// an any-hit query is answered (`hit` holds the hit); nearest-hit queries keep `closest` instead.
+template <bool AnyHit, typename Prims, typename Rec>
+bool visitPrimitive(const Prims& prims, std::uint32_t p, typename Prims::RayT& ray,
+                    typename Prims::HitT& hit, std::optional<typename Prims::HitT>& closest,
+                    Mailbox* mailbox, TraversalCounters& counters, Rec& rec, std::uint32_t rayId) {
+    if (mailbox && mailbox->seen(p)) {
+        ++counters.mailboxSkips;
+        if constexpr (Rec::kEnabled) rec(MailboxSkip{rayId, p});
+        return false;
+    }
+    ++counters.primitiveTests;
+    const bool isHit =
+        AnyHit ? prims.intersect(p, ray, hit) : testForNearest(prims, p, ray, hit, closest);
+    if constexpr (Rec::kEnabled) rec(PrimitiveTest{rayId, p, isHit, isHit ? hit.t : kInfinity});
+    if (!isHit) return false;
+    if constexpr (AnyHit) return true;
+    closest = hit;
+    return false;
+}
 
 }  // namespace raystep
