@@ -193,3 +193,22 @@ TEST(Grid, MailboxSavesRepeatedTests) {
 
 }  // namespace
 }  // namespace raystep
+
+namespace raystep {
+namespace {
+
+TEST(Accelerators, SameHitsAtTheExtremesOfScale) {
+    // The trees' plane tests and the DDA's crossings are relative: tiny, huge and far-away
+    // copies of the scene give brute force's answers too.
+    const Scene base = loadBuiltinScene("default");
+    for (const auto& [scale, shift] : {std::pair{1e-6, Vec3(0.0)}, std::pair{1e6, Vec3(0.0)},
+                                       std::pair{1.0, Vec3(1e5, -1e5, 3e5)}}) {
+        const Scene s = transformScene(base, scale, shift);
+        for (AccelKind kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh})
+            expectSameHits(s, buildAccelerator(s, kind), 1500,
+                           std::string(accelKindName(kind)) + " at scale " + std::to_string(scale));
+    }
+}
+
+}  // namespace
+}  // namespace raystep
