@@ -1,0 +1,114 @@
+// Replay: the state at a cursor is what the lecture shows at that step, and seeking anywhere,
+// in any order, gives the state of a fold from the start.
+#include "raystep/replay.h"
+#include "raystep/accel.h"
+#include "raystep/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace raystep {
+namespace {
+
+TEST(Replay, TheSlidesDdaExampleStepByStep) {
+    const Scene2D s = std::get<Scene2D>(loadAnyScene("lecture-grid"));
+    const Accelerator2D grid = buildAccelerator2D(s, AccelKind::Grid);
+    EventLog log;
+    TraversalCounters c;
+    const Ray2 r = *s.exampleRay;
+    const std::uint32_t id =
+        log.beginRay(Ray{Vec3(r.origin, 0.0), Vec3(r.dir, 0.0)}, RayKind::Primary, 0, kNoId);
+    std::get<UniformGridT<Scene2DPrims>>(grid).intersect(r, c, log, id);
+
+    Replay replay(log);
+    // After the set-up and the first cell: X = 0, Y = 0, tMax = (0.6, 0.8), tDelta = (1, 4/3),
+    // by hand from the origin (0.4, 0.4), the direction (1, 0.75) and cells of 1.
+    const std::size_t first = replay.nextOfKind(0, variantIndex<DdaCell>());
+    const ReplayState& a = replay.seek(first + 1);
+    ASSERT_TRUE(a.ddaSetup && a.ddaCell);
+    EXPECT_EQ(a.ddaCell->cell[0], 0);
+    EXPECT_EQ(a.ddaCell->cell[1], 0);
+    EXPECT_NEAR(a.ddaCell->tMax[0], 0.6, 1e-15);
+    EXPECT_NEAR(a.ddaCell->tMax[1], 0.8, 1e-15);
+    EXPECT_NEAR(a.ddaSetup->tDelta[0], 1.0, 1e-15);
+    EXPECT_NEAR(a.ddaSetup->tDelta[1], 4.0 / 3.0, 1e-15);
+    // Three steps on: (1,0) by X, (1,1) by Y, (2,1) by X, as on the slides.
+    std::size_t at = first;
+    for (int i = 0; i < 3; ++i) at = replay.nextOfKind(at + 1, variantIndex<DdaCell>());
+    const ReplayState& b = replay.seek(at + 1);
+    const std::vector<std::array<std::int32_t, 3>> cells = {
+        {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}};
+    EXPECT_EQ(b.visitedCells, cells);
+    EXPECT_EQ(b.ddaCell->axes, 1u);  // stepped in X
+    EXPECT_FALSE(b.nearestT);
+    // At the end: the circle hit in cell (3,2) beyond it, then the segment nearer in (3,3).
+    const ReplayState& end = replay.seek(replay.size());
+    EXPECT_EQ(end.visitedCells.back(), (std::array<std::int32_t, 3>{3, 3, 0}));
+    ASSERT_TRUE(end.nearestT);
+    EXPECT_NEAR(*end.nearestT, 2.204 / 0.63, 1e-13);
+    // The circle's hit, by hand: (5.675 - sqrt(0.018125)) / 1.5625, seen before the segment's.
+    bool circleSeen = false;
+    for (const PrimitiveTest& t : end.tests)
+        if (t.hit && t.prim == 2) {
+            circleSeen = true;
+            EXPECT_NEAR(t.t, (5.675 - std::sqrt(0.018125)) / 1.5625, 1e-13);
+        }
+    EXPECT_TRUE(circleSeen);
+    EXPECT_EQ(end.mailboxSkips.size(), c.mailboxSkips);
+}
+
+TEST(Replay, EveryChosenSplitIsTheCheapestCandidate) {
+    // Replaying a SAH build: at each choice, the candidates shown so far include one of exactly
+    // the chosen cost and none cheaper (the build picks the minimum of what it evaluated).
+    for (const char* name : {"default", "cornell"}) {
+        const Scene s = loadBuiltinScene(name);
+        EventLog log;
+        buildAccelerator(s, AccelKind::KdTree, {}, {}, log);
+        Replay replay(log);
+        std::size_t at = 0, choices = 0;
+        while ((at = replay.nextOfKind(at, variantIndex<SplitChosen>())) < replay.size()) {
+            const ReplayState& st = replay.seek(at + 1);
+            ASSERT_TRUE(st.chosen);
+            ASSERT_FALSE(st.candidates.empty());
+            double cheapest = kInfinity;
+            for (const SplitCandidate& c : st.candidates) cheapest = std::min(cheapest, c.sahCost);
+            EXPECT_EQ(cheapest, st.chosen->sahCost) << name << " node " << st.chosen->node;
+            EXPECT_LT(st.chosen->sahCost, st.chosen->leafCost);
+            ++choices;
+            ++at;
+        }
+        EXPECT_GT(choices, 3u) << name;
+    }
+}
+
+TEST(Replay, SeekingAnywhereEqualsAFoldFromTheStart) {
+    const Scene s = loadBuiltinScene("stadium");
+    EventLog log(30000);  // capped: the first 30,000 events of the stadium's SAH build
+    buildAccelerator(s, AccelKind::KdTree, {}, {}, log);
+    ASSERT_TRUE(log.truncated());
+    Replay replay(log);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<std::size_t> pick(0, replay.size());
+    for (int i = 0; i < 40; ++i) {
+        const std::size_t cursor = i == 0 ? replay.size() : pick(rng);
+        const ReplayState got = replay.seek(cursor);
+        ReplayState fold;
+        for (std::size_t k = 0; k < cursor; ++k) applyEvent(fold, log.events()[k]);
+        EXPECT_EQ(got.cursor, cursor);
+        EXPECT_EQ(got.nodesBuilt, fold.nodesBuilt);
+        EXPECT_EQ(got.leavesMade, fold.leavesMade);
+        ASSERT_EQ(got.candidates.size(), fold.candidates.size()) << cursor;
+        if (!got.candidates.empty()) {
+            EXPECT_EQ(got.candidates.back().position, fold.candidates.back().position);
+            EXPECT_EQ(got.candidates.back().sahCost, fold.candidates.back().sahCost);
+        }
+        EXPECT_EQ(got.buildNode.has_value(), fold.buildNode.has_value());
+        if (got.buildNode) {
+            EXPECT_EQ(got.buildNode->node, fold.buildNode->node);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace raystep
