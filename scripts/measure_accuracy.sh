@@ -3,7 +3,8 @@
 set -euo pipefail
 RAYSTEP_ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 source "$RAYSTEP_ROOT/scripts/deps.sh"
-ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}" "${RAYSTEP_TEST_PACKAGES[@]}" python3-matplotlib
+ensure_packages "${RAYSTEP_BUILD_PACKAGES[@]}" "${RAYSTEP_TEST_PACKAGES[@]}" "${RAYSTEP_GUI_PACKAGES[@]}" \
+  python3-matplotlib
 configure "$RAYSTEP_ROOT/build"
 build "$RAYSTEP_ROOT/build" raystep_bench_kernels raystep_accuracy
 mkdir -p "$RAYSTEP_ROOT/docs/data" "$RAYSTEP_ROOT/docs/images"

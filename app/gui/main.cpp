@@ -1,0 +1,83 @@
+// raystep: the replay app. Options for slides and tests: --scene, --accel, --step, --screenshot.
+#include "main_window.h"
+#include "session.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace {
+int fail(const QString& message) {
+    std::fprintf(stderr, "raystep: error: %s\n", message.toUtf8().constData());
+    return 2;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("raystep");
+    QApplication::setApplicationName("raystep");
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("raystep: replay every step of the lecture's algorithms");
+    parser.addHelpOption();
+    const QCommandLineOption sceneOpt("scene", "Built-in scene name or scene file.", "name|file",
+                                      "lecture-grid");
+    const QCommandLineOption accelOpt("accel", "Structure: bruteforce, grid, kdtree or bvh.",
+                                      "kind", "grid");
+    const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
+    const QCommandLineOption shotOpt(
+        "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
+    parser.addOptions({sceneOpt, accelOpt, stepOpt, shotOpt});
+    if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
+    if (parser.isSet("help")) parser.showHelp(0);
+
+    const auto kind = raystep::parseAccelKind(parser.value(accelOpt).toStdString());
+    if (!kind)
+        return fail("--accel " + parser.value(accelOpt) +
+                    ": expected bruteforce, grid, kdtree or bvh");
+    std::optional<std::size_t> step;
+    if (parser.isSet(stepOpt)) {
+        bool ok = false;
+        const qlonglong n = parser.value(stepOpt).toLongLong(&ok);
+        if (!ok || n < 0)
+            return fail("--step " + parser.value(stepOpt) + ": expected a whole number, 0 or more");
+        step = static_cast<std::size_t>(n);
+    }
+    const QString shot = parser.value(shotOpt);
+    if (!shot.isEmpty() && !shot.endsWith(".png", Qt::CaseInsensitive))
+        return fail("--screenshot " + shot + ": the screenshot is written as PNG; name it *.png");
+
+    raystep::gui::MainWindow window;
+    if (!window.openScene(parser.value(sceneOpt), *kind, /*quiet=*/!shot.isEmpty())) {
+        // Started from a script: say it on one line. Interactively the dialog has said it.
+        if (!shot.isEmpty())
+            return fail("--scene " + parser.value(sceneOpt) + ": cannot be opened");
+    }
+    if (step) {
+        if (*step > window.session().size())
+            return fail(QStringLiteral("--step %1: the replay has %2 events")
+                            .arg(*step)
+                            .arg(window.session().size()));
+        window.session().setCursor(*step);
+    }
+    window.resize(1500, 900);
+    window.show();
+    if (shot.isEmpty()) return app.exec();
+
+    // Slides and tests: let every view paint (and a 3D render finish), then save the window.
+    QTimer::singleShot(200, &window, [&] {
+        window.waitForRender();
+        const QImage image = window.grab().toImage();
+        if (!image.save(shot, "PNG")) {
+            fail("--screenshot " + shot + ": cannot write the file");
+            QApplication::exit(2);
+            return;
+        }
+        std::printf("wrote %s (%dx%d)\n", shot.toUtf8().constData(), image.width(), image.height());
+        QApplication::exit(0);
+    });
+    return app.exec();
+}

@@ -1,0 +1,371 @@
+#include "main_window.h"
+
+#include "image_view.h"
+#include "view2d.h"
+#include "vtk_view.h"
+
+#include "raystep/image.h"
+#include "raystep/scene_loader.h"
+#include "raystep/trace_io.h"
+
+#include <QAbstractListModel>
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QSortFilterProxyModel>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <fstream>
+
+namespace raystep::gui {
+
+/// The log as a list: rows are made when shown, so a million events cost nothing up front.
+class EventListModel : public QAbstractListModel {
+  public:
+    explicit EventListModel(Session& s, QObject* parent) : QAbstractListModel(parent), s_(s) {
+        connect(&s_, &Session::logChanged, this, [this] {
+            beginResetModel();
+            endResetModel();
+        });
+    }
+    int rowCount(const QModelIndex& parent) const override {
+        return parent.isValid() ? 0 : static_cast<int>(s_.size());
+    }
+    QVariant data(const QModelIndex& index, int role) const override {
+        if (role != Qt::DisplayRole || !index.isValid()) return {};
+        return QStringLiteral("%1  %2")
+            .arg(index.row() + 1)
+            .arg(describeEvent(s_.log().events()[index.row()]));
+    }
+
+  private:
+    Session& s_;
+};
+
+namespace {
+// Event kinds the timeline can jump to, with their variant index.
+const std::pair<const char*, std::size_t> kJumpKinds[] = {
+    {QT_TRANSLATE_NOOP("MainWindow", "DDA step"), variantIndex<DdaCell>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "primitive test"), variantIndex<PrimitiveTest>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "mailbox skip"), variantIndex<MailboxSkip>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "node enter"), variantIndex<NodeEnter>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "ray begin"), variantIndex<RayBegin>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "hit"), variantIndex<RayHit>()},
+    {QT_TRANSLATE_NOOP("MainWindow", "split chosen"), variantIndex<SplitChosen>()},
+};
+constexpr int kImageWidth = 320, kImageHeight = 240;
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    buildUi();
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildUi() {
+    setWindowTitle(tr("raystep"));
+    view2D_ = new View2D(session_);
+    view3D_ = new VtkView(session_);
+    imageView_ = new ImageView(session_);
+    lesson_ = new QTextBrowser;
+    auto* views = new QSplitter(Qt::Horizontal);
+    views->addWidget(view2D_);
+    auto* right = new QSplitter(Qt::Vertical);
+    right->addWidget(view3D_);
+    right->addWidget(imageView_);
+    views->addWidget(right);
+    views->setStretchFactor(0, 3);
+    views->setStretchFactor(1, 2);
+
+    // The timeline: step, play, jump to the next event of a kind, speed, scrubber.
+    auto* timeline = new QWidget;
+    auto* tl = new QHBoxLayout(timeline);
+    tl->setContentsMargins(6, 2, 6, 2);
+    const auto button = [&](const QString& text, const QString& tip, auto slot) {
+        auto* b = new QToolButton;
+        b->setText(text);
+        b->setToolTip(tip);
+        connect(b, &QToolButton::clicked, this, slot);
+        tl->addWidget(b);
+        return b;
+    };
+    button(QStringLiteral("|<"), tr("First event (Home)"), [this] { session_.setCursor(0); });
+    button(QStringLiteral("<"), tr("Step back (Left)"), [this] { stepBack(); });
+    play_ = button(QStringLiteral(">"), tr("Play / pause (Space)"), [this] { togglePlay(); });
+    button(QStringLiteral(">|"), tr("Step forward (Right)"), [this] { stepForward(); });
+    kindCombo_ = new QComboBox;
+    for (const auto& [name, kind] : kJumpKinds) kindCombo_->addItem(tr(name));
+    tl->addWidget(kindCombo_);
+    button(tr("next"), tr("Jump to the next event of this kind (N)"),
+           [this] { jumpToNextOfKind(); });
+    tl->addWidget(new QLabel(tr("speed")));
+    speed_ = new QSpinBox;
+    speed_->setRange(1, 200);
+    speed_->setValue(4);
+    speed_->setSuffix(tr(" /s"));
+    tl->addWidget(speed_);
+    scrubber_ = new QSlider(Qt::Horizontal);
+    tl->addWidget(scrubber_, 1);
+    position_ = new QLabel;
+    tl->addWidget(position_);
+    connect(scrubber_, &QSlider::valueChanged, this,
+            [this](int v) { session_.setCursor(static_cast<std::size_t>(v)); });
+
+    auto* centre = new QWidget;
+    auto* cl = new QVBoxLayout(centre);
+    cl->setContentsMargins(0, 0, 0, 0);
+    cl->addWidget(views, 1);
+    cl->addWidget(timeline);
+    auto* main = new QSplitter(Qt::Horizontal);
+    main->addWidget(lesson_);
+    main->addWidget(centre);
+    lesson_->setMinimumWidth(220);
+    main->setStretchFactor(0, 1);
+    main->setStretchFactor(1, 4);
+    main->setSizes({280, 1100});
+    setCentralWidget(main);
+
+    // Inspector and event list, as docks the user may move (kept with QSettings).
+    inspector_ = new QTextBrowser;
+    inspector_->setObjectName("inspector");
+    auto* inspectorDock = new QDockWidget(tr("Inspector"), this);
+    inspectorDock->setObjectName("inspectorDock");
+    inspectorDock->setWidget(inspector_);
+    addDockWidget(Qt::RightDockWidgetArea, inspectorDock);
+    auto* listPanel = new QWidget;
+    auto* ll = new QVBoxLayout(listPanel);
+    ll->setContentsMargins(0, 0, 0, 0);
+    filterEdit_ = new QLineEdit;
+    filterEdit_->setPlaceholderText(tr("Filter events (e.g. cell, test, mailbox)"));
+    ll->addWidget(filterEdit_);
+    eventModel_ = new EventListModel(session_, this);
+    eventFilter_ = new QSortFilterProxyModel(this);
+    eventFilter_->setSourceModel(eventModel_);
+    eventFilter_->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    connect(filterEdit_, &QLineEdit::textChanged, eventFilter_,
+            &QSortFilterProxyModel::setFilterFixedString);
+    events_ = new QListView;
+    events_->setModel(eventFilter_);
+    events_->setUniformItemSizes(true);
+    ll->addWidget(events_);
+    connect(events_, &QListView::clicked, this, [this](const QModelIndex& i) {
+        session_.setCursor(static_cast<std::size_t>(eventFilter_->mapToSource(i).row()) + 1);
+    });
+    auto* listDock = new QDockWidget(tr("Events"), this);
+    listDock->setObjectName("eventsDock");
+    listDock->setWidget(listPanel);
+    addDockWidget(Qt::RightDockWidgetArea, listDock);
+
+    // Long work in the status bar: progress and cancel.
+    progress_ = new QProgressBar;
+    progress_->setMaximumWidth(200);
+    progress_->hide();
+    cancel_ = new QPushButton(tr("Cancel"));
+    cancel_->hide();
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(cancel_);
+    connect(cancel_, &QPushButton::clicked, imageView_, &ImageView::cancelRender);
+    connect(imageView_, &ImageView::progress, progress_, &QProgressBar::setValue);
+    connect(imageView_, &ImageView::finished, this, [this](bool cancelled, double ms) {
+        progress_->hide();
+        cancel_->hide();
+        statusBar()->showMessage(
+            cancelled ? tr("Render cancelled")
+                      : tr("Rendered in %1 ms; click a pixel to trace it").arg(ms, 0, 'f', 0));
+    });
+    connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
+        session_.tracePixel(x, y, kImageWidth, kImageHeight);
+        session_.setCursor(session_.size());
+        statusBar()->showMessage(
+            tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
+    });
+
+    timer_ = new QTimer(this);
+    connect(timer_, &QTimer::timeout, this, [this] {
+        if (session_.cursor() >= session_.size()) return togglePlay();
+        stepForward();
+    });
+    connect(speed_, &QSpinBox::valueChanged, this,
+            [this](int v) { timer_->setInterval(1000 / v); });
+    timer_->setInterval(1000 / speed_->value());
+
+    connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
+    connect(&session_, &Session::logChanged, this, [this] { updateTimeline(); });
+
+    // Menus and the standard shortcuts.
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open scene..."), QKeySequence::Open, this, [this] { openFileDialog(); });
+    file->addAction(tr("Export &trace..."), QKeySequence::Save, this, [this] { exportTrace(); });
+    file->addAction(tr("Export screenshot of the &window..."), this,
+                    [this] { exportScreenshot(this, tr("window")); });
+    file->addAction(tr("Export screenshot of the &2D view..."), this,
+                    [this] { exportScreenshot(view2D_, tr("2D view")); });
+    file->addAction(tr("Export screenshot of the &3D view..."), this,
+                    [this] { exportScreenshot(view3D_, tr("3D view")); });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu* replay = menuBar()->addMenu(tr("&Replay"));
+    replay->addAction(tr("Step &forward"), QKeySequence(Qt::Key_Right), this,
+                      [this] { stepForward(); });
+    replay->addAction(tr("Step &back"), QKeySequence(Qt::Key_Left), this, [this] { stepBack(); });
+    replay->addAction(tr("&Play / pause"), QKeySequence(Qt::Key_Space), this,
+                      [this] { togglePlay(); });
+    replay->addAction(tr("&Next event of the kind"), QKeySequence(Qt::Key_N), this,
+                      [this] { jumpToNextOfKind(); });
+    replay->addAction(tr("&First event"), QKeySequence(Qt::Key_Home), this,
+                      [this] { session_.setCursor(0); });
+    replay->addAction(tr("&Last event"), QKeySequence(Qt::Key_End), this,
+                      [this] { session_.setCursor(session_.size()); });
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* heat = view->addAction(tr("&Heat map of primitive tests"));
+    heat->setCheckable(true);
+    connect(heat, &QAction::toggled, imageView_, &ImageView::setHeatmap);
+    view->addAction(tr("&Reset 3D camera"), this, [this] { view3D_->resetCamera(); });
+}
+
+bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet) {
+    try {
+        session_.load(nameOrPath.toStdString(), kind);
+    } catch (const std::exception& e) {
+        if (!quiet)
+            QMessageBox::warning(this, tr("Cannot open the scene"), QString::fromUtf8(e.what()));
+        return false;
+    }
+    if (session_.is2D()) {
+        session_.traceExampleRay();
+        lesson_->setMarkdown(
+            tr("## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and **Left**, "
+               "play with **Space**, jump to the next event of a kind with **N**. The inspector "
+               "shows X, Y, tMax and tDelta as on the board; the list shows every event.")
+                .arg(QString::fromStdString(session_.name()),
+                     QString::fromStdString(session_.scene2D()->description)));
+    } else {
+        lesson_->setMarkdown(
+            tr("## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is recorded "
+               "and replayed in the 3D view, the inspector and the event list.")
+                .arg(QString::fromStdString(session_.name()),
+                     QString::fromStdString(session_.scene3D()->description)));
+        progress_->setValue(0);
+        progress_->show();
+        cancel_->show();
+        statusBar()->showMessage(tr("Rendering %1...").arg(nameOrPath));
+        imageView_->startRender(kImageWidth, kImageHeight);
+        // A first ray to replay before any click: the image's centre.
+        session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
+    }
+    // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
+    view2D_->setVisible(session_.is2D());
+    view3D_->parentWidget()->setVisible(!session_.is2D());
+    setWindowTitle(tr("raystep - %1").arg(nameOrPath));
+    updateTimeline();
+    return true;
+}
+
+void MainWindow::waitForRender() {
+    while (imageView_->rendering()) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QApplication::processEvents();
+}
+
+QString MainWindow::inspectorText() const {
+    return inspector_->toPlainText();
+}
+
+void MainWindow::stepForward() {
+    session_.setCursor(session_.cursor() + 1);
+}
+void MainWindow::stepBack() {
+    if (session_.cursor() > 0) session_.setCursor(session_.cursor() - 1);
+}
+void MainWindow::jumpToNextOfKind() {
+    const std::size_t kind = kJumpKinds[std::max(0, kindCombo_->currentIndex())].second;
+    const std::size_t at = session_.replay().nextOfKind(session_.cursor(), kind);
+    session_.setCursor(at < session_.size() ? at + 1 : session_.size());
+}
+void MainWindow::togglePlay() {
+    if (timer_->isActive()) {
+        timer_->stop();
+        play_->setText(QStringLiteral(">"));
+    } else {
+        if (session_.cursor() >= session_.size()) session_.setCursor(0);
+        timer_->start();
+        play_->setText(QStringLiteral("||"));
+    }
+}
+
+void MainWindow::updateTimeline() {
+    const QSignalBlocker block(scrubber_);
+    scrubber_->setRange(0, static_cast<int>(session_.size()));
+    scrubber_->setValue(static_cast<int>(session_.cursor()));
+    position_->setText(tr("%1 / %2").arg(session_.cursor()).arg(session_.size()));
+    inspector_->setPlainText(describeState(session_));
+    if (session_.cursor() > 0) {
+        const QModelIndex i = eventFilter_->mapFromSource(
+            eventModel_->index(static_cast<int>(session_.cursor()) - 1));
+        if (i.isValid()) {
+            events_->setCurrentIndex(i);
+            events_->scrollTo(i);
+        }
+    }
+}
+
+void MainWindow::openFileDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
+    if (!path.isEmpty()) openScene(path, session_.kind());
+}
+
+void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Screenshot of the %1").arg(what),
+                                                      QString(), tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    if (!w->grab().save(path, "PNG"))
+        QMessageBox::warning(this, tr("Cannot save"), tr("Could not write %1").arg(path));
+}
+
+void MainWindow::exportTrace() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export trace"), QString(),
+                                                      tr("Trace files (*.json)"));
+    if (path.isEmpty()) return;
+    TraceInfo info;
+    info.scene = session_.name();
+    info.accel = std::string(accelKindName(session_.kind()));
+    info.what = session_.is2D() ? "ray" : "pixel";
+    try {
+        writeFileAtomic(path.toStdString(), traceToJson(session_.log(), info));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Cannot save"), QString::fromUtf8(e.what()));
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    imageView_->cancelRender();
+    e->accept();
+}
+
+}  // namespace raystep::gui

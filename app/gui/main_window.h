@@ -1,0 +1,82 @@
+#pragma once
+// The replay app's window: lesson panel, 2D view, 3D view and image side by side, the timeline
+// under them, the inspector and the event list on the right.
+#include "session.h"
+
+#include <QMainWindow>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QListView;
+class QProgressBar;
+class QPushButton;
+class QSlider;
+class QSortFilterProxyModel;
+class QSpinBox;
+class QTextBrowser;
+class QTimer;
+class QToolButton;
+
+namespace raystep::gui {
+
+class ImageView;
+class View2D;
+class VtkView;
+class EventListModel;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Session& session() { return session_; }
+    /// Opens a scene (built-in name or file) with a structure; false (and a dialog unless quiet)
+    /// on a bad scene, with the current one kept.
+    bool openScene(const QString& nameOrPath, AccelKind kind, bool quiet = false);
+    /// The inspector's text (what tests read).
+    QString inspectorText() const;
+    View2D* view2D() const { return view2D_; }
+    VtkView* view3D() const { return view3D_; }
+    ImageView* imageView() const { return imageView_; }
+    /// Waits (processing events) until a background render started by openScene is done.
+    void waitForRender();
+
+  public slots:
+    void stepForward();
+    void stepBack();
+    void jumpToNextOfKind();
+    void togglePlay();
+
+  protected:
+    void closeEvent(QCloseEvent*) override;
+
+  private:
+    void buildUi();
+    void updateTimeline();
+    void openFileDialog();
+    void exportScreenshot(QWidget* w, const QString& what);
+    void exportTrace();
+
+    Session session_;
+    View2D* view2D_ = nullptr;
+    VtkView* view3D_ = nullptr;
+    ImageView* imageView_ = nullptr;
+    QTextBrowser* lesson_ = nullptr;
+    QTextBrowser* inspector_ = nullptr;
+    QListView* events_ = nullptr;
+    EventListModel* eventModel_ = nullptr;
+    QSortFilterProxyModel* eventFilter_ = nullptr;
+    QLineEdit* filterEdit_ = nullptr;
+    QSlider* scrubber_ = nullptr;
+    QLabel* position_ = nullptr;
+    QComboBox* kindCombo_ = nullptr;
+    QSpinBox* speed_ = nullptr;
+    QToolButton* play_ = nullptr;
+    QTimer* timer_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+};
+
+}  // namespace raystep::gui

@@ -1,0 +1,212 @@
+#include "session.h"
+
+#include "raystep/scene_loader.h"
+#include "raystep/tracer.h"
+
+#include <QStringList>
+
+namespace raystep::gui {
+
+void Session::load(const std::string& nameOrPath, AccelKind kind) {
+    auto scene = loadAnyScene(nameOrPath);  // throws before anything changes
+    emit aboutToChangeScene();
+    scene_ = std::move(scene);
+    name_ = nameOrPath;
+    kind_ = kind;
+    accel2D_.reset();
+    accel3D_.reset();
+    if (const auto* s2 = scene2D())
+        accel2D_ = buildAccelerator2D(*s2, kind);
+    else
+        accel3D_ = buildAccelerator(*scene3D(), kind);
+    setLog(std::make_unique<EventLog>());
+    emit sceneChanged();
+}
+
+void Session::traceExampleRay() {
+    const Scene2D* s = scene2D();
+    if (!s || !s->exampleRay) return;
+    auto log = std::make_unique<EventLog>();
+    const Ray2 r = *s->exampleRay;
+    const std::uint32_t id =
+        log->beginRay(Ray{Vec3(r.origin, 0.0), Vec3(r.dir, 0.0)}, RayKind::Primary, 0, kNoId);
+    TraversalCounters c;
+    const auto hit =
+        std::visit([&](const auto& a) { return a.intersect(r, c, *log, id); }, *accel2D_);
+    if (hit)
+        (*log)(RayHit{id, hit->prim, hit->t, 0.0, 0.0});
+    else
+        (*log)(RayMiss{id});
+    setLog(std::move(log));
+}
+
+void Session::tracePixel(int x, int y, int width, int height) {
+    const Scene* s = scene3D();
+    if (!s) return;
+    RenderOptions opt;
+    opt.width = width;
+    opt.height = height;
+    opt.trace.bounces = s->settings.bounces;
+    const Tracer tracer(*s, *accel3D_, opt.trace);
+    auto log = std::make_unique<EventLog>();
+    RayCounters c;
+    tracer.renderPixel(x, y, opt, c, *log);
+    setLog(std::move(log));
+}
+
+void Session::setLog(std::unique_ptr<EventLog> log) {
+    replay_.reset();  // it points into the old log
+    log_ = std::move(log);
+    replay_ = std::make_unique<Replay>(*log_);
+    cursor_ = 0;
+    replay_->seek(0);
+    emit logChanged();
+    emit cursorChanged(cursor_);
+}
+
+void Session::setCursor(std::size_t cursor) {
+    cursor = std::min(cursor, size());
+    if (cursor == cursor_ && replay_->state().cursor == cursor) return;
+    cursor_ = cursor;
+    replay_->seek(cursor);
+    emit cursorChanged(cursor_);
+}
+
+namespace {
+QString num(double v) {
+    if (std::isinf(v)) return v > 0 ? QStringLiteral("inf") : QStringLiteral("-inf");
+    return QString::number(v, 'g', 6);
+}
+QString axesName(unsigned axes) {
+    QString s;
+    for (int i = 0; i < 3; ++i)
+        if (axes & (1u << i)) s += QChar("XYZ"[i]);
+    return s.isEmpty() ? QStringLiteral("-") : s;
+}
+QString prim(std::uint32_t p) {
+    return p == kNoId ? QStringLiteral("-") : QString::number(p);
+}
+}  // namespace
+
+QString describeEvent(const Event& event) {
+    return std::visit(
+        [](const auto& e) -> QString {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, RayBegin>)
+                return QStringLiteral("ray %1 begins: %2, depth %3")
+                    .arg(e.ray)
+                    .arg(QString::fromUtf8(kRayKindNames[static_cast<int>(e.kind)].data()))
+                    .arg(e.depth);
+            else if constexpr (std::is_same_v<E, DdaSetup>)
+                return QStringLiteral("DDA set-up: step (%1, %2), tDelta (%3, %4)")
+                    .arg(e.step[0])
+                    .arg(e.step[1])
+                    .arg(num(e.tDelta[0]), num(e.tDelta[1]));
+            else if constexpr (std::is_same_v<E, DdaCell>)
+                return QStringLiteral("cell (%1, %2%3)%4, tMax (%5, %6)")
+                    .arg(e.cell[0])
+                    .arg(e.cell[1])
+                    .arg(e.cell[2] ? QStringLiteral(", %1").arg(e.cell[2]) : QString())
+                    .arg(e.axes ? QStringLiteral(" by ") + axesName(e.axes)
+                                : QStringLiteral(" (first cell)"),
+                         num(e.tMax[0]), num(e.tMax[1]));
+            else if constexpr (std::is_same_v<E, MailboxSkip>)
+                return QStringLiteral("mailbox: primitive %1 already tested").arg(e.prim);
+            else if constexpr (std::is_same_v<E, PrimitiveTest>)
+                return e.hit ? QStringLiteral("test primitive %1: hit at t = %2")
+                                   .arg(e.prim)
+                                   .arg(num(e.t))
+                             : QStringLiteral("test primitive %1: miss").arg(e.prim);
+            else if constexpr (std::is_same_v<E, NodeEnter>)
+                return QStringLiteral("enter node %1 [%2, %3]")
+                    .arg(e.node)
+                    .arg(num(e.tNear), num(e.tFar));
+            else if constexpr (std::is_same_v<E, NodeSkip>)
+                return QStringLiteral("skip node %1").arg(e.node);
+            else if constexpr (std::is_same_v<E, BuildNode>)
+                return QStringLiteral("build node %1: %2 primitives, depth %3")
+                    .arg(e.node)
+                    .arg(e.prims)
+                    .arg(e.depth);
+            else if constexpr (std::is_same_v<E, SplitCandidate>)
+                return QStringLiteral("candidate %1 = %2: NL %3, NR %4, cost %5")
+                    .arg(QChar("XYZ"[e.axis]))
+                    .arg(num(e.position))
+                    .arg(e.nl)
+                    .arg(e.nr)
+                    .arg(num(e.sahCost));
+            else if constexpr (std::is_same_v<E, SplitChosen>)
+                return QStringLiteral("split %1 = %2 (cost %3, leaf %4)")
+                    .arg(QChar("XYZ"[e.axis]))
+                    .arg(num(e.position), num(e.sahCost), num(e.leafCost));
+            else if constexpr (std::is_same_v<E, LeafMade>)
+                return QStringLiteral("leaf %1: %2 primitives (%3)")
+                    .arg(e.node)
+                    .arg(e.prims)
+                    .arg(QString::fromUtf8(kLeafReasonNames[static_cast<int>(e.reason)].data()));
+            else if constexpr (std::is_same_v<E, RayHit>)
+                return QStringLiteral("ray %1 hits primitive %2 at t = %3")
+                    .arg(e.ray)
+                    .arg(prim(e.prim), num(e.t));
+            else if constexpr (std::is_same_v<E, RayMiss>)
+                return QStringLiteral("ray %1 misses").arg(e.ray);
+            else if constexpr (std::is_same_v<E, ShadingTerm>)
+                return QStringLiteral("%1 term (%2, %3, %4)")
+                    .arg(QString::fromUtf8(kShadingTermNames[static_cast<int>(e.term)].data()))
+                    .arg(num(e.rgb[0]), num(e.rgb[1]), num(e.rgb[2]));
+            else
+                return QStringLiteral("pixel (%1, %2) = (%3, %4, %5)")
+                    .arg(e.x)
+                    .arg(e.y)
+                    .arg(num(e.rgb[0]), num(e.rgb[1]), num(e.rgb[2]));
+        },
+        event);
+}
+
+QString describeState(const Session& s) {
+    const ReplayState& st = s.state();
+    QStringList lines;
+    lines << QStringLiteral("step %1 of %2").arg(st.cursor).arg(s.size());
+    if (st.cursor > 0) lines << describeEvent(s.log().events()[st.cursor - 1]);
+    if (st.ray != kNoId) lines << QStringLiteral("ray %1").arg(st.ray);
+    if (st.ddaCell) {
+        const DdaCell& c = *st.ddaCell;
+        lines << QStringLiteral("X = %1   Y = %2%3")
+                     .arg(c.cell[0])
+                     .arg(c.cell[1])
+                     .arg(s.is2D() ? QString() : QStringLiteral("   Z = %1").arg(c.cell[2]));
+        lines << QStringLiteral("tMaxX = %1   tMaxY = %2%3")
+                     .arg(num(c.tMax[0]), num(c.tMax[1]))
+                     .arg(s.is2D() ? QString()
+                                   : QStringLiteral("   tMaxZ = %1").arg(num(c.tMax[2])));
+    }
+    if (st.ddaSetup) {
+        const DdaSetup& d = *st.ddaSetup;
+        lines << QStringLiteral("tDeltaX = %1   tDeltaY = %2")
+                     .arg(num(d.tDelta[0]), num(d.tDelta[1]));
+        lines << QStringLiteral("stepX = %1   stepY = %2").arg(d.step[0]).arg(d.step[1]);
+    }
+    if (st.node)
+        lines << QStringLiteral("node %1, t in [%2, %3]")
+                     .arg(st.node->node)
+                     .arg(num(st.node->tNear), num(st.node->tFar));
+    if (!st.mailboxSkips.empty()) {
+        QStringList m;
+        for (auto p : st.mailboxSkips) m << QString::number(p);
+        lines << QStringLiteral("mailbox: skipped primitive %1 (already tested by this ray)")
+                     .arg(m.join(", "));
+    }
+    lines << QStringLiteral("tests: %1").arg(st.tests.size());
+    if (st.nearestT)
+        lines << QStringLiteral("nearest hit so far: primitive %1 at t = %2")
+                     .arg(st.nearestPrim)
+                     .arg(num(*st.nearestT));
+    if (st.buildNode)
+        lines << QStringLiteral("building node %1 (%2 primitives), %3 candidates")
+                     .arg(st.buildNode->node)
+                     .arg(st.buildNode->prims)
+                     .arg(st.candidates.size());
+    return lines.join('\n');
+}
+
+}  // namespace raystep::gui

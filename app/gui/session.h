@@ -1,0 +1,70 @@
+#pragma once
+// What the app shows: a scene (3D or one of the lecture's 2D pictures), its structure, a recorded
+// log and the replay cursor over it. The views draw from it; they own no algorithm.
+#include "raystep/accel.h"
+#include "raystep/replay.h"
+#include "raystep/scene.h"
+#include "raystep/scene2d.h"
+
+#include <QImage>
+#include <QObject>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace raystep::gui {
+
+class Session : public QObject {
+    Q_OBJECT
+  public:
+    /// Loads a built-in name or a file; throws SceneError (shown in a dialog by the window).
+    void load(const std::string& nameOrPath, AccelKind kind);
+    /// 3D: records pixel (x, y) of a `width` x `height` image; 2D: the scene's example ray.
+    void tracePixel(int x, int y, int width, int height);
+    void traceExampleRay();
+
+    bool is2D() const { return std::holds_alternative<Scene2D>(scene_); }
+    const Scene* scene3D() const { return std::get_if<Scene>(&scene_); }
+    const Scene2D* scene2D() const { return std::get_if<Scene2D>(&scene_); }
+    const Accelerator2D* accel2D() const { return accel2D_ ? &*accel2D_ : nullptr; }
+    const Accelerator* accel3D() const { return accel3D_ ? &*accel3D_ : nullptr; }
+    AccelKind kind() const { return kind_; }
+    const std::string& name() const { return name_; }
+
+    const EventLog& log() const { return *log_; }
+    std::size_t size() const { return replay_ ? replay_->size() : 0; }
+    std::size_t cursor() const { return cursor_; }
+    const ReplayState& state() const { return replay_->state(); }
+    const Replay& replay() const { return *replay_; }
+
+  public slots:
+    /// Moves the replay cursor (clamped) and tells the views.
+    void setCursor(std::size_t cursor);
+
+  signals:
+    void aboutToChangeScene();  // views stop work that reads the old scene
+    void sceneChanged();
+    void logChanged();
+    void cursorChanged(std::size_t cursor);
+
+  private:
+    void setLog(std::unique_ptr<EventLog> log);
+
+    std::variant<Scene, Scene2D> scene_;
+    std::string name_;
+    AccelKind kind_ = AccelKind::Grid;
+    std::optional<Accelerator> accel3D_;
+    std::optional<Accelerator2D> accel2D_;
+    std::unique_ptr<EventLog> log_ = std::make_unique<EventLog>();
+    std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);
+    std::size_t cursor_ = 0;
+};
+
+/// One line describing event `i` of the log, for the event list.
+QString describeEvent(const Event& e);
+/// The inspector's text: the current event and the algorithm's variables.
+QString describeState(const Session& s);
+
+}  // namespace raystep::gui

@@ -1,0 +1,175 @@
+#include "view2d.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+namespace raystep::gui {
+
+namespace {
+const QColor kBackground(250, 250, 247);
+const QColor kGridLine(200, 200, 200);
+const QColor kVisited(255, 236, 160);
+const QColor kCurrent(255, 200, 60);
+const QColor kPrimitive(60, 60, 70);
+const QColor kTested(230, 120, 30);
+const QColor kSkipped(150, 150, 150);
+const QColor kHit(20, 150, 60);
+const QColor kRay(200, 30, 40);
+}  // namespace
+
+View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
+    setMinimumSize(320, 220);
+    setAutoFillBackground(false);
+    connect(&session_, &Session::cursorChanged, this, [this] { update(); });
+    connect(&session_, &Session::sceneChanged, this, [this] { update(); });
+}
+
+void View2D::fit() {
+    const Scene2D* s = session_.scene2D();
+    world_ = s->bounds();
+    if (s->exampleRay) world_.extend(s->exampleRay->origin);
+    const Vec2 d = glm::max(world_.diagonal(), Vec2(1e-9));
+    world_.lo -= 0.06 * d;
+    world_.hi += 0.06 * d;
+    const Vec2 size = world_.diagonal();
+    scale_ = std::min((width() - 20) / size.x, (height() - 20) / size.y);
+    offset_ = QPointF((width() - scale_ * size.x) / 2, (height() - scale_ * size.y) / 2);
+}
+
+QPointF View2D::toScreen(const Vec2& p) const {
+    // y grows upwards in the scene, downwards on screen.
+    return {offset_.x() + (p.x - world_.lo.x) * scale_,
+            height() - offset_.y() - (p.y - world_.lo.y) * scale_};
+}
+
+void View2D::paintEvent(QPaintEvent*) {
+    QPainter g(this);
+    g.setRenderHint(QPainter::Antialiasing);
+    g.fillRect(rect(), kBackground);
+    const Scene2D* s = session_.scene2D();
+    if (!s) {
+        g.drawText(rect(), Qt::AlignCenter, tr("The 2D view shows the lecture's 2D scenes."));
+        return;
+    }
+    fit();
+    const ReplayState& st = session_.state();
+
+    // The structure's cells: the grid, or the tree's boxes.
+    const Accelerator2D* accel = session_.accel2D();
+    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    const auto cellRect = [&](const std::array<std::int32_t, 3>& c) {
+        const auto& spec = grid->spec();
+        const Vec2 lo(spec.lo.x + c[0] * spec.cellSize(0), spec.lo.y + c[1] * spec.cellSize(1));
+        const Vec2 hi(lo.x + spec.cellSize(0), lo.y + spec.cellSize(1));
+        return QRectF(toScreen(Vec2(lo.x, hi.y)), toScreen(Vec2(hi.x, lo.y)));
+    };
+    if (grid) {
+        for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), kVisited);
+        if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), kCurrent);
+        const auto& spec = grid->spec();
+        g.setPen(QPen(kGridLine, 1));
+        for (int i = 0; i <= spec.res.x; ++i) {
+            const double x = spec.lo.x + i * spec.cellSize(0);
+            g.drawLine(toScreen(Vec2(x, spec.lo.y)), toScreen(Vec2(x, spec.hi.y)));
+        }
+        for (int j = 0; j <= spec.res.y; ++j) {
+            const double y = spec.lo.y + j * spec.cellSize(1);
+            g.drawLine(toScreen(Vec2(spec.lo.x, y)), toScreen(Vec2(spec.hi.x, y)));
+        }
+        // Cell indices along the edges, as on the board.
+        g.setPen(QColor(120, 120, 120));
+        for (int i = 0; i < spec.res.x; ++i)
+            g.drawText(toScreen(Vec2(spec.lo.x + (i + 0.45) * spec.cellSize(0), spec.lo.y)) +
+                           QPointF(-3, 14),
+                       QString::number(i));
+        for (int j = 0; j < spec.res.y; ++j)
+            g.drawText(toScreen(Vec2(spec.lo.x, spec.lo.y + (j + 0.5) * spec.cellSize(1))) +
+                           QPointF(-14, 4),
+                       QString::number(j));
+    } else if (const auto* kd = accel ? std::get_if<KdTree<Scene2DPrims>>(accel) : nullptr) {
+        // The tree's split lines; the node being entered is filled.
+        const auto draw = [&](auto&& self, std::uint32_t id, BoxN<2> box) -> void {
+            const KdNode& n = kd->nodes()[id];
+            if (st.node && st.node->node == id)
+                g.fillRect(
+                    QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
+                    kVisited);
+            if (n.leaf()) return;
+            BoxN<2> l = box, r = box;
+            l.hi[n.axis] = r.lo[n.axis] = n.split;
+            self(self, id + 1, l);
+            self(self, n.index, r);
+            g.setPen(QPen(kGridLine, 1));
+            const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
+            const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
+            g.drawLine(toScreen(a), toScreen(b));
+        };
+        if (!kd->nodes().empty()) draw(draw, 0, kd->bounds());
+    }
+
+    // Primitives: tested ones orange, skipped by the mailbox grey, the nearest hit green.
+    const auto colourOf = [&](std::uint32_t p) {
+        if (st.nearestT && st.nearestPrim == p) return kHit;
+        for (auto q : st.mailboxSkips)
+            if (q == p) return kSkipped;
+        for (const auto& t : st.tests)
+            if (t.prim == p) return kTested;
+        return kPrimitive;
+    };
+    for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) {
+        g.setPen(QPen(colourOf(p), p == st.nearestPrim ? 3.0 : 2.0));
+        g.setBrush(Qt::NoBrush);
+        if (s->isCircle(p)) {
+            const Circle2& c = s->circles[p];
+            g.drawEllipse(toScreen(c.center), c.radius * scale_, c.radius * scale_);
+        } else {
+            const Segment2& seg = s->segments[p - s->circles.size()];
+            g.drawLine(toScreen(seg.a), toScreen(seg.b));
+        }
+    }
+
+    // The ray: faint in full, solid up to where the replay has reached.
+    if (!session_.log().rays().empty()) {
+        const RayRecord& r = session_.log().rays().front();
+        const Vec2 o(r.origin.x, r.origin.y), d(r.dir.x, r.dir.y);
+        const double tFar = (world_.diagonal().x + world_.diagonal().y) / glm::length(d);
+        g.setPen(QPen(QColor(kRay.red(), kRay.green(), kRay.blue(), 70), 1.5, Qt::DashLine));
+        g.drawLine(toScreen(o), toScreen(o + tFar * d));
+        double reached = 0.0;
+        if (st.ddaCell) reached = std::min(st.ddaCell->tMax[0], st.ddaCell->tMax[1]);
+        if (st.node) reached = std::max(reached, st.node->tFar);
+        if (st.nearestT && (st.hit || st.missed)) reached = *st.nearestT;
+        if (std::isfinite(reached) && reached > 0) {
+            g.setPen(QPen(kRay, 2.5));
+            g.drawLine(toScreen(o), toScreen(o + reached * d));
+        }
+        g.setBrush(kRay);
+        g.drawEllipse(toScreen(o), 4, 4);
+        // tMax as labelled ticks on the ray.
+        if (st.ddaCell) {
+            const Vec2 n = glm::normalize(Vec2(-d.y, d.x));
+            for (int axis = 0; axis < 2; ++axis) {
+                const double t = st.ddaCell->tMax[axis];
+                if (!std::isfinite(t)) continue;
+                const Vec2 p = o + t * d;
+                const QPointF a = toScreen(p + 0.12 * n), b = toScreen(p - 0.12 * n);
+                g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), 2));
+                g.drawLine(a, b);
+                g.drawText(a + QPointF(4, -4),
+                           axis == 0 ? QStringLiteral("tMaxX = %1").arg(t, 0, 'g', 4)
+                                     : QStringLiteral("tMaxY = %1").arg(t, 0, 'g', 4));
+            }
+        }
+        if (st.nearestT) {
+            g.setBrush(kHit);
+            g.setPen(Qt::NoPen);
+            g.drawEllipse(toScreen(o + *st.nearestT * d), 5, 5);
+        }
+    }
+    g.setPen(QColor(60, 60, 60));
+    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+               QString::fromStdString(session_.name() + "  -  " +
+                                      std::string(accelKindName(session_.kind()))));
+}
+
+}  // namespace raystep::gui

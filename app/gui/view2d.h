@@ -1,0 +1,30 @@
+#pragma once
+// The lecture's 2D picture at the replay cursor: the grid (or the tree's cells), the primitives,
+// the ray, the current and visited cells, tMax and tDelta as labelled ticks on the ray, mailbox
+// skips and the nearest hit so far.
+#include "session.h"
+
+#include <QWidget>
+
+namespace raystep::gui {
+
+class View2D : public QWidget {
+    Q_OBJECT
+  public:
+    explicit View2D(Session& session, QWidget* parent = nullptr);
+    QSize sizeHint() const override { return {640, 440}; }
+
+  protected:
+    void paintEvent(QPaintEvent*) override;
+
+  private:
+    QPointF toScreen(const Vec2& p) const;
+    void fit();
+
+    Session& session_;
+    BoxN<2> world_;  // what is shown, in scene units
+    double scale_ = 1.0;
+    QPointF offset_;
+};
+
+}  // namespace raystep::gui

@@ -1,0 +1,227 @@
+#include "vtk_view.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+namespace raystep::gui {
+
+namespace {
+/// Colours of the lecture's kinds of ray: primary, shadow, reflection, refraction, diffuse.
+constexpr unsigned char kRayColours[kRayKindCount][3] = {
+    {230, 60, 50}, {90, 90, 90}, {40, 120, 230}, {40, 190, 170}, {220, 160, 40}};
+}  // namespace
+
+VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
+    setMinimumSize(240, 180);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    window_->SetOffScreenRendering(1);
+    window_->AddRenderer(renderer_);
+    renderer_->SetBackground(0.12, 0.13, 0.16);
+    interactor_->SetRenderWindow(window_);
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    interactor_->SetInteractorStyle(style);
+    interactor_->Initialize();
+    connect(&session_, &Session::sceneChanged, this, [this] {
+        rebuildScene();
+        rebuildRays();
+    });
+    connect(&session_, &Session::cursorChanged, this, [this] { rebuildRays(); });
+    rebuildScene();
+}
+
+VtkView::~VtkView() = default;
+
+void VtkView::rebuildScene() {
+    renderer_->RemoveAllViewProps();
+    raysActor_ = nullptr;
+    const Scene* s = session_.scene3D();
+    if (!s) {
+        dirty_ = true;
+        update();
+        return;
+    }
+    for (const Sphere& sp : s->spheres) {
+        vtkNew<vtkSphereSource> src;
+        src->SetCenter(sp.center.x, sp.center.y, sp.center.z);
+        src->SetRadius(sp.radius);
+        src->SetThetaResolution(32);
+        src->SetPhiResolution(16);
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputConnection(src->GetOutputPort());
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(mapper);
+        const Color kd = s->materials[sp.material].kd;
+        actor->GetProperty()->SetColor(kd.x, kd.y, kd.z);
+        actor->GetProperty()->SetOpacity(isBlack(s->materials[sp.material].transparency) ? 1.0
+                                                                                         : 0.45);
+        renderer_->AddActor(actor);
+    }
+    if (!s->triangles.empty()) {
+        vtkNew<vtkPoints> points;
+        vtkNew<vtkCellArray> cells;
+        vtkNew<vtkUnsignedCharArray> colours;
+        colours->SetNumberOfComponents(3);
+        for (const Triangle& t : s->triangles) {
+            vtkIdType ids[3];
+            for (int k = 0; k < 3; ++k) {
+                const Vec3& p = k == 0 ? t.a : (k == 1 ? t.b : t.c);
+                ids[k] = points->InsertNextPoint(p.x, p.y, p.z);
+            }
+            cells->InsertNextCell(3, ids);
+            const Color kd = glm::clamp(s->materials[t.material].kd, 0.0, 1.0) * 255.0;
+            const unsigned char c[3] = {static_cast<unsigned char>(kd.x),
+                                        static_cast<unsigned char>(kd.y),
+                                        static_cast<unsigned char>(kd.z)};
+            colours->InsertNextTypedTuple(c);
+        }
+        vtkNew<vtkPolyData> mesh;
+        mesh->SetPoints(points);
+        mesh->SetPolys(cells);
+        mesh->GetCellData()->SetScalars(colours);
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(mesh);
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(mapper);
+        renderer_->AddActor(actor);
+    }
+    resetCamera();
+}
+
+void VtkView::resetCamera() {
+    if (const Scene* s = session_.scene3D()) {
+        vtkCamera* cam = renderer_->GetActiveCamera();
+        cam->SetPosition(s->camera.eye.x, s->camera.eye.y, s->camera.eye.z);
+        cam->SetFocalPoint(s->camera.lookAt.x, s->camera.lookAt.y, s->camera.lookAt.z);
+        cam->SetViewUp(s->camera.up.x, s->camera.up.y, s->camera.up.z);
+        cam->SetViewAngle(s->camera.fovDeg);
+        renderer_->ResetCameraClippingRange();
+    }
+    dirty_ = true;
+    update();
+}
+
+void VtkView::rebuildRays() {
+    if (raysActor_) renderer_->RemoveActor(raysActor_);
+    raysActor_ = nullptr;
+    const Scene* s = session_.scene3D();
+    const EventLog& log = session_.log();
+    if (!s || log.rays().empty()) {
+        dirty_ = true;
+        update();
+        return;
+    }
+    // Each ray that has begun by the cursor, from its origin to its hit (or a scene's length).
+    const ReplayState& st = session_.state();
+    std::vector<double> ends(log.rays().size(), -1.0);
+    std::vector<bool> begun(log.rays().size(), false);
+    for (std::size_t i = 0; i < st.cursor; ++i) {
+        const Event& e = log.events()[i];
+        if (const auto* b = std::get_if<RayBegin>(&e)) begun[b->ray] = true;
+        if (const auto* h = std::get_if<RayHit>(&e)) ends[h->ray] = h->t;
+    }
+    const double sceneSize = glm::length(s->bounds().diagonal());
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetNumberOfComponents(3);
+    for (std::size_t r = 0; r < log.rays().size(); ++r) {
+        if (!begun[r]) continue;
+        const RayRecord& ray = log.rays()[r];
+        double t = ends[r];
+        if (!(t >= 0) || !std::isfinite(t))
+            t = std::isfinite(ray.tMax) ? ray.tMax : sceneSize / glm::length(ray.dir);
+        const Vec3 a = ray.origin, b = ray.origin + t * ray.dir;
+        const vtkIdType ids[2] = {points->InsertNextPoint(a.x, a.y, a.z),
+                                  points->InsertNextPoint(b.x, b.y, b.z)};
+        lines->InsertNextCell(2, ids);
+        colours->InsertNextTypedTuple(kRayColours[static_cast<int>(ray.kind)]);
+    }
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetLines(lines);
+    poly->GetCellData()->SetScalars(colours);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    raysActor_ = vtkSmartPointer<vtkActor>::New();
+    raysActor_->SetMapper(mapper);
+    raysActor_->GetProperty()->SetLineWidth(2.5);
+    renderer_->AddActor(raysActor_);
+    dirty_ = true;
+    update();
+}
+
+void VtkView::resizeEvent(QResizeEvent*) {
+    window_->SetSize(std::max(1, width()), std::max(1, height()));
+    interactor_->SetSize(std::max(1, width()), std::max(1, height()));
+    dirty_ = true;
+}
+
+void VtkView::paintEvent(QPaintEvent*) {
+    QPainter g(this);
+    if (!session_.scene3D()) {
+        g.fillRect(rect(), QColor(30, 33, 40));
+        g.setPen(Qt::white);
+        g.drawText(rect(), Qt::AlignCenter, tr("The 3D view shows 3D scenes."));
+        return;
+    }
+    // Render only when something changed; read back RGB (RGBA would come out transparent).
+    window_->SetSize(std::max(1, width()), std::max(1, height()));
+    window_->Render();
+    const int w = window_->GetSize()[0], h = window_->GetSize()[1];
+    unsigned char* pixels = window_->GetPixelData(0, 0, w - 1, h - 1, /*front=*/0);
+    QImage image(pixels, w, h, 3 * w, QImage::Format_RGB888);
+    g.drawImage(rect(), image.mirrored(false, true));
+    delete[] pixels;
+    dirty_ = false;
+}
+
+void VtkView::mousePressEvent(QMouseEvent* e) {
+    interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
+                                          e->modifiers() & Qt::ControlModifier,
+                                          e->modifiers() & Qt::ShiftModifier);
+    if (e->button() == Qt::LeftButton) interactor_->LeftButtonPressEvent();
+    if (e->button() == Qt::RightButton) interactor_->RightButtonPressEvent();
+    if (e->button() == Qt::MiddleButton) interactor_->MiddleButtonPressEvent();
+    update();
+}
+void VtkView::mouseReleaseEvent(QMouseEvent* e) {
+    interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
+                                          e->modifiers() & Qt::ControlModifier,
+                                          e->modifiers() & Qt::ShiftModifier);
+    if (e->button() == Qt::LeftButton) interactor_->LeftButtonReleaseEvent();
+    if (e->button() == Qt::RightButton) interactor_->RightButtonReleaseEvent();
+    if (e->button() == Qt::MiddleButton) interactor_->MiddleButtonReleaseEvent();
+    update();
+}
+void VtkView::mouseMoveEvent(QMouseEvent* e) {
+    interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
+                                          e->modifiers() & Qt::ControlModifier,
+                                          e->modifiers() & Qt::ShiftModifier);
+    interactor_->MouseMoveEvent();
+    update();
+}
+void VtkView::wheelEvent(QWheelEvent* e) {
+    if (e->angleDelta().y() > 0)
+        interactor_->MouseWheelForwardEvent();
+    else
+        interactor_->MouseWheelBackwardEvent();
+    update();
+}
+
+}  // namespace raystep::gui

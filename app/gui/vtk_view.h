@@ -1,0 +1,48 @@
+#pragma once
+// The 3D view: VTK renders off screen and the widget draws the pixels it reads back, with mouse
+// events forwarded to a VTK interactor (DESIGN.md: the way that works with Qt6 and Debian's VTK
+// under Xvfb). Shows the scene and the recorded rays up to the cursor, coloured by kind.
+#include "session.h"
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <QWidget>
+
+class vtkActor;
+class vtkGenericRenderWindowInteractor;
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace raystep::gui {
+
+class VtkView : public QWidget {
+    Q_OBJECT
+  public:
+    explicit VtkView(Session& session, QWidget* parent = nullptr);
+    ~VtkView() override;
+    QSize sizeHint() const override { return {480, 360}; }
+    /// Back to the scene's own camera.
+    void resetCamera();
+
+  protected:
+    void paintEvent(QPaintEvent*) override;
+    void resizeEvent(QResizeEvent*) override;
+    void mousePressEvent(QMouseEvent*) override;
+    void mouseReleaseEvent(QMouseEvent*) override;
+    void mouseMoveEvent(QMouseEvent*) override;
+    void wheelEvent(QWheelEvent*) override;
+
+  private:
+    void rebuildScene();
+    void rebuildRays();
+
+    Session& session_;
+    vtkNew<vtkRenderWindow> window_;
+    vtkNew<vtkRenderer> renderer_;
+    vtkNew<vtkGenericRenderWindowInteractor> interactor_;
+    vtkSmartPointer<vtkActor> raysActor_;
+    bool dirty_ = true;
+};
+
+}  // namespace raystep::gui

@@ -1,0 +1,148 @@
+// The replay app, driven as a user would under Xvfb: stepping the slides' DDA example shows the
+// cells and tMax values of the board in the inspector, the views change as the cursor moves,
+// clicking a pixel records and replays its ray tree, and --screenshot writes the window.
+#include "image_view.h"
+#include "main_window.h"
+#include "view2d.h"
+#include "vtk_view.h"
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QImage>
+#include <QMouseEvent>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+
+namespace raystep::gui {
+namespace {
+
+/// Distinct colours in an image: a blank (one-colour) view has 1.
+std::size_t colours(const QImage& image) {
+    std::set<QRgb> seen;
+    const QImage i = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < i.height(); y += 2)
+        for (int x = 0; x < i.width(); x += 2) seen.insert(i.pixel(x, y));
+    return seen.size();
+}
+
+QImage grab(QWidget* w) {
+    QApplication::processEvents();
+    return w->grab().toImage();
+}
+
+/// The cursor just after the k-th (from 0) event of a kind.
+std::size_t afterNth(const Session& s, std::size_t kind, int k) {
+    std::size_t at = 0;
+    for (int i = 0; i <= k; ++i) at = s.replay().nextOfKind(i ? at + 1 : 0, kind);
+    return at + 1;
+}
+
+TEST(App, SteppingTheSlidesDdaShowsTheBoardsValues) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(w.openScene("lecture-grid", AccelKind::Grid, true));
+    Session& s = w.session();
+    ASSERT_GT(s.size(), 10u);
+    // By hand: origin (0.4, 0.4), direction (1, 0.75), cells of 1: tMax (0.6, 0.8) in cell
+    // (0, 0); then X to (1, 0) with tMaxX 1.6; Y to (1, 1) with tMaxY 2.1333; X to (2, 1).
+    s.setCursor(afterNth(s, variantIndex<DdaCell>(), 0));
+    EXPECT_TRUE(w.inspectorText().contains("X = 0   Y = 0")) << w.inspectorText().toStdString();
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8"));
+    EXPECT_TRUE(w.inspectorText().contains("tDeltaX = 1   tDeltaY = 1.33333"));
+    const QImage first = grab(w.view2D());
+    s.setCursor(afterNth(s, variantIndex<DdaCell>(), 3));
+    EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1")) << w.inspectorText().toStdString();
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 2.6   tMaxY = 2.13333"));
+    const QImage fourth = grab(w.view2D());
+    EXPECT_GT(colours(first), 20u);  // grid, cells, primitives, ray, labels
+    EXPECT_NE(first, fourth);        // the current cell and the ray moved
+    // Step back and forward: the same picture as before (a pure function of the cursor).
+    w.stepBack();
+    w.stepForward();
+    EXPECT_EQ(grab(w.view2D()), fourth);
+    // Jumping to the next primitive test lands on one.
+    s.setCursor(0);
+    w.jumpToNextOfKind();  // the first kind in the list: DDA step
+    EXPECT_TRUE(std::holds_alternative<DdaCell>(s.log().events()[s.cursor() - 1]));
+}
+
+TEST(App, ClickingAPixelRecordsAndReplaysIt) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(w.openScene("default", AccelKind::KdTree, true));
+    w.waitForRender();
+    ImageView* image = w.imageView();
+    ASSERT_FALSE(image->image().isNull());
+    EXPECT_GT(colours(image->image()), 100u);  // a rendered picture, not a blank
+    // Click the middle of the widget: the pixel under it is traced.
+    const QPointF centre(image->width() / 2.0, image->height() / 2.0);
+    QMouseEvent press(QEvent::MouseButtonPress, centre, image->mapToGlobal(centre), Qt::LeftButton,
+                      Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(image, &press);
+    const Session& s = w.session();
+    ASSERT_GT(s.size(), 5u);
+    const auto* pixel = std::get_if<PixelResult>(&s.log().events().back());
+    ASSERT_NE(pixel, nullptr);
+    EXPECT_NEAR(pixel->x, image->image().width() / 2.0, 2.0);
+    EXPECT_NEAR(pixel->y, image->image().height() / 2.0, 2.0);
+    EXPECT_EQ(s.cursor(), s.size());  // replayed to its end
+    // The 3D view draws the scene, and the rays once the cursor has passed them.
+    const QImage end = grab(w.view3D());
+    EXPECT_GT(colours(end), 20u);
+    w.session().setCursor(0);
+    EXPECT_NE(grab(w.view3D()), end);
+}
+
+TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
+    MainWindow w;
+    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
+    EXPECT_FALSE(w.openScene("no-such-scene", AccelKind::Grid, true));
+    EXPECT_EQ(w.session().name(), "lecture-kdtree");
+    EXPECT_GT(w.session().size(), 0u);
+}
+
+int run(const std::string& args) {
+    const int status = std::system((std::string("'" RAYSTEP_APP "' ") + args).c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(App, ScreenshotOptionWritesTheWindow) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("raystep-gui-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const fs::path a = dir / "a.png", b = dir / "b.png";
+    ASSERT_EQ(
+        run("--scene lecture-grid --step 3 --screenshot '" + a.string() + "' >/dev/null 2>&1"), 0);
+    ASSERT_EQ(
+        run("--scene lecture-grid --step 12 --screenshot '" + b.string() + "' >/dev/null 2>&1"), 0);
+    const QImage ia(QString::fromStdString(a.string())), ib(QString::fromStdString(b.string()));
+    ASSERT_FALSE(ia.isNull());
+    EXPECT_EQ(ia.size(), QSize(1500, 900));
+    EXPECT_GT(colours(ia), 50u);
+    EXPECT_NE(ia, ib);  // --step put the cursor elsewhere
+    // Bad values: exit 2, no file.
+    const fs::path c = dir / "c.png";
+    EXPECT_EQ(run("--accel octree --screenshot '" + c.string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--step 99999 --screenshot '" + c.string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--scene nosuch --screenshot '" + c.string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--screenshot '" + (dir / "c.jpg").string() + "' 2>/dev/null"), 2);
+    EXPECT_FALSE(fs::exists(c));
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace raystep::gui
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("raystep-tests");  // keep the user's settings apart
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
