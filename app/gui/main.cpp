@@ -1,4 +1,5 @@
 // raystep: the replay app. Options for slides and tests: --scene, --accel, --step, --screenshot.
+#include "compare_window.h"
 #include "main_window.h"
 #include "session.h"
 
@@ -28,9 +29,15 @@ int main(int argc, char** argv) {
     const QCommandLineOption accelOpt("accel", "Structure: bruteforce, grid, kdtree or bvh.",
                                       "kind", "grid");
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
+    const QCommandLineOption replayOpt("replay", "What to replay: ray (the default) or build.",
+                                       "ray|build", "ray");
+    const QCommandLineOption compareOpt(
+        "compare",
+        "Also open compare mode (midpoint, median, SAH) on the 2D scene; "
+        "--screenshot then saves that window.");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
-    parser.addOptions({sceneOpt, accelOpt, stepOpt, shotOpt});
+    parser.addOptions({sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, shotOpt});
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
@@ -38,6 +45,9 @@ int main(int argc, char** argv) {
     if (!kind)
         return fail("--accel " + parser.value(accelOpt) +
                     ": expected bruteforce, grid, kdtree or bvh");
+    const QString replay = parser.value(replayOpt);
+    if (replay != "ray" && replay != "build")
+        return fail("--replay " + replay + ": expected ray or build");
     std::optional<std::size_t> step;
     if (parser.isSet(stepOpt)) {
         bool ok = false;
@@ -56,6 +66,7 @@ int main(int argc, char** argv) {
         if (!shot.isEmpty())
             return fail("--scene " + parser.value(sceneOpt) + ": cannot be opened");
     }
+    if (replay == "build") window.session().recordBuild();
     if (step) {
         if (*step > window.session().size())
             return fail(QStringLiteral("--step %1: the replay has %2 events")
@@ -65,12 +76,17 @@ int main(int argc, char** argv) {
     }
     window.resize(1500, 900);
     window.show();
+    QWidget* shown = &window;
+    if (parser.isSet(compareOpt)) {
+        shown = window.openCompare();
+        if (!shown) return fail("--compare: compare mode shows the lecture's 2D scenes");
+    }
     if (shot.isEmpty()) return app.exec();
 
     // Slides and tests: let every view paint (and a 3D render finish), then save the window.
     QTimer::singleShot(200, &window, [&] {
         window.waitForRender();
-        const QImage image = window.grab().toImage();
+        const QImage image = shown->grab().toImage();
         if (!image.save(shot, "PNG")) {
             fail("--screenshot " + shot + ": cannot write the file");
             QApplication::exit(2);

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "compare_window.h"
 #include "image_view.h"
 #include "view2d.h"
 #include "vtk_view.h"
@@ -213,7 +214,20 @@ void MainWindow::buildUi() {
     timer_->setInterval(1000 / speed_->value());
 
     connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
-    connect(&session_, &Session::logChanged, this, [this] { updateTimeline(); });
+    connect(&session_, &Session::logChanged, this, [this] {
+        updateTimeline();
+        if (session_.showingBuild())
+            lesson_->setMarkdown(
+                tr("## Building the %1\n\nEach node is split by a plane. Step through the "
+                   "**candidate** planes (dashed): the chart under the scene draws the cost of "
+                   "each, "
+                   "`Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` "
+                   "(in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the "
+                   "cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the "
+                   "next "
+                   "choice with the *split chosen* kind and **N**.")
+                    .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+    });
 
     // Menus and the standard shortcuts.
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -235,11 +249,19 @@ void MainWindow::buildUi() {
                       [this] { togglePlay(); });
     replay->addAction(tr("&Next event of the kind"), QKeySequence(Qt::Key_N), this,
                       [this] { jumpToNextOfKind(); });
+    replay->addSeparator();
+    replay->addAction(tr("Replay the &build (candidates, splits, leaves)"), QKeySequence(Qt::Key_B),
+                      this, [this] { session_.recordBuild(); });
+    replay->addAction(tr("Replay the &example ray"), QKeySequence(Qt::Key_R), this, [this] {
+        if (session_.is2D()) session_.traceExampleRay();
+    });
     replay->addAction(tr("&First event"), QKeySequence(Qt::Key_Home), this,
                       [this] { session_.setCursor(0); });
     replay->addAction(tr("&Last event"), QKeySequence(Qt::Key_End), this,
                       [this] { session_.setCursor(session_.size()); });
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C), this,
+                    [this] { openCompare(); });
     QAction* heat = view->addAction(tr("&Heat map of primitive tests"));
     heat->setCheckable(true);
     connect(heat, &QAction::toggled, imageView_, &ImageView::setHeatmap);
@@ -282,6 +304,21 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
     setWindowTitle(tr("raystep - %1").arg(nameOrPath));
     updateTimeline();
     return true;
+}
+
+CompareWindow* MainWindow::openCompare() {
+    if (!session_.is2D()) {
+        QMessageBox::information(this, tr("Compare"),
+                                 tr("Compare mode shows the lecture's 2D scenes; for a 3D scene, "
+                                    "raystep-cli compare prints the same table."));
+        return nullptr;
+    }
+    const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
+    auto* compare = new CompareWindow(session_.name(), kind);
+    compare->setAttribute(Qt::WA_DeleteOnClose);
+    compare->resize(1400, 800);
+    compare->show();
+    return compare;
 }
 
 void MainWindow::waitForRender() {

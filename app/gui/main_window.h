@@ -20,6 +20,7 @@ class QToolButton;
 
 namespace raystep::gui {
 
+class CompareWindow;
 class ImageView;
 class View2D;
 class VtkView;
@@ -40,6 +41,8 @@ class MainWindow : public QMainWindow {
     View2D* view2D() const { return view2D_; }
     VtkView* view3D() const { return view3D_; }
     ImageView* imageView() const { return imageView_; }
+    /// Opens compare mode for the current 2D scene (null, with a message, for a 3D one).
+    CompareWindow* openCompare();
     /// Waits (processing events) until a background render started by openScene is done.
     void waitForRender();
 

@@ -5,20 +5,23 @@
 
 #include <QStringList>
 
+#include <algorithm>
+
 namespace raystep::gui {
 
-void Session::load(const std::string& nameOrPath, AccelKind kind) {
+void Session::load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options) {
     auto scene = loadAnyScene(nameOrPath);  // throws before anything changes
     emit aboutToChangeScene();
     scene_ = std::move(scene);
     name_ = nameOrPath;
     kind_ = kind;
+    options_ = options;
     accel2D_.reset();
     accel3D_.reset();
     if (const auto* s2 = scene2D())
-        accel2D_ = buildAccelerator2D(*s2, kind);
+        accel2D_ = buildAccelerator2D(*s2, kind, options);
     else
-        accel3D_ = buildAccelerator(*scene3D(), kind);
+        accel3D_ = buildAccelerator(*scene3D(), kind, {}, options);
     setLog(std::make_unique<EventLog>());
     emit sceneChanged();
 }
@@ -40,6 +43,21 @@ void Session::traceExampleRay() {
     setLog(std::move(log));
 }
 
+void Session::recordBuild() {
+    auto log = std::make_unique<EventLog>();
+    if (const Scene2D* s2 = scene2D())
+        buildAccelerator2D(*s2, kind_, options_, log.get());
+    else
+        buildAccelerator(*scene3D(), kind_, {}, options_, *log);
+    setLog(std::move(log));
+    showingBuild_ = true;
+    emit logChanged();
+}
+
+BuildSummary Session::summary() const {
+    return accel2D_ ? summarize(*accel2D_) : summarize(*accel3D_);
+}
+
 void Session::tracePixel(int x, int y, int width, int height) {
     const Scene* s = scene3D();
     if (!s) return;
@@ -55,6 +73,7 @@ void Session::tracePixel(int x, int y, int width, int height) {
 }
 
 void Session::setLog(std::unique_ptr<EventLog> log) {
+    showingBuild_ = false;
     replay_.reset();  // it points into the old log
     log_ = std::move(log);
     replay_ = std::make_unique<Replay>(*log_);
@@ -196,16 +215,40 @@ QString describeState(const Session& s) {
         lines << QStringLiteral("mailbox: skipped primitive %1 (already tested by this ray)")
                      .arg(m.join(", "));
     }
-    lines << QStringLiteral("tests: %1").arg(st.tests.size());
+    if (st.ray != kNoId) lines << QStringLiteral("tests: %1").arg(st.tests.size());
     if (st.nearestT)
         lines << QStringLiteral("nearest hit so far: primitive %1 at t = %2")
                      .arg(st.nearestPrim)
                      .arg(num(*st.nearestT));
-    if (st.buildNode)
-        lines << QStringLiteral("building node %1 (%2 primitives), %3 candidates")
+    if (st.buildNode) {
+        lines << QStringLiteral("building node %1 (%2 primitives, depth %3), %4 candidates")
                      .arg(st.buildNode->node)
                      .arg(st.buildNode->prims)
+                     .arg(st.buildNode->depth)
                      .arg(st.candidates.size());
+        if (!st.candidates.empty()) {
+            const SplitCandidate& c = st.candidates.back();
+            lines << QStringLiteral("candidate %1 = %2")
+                         .arg(QChar("XYZ"[c.axis]))
+                         .arg(num(c.position));
+            lines << QStringLiteral("  NL = %1   NR = %2").arg(c.nl).arg(c.nr);
+            lines << QStringLiteral("  P(L|C) = %1   P(R|C) = %2").arg(num(c.pl), num(c.pr));
+            lines << QStringLiteral("  sahCost = %1").arg(num(c.sahCost));
+            const auto best =
+                std::min_element(st.candidates.begin(), st.candidates.end(),
+                                 [](const SplitCandidate& a, const SplitCandidate& b) {
+                                     return a.sahCost < b.sahCost;
+                                 });
+            lines << QStringLiteral("cheapest so far: %1 = %2, cost %3")
+                         .arg(QChar("XYZ"[best->axis]))
+                         .arg(num(best->position), num(best->sahCost));
+        }
+        if (st.chosen)
+            lines << QStringLiteral("chosen: %1 = %2 (cost %3 < leaf %4)")
+                         .arg(QChar("XYZ"[st.chosen->axis]))
+                         .arg(num(st.chosen->position), num(st.chosen->sahCost),
+                              num(st.chosen->leafCost));
+    }
     return lines.join('\n');
 }
 

@@ -20,10 +20,14 @@ class Session : public QObject {
     Q_OBJECT
   public:
     /// Loads a built-in name or a file; throws SceneError (shown in a dialog by the window).
-    void load(const std::string& nameOrPath, AccelKind kind);
+    void load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options = {});
     /// 3D: records pixel (x, y) of a `width` x `height` image; 2D: the scene's example ray.
     void tracePixel(int x, int y, int width, int height);
     void traceExampleRay();
+    /// Records the structure's construction (kd-tree or BVH; 2D or 3D) and replays that instead.
+    void recordBuild();
+    /// True while the log is a build (candidates, splits, leaves), not a ray.
+    bool showingBuild() const { return showingBuild_; }
 
     bool is2D() const { return std::holds_alternative<Scene2D>(scene_); }
     const Scene* scene3D() const { return std::get_if<Scene>(&scene_); }
@@ -31,6 +35,9 @@ class Session : public QObject {
     const Accelerator2D* accel2D() const { return accel2D_ ? &*accel2D_ : nullptr; }
     const Accelerator* accel3D() const { return accel3D_ ? &*accel3D_ : nullptr; }
     AccelKind kind() const { return kind_; }
+    const AccelOptions& options() const { return options_; }
+    /// What the structure's build made.
+    BuildSummary summary() const;
     const std::string& name() const { return name_; }
 
     const EventLog& log() const { return *log_; }
@@ -55,11 +62,13 @@ class Session : public QObject {
     std::variant<Scene, Scene2D> scene_;
     std::string name_;
     AccelKind kind_ = AccelKind::Grid;
+    AccelOptions options_;
     std::optional<Accelerator> accel3D_;
     std::optional<Accelerator2D> accel2D_;
     std::unique_ptr<EventLog> log_ = std::make_unique<EventLog>();
     std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);
     std::size_t cursor_ = 0;
+    bool showingBuild_ = false;
 };
 
 /// One line describing event `i` of the log, for the event list.

@@ -32,8 +32,11 @@ void View2D::fit() {
     world_.lo -= 0.06 * d;
     world_.hi += 0.06 * d;
     const Vec2 size = world_.diagonal();
-    scale_ = std::min((width() - 20) / size.x, (height() - 20) / size.y);
-    offset_ = QPointF((width() - scale_ * size.x) / 2, (height() - scale_ * size.y) / 2);
+    // A build's replay keeps the bottom strip for the SAH cost chart.
+    const double chart = session_.showingBuild() ? 130.0 : 0.0;
+    scale_ = std::min((width() - 20) / size.x, (height() - 40 - chart) / size.y);
+    offset_ =
+        QPointF((width() - scale_ * size.x) / 2, chart + (height() - chart - scale_ * size.y) / 2);
 }
 
 QPointF View2D::toScreen(const Vec2& p) const {
@@ -107,6 +110,29 @@ void View2D::paintEvent(QPaintEvent*) {
         if (!kd->nodes().empty()) draw(draw, 0, kd->bounds());
     }
 
+    // A build being replayed: the node being split, the candidate planes so far, the choice.
+    const bool build = session_.showingBuild();
+    if (build && st.buildNode && st.buildNode->node < session_.log().nodes().size()) {
+        const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
+        const QRectF box(toScreen(Vec2(n.lo[0], n.hi[1])), toScreen(Vec2(n.hi[0], n.lo[1])));
+        g.fillRect(box, QColor(200, 225, 255, 110));
+        g.setPen(QPen(QColor(40, 90, 200), 2));
+        g.drawRect(box);
+        for (const SplitCandidate& c : st.candidates) {
+            g.setPen(QPen(QColor(40, 90, 200, 90), 1, Qt::DashLine));
+            const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
+            const Vec2 b = c.axis == 0 ? Vec2(c.position, n.hi[1]) : Vec2(n.hi[0], c.position);
+            g.drawLine(toScreen(a), toScreen(b));
+        }
+        if (st.chosen) {
+            g.setPen(QPen(QColor(200, 40, 40), 3));
+            const auto& c = *st.chosen;
+            const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
+            const Vec2 b = c.axis == 0 ? Vec2(c.position, n.hi[1]) : Vec2(n.hi[0], c.position);
+            g.drawLine(toScreen(a), toScreen(b));
+        }
+    }
+
     // Primitives: tested ones orange, skipped by the mailbox grey, the nearest hit green.
     const auto colourOf = [&](std::uint32_t p) {
         if (st.nearestT && st.nearestPrim == p) return kHit;
@@ -129,7 +155,7 @@ void View2D::paintEvent(QPaintEvent*) {
     }
 
     // The ray: faint in full, solid up to where the replay has reached.
-    if (!session_.log().rays().empty()) {
+    if (!build && !session_.log().rays().empty()) {
         const RayRecord& r = session_.log().rays().front();
         const Vec2 o(r.origin.x, r.origin.y), d(r.dir.x, r.dir.y);
         const double tFar = (world_.diagonal().x + world_.diagonal().y) / glm::length(d);
@@ -166,10 +192,54 @@ void View2D::paintEvent(QPaintEvent*) {
             g.drawEllipse(toScreen(o + *st.nearestT * d), 5, 5);
         }
     }
+    if (build) drawCostChart(g, st);
     g.setPen(QColor(60, 60, 60));
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
                QString::fromStdString(session_.name() + "  -  " +
                                       std::string(accelKindName(session_.kind()))));
+}
+
+void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
+    // The SAH cost of each candidate against its place in the node, one curve per axis, with
+    // the leaf's cost (not splitting) dashed and the chosen plane marked.
+    if (st.candidates.empty() || !st.buildNode) return;
+    const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
+    const QRectF chart(12, height() - 122, std::min(520, width() - 24), 112);
+    g.fillRect(chart, QColor(255, 255, 255, 230));
+    g.setPen(QColor(150, 150, 150));
+    g.drawRect(chart);
+    double lo = kInfinity, hi = 0.0;
+    for (const SplitCandidate& c : st.candidates)
+        lo = std::min(lo, c.sahCost), hi = std::max(hi, c.sahCost);
+    const double leaf = st.chosen ? st.chosen->leafCost : st.buildNode->prims * 5.0;
+    hi = std::max(hi, leaf) * 1.05;
+    lo = std::min(lo, leaf) * 0.95;
+    const auto at = [&](int axis, double pos, double cost) {
+        const double f = (pos - n.lo[axis]) / std::max(n.hi[axis] - n.lo[axis], 1e-300);
+        return QPointF(
+            chart.left() + 6 + f * (chart.width() - 12),
+            chart.bottom() - 6 - (cost - lo) / std::max(hi - lo, 1e-300) * (chart.height() - 22));
+    };
+    const QColor axisColour[2] = {QColor(30, 90, 200), QColor(140, 40, 170)};
+    for (int axis = 0; axis < 2; ++axis) {
+        QPolygonF line;
+        for (const SplitCandidate& c : st.candidates)
+            if (c.axis == axis) line << at(axis, c.position, c.sahCost);
+        g.setPen(QPen(axisColour[axis], 1.5));
+        g.drawPolyline(line);
+        for (const QPointF& p : line) g.drawEllipse(p, 2, 2);
+    }
+    g.setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
+    const double yLeaf = at(0, n.lo[0], leaf).y();
+    g.drawLine(QPointF(chart.left(), yLeaf), QPointF(chart.right(), yLeaf));
+    if (st.chosen) {
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(200, 40, 40));
+        g.drawEllipse(at(st.chosen->axis, st.chosen->position, st.chosen->sahCost), 4, 4);
+    }
+    g.setPen(QColor(60, 60, 60));
+    g.drawText(chart.adjusted(6, 2, -6, 0), Qt::AlignLeft | Qt::AlignTop,
+               tr("SAH cost of each candidate (X blue, Y purple; dashed: leaf)"));
 }
 
 }  // namespace raystep::gui

@@ -4,6 +4,7 @@
 // skips and the nearest hit so far.
 #include "session.h"
 
+#include <QPainter>
 #include <QWidget>
 
 namespace raystep::gui {
@@ -19,6 +20,7 @@ class View2D : public QWidget {
 
   private:
     QPointF toScreen(const Vec2& p) const;
+    void drawCostChart(QPainter& g, const ReplayState& st) const;
     void fit();
 
     Session& session_;

@@ -1,6 +1,7 @@
 // The replay app, driven as a user would under Xvfb: stepping the slides' DDA example shows the
 // cells and tMax values of the board in the inspector, the views change as the cursor moves,
 // clicking a pixel records and replays its ray tree, and --screenshot writes the window.
+#include "compare_window.h"
 #include "image_view.h"
 #include "main_window.h"
 #include "view2d.h"
@@ -11,6 +12,7 @@
 #include <QApplication>
 #include <QImage>
 #include <QMouseEvent>
+#include <QTableWidget>
 
 #include <sys/wait.h>
 
@@ -98,6 +100,61 @@ TEST(App, ClickingAPixelRecordsAndReplaysIt) {
     EXPECT_GT(colours(end), 20u);
     w.session().setCursor(0);
     EXPECT_NE(grab(w.view3D()), end);
+}
+
+TEST(App, ReplayingASahBuildShowsCandidatesAndTheChoice) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
+    Session& s = w.session();
+    s.recordBuild();
+    ASSERT_TRUE(s.showingBuild());
+    // The root's first candidate, then its choice: the inspector shows NL, NR, P(L|C) and the
+    // cost; the choice is the cheapest candidate.
+    s.setCursor(afterNth(s, variantIndex<SplitCandidate>(), 0));
+    EXPECT_TRUE(w.inspectorText().contains("NL = ")) << w.inspectorText().toStdString();
+    EXPECT_TRUE(w.inspectorText().contains("P(L|C) = "));
+    const QImage first = grab(w.view2D());
+    s.setCursor(afterNth(s, variantIndex<SplitChosen>(), 0));
+    const ReplayState& st = s.state();
+    ASSERT_TRUE(st.chosen);
+    EXPECT_TRUE(w.inspectorText().contains("chosen: ")) << w.inspectorText().toStdString();
+    double cheapest = kInfinity;
+    for (const SplitCandidate& c : st.candidates) cheapest = std::min(cheapest, c.sahCost);
+    EXPECT_EQ(cheapest, st.chosen->sahCost);
+    const QImage chosen = grab(w.view2D());
+    EXPECT_NE(first, chosen);  // more candidate planes, the cost curve and the chosen plane
+    EXPECT_GT(colours(chosen), 20u);
+}
+
+TEST(App, CompareModeShowsThreeTrees) {
+    MainWindow w;
+    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
+    CompareWindow* c = w.openCompare();
+    ASSERT_NE(c, nullptr);
+    QApplication::processEvents();
+    // Three trees of the same scene, built differently, each replaying the same example ray.
+    std::set<std::uint32_t> nodes;
+    for (int i = 0; i < 3; ++i) {
+        const Session& s = c->session(i);
+        EXPECT_EQ(s.options().kdtree.split, static_cast<SplitMethod>(i));
+        ASSERT_FALSE(s.log().rays().empty());
+        EXPECT_EQ(s.log().rays()[0].origin, w.session().log().rays()[0].origin);
+        nodes.insert(s.summary().stats.nodes);
+        // The table's "nodes" row is that tree's.
+        EXPECT_EQ(c->table()->item(1, i)->text().toUInt(), s.summary().stats.nodes);
+    }
+    EXPECT_EQ(c->table()->columnCount(), 3);
+    EXPECT_GE(nodes.size(), 2u);  // midpoint and median agree here; SAH does not
+    // Every tree finds the same nearest hit for the ray (the structures must agree).
+    const auto hitOf = [&](int i) { return c->session(i).replay().state().nearestT; };
+    c->setStep(1 << 20);
+    ASSERT_TRUE(hitOf(0));
+    EXPECT_EQ(hitOf(0), hitOf(1));
+    EXPECT_EQ(hitOf(0), hitOf(2));
+    EXPECT_GT(colours(c->grab().toImage()), 30u);
+    c->close();
 }
 
 TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {

@@ -1,0 +1,90 @@
+#include "compare_window.h"
+
+#include "view2d.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSlider>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace raystep::gui {
+
+CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, QWidget* parent)
+    : QWidget(parent) {
+    setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
+    const SplitMethod splits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
+    auto* views = new QHBoxLayout;
+    int longest = 0;
+    for (int i = 0; i < 3; ++i) {
+        sessions_[i] = std::make_unique<Session>();
+        AccelOptions o;
+        o.kdtree.split = o.bvh.split = splits[i];
+        sessions_[i]->load(scene, kind, o);
+        sessions_[i]->traceExampleRay();
+        longest = std::max(longest, static_cast<int>(sessions_[i]->size()));
+        auto* column = new QVBoxLayout;
+        auto* title = new QLabel(QStringLiteral("<b>%1 %2</b>")
+                                     .arg(QString::fromUtf8(accelKindName(kind).data()),
+                                          QString::fromUtf8(name(splits[i]).data())));
+        column->addWidget(title);
+        views_[i] = new View2D(*sessions_[i]);
+        views_[i]->setMinimumSize(300, 240);
+        column->addWidget(views_[i], 1);
+        views->addLayout(column, 1);
+    }
+    slider_ = new QSlider(Qt::Horizontal);
+    slider_->setRange(0, longest);
+    connect(slider_, &QSlider::valueChanged, this, [this](int v) { setStep(v); });
+
+    // The statistics of the three trees, and of the example ray through each.
+    const QStringList rows = {
+        tr("build ms"),   tr("nodes"),    tr("leaves"),     tr("max depth"),
+        tr("references"), tr("SAH cost"), tr("ray: tests"), tr("ray: nodes visited"),
+        tr("ray: events")};
+    table_ = new QTableWidget(rows.size(), 3);
+    table_->setVerticalHeaderLabels(rows);
+    table_->setHorizontalHeaderLabels({tr("midpoint"), tr("median"), tr("SAH")});
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    for (int i = 0; i < 3; ++i) {
+        const BuildSummary b = sessions_[i]->summary();
+        std::size_t tests = 0, visits = 0;
+        for (const Event& e : sessions_[i]->log().events()) {
+            tests += std::holds_alternative<PrimitiveTest>(e);
+            visits += std::holds_alternative<NodeEnter>(e);
+        }
+        const QStringList values = {QString::number(b.stats.buildMs, 'f', 2),
+                                    QString::number(b.stats.nodes),
+                                    QString::number(b.stats.leaves),
+                                    QString::number(b.stats.maxDepth),
+                                    QString::number(b.stats.references),
+                                    QString::number(b.stats.sahCost, 'g', 5),
+                                    QString::number(tests),
+                                    QString::number(visits),
+                                    QString::number(sessions_[i]->size())};
+        for (int r = 0; r < values.size(); ++r)
+            table_->setItem(r, i, new QTableWidgetItem(values[r]));
+    }
+    table_->resizeRowsToContents();
+    table_->setMinimumHeight(table_->horizontalHeader()->height() +
+                             table_->rowHeight(0) * table_->rowCount() + 6);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(views, 1);
+    auto* stepRow = new QHBoxLayout;
+    stepRow->addWidget(new QLabel(tr("step (the same ray in each)")));
+    stepRow->addWidget(slider_, 1);
+    layout->addLayout(stepRow);
+    layout->addWidget(table_);
+    setStep(longest);
+    slider_->setValue(longest);
+}
+
+CompareWindow::~CompareWindow() = default;
+
+void CompareWindow::setStep(int n) {
+    for (auto& s : sessions_) s->setCursor(static_cast<std::size_t>(std::max(n, 0)));
+}
+
+}  // namespace raystep::gui
