@@ -87,6 +87,10 @@ void ImageView::paintEvent(QPaintEvent*) {
     }
     const QRectF r = imageRect();
     g.drawImage(r, heatmap_ ? heat_ : image_);
+    g.setPen(QColor(230, 230, 230));
+    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+               heatmap_ ? tr("Primitive tests per pixel (dark: few, bright: many)")
+                        : tr("Ray tracing (raystep): click a pixel to trace it"));
     if (marked_.x() >= 0) {
         const double s = r.width() / image_.width();
         g.setPen(QPen(QColor(255, 80, 60), 2));

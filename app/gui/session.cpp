@@ -26,6 +26,18 @@ void Session::load(const std::string& nameOrPath, AccelKind kind, const AccelOpt
     emit sceneChanged();
 }
 
+void Session::load(Scene2D scene, AccelKind kind, const AccelOptions& options) {
+    emit aboutToChangeScene();
+    name_ = scene.name;
+    scene_ = std::move(scene);
+    kind_ = kind;
+    options_ = options;
+    accel3D_.reset();
+    accel2D_ = buildAccelerator2D(std::get<Scene2D>(scene_), kind, options);
+    setLog(std::make_unique<EventLog>());
+    emit sceneChanged();
+}
+
 void Session::traceExampleRay() {
     const Scene2D* s = scene2D();
     if (!s || !s->exampleRay) return;

@@ -21,6 +21,8 @@ class Session : public QObject {
   public:
     /// Loads a built-in name or a file; throws SceneError (shown in a dialog by the window).
     void load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options = {});
+    /// A 2D scene made in code (benchmarks, tests), with its structure.
+    void load(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
     /// 3D: records pixel (x, y) of a `width` x `height` image; 2D: the scene's example ray.
     void tracePixel(int x, int y, int width, int height);
     void traceExampleRay();

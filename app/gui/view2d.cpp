@@ -3,6 +3,8 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
+
 namespace raystep::gui {
 
 namespace {
@@ -21,7 +23,11 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
     setMinimumSize(320, 220);
     setAutoFillBackground(false);
     connect(&session_, &Session::cursorChanged, this, [this] { update(); });
-    connect(&session_, &Session::sceneChanged, this, [this] { update(); });
+    connect(&session_, &Session::sceneChanged, this, [this] {
+        layerDirty_ = true;
+        update();
+    });
+    connect(&session_, &Session::logChanged, this, [this] { layerDirty_ = true; });
 }
 
 void View2D::fit() {
@@ -66,48 +72,17 @@ void View2D::paintEvent(QPaintEvent*) {
         const Vec2 hi(lo.x + spec.cellSize(0), lo.y + spec.cellSize(1));
         return QRectF(toScreen(Vec2(lo.x, hi.y)), toScreen(Vec2(hi.x, lo.y)));
     };
+    const auto* kd = accel ? std::get_if<KdTree<Scene2DPrims>>(accel) : nullptr;
+    if (layerDirty_ || layerSize_ != size()) buildLayer(grid, kd);
+    // What moves with the cursor goes under the cached lines: visited and current cells, the
+    // tree node being entered.
     if (grid) {
         for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), kVisited);
         if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), kCurrent);
-        const auto& spec = grid->spec();
-        g.setPen(QPen(kGridLine, 1));
-        for (int i = 0; i <= spec.res.x; ++i) {
-            const double x = spec.lo.x + i * spec.cellSize(0);
-            g.drawLine(toScreen(Vec2(x, spec.lo.y)), toScreen(Vec2(x, spec.hi.y)));
-        }
-        for (int j = 0; j <= spec.res.y; ++j) {
-            const double y = spec.lo.y + j * spec.cellSize(1);
-            g.drawLine(toScreen(Vec2(spec.lo.x, y)), toScreen(Vec2(spec.hi.x, y)));
-        }
-        // Cell indices along the edges, as on the board.
-        g.setPen(QColor(120, 120, 120));
-        for (int i = 0; i < spec.res.x; ++i)
-            g.drawText(toScreen(Vec2(spec.lo.x + (i + 0.45) * spec.cellSize(0), spec.lo.y)) +
-                           QPointF(-3, 14),
-                       QString::number(i));
-        for (int j = 0; j < spec.res.y; ++j)
-            g.drawText(toScreen(Vec2(spec.lo.x, spec.lo.y + (j + 0.5) * spec.cellSize(1))) +
-                           QPointF(-14, 4),
-                       QString::number(j));
-    } else if (const auto* kd = accel ? std::get_if<KdTree<Scene2DPrims>>(accel) : nullptr) {
-        // The tree's split lines; the node being entered is filled.
-        const auto draw = [&](auto&& self, std::uint32_t id, BoxN<2> box) -> void {
-            const KdNode& n = kd->nodes()[id];
-            if (st.node && st.node->node == id)
-                g.fillRect(
-                    QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
-                    kVisited);
-            if (n.leaf()) return;
-            BoxN<2> l = box, r = box;
-            l.hi[n.axis] = r.lo[n.axis] = n.split;
-            self(self, id + 1, l);
-            self(self, n.index, r);
-            g.setPen(QPen(kGridLine, 1));
-            const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
-            const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
-            g.drawLine(toScreen(a), toScreen(b));
-        };
-        if (!kd->nodes().empty()) draw(draw, 0, kd->bounds());
+    } else if (kd && st.node && st.node->node < kdBoxes_.size()) {
+        const BoxN<2>& box = kdBoxes_[st.node->node];
+        g.fillRect(QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
+                   kVisited);
     }
 
     // A build being replayed: the node being split, the candidate planes so far, the choice.
@@ -118,8 +93,12 @@ void View2D::paintEvent(QPaintEvent*) {
         g.fillRect(box, QColor(200, 225, 255, 110));
         g.setPen(QPen(QColor(40, 90, 200), 2));
         g.drawRect(box);
-        for (const SplitCandidate& c : st.candidates) {
-            g.setPen(QPen(QColor(40, 90, 200, 90), 1, Qt::DashLine));
+        // The most recent candidates (a big node has thousands; the chart shows them all).
+        constexpr std::size_t kShown = 256;
+        const std::size_t from = st.candidates.size() > kShown ? st.candidates.size() - kShown : 0;
+        g.setPen(QPen(QColor(40, 90, 200, 70), 1));  // solid: dashes are slow to rasterize
+        for (std::size_t k = from; k < st.candidates.size(); ++k) {
+            const SplitCandidate& c = st.candidates[k];
             const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
             const Vec2 b = c.axis == 0 ? Vec2(c.position, n.hi[1]) : Vec2(n.hi[0], c.position);
             g.drawLine(toScreen(a), toScreen(b));
@@ -142,16 +121,18 @@ void View2D::paintEvent(QPaintEvent*) {
             if (t.prim == p) return kTested;
         return kPrimitive;
     };
-    for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) {
+    g.drawPixmap(0, 0, layer_);
+    // Then the few that the replay has touched, in their colour, over the neutral ones.
+    std::vector<std::uint32_t> touched;
+    for (const auto& t : st.tests) touched.push_back(t.prim);
+    for (auto q : st.mailboxSkips) touched.push_back(q);
+    if (st.nearestT) touched.push_back(st.nearestPrim);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (std::uint32_t p : touched) {
+        if (p >= s->primitiveCount()) continue;
         g.setPen(QPen(colourOf(p), p == st.nearestPrim ? 3.0 : 2.0));
-        g.setBrush(Qt::NoBrush);
-        if (s->isCircle(p)) {
-            const Circle2& c = s->circles[p];
-            g.drawEllipse(toScreen(c.center), c.radius * scale_, c.radius * scale_);
-        } else {
-            const Segment2& seg = s->segments[p - s->circles.size()];
-            g.drawLine(toScreen(seg.a), toScreen(seg.b));
-        }
+        drawPrimitive(g, p);
     }
 
     // The ray: faint in full, solid up to where the replay has reached.
@@ -199,6 +180,70 @@ void View2D::paintEvent(QPaintEvent*) {
                                       std::string(accelKindName(session_.kind()))));
 }
 
+void View2D::drawPrimitive(QPainter& painter, std::uint32_t p) const {
+    const Scene2D* s = session_.scene2D();
+    if (s->isCircle(p)) {
+        const Circle2& c = s->circles[p];
+        painter.drawEllipse(toScreen(c.center), c.radius * scale_, c.radius * scale_);
+    } else {
+        const Segment2& seg = s->segments[p - s->circles.size()];
+        painter.drawLine(toScreen(seg.a), toScreen(seg.b));
+    }
+}
+
+void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Scene2DPrims>* kd) {
+    const Scene2D* s = session_.scene2D();
+    layer_ = QPixmap(size());
+    layer_.fill(Qt::transparent);
+    QPainter lp(&layer_);
+    lp.setRenderHint(QPainter::Antialiasing, s->primitiveCount() < 5000);
+    if (grid) {
+        const auto& spec = grid->spec();
+        lp.setPen(QPen(kGridLine, 1));
+        for (int i = 0; i <= spec.res.x; ++i) {
+            const double x = spec.lo.x + i * spec.cellSize(0);
+            lp.drawLine(toScreen(Vec2(x, spec.lo.y)), toScreen(Vec2(x, spec.hi.y)));
+        }
+        for (int j = 0; j <= spec.res.y; ++j) {
+            const double y = spec.lo.y + j * spec.cellSize(1);
+            lp.drawLine(toScreen(Vec2(spec.lo.x, y)), toScreen(Vec2(spec.hi.x, y)));
+        }
+        // Cell indices along the edges, as on the board.
+        lp.setPen(QColor(120, 120, 120));
+        for (int i = 0; i < spec.res.x; ++i)
+            lp.drawText(toScreen(Vec2(spec.lo.x + (i + 0.45) * spec.cellSize(0), spec.lo.y)) +
+                            QPointF(-3, 14),
+                        QString::number(i));
+        for (int j = 0; j < spec.res.y; ++j)
+            lp.drawText(toScreen(Vec2(spec.lo.x, spec.lo.y + (j + 0.5) * spec.cellSize(1))) +
+                            QPointF(-14, 4),
+                        QString::number(j));
+    }
+    kdBoxes_.clear();
+    if (kd && !kd->nodes().empty()) {
+        // Every node's box (for the node being entered) and the split lines.
+        kdBoxes_.resize(kd->nodes().size());
+        lp.setPen(QPen(kGridLine, 1));
+        const auto walk = [&](auto&& self, std::uint32_t id, BoxN<2> box) -> void {
+            kdBoxes_[id] = box;
+            const KdNode& n = kd->nodes()[id];
+            if (n.leaf()) return;
+            BoxN<2> l = box, r = box;
+            l.hi[n.axis] = r.lo[n.axis] = n.split;
+            const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
+            const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
+            lp.drawLine(toScreen(a), toScreen(b));
+            self(self, id + 1, l);
+            self(self, n.index, r);
+        };
+        walk(walk, 0, kd->bounds());
+    }
+    lp.setPen(QPen(kPrimitive, 2.0));
+    for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) drawPrimitive(lp, p);
+    layerSize_ = size();
+    layerDirty_ = false;
+}
+
 void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
     // The SAH cost of each candidate against its place in the node, one curve per axis, with
     // the leaf's cost (not splitting) dashed and the chosen plane marked.
@@ -221,13 +266,18 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
             chart.bottom() - 6 - (cost - lo) / std::max(hi - lo, 1e-300) * (chart.height() - 22));
     };
     const QColor axisColour[2] = {QColor(30, 90, 200), QColor(140, 40, 170)};
+    // At most about 2,000 points a curve: a screen has no more columns to show.
+    const std::size_t stride = std::max<std::size_t>(1, st.candidates.size() / 2000);
     for (int axis = 0; axis < 2; ++axis) {
         QPolygonF line;
-        for (const SplitCandidate& c : st.candidates)
+        for (std::size_t k = 0; k < st.candidates.size(); k += stride) {
+            const SplitCandidate& c = st.candidates[k];
             if (c.axis == axis) line << at(axis, c.position, c.sahCost);
+        }
         g.setPen(QPen(axisColour[axis], 1.5));
         g.drawPolyline(line);
-        for (const QPointF& p : line) g.drawEllipse(p, 2, 2);
+        if (line.size() < 200)
+            for (const QPointF& p : line) g.drawEllipse(p, 2, 2);
     }
     g.setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
     const double yLeaf = at(0, n.lo[0], leaf).y();

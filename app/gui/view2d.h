@@ -5,6 +5,7 @@
 #include "session.h"
 
 #include <QPainter>
+#include <QPixmap>
 #include <QWidget>
 
 namespace raystep::gui {
@@ -23,8 +24,17 @@ class View2D : public QWidget {
     void drawCostChart(QPainter& g, const ReplayState& st) const;
     void fit();
 
+    /// The structure's lines and the primitives in their neutral colour, drawn once per size and
+    /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
+    void buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Scene2DPrims>* kd);
+    void drawPrimitive(QPainter& painter, std::uint32_t prim) const;
+
     Session& session_;
-    BoxN<2> world_;  // what is shown, in scene units
+    QPixmap layer_;
+    QSize layerSize_;
+    bool layerDirty_ = true;
+    std::vector<BoxN<2>> kdBoxes_;  // every kd node's box, made with the layer
+    BoxN<2> world_;                 // what is shown, in scene units
     double scale_ = 1.0;
     QPointF offset_;
 };

@@ -188,6 +188,10 @@ void VtkView::paintEvent(QPaintEvent*) {
     QImage image(pixels, w, h, 3 * w, QImage::Format_RGB888);
     g.drawImage(rect(), image.mirrored(false, true));
     delete[] pixels;
+    // The lecture's first slide: this view is rasterized, the image beside it ray traced.
+    g.setPen(QColor(230, 230, 230));
+    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+               tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
     dirty_ = false;
 }
 
