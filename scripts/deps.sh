@@ -9,7 +9,7 @@ RAYSTEP_BUILD_PACKAGES=(
 # The replay app: Qt6 widgets, VTK (its config needs MPI's C target: mpi-default-dev comes with it),
 # and what runs it without a screen (xvfb-run) with Mesa's software OpenGL.
 RAYSTEP_GUI_PACKAGES=(
-  qt6-base-dev libvtk9-dev xvfb xauth libgl1-mesa-dri
+  qt6-base-dev qt6-l10n-tools libvtk9-dev xvfb xauth libgl1-mesa-dri
 )
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev

@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
+#include <QTranslator>
 
 #include <cstdio>
 
@@ -31,16 +32,27 @@ int main(int argc, char** argv) {
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
     const QCommandLineOption replayOpt("replay", "What to replay: ray (the default) or build.",
                                        "ray|build", "ray");
+    const QCommandLineOption langOpt("lang", "Interface language: en or it.", "en|it", "en");
     const QCommandLineOption compareOpt(
         "compare",
         "Also open compare mode (midpoint, median, SAH) on the 2D scene; "
         "--screenshot then saves that window.");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
-    parser.addOptions({sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, shotOpt});
+    parser.addOptions({sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt, shotOpt});
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
+    // The Italian interface: the translation compiled next to the binary (app/gui/i18n).
+    const QString lang = parser.value(langOpt);
+    QTranslator translator;
+    if (lang == "it") {
+        const QString qm = QCoreApplication::applicationDirPath() + "/raystep_it.qm";
+        if (!translator.load(qm)) return fail("--lang it: cannot load " + qm);
+        QApplication::installTranslator(&translator);
+    } else if (lang != "en") {
+        return fail("--lang " + lang + ": expected en or it");
+    }
     const auto kind = raystep::parseAccelKind(parser.value(accelOpt).toStdString());
     if (!kind)
         return fail("--accel " + parser.value(accelOpt) +

@@ -66,13 +66,14 @@ class EventListModel : public QAbstractListModel {
 namespace {
 // Event kinds the timeline can jump to, with their variant index.
 const std::pair<const char*, std::size_t> kJumpKinds[] = {
-    {QT_TRANSLATE_NOOP("MainWindow", "DDA step"), variantIndex<DdaCell>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "primitive test"), variantIndex<PrimitiveTest>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "mailbox skip"), variantIndex<MailboxSkip>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "node enter"), variantIndex<NodeEnter>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "ray begin"), variantIndex<RayBegin>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "hit"), variantIndex<RayHit>()},
-    {QT_TRANSLATE_NOOP("MainWindow", "split chosen"), variantIndex<SplitChosen>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "DDA step"), variantIndex<DdaCell>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "primitive test"),
+     variantIndex<PrimitiveTest>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "mailbox skip"), variantIndex<MailboxSkip>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "node enter"), variantIndex<NodeEnter>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "ray begin"), variantIndex<RayBegin>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "hit"), variantIndex<RayHit>()},
+    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "split chosen"), variantIndex<SplitChosen>()},
 };
 constexpr int kImageWidth = 320, kImageHeight = 240;
 }  // namespace

@@ -184,12 +184,19 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     EXPECT_EQ(ia.size(), QSize(1500, 900));
     EXPECT_GT(colours(ia), 50u);
     EXPECT_NE(ia, ib);  // --step put the cursor elsewhere
+    // In Italian (--lang it): a different picture of the same replay.
+    const fs::path it = dir / "it.png";
+    ASSERT_EQ(run("--scene lecture-grid --step 3 --lang it --screenshot '" + it.string() +
+                  "' >/dev/null 2>&1"),
+              0);
+    EXPECT_NE(QImage(QString::fromStdString(it.string())), ia);
     // Bad values: exit 2, no file.
     const fs::path c = dir / "c.png";
     EXPECT_EQ(run("--accel octree --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--step 99999 --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--scene nosuch --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--screenshot '" + (dir / "c.jpg").string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--lang fr --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_FALSE(fs::exists(c));
     fs::remove_all(dir);
 }

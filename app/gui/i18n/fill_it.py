@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Fills app/gui/i18n/raystep_it.ts with the Italian of every string (the lecture's language).
+Run after lupdate has added new strings: it keeps the table below as the one source of truth and
+reports any string it has no translation for."""
+import pathlib
+import sys
+import xml.etree.ElementTree as ET
+
+IT = {
+    "DDA step": "passo del DDA",
+    "primitive test": "test di una primitiva",
+    "mailbox skip": "saltata dalla mailbox",
+    "node enter": "ingresso in un nodo",
+    "ray begin": "inizio di un raggio",
+    "hit": "intersezione",
+    "split chosen": "split scelto",
+    "raystep - compare midpoint, median and SAH": "raystep - confronto tra midpoint, mediana e SAH",
+    "build ms": "costruzione (ms)",
+    "nodes": "nodi",
+    "leaves": "foglie",
+    "max depth": "profondità massima",
+    "references": "riferimenti",
+    "SAH cost": "costo SAH",
+    "ray: tests": "raggio: test",
+    "ray: nodes visited": "raggio: nodi visitati",
+    "ray: events": "raggio: eventi",
+    "midpoint": "midpoint",
+    "median": "mediana",
+    "SAH": "SAH",
+    "step (the same ray in each)": "passo (lo stesso raggio in ognuno)",
+    "Rendering...": "Rendering in corso...",
+    "The image view shows 3D scenes.": "La vista immagine mostra le scene 3D.",
+    "Primitive tests per pixel (dark: few, bright: many)":
+        "Test di primitive per pixel (scuro: pochi, chiaro: molti)",
+    "Ray tracing (raystep): click a pixel to trace it":
+        "Ray tracing (raystep): clicca un pixel per tracciarlo",
+    "raystep": "raystep",
+    "First event (Home)": "Primo evento (Home)",
+    "Step back (Left)": "Passo indietro (Sinistra)",
+    "Play / pause (Space)": "Avvia / pausa (Spazio)",
+    "Step forward (Right)": "Passo avanti (Destra)",
+    "next": "successivo",
+    "Jump to the next event of this kind (N)": "Salta al prossimo evento di questo tipo (N)",
+    "speed": "velocità",
+    " /s": " /s",
+    "Inspector": "Ispettore",
+    "Filter events (e.g. cell, test, mailbox)": "Filtra gli eventi (es. cell, test, mailbox)",
+    "Events": "Eventi",
+    "Cancel": "Annulla",
+    "Render cancelled": "Rendering annullato",
+    "Rendered in %1 ms; click a pixel to trace it":
+        "Rendering in %1 ms; clicca un pixel per tracciarlo",
+    "Pixel (%1, %2): %3 events recorded": "Pixel (%1, %2): %3 eventi registrati",
+    "## Building the %1\n\nEach node is split by a plane. Step through the **candidate** planes "
+    "(dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + "
+    "P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The "
+    "**chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). "
+    "Jump to the next choice with the *split chosen* kind and **N**.":
+        "## Costruzione del %1\n\nOgni nodo è diviso da un piano. Scorri i piani **candidati**: "
+        "il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + "
+        "P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo "
+        "perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della "
+        "foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.",
+    "&File": "&File",
+    "&Open scene...": "&Apri scena...",
+    "Export &trace...": "Esporta &traccia...",
+    "Export screenshot of the &window...": "Esporta screenshot della &finestra...",
+    "window": "finestra",
+    "Export screenshot of the &2D view...": "Esporta screenshot della vista &2D...",
+    "2D view": "vista 2D",
+    "Export screenshot of the &3D view...": "Esporta screenshot della vista &3D...",
+    "3D view": "vista 3D",
+    "&Quit": "&Esci",
+    "&Replay": "&Riproduzione",
+    "Step &forward": "Passo &avanti",
+    "Step &back": "Passo &indietro",
+    "&Play / pause": "A&vvia / pausa",
+    "&Next event of the kind": "&Prossimo evento del tipo",
+    "Replay the &build (candidates, splits, leaves)":
+        "Riproduci la &costruzione (candidati, split, foglie)",
+    "Replay the &example ray": "Riproduci il raggio d'&esempio",
+    "&First event": "P&rimo evento",
+    "&Last event": "&Ultimo evento",
+    "&View": "&Vista",
+    "&Compare midpoint, median and SAH...": "&Confronta midpoint, mediana e SAH...",
+    "&Heat map of primitive tests": "&Mappa di calore dei test di primitive",
+    "&Reset 3D camera": "&Reimposta la camera 3D",
+    "Cannot open the scene": "Impossibile aprire la scena",
+    "## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and **Left**, play with "
+    "**Space**, jump to the next event of a kind with **N**. The inspector shows X, Y, tMax and "
+    "tDelta as on the board; the list shows every event.":
+        "## %1\n\n%2\n\nIl raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, "
+        "avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, "
+        "Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.",
+    "## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is recorded and replayed "
+    "in the 3D view, the inspector and the event list.":
+        "## %1\n\n%2\n\nClicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è "
+        "registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.",
+    "Rendering %1...": "Rendering di %1...",
+    "raystep - %1": "raystep - %1",
+    "Compare": "Confronto",
+    "Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the "
+    "same table.":
+        "Il confronto mostra le scene 2D della lezione; per una scena 3D, raystep-cli compare "
+        "stampa la stessa tabella.",
+    "%1 / %2": "%1 / %2",
+    "Open scene": "Apri scena",
+    "Scenes (*.json)": "Scene (*.json)",
+    "Screenshot of the %1": "Screenshot della %1",
+    "PNG images (*.png)": "Immagini PNG (*.png)",
+    "Cannot save": "Impossibile salvare",
+    "Could not write %1": "Impossibile scrivere %1",
+    "Export trace": "Esporta traccia",
+    "Trace files (*.json)": "File di traccia (*.json)",
+    "The 2D view shows the lecture's 2D scenes.": "La vista 2D mostra le scene 2D della lezione.",
+    "SAH cost of each candidate (X blue, Y purple; dashed: leaf)":
+        "Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)",
+    "The 3D view shows 3D scenes.": "La vista 3D mostra le scene 3D.",
+    "Rasterization (VTK, OpenGL): the scene and the recorded rays":
+        "Rasterizzazione (VTK, OpenGL): la scena e i raggi registrati",
+}
+
+path = pathlib.Path(__file__).with_name("raystep_it.ts")
+tree = ET.parse(path)
+missing = []
+for message in tree.getroot().iter("message"):
+    source = message.find("source").text
+    translation = message.find("translation")
+    if source in IT:
+        translation.text = IT[source]
+        translation.attrib.pop("type", None)
+    else:
+        missing.append(source)
+tree.write(path, encoding="utf-8", xml_declaration=True)
+if missing:
+    print("no Italian for:", *missing, sep="\n  ")
+    sys.exit(1)
+print("all", sum(1 for _ in tree.getroot().iter("message")), "strings translated")

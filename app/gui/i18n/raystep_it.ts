@@ -1,0 +1,464 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="it" sourcelanguage="en">
+<context>
+    <name>raystep::gui::CompareWindow</name>
+    <message>
+        <location filename="../compare_window.cpp" line="16" />
+        <source>raystep - compare midpoint, median and SAH</source>
+        <translation>raystep - confronto tra midpoint, mediana e SAH</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="43" />
+        <source>build ms</source>
+        <translation>costruzione (ms)</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="43" />
+        <source>nodes</source>
+        <translation>nodi</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="43" />
+        <source>leaves</source>
+        <translation>foglie</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="43" />
+        <source>max depth</source>
+        <translation>profondità massima</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="44" />
+        <source>references</source>
+        <translation>riferimenti</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="44" />
+        <source>SAH cost</source>
+        <translation>costo SAH</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="44" />
+        <source>ray: tests</source>
+        <translation>raggio: test</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="44" />
+        <source>ray: nodes visited</source>
+        <translation>raggio: nodi visitati</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="45" />
+        <source>ray: events</source>
+        <translation>raggio: eventi</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="48" />
+        <source>midpoint</source>
+        <translation>midpoint</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="48" />
+        <source>median</source>
+        <translation>mediana</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="48" />
+        <source>SAH</source>
+        <translation>SAH</translation>
+    </message>
+    <message>
+        <location filename="../compare_window.cpp" line="76" />
+        <source>step (the same ray in each)</source>
+        <translation>passo (lo stesso raggio in ognuno)</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::ImageView</name>
+    <message>
+        <location filename="../image_view.cpp" line="85" />
+        <source>Rendering...</source>
+        <translation>Rendering in corso...</translation>
+    </message>
+    <message>
+        <location filename="../image_view.cpp" line="85" />
+        <source>The image view shows 3D scenes.</source>
+        <translation>La vista immagine mostra le scene 3D.</translation>
+    </message>
+    <message>
+        <location filename="../image_view.cpp" line="92" />
+        <source>Primitive tests per pixel (dark: few, bright: many)</source>
+        <translation>Test di primitive per pixel (scuro: pochi, chiaro: molti)</translation>
+    </message>
+    <message>
+        <location filename="../image_view.cpp" line="93" />
+        <source>Ray tracing (raystep): click a pixel to trace it</source>
+        <translation>Ray tracing (raystep): clicca un pixel per tracciarlo</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::MainWindow</name>
+    <message>
+        <location filename="../main_window.cpp" line="69" />
+        <source>DDA step</source>
+        <translation>passo del DDA</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="70" />
+        <source>primitive test</source>
+        <translation>test di una primitiva</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="71" />
+        <source>mailbox skip</source>
+        <translation>saltata dalla mailbox</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="72" />
+        <source>node enter</source>
+        <translation>ingresso in un nodo</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="73" />
+        <source>ray begin</source>
+        <translation>inizio di un raggio</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="74" />
+        <source>hit</source>
+        <translation>intersezione</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="75" />
+        <source>split chosen</source>
+        <translation>split scelto</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="90" />
+        <source>raystep</source>
+        <translation>raystep</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="116" />
+        <source>First event (Home)</source>
+        <translation>Primo evento (Home)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="117" />
+        <source>Step back (Left)</source>
+        <translation>Passo indietro (Sinistra)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="118" />
+        <source>Play / pause (Space)</source>
+        <translation>Avvia / pausa (Spazio)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="119" />
+        <source>Step forward (Right)</source>
+        <translation>Passo avanti (Destra)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="123" />
+        <source>next</source>
+        <translation>successivo</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="123" />
+        <source>Jump to the next event of this kind (N)</source>
+        <translation>Salta al prossimo evento di questo tipo (N)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="125" />
+        <source>speed</source>
+        <translation>velocità</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="129" />
+        <source> /s</source>
+        <translation> /s</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="155" />
+        <source>Inspector</source>
+        <translation>Ispettore</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="163" />
+        <source>Filter events (e.g. cell, test, mailbox)</source>
+        <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="178" />
+        <source>Events</source>
+        <translation>Eventi</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="187" />
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="197" />
+        <source>Render cancelled</source>
+        <translation>Rendering annullato</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="198" />
+        <source>Rendered in %1 ms; click a pixel to trace it</source>
+        <translation>Rendering in %1 ms; clicca un pixel per tracciarlo</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="204" />
+        <source>Pixel (%1, %2): %3 events recorded</source>
+        <translation>Pixel (%1, %2): %3 eventi registrati</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="221" />
+        <source>## Building the %1
+
+Each node is split by a plane. Step through the **candidate** planes (dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the next choice with the *split chosen* kind and **N**.</source>
+        <translation>## Costruzione del %1
+
+Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="233" />
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="234" />
+        <source>&amp;Open scene...</source>
+        <translation>&amp;Apri scena...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="235" />
+        <source>Export &amp;trace...</source>
+        <translation>Esporta &amp;traccia...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="236" />
+        <source>Export screenshot of the &amp;window...</source>
+        <translation>Esporta screenshot della &amp;finestra...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="237" />
+        <source>window</source>
+        <translation>finestra</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="238" />
+        <source>Export screenshot of the &amp;2D view...</source>
+        <translation>Esporta screenshot della vista &amp;2D...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="239" />
+        <source>2D view</source>
+        <translation>vista 2D</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="240" />
+        <source>Export screenshot of the &amp;3D view...</source>
+        <translation>Esporta screenshot della vista &amp;3D...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="241" />
+        <source>3D view</source>
+        <translation>vista 3D</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="243" />
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="244" />
+        <source>&amp;Replay</source>
+        <translation>&amp;Riproduzione</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="245" />
+        <source>Step &amp;forward</source>
+        <translation>Passo &amp;avanti</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="247" />
+        <source>Step &amp;back</source>
+        <translation>Passo &amp;indietro</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="248" />
+        <source>&amp;Play / pause</source>
+        <translation>A&amp;vvia / pausa</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="250" />
+        <source>&amp;Next event of the kind</source>
+        <translation>&amp;Prossimo evento del tipo</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="253" />
+        <source>Replay the &amp;build (candidates, splits, leaves)</source>
+        <translation>Riproduci la &amp;costruzione (candidati, split, foglie)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="255" />
+        <source>Replay the &amp;example ray</source>
+        <translation>Riproduci il raggio d'&amp;esempio</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="258" />
+        <source>&amp;First event</source>
+        <translation>P&amp;rimo evento</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="260" />
+        <source>&amp;Last event</source>
+        <translation>&amp;Ultimo evento</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="262" />
+        <source>&amp;View</source>
+        <translation>&amp;Vista</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="263" />
+        <source>&amp;Compare midpoint, median and SAH...</source>
+        <translation>&amp;Confronta midpoint, mediana e SAH...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="265" />
+        <source>&amp;Heat map of primitive tests</source>
+        <translation>&amp;Mappa di calore dei test di primitive</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="268" />
+        <source>&amp;Reset 3D camera</source>
+        <translation>&amp;Reimposta la camera 3D</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="276" />
+        <source>Cannot open the scene</source>
+        <translation>Impossibile aprire la scena</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="282" />
+        <source>## %1
+
+%2
+
+The ray is the slides' example. Step with **Right** and **Left**, play with **Space**, jump to the next event of a kind with **N**. The inspector shows X, Y, tMax and tDelta as on the board; the list shows every event.</source>
+        <translation>## %1
+
+%2
+
+Il raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="289" />
+        <source>## %1
+
+%2
+
+Click a pixel of the image to trace it: its ray tree is recorded and replayed in the 3D view, the inspector and the event list.</source>
+        <translation>## %1
+
+%2
+
+Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="296" />
+        <source>Rendering %1...</source>
+        <translation>Rendering di %1...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="304" />
+        <source>raystep - %1</source>
+        <translation>raystep - %1</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="311" />
+        <source>Compare</source>
+        <translation>Confronto</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="312" />
+        <source>Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the same table.</source>
+        <translation>Il confronto mostra le scene 2D della lezione; per una scena 3D, raystep-cli compare stampa la stessa tabella.</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="359" />
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="373" />
+        <source>Open scene</source>
+        <translation>Apri scena</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="373" />
+        <source>Scenes (*.json)</source>
+        <translation>Scene (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="378" />
+        <source>Screenshot of the %1</source>
+        <translation>Screenshot della %1</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="379" />
+        <source>PNG images (*.png)</source>
+        <translation>Immagini PNG (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="382" />
+        <location filename="../main_window.cpp" line="396" />
+        <source>Cannot save</source>
+        <translation>Impossibile salvare</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="382" />
+        <source>Could not write %1</source>
+        <translation>Impossibile scrivere %1</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="386" />
+        <source>Export trace</source>
+        <translation>Esporta traccia</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="387" />
+        <source>Trace files (*.json)</source>
+        <translation>File di traccia (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::View2D</name>
+    <message>
+        <location filename="../view2d.cpp" line="60" />
+        <source>The 2D view shows the lecture's 2D scenes.</source>
+        <translation>La vista 2D mostra le scene 2D della lezione.</translation>
+    </message>
+    <message>
+        <location filename="../view2d.cpp" line="292" />
+        <source>SAH cost of each candidate (X blue, Y purple; dashed: leaf)</source>
+        <translation>Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::VtkView</name>
+    <message>
+        <location filename="../vtk_view.cpp" line="180" />
+        <source>The 3D view shows 3D scenes.</source>
+        <translation>La vista 3D mostra le scene 3D.</translation>
+    </message>
+    <message>
+        <location filename="../vtk_view.cpp" line="194" />
+        <source>Rasterization (VTK, OpenGL): the scene and the recorded rays</source>
+        <translation>Rasterizzazione (VTK, OpenGL): la scena e i raggi registrati</translation>
+    </message>
+</context>
+</TS>
