@@ -195,28 +195,27 @@ void VtkView::paintEvent(QPaintEvent*) {
     dirty_ = false;
 }
 
-void VtkView::mousePressEvent(QMouseEvent* e) {
+void VtkView::forward(QMouseEvent* e) {
     interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
                                           e->modifiers() & Qt::ControlModifier,
                                           e->modifiers() & Qt::ShiftModifier);
+}
+void VtkView::mousePressEvent(QMouseEvent* e) {
+    forward(e);
     if (e->button() == Qt::LeftButton) interactor_->LeftButtonPressEvent();
     if (e->button() == Qt::RightButton) interactor_->RightButtonPressEvent();
     if (e->button() == Qt::MiddleButton) interactor_->MiddleButtonPressEvent();
     update();
 }
 void VtkView::mouseReleaseEvent(QMouseEvent* e) {
-    interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
-                                          e->modifiers() & Qt::ControlModifier,
-                                          e->modifiers() & Qt::ShiftModifier);
+    forward(e);
     if (e->button() == Qt::LeftButton) interactor_->LeftButtonReleaseEvent();
     if (e->button() == Qt::RightButton) interactor_->RightButtonReleaseEvent();
     if (e->button() == Qt::MiddleButton) interactor_->MiddleButtonReleaseEvent();
     update();
 }
 void VtkView::mouseMoveEvent(QMouseEvent* e) {
-    interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
-                                          e->modifiers() & Qt::ControlModifier,
-                                          e->modifiers() & Qt::ShiftModifier);
+    forward(e);
     interactor_->MouseMoveEvent();
     update();
 }

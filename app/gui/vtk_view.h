@@ -34,6 +34,8 @@ class VtkView : public QWidget {
     void wheelEvent(QWheelEvent*) override;
 
   private:
+    /// Hands the mouse position and modifiers to the VTK interactor (y flipped).
+    void forward(QMouseEvent* e);
     void rebuildScene();
     void rebuildRays();
 
