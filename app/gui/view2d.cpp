@@ -165,6 +165,19 @@ void View2D::paintEvent(QPaintEvent*) {
                 g.drawText(a + QPointF(4, -4),
                            axis == 0 ? QStringLiteral("tMaxX = %1").arg(t, 0, 'g', 4)
                                      : QStringLiteral("tMaxY = %1").arg(t, 0, 'g', 4));
+                // tDelta: the stretch of ray between two boundaries of this axis, drawn as a
+                // bracket ending at tMax, on the axis's side of the ray.
+                if (st.ddaSetup && std::isfinite(st.ddaSetup->tDelta[axis])) {
+                    const double d0 = std::max(0.0, t - st.ddaSetup->tDelta[axis]);
+                    const Vec2 side = (axis == 0 ? 0.22 : -0.22) * n;
+                    const QPointF p0 = toScreen(o + d0 * d + side), p1 = toScreen(p + side);
+                    g.setPen(QPen(g.pen().color(), 1));
+                    g.drawLine(p0, p1);
+                    g.drawLine(p0, toScreen(o + d0 * d + 0.6 * side));
+                    g.drawLine(p1, toScreen(p + 0.6 * side));
+                    g.drawText((p0 + p1) / 2 + (axis == 0 ? QPointF(-20, -6) : QPointF(4, 14)),
+                               axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"));
+                }
             }
         }
         if (st.nearestT) {
