@@ -50,6 +50,7 @@ VtkView::~VtkView() = default;
 void VtkView::rebuildScene() {
     renderer_->RemoveAllViewProps();
     raysActor_ = nullptr;
+    markersActor_ = nullptr;
     const Scene* s = session_.scene3D();
     if (!s) {
         dirty_ = true;
@@ -118,7 +119,8 @@ void VtkView::resetCamera() {
 
 void VtkView::rebuildRays() {
     if (raysActor_) renderer_->RemoveActor(raysActor_);
-    raysActor_ = nullptr;
+    if (markersActor_) renderer_->RemoveActor(markersActor_);
+    raysActor_ = markersActor_ = nullptr;
     const Scene* s = session_.scene3D();
     const EventLog& log = session_.log();
     if (!s || log.rays().empty()) {
@@ -162,6 +164,70 @@ void VtkView::rebuildRays() {
     raysActor_->SetMapper(mapper);
     raysActor_->GetProperty()->SetLineWidth(2.5);
     renderer_->AddActor(raysActor_);
+
+    // The current ray's structure: visited voxels (grid) or the node being entered (kd-tree),
+    // as wireframe boxes, and the hit points found so far.
+    vtkNew<vtkPoints> mp;
+    vtkNew<vtkCellArray> ml;
+    vtkNew<vtkUnsignedCharArray> mc;
+    mc->SetNumberOfComponents(3);
+    const auto box = [&](const Vec3& lo, const Vec3& hi, const unsigned char* colour) {
+        vtkIdType id[8];
+        for (int k = 0; k < 8; ++k)
+            id[k] =
+                mp->InsertNextPoint(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                         {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+        for (const auto& e : edges) {
+            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
+            ml->InsertNextCell(2, pair);
+            mc->InsertNextTypedTuple(colour);
+        }
+    };
+    static const unsigned char kVoxel[3] = {255, 200, 60}, kNode[3] = {120, 200, 255},
+                               kHitMark[3] = {40, 220, 90};
+    const Accelerator* accel = session_.accel3D();
+    if (const auto* grid = accel ? std::get_if<UniformGrid>(accel) : nullptr) {
+        const auto& spec = grid->spec();
+        const Vec3 size(spec.cellSize(0), spec.cellSize(1), spec.cellSize(2));
+        for (const auto& c : st.visitedCells) {
+            const Vec3 lo = spec.lo + Vec3(c[0], c[1], c[2]) * size;
+            box(lo, lo + size, kVoxel);
+        }
+    } else if (const auto* kd = accel ? std::get_if<KdTree3>(accel) : nullptr;
+               kd && st.node && st.node->node < kd->nodes().size()) {
+        // The entered node's box: walk down from the root to it (nodes are in depth-first order).
+        Vec3 lo = kd->bounds().lo, hi = kd->bounds().hi;
+        std::uint32_t id = 0;
+        while (id != st.node->node && !kd->nodes()[id].leaf()) {
+            const KdNode& n = kd->nodes()[id];
+            if (st.node->node < n.index) {
+                hi[n.axis] = n.split;
+                id = id + 1;
+            } else {
+                lo[n.axis] = n.split;
+                id = n.index;
+            }
+        }
+        box(lo, hi, kNode);
+    }
+    for (std::size_t r = 0; r < log.rays().size(); ++r) {
+        if (!begun[r] || !(ends[r] >= 0) || !std::isfinite(ends[r])) continue;
+        const RayRecord& ray = log.rays()[r];
+        const Vec3 p = ray.origin + ends[r] * ray.dir;
+        const double m = 0.01 * sceneSize;
+        box(p - Vec3(m), p + Vec3(m), kHitMark);
+    }
+    vtkNew<vtkPolyData> markers;
+    markers->SetPoints(mp);
+    markers->SetLines(ml);
+    markers->GetCellData()->SetScalars(mc);
+    vtkNew<vtkPolyDataMapper> markerMapper;
+    markerMapper->SetInputData(markers);
+    markersActor_ = vtkSmartPointer<vtkActor>::New();
+    markersActor_->SetMapper(markerMapper);
+    markersActor_->GetProperty()->SetLineWidth(1.5);
+    renderer_->AddActor(markersActor_);
     dirty_ = true;
     update();
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The 3D view: VTK renders off screen and the widget draws the pixels it reads back, with mouse
 // events forwarded to a VTK interactor (DESIGN.md: the way that works with Qt6 and Debian's VTK
-// under Xvfb). Shows the scene and the recorded rays up to the cursor, coloured by kind.
+// under Xvfb). Shows the scene, the recorded rays up to the cursor coloured by kind, the hits,
+// and the current ray's visited voxels (grid) or the kd-tree node it is in.
 #include "session.h"
 
 #include <vtkNew.h>
@@ -44,6 +45,7 @@ class VtkView : public QWidget {
     vtkNew<vtkRenderer> renderer_;
     vtkNew<vtkGenericRenderWindowInteractor> interactor_;
     vtkSmartPointer<vtkActor> raysActor_;
+    vtkSmartPointer<vtkActor> markersActor_;  // visited voxels or the current node; hit points
     bool dirty_ = true;
 };
 
