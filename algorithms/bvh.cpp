@@ -223,6 +223,7 @@ void Bvh<Prims>::build(Rec& rec) {
     stats_.references = primIds_.size();
     stats_.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    options_.progress = nullptr;  // it may refer to the caller's locals: only the build used it
 }
 
 template <typename Prims>

@@ -495,6 +495,7 @@ void KdTree<Prims>::build(Rec& rec) {
         bounds_.area() > 0 ? treeSahCost(nodes_, 0, bounds_, options_) : options_.cIsect * n;
     stats_.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    options_.progress = nullptr;  // it may refer to the caller's locals: only the build used it
 }
 
 template <typename Prims>

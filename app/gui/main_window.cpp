@@ -23,6 +23,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
@@ -36,7 +37,11 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <atomic>
+#include <chrono>
+#include <exception>
 #include <fstream>
+#include <thread>
 
 namespace raystep::gui {
 
@@ -270,13 +275,53 @@ void MainWindow::buildUi() {
 }
 
 bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet) {
-    try {
-        session_.load(nameOrPath.toStdString(), kind);
-    } catch (const std::exception& e) {
-        if (!quiet)
-            QMessageBox::warning(this, tr("Cannot open the scene"), QString::fromUtf8(e.what()));
+    // Load and build off the GUI thread: a big mesh's tree takes seconds. The dialog shows the
+    // build's progress and its Cancel stops it; the window keeps painting meanwhile.
+    std::atomic<bool> cancel{false}, done{false};
+    std::atomic<int> percent{0};
+    AccelOptions options;
+    options.kdtree.progress = options.bvh.progress = [&](double f) {
+        percent = static_cast<int>(f * 100);
+        return !cancel.load();
+    };
+    std::optional<Session::Prepared> prepared;
+    std::exception_ptr error;
+    std::thread worker([&] {
+        try {
+            prepared = Session::prepare(nameOrPath.toStdString(), kind, options);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        done = true;
+    });
+    {
+        QProgressDialog dialog(tr("Loading %1 and building its %2...")
+                                   .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
+                               tr("Cancel"), 0, 100, this);
+        dialog.setWindowModality(Qt::WindowModal);
+        dialog.setMinimumDuration(400);
+        while (!done) {
+            dialog.setValue(percent);
+            if (dialog.wasCanceled()) cancel = true;
+            QApplication::processEvents(QEventLoop::AllEvents, 20);
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    }
+    worker.join();
+    if (error) {
+        QString message;
+        try {
+            std::rethrow_exception(error);
+        } catch (const BuildCancelled&) {
+            statusBar()->showMessage(tr("Opening %1 cancelled").arg(nameOrPath));
+            return false;
+        } catch (const std::exception& e) {
+            message = QString::fromUtf8(e.what());
+        }
+        if (!quiet) QMessageBox::warning(this, tr("Cannot open the scene"), message);
         return false;
     }
+    session_.adopt(std::move(*prepared));
     if (session_.is2D()) {
         session_.traceExampleRay();
         lesson_->setMarkdown(

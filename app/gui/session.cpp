@@ -9,33 +9,48 @@
 
 namespace raystep::gui {
 
-void Session::load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options) {
-    auto scene = loadAnyScene(nameOrPath);  // throws before anything changes
+Session::Prepared Session::prepare(const std::string& nameOrPath, AccelKind kind,
+                                   const AccelOptions& options) {
+    Prepared p;
+    p.scene = std::make_unique<std::variant<Scene, Scene2D>>(loadAnyScene(nameOrPath));
+    p.name = nameOrPath;
+    p.kind = kind;
+    p.options = options;
+    if (const auto* s2 = std::get_if<Scene2D>(p.scene.get()))
+        p.accel2D = buildAccelerator2D(*s2, kind, options);
+    else
+        p.accel3D = buildAccelerator(std::get<Scene>(*p.scene), kind, {}, options);
+    // The progress callback belonged to this build only.
+    p.options.kdtree.progress = p.options.bvh.progress = nullptr;
+    return p;
+}
+
+void Session::adopt(Prepared p) {
     emit aboutToChangeScene();
-    scene_ = std::move(scene);
-    name_ = nameOrPath;
-    kind_ = kind;
-    options_ = options;
     accel2D_.reset();
     accel3D_.reset();
-    if (const auto* s2 = scene2D())
-        accel2D_ = buildAccelerator2D(*s2, kind, options);
-    else
-        accel3D_ = buildAccelerator(*scene3D(), kind, {}, options);
+    scene_ = std::move(p.scene);
+    accel2D_ = std::move(p.accel2D);
+    accel3D_ = std::move(p.accel3D);
+    name_ = std::move(p.name);
+    kind_ = p.kind;
+    options_ = std::move(p.options);
     setLog(std::make_unique<EventLog>());
     emit sceneChanged();
 }
 
+void Session::load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options) {
+    adopt(prepare(nameOrPath, kind, options));  // throws before anything changes
+}
+
 void Session::load(Scene2D scene, AccelKind kind, const AccelOptions& options) {
-    emit aboutToChangeScene();
-    name_ = scene.name;
-    scene_ = std::move(scene);
-    kind_ = kind;
-    options_ = options;
-    accel3D_.reset();
-    accel2D_ = buildAccelerator2D(std::get<Scene2D>(scene_), kind, options);
-    setLog(std::make_unique<EventLog>());
-    emit sceneChanged();
+    Prepared p;
+    p.name = scene.name;
+    p.scene = std::make_unique<std::variant<Scene, Scene2D>>(std::move(scene));
+    p.kind = kind;
+    p.options = options;
+    p.accel2D = buildAccelerator2D(std::get<Scene2D>(*p.scene), kind, options);
+    adopt(std::move(p));
 }
 
 void Session::traceExampleRay() {

@@ -19,7 +19,23 @@ namespace raystep::gui {
 class Session : public QObject {
     Q_OBJECT
   public:
-    /// Loads a built-in name or a file; throws SceneError (shown in a dialog by the window).
+    /// A scene loaded and its structure built, ready to be shown. The scene lives on the heap so
+    /// the structure's pointers to it survive the move into the session.
+    struct Prepared {
+        std::unique_ptr<std::variant<Scene, Scene2D>> scene;
+        std::optional<Accelerator> accel3D;
+        std::optional<Accelerator2D> accel2D;
+        std::string name;
+        AccelKind kind = AccelKind::Grid;
+        AccelOptions options;
+    };
+    /// Loads and builds; safe on any thread (the window runs it off the GUI thread with a
+    /// progress dialog). Throws SceneError, or BuildCancelled when the options' progress says stop.
+    static Prepared prepare(const std::string& nameOrPath, AccelKind kind,
+                            const AccelOptions& options = {});
+    /// Shows a prepared scene (GUI thread).
+    void adopt(Prepared prepared);
+    /// prepare + adopt, on this thread.
     void load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options = {});
     /// A 2D scene made in code (benchmarks, tests), with its structure.
     void load(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
@@ -31,9 +47,9 @@ class Session : public QObject {
     /// True while the log is a build (candidates, splits, leaves), not a ray.
     bool showingBuild() const { return showingBuild_; }
 
-    bool is2D() const { return std::holds_alternative<Scene2D>(scene_); }
-    const Scene* scene3D() const { return std::get_if<Scene>(&scene_); }
-    const Scene2D* scene2D() const { return std::get_if<Scene2D>(&scene_); }
+    bool is2D() const { return std::holds_alternative<Scene2D>(*scene_); }
+    const Scene* scene3D() const { return std::get_if<Scene>(scene_.get()); }
+    const Scene2D* scene2D() const { return std::get_if<Scene2D>(scene_.get()); }
     const Accelerator2D* accel2D() const { return accel2D_ ? &*accel2D_ : nullptr; }
     const Accelerator* accel3D() const { return accel3D_ ? &*accel3D_ : nullptr; }
     AccelKind kind() const { return kind_; }
@@ -61,7 +77,8 @@ class Session : public QObject {
   private:
     void setLog(std::unique_ptr<EventLog> log);
 
-    std::variant<Scene, Scene2D> scene_;
+    std::unique_ptr<std::variant<Scene, Scene2D>> scene_ =
+        std::make_unique<std::variant<Scene, Scene2D>>();
     std::string name_;
     AccelKind kind_ = AccelKind::Grid;
     AccelOptions options_;

@@ -97,6 +97,8 @@ IT = {
         "## %1\n\n%2\n\nClicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è "
         "registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.",
     "Rendering %1...": "Rendering di %1...",
+    "Loading %1 and building its %2...": "Caricamento di %1 e costruzione del suo %2...",
+    "Opening %1 cancelled": "Apertura di %1 annullata",
     "raystep - %1": "raystep - %1",
     "Compare": "Confronto",
     "Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the "

@@ -99,122 +99,123 @@
 <context>
     <name>raystep::gui::MainWindow</name>
     <message>
-        <location filename="../main_window.cpp" line="69" />
+        <location filename="../main_window.cpp" line="74" />
         <source>DDA step</source>
         <translation>passo del DDA</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="70" />
+        <location filename="../main_window.cpp" line="75" />
         <source>primitive test</source>
         <translation>test di una primitiva</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="71" />
+        <location filename="../main_window.cpp" line="77" />
         <source>mailbox skip</source>
         <translation>saltata dalla mailbox</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="72" />
+        <location filename="../main_window.cpp" line="78" />
         <source>node enter</source>
         <translation>ingresso in un nodo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="73" />
+        <location filename="../main_window.cpp" line="79" />
         <source>ray begin</source>
         <translation>inizio di un raggio</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="74" />
+        <location filename="../main_window.cpp" line="80" />
         <source>hit</source>
         <translation>intersezione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="75" />
+        <location filename="../main_window.cpp" line="81" />
         <source>split chosen</source>
         <translation>split scelto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="90" />
+        <location filename="../main_window.cpp" line="96" />
         <source>raystep</source>
         <translation>raystep</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="116" />
+        <location filename="../main_window.cpp" line="122" />
         <source>First event (Home)</source>
         <translation>Primo evento (Home)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="117" />
+        <location filename="../main_window.cpp" line="123" />
         <source>Step back (Left)</source>
         <translation>Passo indietro (Sinistra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="118" />
+        <location filename="../main_window.cpp" line="124" />
         <source>Play / pause (Space)</source>
         <translation>Avvia / pausa (Spazio)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="119" />
+        <location filename="../main_window.cpp" line="125" />
         <source>Step forward (Right)</source>
         <translation>Passo avanti (Destra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="123" />
+        <location filename="../main_window.cpp" line="129" />
         <source>next</source>
         <translation>successivo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="123" />
+        <location filename="../main_window.cpp" line="129" />
         <source>Jump to the next event of this kind (N)</source>
         <translation>Salta al prossimo evento di questo tipo (N)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="125" />
+        <location filename="../main_window.cpp" line="131" />
         <source>speed</source>
         <translation>velocità</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="129" />
+        <location filename="../main_window.cpp" line="135" />
         <source> /s</source>
         <translation> /s</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="155" />
+        <location filename="../main_window.cpp" line="161" />
         <source>Inspector</source>
         <translation>Ispettore</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="163" />
+        <location filename="../main_window.cpp" line="169" />
         <source>Filter events (e.g. cell, test, mailbox)</source>
         <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="178" />
+        <location filename="../main_window.cpp" line="184" />
         <source>Events</source>
         <translation>Eventi</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="187" />
+        <location filename="../main_window.cpp" line="193" />
+        <location filename="../main_window.cpp" line="300" />
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="197" />
+        <location filename="../main_window.cpp" line="203" />
         <source>Render cancelled</source>
         <translation>Rendering annullato</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="198" />
+        <location filename="../main_window.cpp" line="204" />
         <source>Rendered in %1 ms; click a pixel to trace it</source>
         <translation>Rendering in %1 ms; clicca un pixel per tracciarlo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="204" />
+        <location filename="../main_window.cpp" line="210" />
         <source>Pixel (%1, %2): %3 events recorded</source>
         <translation>Pixel (%1, %2): %3 eventi registrati</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="221" />
+        <location filename="../main_window.cpp" line="227" />
         <source>## Building the %1
 
 Each node is split by a plane. Step through the **candidate** planes (dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the next choice with the *split chosen* kind and **N**.</source>
@@ -223,127 +224,137 @@ Each node is split by a plane. Step through the **candidate** planes (dashed): t
 Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="233" />
+        <location filename="../main_window.cpp" line="239" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="234" />
+        <location filename="../main_window.cpp" line="240" />
         <source>&amp;Open scene...</source>
         <translation>&amp;Apri scena...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="235" />
+        <location filename="../main_window.cpp" line="241" />
         <source>Export &amp;trace...</source>
         <translation>Esporta &amp;traccia...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="236" />
+        <location filename="../main_window.cpp" line="242" />
         <source>Export screenshot of the &amp;window...</source>
         <translation>Esporta screenshot della &amp;finestra...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="237" />
+        <location filename="../main_window.cpp" line="243" />
         <source>window</source>
         <translation>finestra</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="238" />
+        <location filename="../main_window.cpp" line="244" />
         <source>Export screenshot of the &amp;2D view...</source>
         <translation>Esporta screenshot della vista &amp;2D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="239" />
+        <location filename="../main_window.cpp" line="245" />
         <source>2D view</source>
         <translation>vista 2D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="240" />
+        <location filename="../main_window.cpp" line="246" />
         <source>Export screenshot of the &amp;3D view...</source>
         <translation>Esporta screenshot della vista &amp;3D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="241" />
+        <location filename="../main_window.cpp" line="247" />
         <source>3D view</source>
         <translation>vista 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="243" />
+        <location filename="../main_window.cpp" line="249" />
         <source>&amp;Quit</source>
         <translation>&amp;Esci</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="244" />
+        <location filename="../main_window.cpp" line="250" />
         <source>&amp;Replay</source>
         <translation>&amp;Riproduzione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="245" />
+        <location filename="../main_window.cpp" line="251" />
         <source>Step &amp;forward</source>
         <translation>Passo &amp;avanti</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="247" />
+        <location filename="../main_window.cpp" line="253" />
         <source>Step &amp;back</source>
         <translation>Passo &amp;indietro</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="248" />
+        <location filename="../main_window.cpp" line="254" />
         <source>&amp;Play / pause</source>
         <translation>A&amp;vvia / pausa</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="250" />
+        <location filename="../main_window.cpp" line="256" />
         <source>&amp;Next event of the kind</source>
         <translation>&amp;Prossimo evento del tipo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="253" />
+        <location filename="../main_window.cpp" line="259" />
         <source>Replay the &amp;build (candidates, splits, leaves)</source>
         <translation>Riproduci la &amp;costruzione (candidati, split, foglie)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="255" />
+        <location filename="../main_window.cpp" line="261" />
         <source>Replay the &amp;example ray</source>
         <translation>Riproduci il raggio d'&amp;esempio</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="258" />
+        <location filename="../main_window.cpp" line="264" />
         <source>&amp;First event</source>
         <translation>P&amp;rimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="260" />
+        <location filename="../main_window.cpp" line="266" />
         <source>&amp;Last event</source>
         <translation>&amp;Ultimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="262" />
+        <location filename="../main_window.cpp" line="268" />
         <source>&amp;View</source>
         <translation>&amp;Vista</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="263" />
+        <location filename="../main_window.cpp" line="269" />
         <source>&amp;Compare midpoint, median and SAH...</source>
         <translation>&amp;Confronta midpoint, mediana e SAH...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="265" />
+        <location filename="../main_window.cpp" line="271" />
         <source>&amp;Heat map of primitive tests</source>
         <translation>&amp;Mappa di calore dei test di primitive</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="268" />
+        <location filename="../main_window.cpp" line="274" />
         <source>&amp;Reset 3D camera</source>
         <translation>&amp;Reimposta la camera 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="276" />
+        <location filename="../main_window.cpp" line="298" />
+        <source>Loading %1 and building its %2...</source>
+        <translation>Caricamento di %1 e costruzione del suo %2...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="316" />
+        <source>Opening %1 cancelled</source>
+        <translation>Apertura di %1 annullata</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="321" />
         <source>Cannot open the scene</source>
         <translation>Impossibile aprire la scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="282" />
+        <location filename="../main_window.cpp" line="328" />
         <source>## %1
 
 %2
@@ -356,7 +367,7 @@ The ray is the slides' example. Step with **Right** and **Left**, play with **Sp
 Il raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="289" />
+        <location filename="../main_window.cpp" line="335" />
         <source>## %1
 
 %2
@@ -369,68 +380,68 @@ Click a pixel of the image to trace it: its ray tree is recorded and replayed in
 Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="296" />
+        <location filename="../main_window.cpp" line="342" />
         <source>Rendering %1...</source>
         <translation>Rendering di %1...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="304" />
+        <location filename="../main_window.cpp" line="350" />
         <source>raystep - %1</source>
         <translation>raystep - %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="311" />
+        <location filename="../main_window.cpp" line="357" />
         <source>Compare</source>
         <translation>Confronto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="312" />
+        <location filename="../main_window.cpp" line="358" />
         <source>Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the same table.</source>
         <translation>Il confronto mostra le scene 2D della lezione; per una scena 3D, raystep-cli compare stampa la stessa tabella.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="359" />
+        <location filename="../main_window.cpp" line="405" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="373" />
+        <location filename="../main_window.cpp" line="419" />
         <source>Open scene</source>
         <translation>Apri scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="373" />
+        <location filename="../main_window.cpp" line="419" />
         <source>Scenes (*.json)</source>
         <translation>Scene (*.json)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="378" />
+        <location filename="../main_window.cpp" line="424" />
         <source>Screenshot of the %1</source>
         <translation>Screenshot della %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="379" />
+        <location filename="../main_window.cpp" line="425" />
         <source>PNG images (*.png)</source>
         <translation>Immagini PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="382" />
-        <location filename="../main_window.cpp" line="396" />
+        <location filename="../main_window.cpp" line="428" />
+        <location filename="../main_window.cpp" line="442" />
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="382" />
+        <location filename="../main_window.cpp" line="428" />
         <source>Could not write %1</source>
         <translation>Impossibile scrivere %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="386" />
+        <location filename="../main_window.cpp" line="432" />
         <source>Export trace</source>
         <translation>Esporta traccia</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="387" />
+        <location filename="../main_window.cpp" line="433" />
         <source>Trace files (*.json)</source>
         <translation>File di traccia (*.json)</translation>
     </message>
@@ -443,7 +454,7 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <translation>La vista 2D mostra le scene 2D della lezione.</translation>
     </message>
     <message>
-        <location filename="../view2d.cpp" line="292" />
+        <location filename="../view2d.cpp" line="305" />
         <source>SAH cost of each candidate (X blue, Y purple; dashed: leaf)</source>
         <translation>Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)</translation>
     </message>
@@ -451,12 +462,12 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
 <context>
     <name>raystep::gui::VtkView</name>
     <message>
-        <location filename="../vtk_view.cpp" line="180" />
+        <location filename="../vtk_view.cpp" line="246" />
         <source>The 3D view shows 3D scenes.</source>
         <translation>La vista 3D mostra le scene 3D.</translation>
     </message>
     <message>
-        <location filename="../vtk_view.cpp" line="194" />
+        <location filename="../vtk_view.cpp" line="260" />
         <source>Rasterization (VTK, OpenGL): the scene and the recorded rays</source>
         <translation>Rasterizzazione (VTK, OpenGL): la scena e i raggi registrati</translation>
     </message>
