@@ -8,7 +8,6 @@ namespace {
 /// A new ray starts: forget the previous ray's traversal.
 void startRay(ReplayState& s, std::uint32_t ray) {
     s.ray = ray;
-    ++s.raysStarted;
     s.ddaSetup.reset();
     s.ddaCell.reset();
     s.visitedCells.clear();

@@ -18,7 +18,6 @@ struct ReplayState {
 
     // The ray being traced: the last ray an event named.
     std::uint32_t ray = kNoId;
-    std::size_t raysStarted = 0;
     // Its DDA (grid): set-up, the current cell with tMax, and the cells visited so far.
     std::optional<DdaSetup> ddaSetup;
     std::optional<DdaCell> ddaCell;
