@@ -21,7 +21,7 @@ class FloatScenePrims {
             triangles_.push_back({glm::vec3(t.a), glm::vec3(t.b), glm::vec3(t.c)});
     }
     std::uint32_t count() const { return scene_->primitiveCount(); }
-    BoxN<3> bounds(std::uint32_t p) const { return toBox(scene_->primitiveBounds(p)); }
+    BoxN<3> bounds(std::uint32_t p) const { return scene_->primitiveBounds(p); }
     BoxN<3> clippedBounds(std::uint32_t p, const BoxN<3>& box) const {
         return ScenePrims(*scene_, kernels_).clippedBounds(p, box);
     }

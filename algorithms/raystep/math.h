@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -33,20 +34,59 @@ inline Vec3 reflect(const Vec3& d, const Vec3& n) {
     return d - 2.0 * glm::dot(d, n) * n;
 }
 
-/// Axis-aligned bounding box in 3D.
-struct Bounds3 {
-    Vec3 lo{kInfinity};
-    Vec3 hi{-kInfinity};
-    void extend(const Vec3& p) {
+/// Axis-aligned box in N dimensions.
+template <int N>
+struct BoxN {
+    using V = glm::vec<N, double, glm::defaultp>;
+    V lo{kInfinity};
+    V hi{-kInfinity};
+
+    void extend(const V& p) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    void extend(const Bounds3& b) {
+    void extend(const BoxN& b) {
         lo = glm::min(lo, b.lo);
         hi = glm::max(hi, b.hi);
     }
-    bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
-    Vec3 diagonal() const { return hi - lo; }
+    bool empty() const {
+        for (int i = 0; i < N; ++i)
+            if (lo[i] > hi[i]) return true;
+        return false;
+    }
+    V diagonal() const { return hi - lo; }
+    V centroid() const { return 0.5 * (lo + hi); }
+    /// The SAH's "area": the surface area in 3D; in 2D the perimeter (a random line meets a
+    /// convex region with probability proportional to its perimeter, as a random ray meets a
+    /// convex body in proportion to its surface).
+    double area() const {
+        const V d = glm::max(diagonal(), V(0.0));
+        if constexpr (N == 3)
+            return 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
+        else
+            return 2.0 * (d.x + d.y);
+    }
+    int longestAxis() const {
+        const V d = diagonal();
+        int axis = 0;
+        for (int i = 1; i < N; ++i)
+            if (d[i] > d[axis]) axis = i;
+        return axis;
+    }
+    BoxN clippedTo(const BoxN& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
+    /// Padded to three coordinates, for the event log's node table.
+    std::array<double, 3> lo3() const { return pad(lo); }
+    std::array<double, 3> hi3() const { return pad(hi); }
+
+  private:
+    static std::array<double, 3> pad(const V& v) {
+        std::array<double, 3> a{0.0, 0.0, 0.0};
+        for (int i = 0; i < N; ++i) a[i] = v[i];
+        return a;
+    }
 };
+
+/// The 3D box of the scene model (primitive and scene bounds).
+using Bounds3 = BoxN<3>;
 
 }  // namespace raystep

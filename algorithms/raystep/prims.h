@@ -12,62 +12,6 @@
 
 namespace raystep {
 
-/// Axis-aligned box in N dimensions.
-template <int N>
-struct BoxN {
-    using V = VecN<N, double>;
-    V lo{kInfinity};
-    V hi{-kInfinity};
-
-    void extend(const V& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    void extend(const BoxN& b) {
-        lo = glm::min(lo, b.lo);
-        hi = glm::max(hi, b.hi);
-    }
-    bool empty() const {
-        for (int i = 0; i < N; ++i)
-            if (lo[i] > hi[i]) return true;
-        return false;
-    }
-    V diagonal() const { return hi - lo; }
-    V centroid() const { return 0.5 * (lo + hi); }
-    /// The SAH's "area": the surface area in 3D; in 2D the perimeter (a random line meets a
-    /// convex region with probability proportional to its perimeter, as a random ray meets a
-    /// convex body in proportion to its surface).
-    double area() const {
-        const V d = glm::max(diagonal(), V(0.0));
-        if constexpr (N == 3)
-            return 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
-        else
-            return 2.0 * (d.x + d.y);
-    }
-    int longestAxis() const {
-        const V d = diagonal();
-        int axis = 0;
-        for (int i = 1; i < N; ++i)
-            if (d[i] > d[axis]) axis = i;
-        return axis;
-    }
-    BoxN clippedTo(const BoxN& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
-    /// Padded to three coordinates, for the event log's node table.
-    std::array<double, 3> lo3() const { return pad(lo); }
-    std::array<double, 3> hi3() const { return pad(hi); }
-
-  private:
-    static std::array<double, 3> pad(const V& v) {
-        std::array<double, 3> a{0.0, 0.0, 0.0};
-        for (int i = 0; i < N; ++i) a[i] = v[i];
-        return a;
-    }
-};
-
-inline BoxN<3> toBox(const Bounds3& b) {
-    return {b.lo, b.hi};
-}
-
 /// The slab test in N dimensions with the far side widened by 1 + 2 gamma(3) (Ize 2013), so
 /// rounding never makes a ray miss a box it touches. [tNear, tFar] within [tMin, tMax], or none.
 template <int N>
@@ -131,7 +75,7 @@ class ScenePrims {
 
     ScenePrims(const Scene& scene, KernelOptions kernels) : scene_(&scene), kernels_(kernels) {}
     std::uint32_t count() const { return scene_->primitiveCount(); }
-    BoxN<3> bounds(std::uint32_t p) const { return toBox(scene_->primitiveBounds(p)); }
+    BoxN<3> bounds(std::uint32_t p) const { return scene_->primitiveBounds(p); }
     /// Bounds of the part of `p` inside `box` (exact for triangles, the box's share of a
     /// sphere's bounds otherwise); empty if `p` misses the box.
     BoxN<3> clippedBounds(std::uint32_t p, const BoxN<3>& box) const {
