@@ -94,4 +94,19 @@ BuildSummary summarize(const Accelerator2D& accel) {
     return summarizeT<Scene2DPrims>(accel);
 }
 
+std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, EventLog& log,
+                               TraversalCounters* counters) {
+    TraversalCounters local;
+    TraversalCounters& c = counters ? *counters : local;
+    const std::uint32_t id =
+        log.beginRay(Ray{Vec3(ray.origin, 0.0), Vec3(ray.dir, 0.0), ray.tMin, ray.tMax},
+                     RayKind::Primary, 0, kNoId);
+    const auto hit = std::visit([&](const auto& a) { return a.intersect(ray, c, log, id); }, accel);
+    if (hit)
+        log(RayHit{id, hit->prim, hit->t, 0.0, 0.0});
+    else
+        log(RayMiss{id});
+    return hit;
+}
+
 }  // namespace raystep

@@ -171,6 +171,18 @@ Color Tracer::pixel(int x, int y, const RenderOptions& options, RayCounters& cou
     return sum / static_cast<double>(options.spp);
 }
 
+Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int y, int width,
+                       int height, EventLog& log) {
+    RenderOptions opt;
+    opt.width = width;
+    opt.height = height;
+    opt.trace.bounces = scene.settings.bounces;
+    opt.trace.diffuseSamples = scene.settings.diffuseSamples;
+    const Tracer tracer(scene, accel, opt.trace);
+    RayCounters counters;
+    return tracer.renderPixel(x, y, opt, counters, log);
+}
+
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const ProgressFn& progress) {
     const auto start = std::chrono::steady_clock::now();

@@ -138,4 +138,8 @@ struct BuildSummary {
 BuildSummary summarize(const Accelerator& accel);
 BuildSummary summarize(const Accelerator2D& accel);
 
+/// Records one 2D ray through the structure: its RayBegin, the traversal, then RayHit or RayMiss.
+std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, EventLog& log,
+                               TraversalCounters* counters = nullptr);
+
 }  // namespace raystep

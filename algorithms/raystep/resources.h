@@ -1,5 +1,5 @@
 #pragma once
-// Files embedded in the binaries at build time (the built-in scenes and their meshes),
+// Files embedded in the binaries at build time (the built-in scenes, their meshes, the lessons),
 // so the tools work from any folder without the source tree.
 #include <optional>
 #include <string>
@@ -8,7 +8,8 @@
 
 namespace raystep {
 
-/// Contents of the embedded file `name` (a file name under scenes/, e.g. "whitted.json").
+/// Contents of the embedded file `name`: a scene by file name ("whitted.json"), a lesson as
+/// "lessons/06-grid-2d-dda.json".
 std::optional<std::string_view> embeddedFile(std::string_view name);
 
 /// Names of all embedded files, sorted.

@@ -1,5 +1,6 @@
 #pragma once
 // Scene files (JSON with comments, docs/scene-format.md) and the built-in scenes.
+#include "raystep/file_error.h"
 #include "raystep/scene.h"
 #include "raystep/scene2d.h"
 
@@ -14,17 +15,9 @@
 namespace raystep {
 
 /// A scene that cannot be loaded: which file, which line, which key, and why.
-class SceneError : public std::runtime_error {
+class SceneError : public FileError {
   public:
-    SceneError(std::string file, int line, std::string key, const std::string& message);
-    const std::string& file() const { return file_; }
-    int line() const { return line_; }  // 0 when the error is about the file as a whole
-    const std::string& key() const { return key_; }
-
-  private:
-    std::string file_;
-    int line_;
-    std::string key_;
+    using FileError::FileError;
 };
 
 /// Returns the text of a file a scene refers to (an OBJ mesh), or nullopt when it does not exist.

@@ -3,6 +3,7 @@
 #include "common.h"
 #include "dda_command.h"
 #include "intersect_command.h"
+#include "lesson_command.h"
 #include "progress.h"
 #include "tree_commands.h"
 
@@ -202,12 +203,12 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    const std::array<std::string, 7> commands = {"scenes", "render", "intersect", "dda",
-                                                 "build",  "trace",  "compare"};
+    const std::array<std::string, 8> commands = {"scenes", "render", "intersect", "dda",
+                                                 "build",  "trace",  "compare",   "lesson"};
     if (!first.empty() && first[0] != '-' &&
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
-                    "' (expected: scenes, render, intersect, dda, build, trace, compare)");
+                    "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson)");
     cli::IntersectArgs intersectArgs;
     cli::addIntersectCommand(app, intersectArgs);
     cli::DdaArgs ddaArgs;
@@ -218,6 +219,8 @@ int main(int argc, char** argv) {
     cli::addTraceCommand(app, traceArgs);
     cli::CompareArgs compareArgs;
     cli::addCompareCommand(app, compareArgs);
+    cli::LessonArgs lessonArgs;
+    cli::addLessonCommand(app, lessonArgs);
 
     try {
         app.parse(argc, argv);
@@ -235,5 +238,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("build")) return cli::runBuild(buildArgs);
     if (app.got_subcommand("trace")) return cli::runTrace(traceArgs);
     if (app.got_subcommand("compare")) return cli::runCompare(compareArgs);
+    if (app.got_subcommand("lesson")) return cli::runLesson(app.get_subcommand("lesson"), lessonArgs);
     return runRender(r);
 }

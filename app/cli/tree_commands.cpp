@@ -175,15 +175,7 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
     const Accelerator2D accel = buildAccelerator2D(scene, choice.kind, choice.options);
     EventLog log(a.maxEvents);
     TraversalCounters counters;
-    const std::uint32_t id =
-        log.beginRay(Ray{Vec3(ray.origin, 0.0), Vec3(ray.dir, 0.0), ray.tMin, ray.tMax},
-                     RayKind::Primary, 0, kNoId);
-    const auto hit =
-        std::visit([&](const auto& s) { return s.intersect(ray, counters, log, id); }, accel);
-    if (hit)
-        log(RayHit{id, hit->prim, hit->t, 0.0, 0.0});
-    else
-        log(RayMiss{id});
+    const auto hit = traceRay2D(accel, ray, log, &counters);
     TraceInfo info;
     info.what = "ray";
     info.scene = scene.name;

@@ -57,16 +57,7 @@ void Session::traceExampleRay() {
     const Scene2D* s = scene2D();
     if (!s || !s->exampleRay) return;
     auto log = std::make_unique<EventLog>();
-    const Ray2 r = *s->exampleRay;
-    const std::uint32_t id =
-        log->beginRay(Ray{Vec3(r.origin, 0.0), Vec3(r.dir, 0.0)}, RayKind::Primary, 0, kNoId);
-    TraversalCounters c;
-    const auto hit =
-        std::visit([&](const auto& a) { return a.intersect(r, c, *log, id); }, *accel2D_);
-    if (hit)
-        (*log)(RayHit{id, hit->prim, hit->t, 0.0, 0.0});
-    else
-        (*log)(RayMiss{id});
+    traceRay2D(*accel2D_, *s->exampleRay, *log);
     setLog(std::move(log));
 }
 
@@ -88,14 +79,8 @@ BuildSummary Session::summary() const {
 void Session::tracePixel(int x, int y, int width, int height) {
     const Scene* s = scene3D();
     if (!s) return;
-    RenderOptions opt;
-    opt.width = width;
-    opt.height = height;
-    opt.trace.bounces = s->settings.bounces;
-    const Tracer tracer(*s, *accel3D_, opt.trace);
     auto log = std::make_unique<EventLog>();
-    RayCounters c;
-    tracer.renderPixel(x, y, opt, c, *log);
+    tracePixelEvents(*s, *accel3D_, x, y, width, height, *log);
     setLog(std::move(log));
 }
 

@@ -1,0 +1,131 @@
+#include "lesson_command.h"
+
+#include "common.h"
+
+#include "raystep/lesson.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace raystep::cli {
+
+void addLessonCommand(CLI::App& app, LessonArgs& a) {
+    CLI::App* lesson = app.add_subcommand(
+        "lesson", "The lessons: list them, show one, validate a lesson file, grade answers");
+    lesson->require_subcommand(1);
+    a.list = lesson->add_subcommand("list", "The built-in lessons in the lecture's order");
+    a.show = lesson->add_subcommand("show", "A lesson's text, steps and exercises");
+    a.show->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
+    a.validate = lesson->add_subcommand(
+        "validate", "Load a lesson file, record its trace, check every step and exercise");
+    a.validate->add_option("FILE", a.lesson, "Lesson file, id or number")->required();
+    a.key = lesson->add_subcommand(
+        "key", "The answer key read from the trace, as an answers file (for lecturers)");
+    a.key->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
+    a.check = lesson->add_subcommand("check", "Grade an answers file: score and feedback");
+    a.check->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
+    a.check->add_option("--answers", a.answers, "Answers: {\"lesson\": ID, \"answers\": {...}}")
+        ->required();
+    a.check->add_flag("--json", a.json, "Print the grade as JSON");
+    for (CLI::App* c : {a.show, a.check})
+        c->add_option("--lang", a.lang, "Language of the texts: en or it")->capture_default_str();
+}
+
+namespace {
+
+int list() {
+    for (const Lesson& l : builtinLessons())
+        std::printf("%2d  %-22s %-13s %2zu steps %2zu exercises  %s\n", l.number, l.id.c_str(),
+                    l.scene.c_str(), l.steps.size(), l.exercises.size(), l.title.en.c_str());
+    return 0;
+}
+
+int show(const Lesson& l, Language lang) {
+    std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
+    for (std::size_t i = 0; i < l.steps.size(); ++i)
+        std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
+                    describePosition(l.steps[i].at).c_str(), l.steps[i].text.in(lang).c_str());
+    for (const Exercise& ex : l.exercises)
+        std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",
+                    ex.id.c_str(), std::string(exerciseKindName(ex.kind)).c_str(),
+                    ex.prompt.in(lang).c_str());
+    return 0;
+}
+
+int key(const Lesson& l) {
+    const LessonRun run = runLesson(l);
+    nlohmann::ordered_json answers = nlohmann::ordered_json::object();
+    for (const Exercise& ex : l.exercises)
+        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file));
+    const nlohmann::ordered_json out = {{"lesson", l.id}, {"answers", answers}};
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+}
+
+int check(const Lesson& l, const std::string& answersPath, Language lang, bool json) {
+    std::ifstream in(answersPath, std::ios::binary);
+    if (!in) return fail(answersPath + ": cannot open the answers file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const AnswerSheet sheet = loadAnswerSheet(text.str(), answersPath);
+    const LessonRun run = runLesson(l);
+    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath);
+    if (json) {
+        nlohmann::ordered_json items = nlohmann::ordered_json::array();
+        for (const auto& i : g.items)
+            items.push_back({{"exercise", i.exercise},
+                             {"answered", i.answered},
+                             {"correct", i.correct},
+                             {"given", i.given},
+                             {"expected", i.expected},
+                             {"feedback", i.feedback}});
+        const nlohmann::ordered_json out = {{"lesson", l.id},
+                                            {"score", g.score},
+                                            {"out_of", g.items.size()},
+                                            {"exercises", items}};
+        std::printf("%s\n", out.dump(2).c_str());
+        return 0;
+    }
+    const bool it = lang == Language::It;
+    std::printf("%s %d. %s: %d / %zu\n", it ? "Lezione" : "Lesson", l.number,
+                l.title.in(lang).c_str(), g.score, g.items.size());
+    for (const auto& i : g.items) {
+        const char* mark = !i.answered ? (it ? "senza risposta" : "not answered")
+                           : i.correct ? (it ? "giusto" : "right")
+                                       : (it ? "sbagliato" : "wrong");
+        std::printf("  %-16s %-14s", i.exercise.c_str(), mark);
+        if (i.answered) std::printf(" %s: %s", it ? "data" : "given", i.given.c_str());
+        std::printf("\n      %s\n", i.feedback.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
+    const auto lang = parseLanguage(a.lang);
+    if (!lang) return fail("--lang " + a.lang + ": expected en or it");
+    try {
+        if (a.list->parsed()) return list();
+        const Lesson l = loadLesson(a.lesson);
+        if (a.show->parsed()) return show(l, *lang);
+        if (a.validate->parsed()) {
+            validateLesson(l);
+            std::printf("%s: lesson %d '%s' is valid: %zu steps, %zu exercises, each with a "
+                        "reference answer in its trace\n",
+                        a.lesson.c_str(), l.number, l.id.c_str(), l.steps.size(),
+                        l.exercises.size());
+            return 0;
+        }
+        if (a.key->parsed()) return key(l);
+        return check(l, a.answers, *lang, a.json);
+    } catch (const FileError& e) {
+        return fail(e.what());
+    }
+}
+
+}  // namespace raystep::cli

@@ -1,0 +1,25 @@
+#pragma once
+// raystep-cli lesson list | show | validate | key | check: the lessons from the command line,
+// and grading a course's answers against the recorded trace.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace raystep::cli {
+
+struct LessonArgs {
+    CLI::App* list = nullptr;
+    CLI::App* show = nullptr;
+    CLI::App* validate = nullptr;
+    CLI::App* key = nullptr;
+    CLI::App* check = nullptr;
+    std::string lesson;   // id, number or file
+    std::string answers;  // check: the answers file
+    std::string lang = "en";
+    bool json = false;
+};
+
+void addLessonCommand(CLI::App& app, LessonArgs& args);
+int runLesson(CLI::App* lessonCommand, const LessonArgs& args);
+
+}  // namespace raystep::cli
