@@ -444,3 +444,52 @@ TEST_F(Cli, DdaBadInput) {
 }
 
 }  // namespace
+
+namespace {
+TEST_F(Cli, LessonListShowsTheLecturesThirteen) {
+    const CliRun r = run("lesson list");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 13) << r.out;
+    EXPECT_NE(r.out.find(" 6  grid-2d-dda"), std::string::npos) << r.out;
+    const CliRun it = run("lesson show mailboxing --lang it");
+    ASSERT_EQ(it.code, 0) << it.err;
+    EXPECT_NE(it.out.find("ogni raggio ha un ID"), std::string::npos) << it.out;
+}
+
+// The key read from the trace, graded, scores full marks; a course's sheet with two wrong answers
+// scores one, and the JSON says which and why.
+TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
+    const CliRun key = run("lesson key grid-2d-dda");
+    ASSERT_EQ(key.code, 0) << key.err;
+    write("key.json", key.out);
+    const CliRun full = run("lesson check 6 --answers key.json");
+    ASSERT_EQ(full.code, 0) << full.err;
+    EXPECT_NE(full.out.find(": 3 / 3"), std::string::npos) << full.out;
+    std::ofstream(dir / "sheet.json")
+        << R"({"lesson": "grid-2d-dda", "student": "ada",
+               "answers": {"tdelta-y": "1,3333", "tmax-x-after-step": 2.6, "next-cell": [3, 1]}})";
+    const CliRun graded = run("lesson check grid-2d-dda --answers sheet.json --json");
+    ASSERT_EQ(graded.code, 0) << graded.err;
+    const auto j = nlohmann::json::parse(graded.out);
+    EXPECT_EQ(j["score"], 1);
+    EXPECT_EQ(j["out_of"], 3);
+    EXPECT_EQ(j["exercises"][0]["correct"], true);
+    EXPECT_EQ(j["exercises"][1]["correct"], false);
+    EXPECT_EQ(j["exercises"][1]["expected"], "1.6");
+    EXPECT_EQ(j["exercises"][2]["expected"], "2,2");
+    EXPECT_NE(j["exercises"][2]["feedback"].get<std::string>().find("steps in Y"),
+              std::string::npos);
+}
+
+TEST_F(Cli, LessonBadInput) {
+    std::ofstream(dir / "bad.json") << "{\"lesson\": \"6\",\n \"answers\": {\"next-cel\": [2, 2]}}";
+    expectBadInputKeepFiles("lesson check 6 --answers bad.json",
+                            "bad.json:2: key 'answers.next-cel': lesson grid-2d-dda has no exercise");
+    std::ofstream(dir / "lesson.json") << "{\"format\": \"raystep-lesson\", \"version\": 1,\n"
+                                          "\"id\": \"x y\"}";
+    expectBadInputKeepFiles("lesson validate lesson.json", "lesson.json:1: ");
+    expectBadInputKeepFiles("lesson show 99", "no built-in lesson of that id or number");
+    expectBadInputKeepFiles("lesson check 6 --answers missing.json", "missing.json");
+    expectBadInputKeepFiles("lesson show 6 --lang fr", "--lang fr: expected en or it");
+}
+}  // namespace

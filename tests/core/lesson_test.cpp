@@ -1,0 +1,314 @@
+// Lessons: every built-in lesson loads, records its trace and replays each step; every exercise's
+// reference answer passes its own check and a wrong one fails; the references of the slides'
+// examples equal a hand computation; bad lesson, answers and progress files name line and key.
+#include "raystep/lesson.h"
+#include "raystep/replay.h"
+#include "raystep/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace raystep {
+namespace {
+
+TEST(Lessons, ThirteenInTheLecturesOrderEachInBothLanguages) {
+    const std::vector<Lesson> lessons = builtinLessons();
+    ASSERT_EQ(lessons.size(), 13u);
+    for (int i = 0; i < 13; ++i) {
+        const Lesson& l = lessons[i];
+        SCOPED_TRACE(l.file);
+        EXPECT_EQ(l.number, i + 1);
+        EXPECT_FALSE(l.title.it.empty());
+        EXPECT_FALSE(l.text.it.empty());
+        EXPECT_FALSE(l.exercises.empty()) << "every lesson has exercises";
+        for (const LessonStep& s : l.steps) EXPECT_FALSE(s.text.it.empty());
+        for (const Exercise& e : l.exercises) EXPECT_FALSE(e.prompt.it.empty()) << e.id;
+        // By id, by number, the same lesson.
+        EXPECT_EQ(loadLesson(l.id).number, l.number);
+        EXPECT_EQ(loadLesson(std::to_string(l.number)).id, l.id);
+    }
+}
+
+TEST(Lessons, EveryStepReplaysAndEveryExerciseChecksItsOwnReference) {
+    for (const Lesson& l : builtinLessons()) {
+        SCOPED_TRACE(l.id);
+        ASSERT_NO_THROW(validateLesson(l));
+        const LessonRun run = runLesson(l);
+        Replay replay(*run.log);
+        for (const LessonStep& s : l.steps) {
+            const auto at = resolvePosition(s.at, *run.log);
+            ASSERT_TRUE(at.has_value()) << describePosition(s.at);
+            EXPECT_EQ(replay.seek(*at).cursor, *at);
+        }
+        for (const Exercise& ex : l.exercises) {
+            SCOPED_TRACE(ex.id);
+            const Answer ref = referenceAnswer(ex, *run.log, l.file);
+            const Verdict right = checkAnswer(ex, *run.log, ref, Language::En, l.file);
+            EXPECT_TRUE(right.correct);
+            EXPECT_FALSE(right.feedback.empty());
+            // As a student would type it, in both languages' feedback.
+            std::string why;
+            const auto typed = parseAnswer(ex, formatAnswer(ex, ref), &why);
+            ASSERT_TRUE(typed.has_value()) << why;
+            EXPECT_TRUE(checkAnswer(ex, *run.log, *typed, Language::It, l.file).correct);
+
+            Answer wrong = ref;
+            switch (ex.kind) {
+                case ExerciseKind::NextCell:
+                    wrong.numbers[0] += 1;
+                    break;
+                case ExerciseKind::Value:
+                    wrong.numbers[0] = wrong.numbers[0] * 1.5 + 1.0;
+                    break;
+                case ExerciseKind::Count:
+                    wrong.numbers[0] += 1;
+                    break;
+                case ExerciseKind::PickSplit: {
+                    // A strictly dearer candidate.
+                    double best = kInfinity;
+                    for (const SplitCandidate& c : splitCandidates(ex, *run.log))
+                        best = std::min(best, c.sahCost);
+                    for (const SplitCandidate& c : splitCandidates(ex, *run.log))
+                        if (c.sahCost > best * 1.01) {
+                            wrong.numbers = {static_cast<double>(c.axis), c.position};
+                            break;
+                        }
+                    ASSERT_NE(wrong.numbers, ref.numbers) << "every candidate costs the same";
+                    break;
+                }
+                case ExerciseKind::HitOrMiss:
+                    wrong.hit = !*ref.hit;
+                    wrong.numbers = *wrong.hit ? std::vector<double>{1.0} : std::vector<double>{};
+                    break;
+            }
+            EXPECT_FALSE(checkAnswer(ex, *run.log, wrong, Language::En, l.file).correct);
+        }
+    }
+}
+
+// The slides' DDA example by hand: o = (0.4, 0.4), d = (1, 0.75), cells of 1 x 1.
+TEST(Lessons, TheGridLessonsReferencesEqualAHandComputation) {
+    const Lesson l = loadLesson("grid-2d-dda");
+    const LessonRun run = runLesson(l);
+    const auto ref = [&](const char* id) { return referenceAnswer(*l.exercise(id), *run.log, l.file); };
+    EXPECT_NEAR(ref("tdelta-y").numbers[0], 1.0 / 0.75, 1e-15);
+    // After the step in X: tMaxX = 0.6 + tDeltaX = 1.6.
+    EXPECT_NEAR(ref("tmax-x-after-step").numbers[0], 1.6, 1e-15);
+    // In (2, 1): tMaxX = (3 - 0.4) / 1 = 2.6 > tMaxY = (2 - 0.4) / 0.75 = 2.133: a step in Y.
+    EXPECT_EQ(ref("next-cell").numbers, (std::vector<double>{2, 2}));
+    std::string why;
+    const auto near = parseAnswer(*l.exercise("tdelta-y"), "1,333", &why);  // Italian comma
+    ASSERT_TRUE(near) << why;
+    EXPECT_TRUE(checkAnswer(*l.exercise("tdelta-y"), *run.log, *near, Language::It, l.file).correct);
+    EXPECT_FALSE(checkAnswer(*l.exercise("tdelta-y"), *run.log, Answer{{1.3}, {}}, Language::En,
+                             l.file).correct);
+}
+
+// The mailboxing ray (1, 3.45) + t (1, 0.03) stays in row 3, cells x = 1..5. The wall
+// y = 3.7, x in [1.2, 5.8] is listed in those five cells: tested once, skipped four times. The
+// circle (4.2, 2.9) r 0.3 reaches row 3 in cells 3 and 4: tested once, skipped once. The short
+// segment (3.7, 3.5)-(3.9, 3.02) lies in cell (3, 3) only. So 5 skips and 3 tests, all misses
+// (the ray passes 0.65 from the circle's centre and above the segment's top).
+TEST(Lessons, TheMailboxLessonSavesFiveTestsByHand) {
+    const Lesson l = loadLesson("mailboxing");
+    const LessonRun run = runLesson(l);
+    EXPECT_EQ(referenceAnswer(*l.exercise("skips"), *run.log, l.file).numbers[0], 5.0);
+    EXPECT_EQ(referenceAnswer(*l.exercise("tests"), *run.log, l.file).numbers[0], 3.0);
+}
+
+// The ray (0.5, 0.5) + t (1, 1) meets x = 1 and y = 1 both at t = 0.5: the DDA steps diagonally.
+TEST(Lessons, TheRobustnessLessonsTieGoesThroughTheCorner) {
+    const Lesson l = loadLesson("robustness");
+    const LessonRun run = runLesson(l);
+    EXPECT_EQ(referenceAnswer(*l.exercise("tie-cell"), *run.log, l.file).numbers,
+              (std::vector<double>{1, 1}));
+    EXPECT_EQ(referenceAnswer(*l.exercise("tie-tmax"), *run.log, l.file).numbers[0], 0.5);
+    const Verdict v = checkAnswer(*l.exercise("tie-cell"), *run.log, Answer{{1, 0}, {}},
+                                  Language::En, l.file);
+    EXPECT_FALSE(v.correct);
+    EXPECT_NE(v.feedback.find("tie"), std::string::npos) << v.feedback;
+}
+
+TEST(Lessons, PickSplitFeedbackRecomputesTheWinnersCost) {
+    const Lesson l = loadLesson("building-kdtree");
+    const LessonRun run = runLesson(l);
+    const Exercise& ex = *l.exercise("root-split");
+    const auto candidates = splitCandidates(ex, *run.log);
+    ASSERT_GT(candidates.size(), 4u);
+    // The cheapest by a scan written here, and its cost by the slides' formula.
+    const SplitCandidate* best = &candidates[0];
+    for (const SplitCandidate& c : candidates)
+        if (c.sahCost < best->sahCost) best = &c;
+    const Answer ref = referenceAnswer(ex, *run.log, l.file);
+    EXPECT_EQ(ref.numbers[0], best->axis);
+    EXPECT_EQ(ref.numbers[1], best->position);
+    const double bonus = (best->nl == 0 || best->nr == 0) ? 0.5 : 1.0;
+    EXPECT_NEAR(best->sahCost, bonus * (1.0 + 5.0 * (best->pl * best->nl + best->pr * best->nr)),
+                1e-12);
+}
+
+TEST(Lessons, AnswersAreParsedAsTyped) {
+    Exercise cell;
+    cell.kind = ExerciseKind::NextCell;
+    std::string why;
+    EXPECT_EQ(parseAnswer(cell, "(2, 1)", &why)->numbers, (std::vector<double>{2, 1}));
+    EXPECT_EQ(parseAnswer(cell, "3,2,3", &why)->numbers, (std::vector<double>{3, 2, 3}));
+    EXPECT_FALSE(parseAnswer(cell, "2.5,1", &why));
+    EXPECT_FALSE(parseAnswer(cell, "2", &why));
+    Exercise value;
+    value.kind = ExerciseKind::Value;
+    EXPECT_EQ(parseAnswer(value, " 0.75 ", &why)->numbers[0], 0.75);
+    for (const char* bad : {"nan", "inf", "1e999", "", "abc", "1.2.3"})
+        EXPECT_FALSE(parseAnswer(value, bad, &why)) << bad;
+    Exercise count;
+    count.kind = ExerciseKind::Count;
+    EXPECT_FALSE(parseAnswer(count, "-1", &why));
+    EXPECT_FALSE(parseAnswer(count, "2.5", &why));
+    Exercise split;
+    split.kind = ExerciseKind::PickSplit;
+    EXPECT_EQ(parseAnswer(split, "Y = 2.96", &why)->numbers, (std::vector<double>{1, 2.96}));
+    EXPECT_FALSE(parseAnswer(split, "w=1", &why));
+    EXPECT_FALSE(parseAnswer(split, "2.96", &why));
+    Exercise hit;
+    hit.kind = ExerciseKind::HitOrMiss;
+    hit.withT = true;
+    EXPECT_EQ(*parseAnswer(hit, "miss", &why)->hit, false);
+    const auto h = parseAnswer(hit, "hit t=3.5", &why);
+    ASSERT_TRUE(h);
+    EXPECT_EQ(*h->hit, true);
+    EXPECT_EQ(h->numbers[0], 3.5);
+    EXPECT_FALSE(parseAnswer(hit, "hit", &why)) << "the t is asked";
+    EXPECT_FALSE(parseAnswer(hit, "maybe", &why));
+}
+
+std::string lessonWith(const std::string& extra) {
+    return "{\n\"format\": \"raystep-lesson\",\n\"version\": 1,\n\"id\": \"t\",\n\"number\": 1,\n"
+           "\"title\": {\"en\": \"T\"},\n\"text\": {\"en\": \"x\"},\n\"scene\": \"lecture-grid\",\n"
+           "\"setup\": {\"accel\": \"grid\"},\n\"trace\": {\"ray\": \"example\"}" +
+           extra + "\n}";
+}
+
+void expectLessonError(const std::string& text, int line, const std::string& key,
+                       const std::string& words) {
+    try {
+        loadLessonText(text, "bad.json");
+        ADD_FAILURE() << "no error for: " << text;
+    } catch (const LessonError& e) {
+        EXPECT_EQ(e.file(), "bad.json");
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_EQ(e.key(), key) << e.what();
+        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+}
+
+TEST(Lessons, ABadLessonFileNamesLineAndKey) {
+    EXPECT_NO_THROW(loadLessonText(lessonWith(""), "ok.json"));
+    expectLessonError(lessonWith(",\n\"colour\": 1"), 11, "colour", "unknown key");
+    expectLessonError(lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\"},\n \"at\": {\"after\": \"dda_walk\"}}]"),
+                      12, "steps[0].at.after", "unknown event kind");
+    expectLessonError(
+        lessonWith(",\n\"exercises\": [\n{\"id\": \"a\", \"type\": \"count\", \"count\": \"dda_cell\", \"prompt\": {\"en\": \"?\"}},\n"
+                   "{\"id\": \"a\", \"type\": \"count\", \"count\": \"dda_cell\", \"prompt\": {\"en\": \"?\"}}]"),
+        13, "exercises[1].id", "used twice");
+    expectLessonError(
+        lessonWith(",\n\"exercises\": [{\"id\": \"a\", \"type\": \"value\", \"quantity\": \"tMax.x\",\n"
+                   "\"tolerance\": 1.5, \"prompt\": {\"en\": \"?\"}}]"),
+        12, "exercises[0].tolerance", "accepts anything");
+    expectLessonError(
+        lessonWith(",\n\"exercises\": [{\"id\": \"a\", \"type\": \"guess\", \"prompt\": {\"en\": \"?\"}}]"),
+        11, "exercises[0].type", "expected next_cell");
+    expectLessonError(lessonWith(",\n\"sweep\": {\"grid_res\": [4, NaN]}"), 11, "", "malformed JSON");
+    expectLessonError(lessonWith(",\n\"setup\": {\"accel\": \"octree\"}"), 11, "setup", "given twice");
+    expectLessonError(
+        "{\"format\": \"raystep-lesson\", \"version\": 1, \"id\": \"t\", \"number\": 1,\n"
+        "\"title\": {\"it\": \"Titolo\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"s\", \"trace\": {\"build\": true}}",
+        2, "title", "English text");
+    expectLessonError(
+        "{\"format\": \"raystep-lesson\", \"version\": 2}", 1, "version", "version 1");
+}
+
+TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
+    const Lesson l = loadLesson("6");
+    const LessonRun run = runLesson(l);
+    const AnswerSheet sheet = loadAnswerSheet(
+        "{\"lesson\": \"grid-2d-dda\",\n \"answers\": {\n  \"tdelta-y\": 1.3333,\n"
+        "  \"next-cell\": [3, 1]\n }}",
+        "answers.json");
+    const Grade g = gradeAnswers(l, *run.log, sheet, Language::En, "answers.json");
+    EXPECT_EQ(g.score, 1);
+    ASSERT_EQ(g.items.size(), 3u);
+    EXPECT_TRUE(g.items[0].correct);
+    EXPECT_FALSE(g.items[1].answered);
+    EXPECT_TRUE(g.items[2].answered);
+    EXPECT_FALSE(g.items[2].correct);
+    EXPECT_EQ(g.items[2].expected, "2,2");
+    try {
+        gradeAnswers(l, *run.log, loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"x\": 1}}", "a.json"),
+                     Language::En, "a.json");
+        ADD_FAILURE();
+    } catch (const LessonError& e) {
+        EXPECT_EQ(e.line(), 2);
+        EXPECT_EQ(e.key(), "answers.x");
+    }
+    EXPECT_THROW(gradeAnswers(l, *run.log, loadAnswerSheet("{\"lesson\": \"7\", \"answers\": {}}", "a.json"),
+                              Language::En, "a.json"),
+                 LessonError);
+    EXPECT_THROW(loadAnswerSheet("{\"lesson\": \"6\", \"answers\": {\"a\": {}}}", "a.json"), LessonError);
+}
+
+TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
+    Progress p;
+    p.lessons["grid-2d-dda"].step = 2;
+    p.lessons["grid-2d-dda"].exercises["next-cell"] = {true, 3, "2,2"};
+    p.lessons["mailboxing"].exercises["skips"] = {false, 1, "4"};
+    const Progress back = parseProgress(progressToJson(p), "progress.json");
+    ASSERT_EQ(back.lessons.size(), 2u);
+    EXPECT_EQ(back.lessons.at("grid-2d-dda").step, 2);
+    const auto& rec = back.lessons.at("grid-2d-dda").exercises.at("next-cell");
+    EXPECT_TRUE(rec.correct);
+    EXPECT_EQ(rec.attempts, 3);
+    EXPECT_EQ(rec.answer, "2,2");
+    const std::string report = progressReport(back, builtinLessons(), Language::En);
+    EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | 3 | 1 | 1 | 3 |"),
+              std::string::npos)
+        << report;
+    EXPECT_NE(report.find("| 8. Mailboxing | 2 | 1 | 0 | 1 |"), std::string::npos) << report;
+    try {
+        parseProgress("{\"format\": \"raystep-progress\",\n \"lessons\": {\"a\": {\"step\": -1}}}",
+                      "p.json");
+        ADD_FAILURE();
+    } catch (const LessonError& e) {
+        EXPECT_EQ(e.line(), 2);
+        EXPECT_EQ(e.key(), "lessons.a.step");
+    }
+}
+
+// One cell holds every primitive: each ray of the fan (all start inside the grid) walks that one
+// cell and tests all 11 primitives; 8 x 8 cells test fewer and walk more.
+TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
+    const auto scene = loadAnyScene("lecture-grid");
+    GridSweepSpec spec;
+    spec.resolutions = {1, 8};
+    spec.width = 16;
+    spec.height = 16;
+    double last = -1.0;
+    const auto rows = runGridSweep(scene, spec, [&](double f) {
+        EXPECT_GE(f, last);
+        last = f;
+        return true;
+    });
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(last, 1.0);
+    EXPECT_EQ(rows[0].cells, 1u);
+    EXPECT_EQ(rows[0].testsPerRay, 11.0);
+    EXPECT_EQ(rows[0].cellsPerRay, 1.0);
+    EXPECT_EQ(rows[1].cells, 64u);
+    EXPECT_LT(rows[1].testsPerRay, rows[0].testsPerRay);
+    EXPECT_GT(rows[1].cellsPerRay, rows[0].cellsPerRay);
+    EXPECT_THROW(runGridSweep(scene, spec, [](double) { return false; }), BuildCancelled);
+}
+
+}  // namespace
+}  // namespace raystep
