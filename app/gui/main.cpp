@@ -1,4 +1,5 @@
-// raystep: the replay app. Options for slides and tests: --scene, --accel, --step, --screenshot.
+// raystep: the replay app. It opens on lesson 1 unless told otherwise. Options for slides and
+// tests: --lesson, --scene, --accel, --step, --screenshot.
 #include "compare_window.h"
 #include "main_window.h"
 #include "session.h"
@@ -25,8 +26,11 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription("raystep: replay every step of the lecture's algorithms");
     parser.addHelpOption();
-    const QCommandLineOption sceneOpt("scene", "Built-in scene name or scene file.", "name|file",
-                                      "lecture-grid");
+    const QCommandLineOption lessonOpt("lesson", "Open a lesson: id, number or file (default 1).",
+                                       "id|file");
+    const QCommandLineOption sceneOpt("scene", "Open a built-in scene or scene file instead.",
+                                      "name|file");
+    const QCommandLineOption lecturerOpt("lecturer", "Lecturer mode: the exercises show their answers.");
     const QCommandLineOption accelOpt("accel", "Structure: bruteforce, grid, kdtree or bvh.",
                                       "kind", "grid");
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
@@ -39,7 +43,8 @@ int main(int argc, char** argv) {
         "--screenshot then saves that window.");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
-    parser.addOptions({sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt, shotOpt});
+    parser.addOptions({lessonOpt, sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt,
+                       lecturerOpt, shotOpt});
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
@@ -72,11 +77,26 @@ int main(int argc, char** argv) {
     if (!shot.isEmpty() && !shot.endsWith(".png", Qt::CaseInsensitive))
         return fail("--screenshot " + shot + ": the screenshot is written as PNG; name it *.png");
 
+    if (parser.isSet(lessonOpt) && parser.isSet(sceneOpt))
+        return fail("--lesson and --scene: give one of them");
+
     raystep::gui::MainWindow window;
-    if (!window.openScene(parser.value(sceneOpt), *kind, /*quiet=*/!shot.isEmpty())) {
-        // Started from a script: say it on one line. Interactively the dialog has said it.
-        if (!shot.isEmpty())
+    window.setLanguage(lang == "it" ? raystep::Language::It : raystep::Language::En);
+    window.setLecturerMode(parser.isSet(lecturerOpt));
+    if (parser.isSet(sceneOpt)) {
+        if (!window.openScene(parser.value(sceneOpt), *kind, /*quiet=*/!shot.isEmpty()) &&
+            !shot.isEmpty())  // from a script: one line; interactively the dialog has said it
             return fail("--scene " + parser.value(sceneOpt) + ": cannot be opened");
+    } else {
+        const QString lesson = parser.isSet(lessonOpt) ? parser.value(lessonOpt) : QStringLiteral("1");
+        if (!window.openLesson(lesson, /*quiet=*/!shot.isEmpty()) && !shot.isEmpty()) {
+            try {
+                raystep::loadLesson(lesson.toStdString());
+            } catch (const raystep::LessonError& e) {
+                return fail(QString::fromUtf8(e.what()));
+            }
+            return fail("--lesson " + lesson + ": cannot be opened");
+        }
     }
     if (replay == "build") window.session().recordBuild();
     if (step) {

@@ -2,6 +2,7 @@
 
 #include "compare_window.h"
 #include "image_view.h"
+#include "lesson_panel.h"
 #include "view2d.h"
 #include "vtk_view.h"
 
@@ -14,6 +15,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -25,7 +27,9 @@
 #include <QProgressBar>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QSlider>
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
@@ -85,6 +89,20 @@ constexpr int kImageWidth = 320, kImageHeight = 240;
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildUi();
+    // The student's progress: one JSON file under the user's data folder, replaced atomically.
+    progressPath_ =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
+    if (QFile f(progressPath_); f.open(QIODevice::ReadOnly)) {
+        try {
+            studentProgress_ = parseProgress(f.readAll().toStdString(), progressPath_.toStdString());
+        } catch (const LessonError& e) {
+            // Keep the unreadable file aside rather than overwrite it at the next answer.
+            f.close();
+            QFile::rename(progressPath_, progressPath_ + ".unreadable");
+            statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
+                                         .arg(progressPath_ + ".unreadable", e.what()));
+        }
+    }
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
@@ -97,7 +115,8 @@ void MainWindow::buildUi() {
     view2D_ = new View2D(session_);
     view3D_ = new VtkView(session_);
     imageView_ = new ImageView(session_);
-    lesson_ = new QTextBrowser;
+    lesson_ = new LessonPanel;
+    lesson_->setLessons(builtinLessons());
     auto* views = new QSplitter(Qt::Horizontal);
     views->addWidget(view2D_);
     auto* right = new QSplitter(Qt::Vertical);
@@ -149,10 +168,10 @@ void MainWindow::buildUi() {
     auto* main = new QSplitter(Qt::Horizontal);
     main->addWidget(lesson_);
     main->addWidget(centre);
-    lesson_->setMinimumWidth(220);
+    lesson_->setMinimumWidth(260);
     main->setStretchFactor(0, 1);
     main->setStretchFactor(1, 4);
-    main->setSizes({280, 1100});
+    main->setSizes({360, 1100});
     setCentralWidget(main);
 
     // Inspector and event list, as docks the user may move (kept with QSettings).
@@ -223,7 +242,7 @@ void MainWindow::buildUi() {
     connect(&session_, &Session::logChanged, this, [this] {
         updateTimeline();
         if (session_.showingBuild())
-            lesson_->setMarkdown(
+            lesson_->showText(
                 tr("## Building the %1\n\nEach node is split by a plane. Step through the "
                    "**candidate** planes (dashed): the chart under the scene draws the cost of "
                    "each, "
@@ -235,6 +254,17 @@ void MainWindow::buildUi() {
                     .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
     });
 
+    // The lesson panel asks; the window moves the replay, opens lessons, saves progress.
+    connect(lesson_, &LessonPanel::lessonRequested, this, [this](const QString& id) { openLesson(id); });
+    connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
+    connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
+        const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
+        if (at) session_.setCursor(*at);
+    });
+    connect(lesson_, &LessonPanel::answered, this, &MainWindow::recordAnswer);
+    connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
+    connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
+
     // Menus and the standard shortcuts.
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&Open scene..."), QKeySequence::Open, this, [this] { openFileDialog(); });
@@ -245,6 +275,9 @@ void MainWindow::buildUi() {
                     [this] { exportScreenshot(view2D_, tr("2D view")); });
     file->addAction(tr("Export screenshot of the &3D view..."), this,
                     [this] { exportScreenshot(view3D_, tr("3D view")); });
+    file->addAction(tr("Export screenshot of the &image view..."), this,
+                    [this] { exportScreenshot(imageView_, tr("image view")); });
+    file->addAction(tr("Export &progress report..."), this, [this] { exportProgressReport(); });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* replay = menuBar()->addMenu(tr("&Replay"));
@@ -265,6 +298,22 @@ void MainWindow::buildUi() {
                       [this] { session_.setCursor(0); });
     replay->addAction(tr("&Last event"), QKeySequence(Qt::Key_End), this,
                       [this] { session_.setCursor(session_.size()); });
+    QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
+    for (const Lesson& l : builtinLessons()) {
+        const QString id = QString::fromStdString(l.id);
+        lessons->addAction(QStringLiteral("&%1. %2").arg(l.number).arg(QString::fromStdString(l.title.en)),
+                           this, [this, id] { openLesson(id); });
+    }
+    lessons->addSeparator();
+    lessons->addAction(tr("Open lesson &file..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), QString(),
+                                                          tr("Lessons (*.json)"));
+        if (!path.isEmpty()) openLesson(path);
+    });
+    lecturerAction_ = lessons->addAction(tr("&Lecturer mode (show answers)"));
+    lecturerAction_->setCheckable(true);
+    lecturerAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    connect(lecturerAction_, &QAction::toggled, lesson_, &LessonPanel::setLecturerMode);
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C), this,
                     [this] { openCompare(); });
@@ -274,40 +323,18 @@ void MainWindow::buildUi() {
     view->addAction(tr("&Reset 3D camera"), this, [this] { view3D_->resetCamera(); });
 }
 
-bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet) {
-    // Load and build off the GUI thread: a big mesh's tree takes seconds. The dialog shows the
-    // build's progress and its Cancel stops it; the window keeps painting meanwhile.
-    std::atomic<bool> cancel{false}, done{false};
-    std::atomic<int> percent{0};
-    AccelOptions options;
-    options.kdtree.progress = options.bvh.progress = [&](double f) {
-        percent = static_cast<int>(f * 100);
-        return !cancel.load();
-    };
+bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
+                           const AccelOptions& base) {
+    // Load and build off the GUI thread: a big mesh's tree takes seconds.
     std::optional<Session::Prepared> prepared;
-    std::exception_ptr error;
-    std::thread worker([&] {
-        try {
-            prepared = Session::prepare(nameOrPath.toStdString(), kind, options);
-        } catch (...) {
-            error = std::current_exception();
-        }
-        done = true;
-    });
-    {
-        QProgressDialog dialog(tr("Loading %1 and building its %2...")
-                                   .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
-                               tr("Cancel"), 0, 100, this);
-        dialog.setWindowModality(Qt::WindowModal);
-        dialog.setMinimumDuration(400);
-        while (!done) {
-            dialog.setValue(percent);
-            if (dialog.wasCanceled()) cancel = true;
-            QApplication::processEvents(QEventLoop::AllEvents, 20);
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-    }
-    worker.join();
+    const std::exception_ptr error =
+        runWithProgress(tr("Loading %1 and building its %2...")
+                            .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
+                        [&](const ProgressFn& progress) {
+                            AccelOptions options = base;
+                            options.kdtree.progress = options.bvh.progress = progress;
+                            prepared = Session::prepare(nameOrPath.toStdString(), kind, options);
+                        });
     if (error) {
         QString message;
         try {
@@ -324,14 +351,14 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
     session_.adopt(std::move(*prepared));
     if (session_.is2D()) {
         session_.traceExampleRay();
-        lesson_->setMarkdown(
+        lesson_->showText(
             tr("## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and **Left**, "
                "play with **Space**, jump to the next event of a kind with **N**. The inspector "
                "shows X, Y, tMax and tDelta as on the board; the list shows every event.")
                 .arg(QString::fromStdString(session_.name()),
                      QString::fromStdString(session_.scene2D()->description)));
     } else {
-        lesson_->setMarkdown(
+        lesson_->showText(
             tr("## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is recorded "
                "and replayed in the 3D view, the inspector and the event list.")
                 .arg(QString::fromStdString(session_.name()),
@@ -346,10 +373,144 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
     }
     // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
     view2D_->setVisible(session_.is2D());
+    view3D_->setVisible(!session_.is2D());
+    imageView_->setVisible(!session_.is2D());
     view3D_->parentWidget()->setVisible(!session_.is2D());
     setWindowTitle(tr("raystep - %1").arg(nameOrPath));
     updateTimeline();
     return true;
+}
+
+std::exception_ptr MainWindow::runWithProgress(
+    const QString& label, const std::function<void(const ProgressFn&)>& work) {
+    std::atomic<bool> cancel{false}, done{false};
+    std::atomic<int> percent{0};
+    const ProgressFn progress = [&](double f) {
+        percent = static_cast<int>(f * 100);
+        return !cancel.load();
+    };
+    std::exception_ptr error;
+    std::thread worker([&] {
+        try {
+            work(progress);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        done = true;
+    });
+    {
+        QProgressDialog dialog(label, tr("Cancel"), 0, 100, this);
+        dialog.setWindowModality(Qt::WindowModal);
+        dialog.setMinimumDuration(400);
+        while (!done) {
+            dialog.setValue(percent);
+            if (dialog.wasCanceled()) cancel = true;
+            QApplication::processEvents(QEventLoop::AllEvents, 20);
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    }
+    worker.join();
+    return error;
+}
+
+bool MainWindow::openLesson(const QString& idOrPath, bool quiet) {
+    Lesson lesson;
+    try {
+        lesson = loadLesson(idOrPath.toStdString());
+    } catch (const LessonError& e) {
+        if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
+        return false;
+    }
+    if (!openScene(QString::fromStdString(lessonScenePath(lesson)), lesson.accel, quiet,
+                   lesson.options))
+        return false;
+    try {
+        session_.adoptLog(recordLessonTrace(lesson, session_.sceneVariant(), session_.accel3D(),
+                                            session_.accel2D()),
+                          lesson.trace.kind == LessonTrace::Kind::Build);
+    } catch (const LessonError& e) {
+        if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
+        return false;
+    }
+    const auto shows = [&](LessonView v) {
+        return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
+    };
+    view2D_->setVisible(shows(LessonView::View2D));
+    view3D_->setVisible(shows(LessonView::View3D));
+    imageView_->setVisible(shows(LessonView::Image));
+    view3D_->parentWidget()->setVisible(shows(LessonView::View3D) || shows(LessonView::Image));
+    const auto saved = studentProgress_.lessons.find(lesson.id);
+    lesson_->showLesson(lesson, &session_.log(),
+                        saved == studentProgress_.lessons.end() ? nullptr : &saved->second);
+    setWindowTitle(tr("raystep - lesson %1: %2")
+                       .arg(lesson.number)
+                       .arg(QString::fromStdString(lesson.title.in(lang_))));
+    applyStep(lesson_->step());
+    return true;
+}
+
+void MainWindow::applyStep(int index) {
+    if (!lesson_->hasLesson() || lesson_->lesson().steps.empty()) {
+        session_.setCursor(session_.size());
+        return;
+    }
+    const LessonStep& step = lesson_->lesson().steps[index];
+    if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
+    filterEdit_->setText(QString::fromStdString(step.filter));
+    if (step.camera) view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
+    studentProgress_.lessons[lesson_->lesson().id].step = index;
+    saveProgress();
+}
+
+void MainWindow::recordAnswer(const QString& exerciseId, bool correct, const QString& answer) {
+    auto& rec = studentProgress_.lessons[lesson_->lesson().id].exercises[exerciseId.toStdString()];
+    ++rec.attempts;
+    rec.correct = rec.correct || correct;
+    rec.answer = answer.toStdString();
+    saveProgress();
+}
+
+void MainWindow::saveProgress() {
+    // QSaveFile writes beside and renames: a crash never leaves half a progress file.
+    QDir().mkpath(QFileInfo(progressPath_).absolutePath());
+    QSaveFile f(progressPath_);
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(QByteArray::fromStdString(progressToJson(studentProgress_))) < 0 || !f.commit())
+        statusBar()->showMessage(tr("Cannot save the progress to %1").arg(progressPath_));
+}
+
+void MainWindow::exportProgressReport() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export progress report"),
+                                                      QStringLiteral("raystep-progress.md"),
+                                                      tr("Markdown (*.md)"));
+    if (path.isEmpty()) return;
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(QByteArray::fromStdString(progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
+        !f.commit())
+        QMessageBox::warning(this, tr("Cannot save"), tr("Could not write %1").arg(path));
+}
+
+void MainWindow::runSweep() {
+    if (!lesson_->hasLesson() || !lesson_->lesson().sweep) return;
+    std::vector<GridSweepRow> rows;
+    const GridSweepSpec spec = *lesson_->lesson().sweep;
+    const std::exception_ptr error =
+        runWithProgress(tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
+                        [&](const ProgressFn& progress) {
+                            rows = runGridSweep(session_.sceneVariant(), spec, progress);
+                        });
+    if (!error) lesson_->showSweep(rows);
+}
+
+void MainWindow::setLanguage(Language lang) {
+    lang_ = lang;
+    lesson_->setLanguage(lang);
+    lesson_->setLessons(builtinLessons());
+}
+
+void MainWindow::setLecturerMode(bool on) {
+    lecturerAction_->setChecked(on);
 }
 
 CompareWindow* MainWindow::openCompare() {

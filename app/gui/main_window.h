@@ -3,6 +3,11 @@
 // under them, the inspector and the event list on the right.
 #include "session.h"
 
+#include "raystep/lesson.h"
+
+#include <exception>
+#include <functional>
+
 #include <QMainWindow>
 
 class QComboBox;
@@ -22,6 +27,7 @@ namespace raystep::gui {
 
 class CompareWindow;
 class ImageView;
+class LessonPanel;
 class View2D;
 class VtkView;
 class EventListModel;
@@ -35,7 +41,16 @@ class MainWindow : public QMainWindow {
     Session& session() { return session_; }
     /// Opens a scene (built-in name or file) with a structure; false (and a dialog unless quiet)
     /// on a bad scene, with the current one kept.
-    bool openScene(const QString& nameOrPath, AccelKind kind, bool quiet = false);
+    bool openScene(const QString& nameOrPath, AccelKind kind, bool quiet = false,
+                   const AccelOptions& options = {});
+    /// Opens a lesson (built-in id or number, or a file): its scene, structure and trace, its
+    /// views, and the step the user's progress was at. False (and a dialog unless quiet) if not.
+    bool openLesson(const QString& idOrPath, bool quiet = false);
+    LessonPanel* lessonPanel() const { return lesson_; }
+    void setLanguage(Language lang);
+    void setLecturerMode(bool on);
+    const Progress& studentProgress() const { return studentProgress_; }
+    QString progressPath() const { return progressPath_; }
     /// The inspector's text (what tests read).
     QString inspectorText() const;
     View2D* view2D() const { return view2D_; }
@@ -61,12 +76,25 @@ class MainWindow : public QMainWindow {
     void openFileDialog();
     void exportScreenshot(QWidget* w, const QString& what);
     void exportTrace();
+    void exportProgressReport();
+    void applyStep(int index);
+    void recordAnswer(const QString& exerciseId, bool correct, const QString& answer);
+    void saveProgress();
+    void runSweep();
+    /// Runs `work` on a worker thread behind a progress dialog whose Cancel makes the progress
+    /// callback say stop; the window keeps painting. Returns what `work` threw, if anything.
+    std::exception_ptr runWithProgress(const QString& label,
+                                       const std::function<void(const ProgressFn&)>& work);
 
     Session session_;
     View2D* view2D_ = nullptr;
     VtkView* view3D_ = nullptr;
     ImageView* imageView_ = nullptr;
-    QTextBrowser* lesson_ = nullptr;
+    LessonPanel* lesson_ = nullptr;
+    QAction* lecturerAction_ = nullptr;
+    Language lang_ = Language::En;
+    Progress studentProgress_;
+    QString progressPath_;
     QTextBrowser* inspector_ = nullptr;
     QListView* events_ = nullptr;
     EventListModel* eventModel_ = nullptr;

@@ -67,9 +67,15 @@ void Session::recordBuild() {
         buildAccelerator2D(*s2, kind_, options_, log.get());
     else
         buildAccelerator(*scene3D(), kind_, {}, options_, *log);
+    adoptLog(std::move(log), true);
+}
+
+void Session::adoptLog(std::unique_ptr<EventLog> log, bool isBuild) {
     setLog(std::move(log));
-    showingBuild_ = true;
-    emit logChanged();
+    if (isBuild) {
+        showingBuild_ = true;
+        emit logChanged();
+    }
 }
 
 BuildSummary Session::summary() const {

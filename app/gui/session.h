@@ -44,6 +44,9 @@ class Session : public QObject {
     void traceExampleRay();
     /// Records the structure's construction (kd-tree or BVH; 2D or 3D) and replays that instead.
     void recordBuild();
+    /// Replays a log recorded elsewhere (a lesson's trace); `isBuild` when it is a build.
+    void adoptLog(std::unique_ptr<EventLog> log, bool isBuild);
+    const std::variant<Scene, Scene2D>& sceneVariant() const { return *scene_; }
     /// True while the log is a build (candidates, splits, leaves), not a ray.
     bool showingBuild() const { return showingBuild_; }
 

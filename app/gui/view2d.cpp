@@ -1,5 +1,7 @@
 #include "view2d.h"
 
+#include <QMouseEvent>
+
 #include <QPainter>
 #include <QPainterPath>
 
@@ -30,7 +32,7 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
     connect(&session_, &Session::logChanged, this, [this] { layerDirty_ = true; });
 }
 
-void View2D::fit() {
+void View2D::fit() const {
     const Scene2D* s = session_.scene2D();
     world_ = s->bounds();
     if (s->exampleRay) world_.extend(s->exampleRay->origin);
@@ -49,6 +51,41 @@ QPointF View2D::toScreen(const Vec2& p) const {
     // y grows upwards in the scene, downwards on screen.
     return {offset_.x() + (p.x - world_.lo.x) * scale_,
             height() - offset_.y() - (p.y - world_.lo.y) * scale_};
+}
+
+Vec2 View2D::toWorld(QPointF p) const {
+    return {world_.lo.x + (p.x() - offset_.x()) / scale_,
+            world_.lo.y + (height() - offset_.y() - p.y()) / scale_};
+}
+
+std::optional<std::array<int, 2>> View2D::cellAt(QPointF widgetPoint) const {
+    const Accelerator2D* accel = session_.accel2D();
+    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    if (!grid || session_.showingBuild()) return std::nullopt;
+    fit();
+    const Vec2 w = toWorld(widgetPoint);
+    const auto& spec = grid->spec();
+    std::array<int, 2> c{};
+    for (int a = 0; a < 2; ++a) {
+        const double f = std::floor((w[a] - spec.lo[a]) / spec.cellSize(a));
+        if (!(f >= 0 && f < spec.res[a])) return std::nullopt;
+        c[a] = static_cast<int>(f);
+    }
+    return c;
+}
+
+QPointF View2D::cellCentre(int x, int y) const {
+    const Accelerator2D* accel = session_.accel2D();
+    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    if (!grid) return {};
+    fit();
+    const auto& spec = grid->spec();
+    return toScreen(Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0),
+                         spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
+}
+
+void View2D::mousePressEvent(QMouseEvent* e) {
+    if (const auto c = cellAt(e->position())) emit cellClicked((*c)[0], (*c)[1]);
 }
 
 void View2D::paintEvent(QPaintEvent*) {

@@ -8,6 +8,9 @@
 #include <QPixmap>
 #include <QWidget>
 
+#include <array>
+#include <optional>
+
 namespace raystep::gui {
 
 class View2D : public QWidget {
@@ -15,14 +18,24 @@ class View2D : public QWidget {
   public:
     explicit View2D(Session& session, QWidget* parent = nullptr);
     QSize sizeHint() const override { return {640, 440}; }
+    /// The grid cell under a widget point, if the structure is a grid and the point is on it.
+    std::optional<std::array<int, 2>> cellAt(QPointF widgetPoint) const;
+    /// Where the centre of grid cell (x, y) is drawn (tests click there).
+    QPointF cellCentre(int x, int y) const;
+
+  signals:
+    /// A click on a grid cell (the lessons' "predict the next cell").
+    void cellClicked(int x, int y);
 
   protected:
     void paintEvent(QPaintEvent*) override;
+    void mousePressEvent(QMouseEvent*) override;
 
   private:
     QPointF toScreen(const Vec2& p) const;
+    Vec2 toWorld(QPointF p) const;
     void drawCostChart(QPainter& g, const ReplayState& st) const;
-    void fit();
+    void fit() const;  // the scene-to-widget mapping for the current size
 
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
     /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
@@ -34,9 +47,9 @@ class View2D : public QWidget {
     QSize layerSize_;
     bool layerDirty_ = true;
     std::vector<BoxN<2>> kdBoxes_;  // every kd node's box, made with the layer
-    BoxN<2> world_;                 // what is shown, in scene units
-    double scale_ = 1.0;
-    QPointF offset_;
+    mutable BoxN<2> world_;  // what is shown, in scene units
+    mutable double scale_ = 1.0;
+    mutable QPointF offset_;
 };
 
 }  // namespace raystep::gui

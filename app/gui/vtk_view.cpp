@@ -117,6 +117,18 @@ void VtkView::resetCamera() {
     update();
 }
 
+void VtkView::orbit(double azimuth, double elevation, double zoom) {
+    resetCamera();
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    cam->Azimuth(azimuth);
+    cam->Elevation(elevation);
+    cam->OrthogonalizeViewUp();
+    cam->Dolly(zoom);
+    renderer_->ResetCameraClippingRange();
+    dirty_ = true;
+    update();
+}
+
 void VtkView::rebuildRays() {
     if (raysActor_) renderer_->RemoveActor(raysActor_);
     if (markersActor_) renderer_->RemoveActor(markersActor_);

@@ -25,6 +25,8 @@ class VtkView : public QWidget {
     QSize sizeHint() const override { return {480, 360}; }
     /// Back to the scene's own camera.
     void resetCamera();
+    /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
+    void orbit(double azimuth, double elevation, double zoom);
 
   protected:
     void paintEvent(QPaintEvent*) override;

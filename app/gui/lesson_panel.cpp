@@ -1,0 +1,348 @@
+#include "lesson_panel.h"
+
+#include <QComboBox>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace raystep::gui {
+
+namespace {
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+}  // namespace
+
+LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    picker_ = new QComboBox;
+    picker_->setObjectName("lessonPicker");
+    picker_->setToolTip(tr("Open a lesson"));
+    layout->addWidget(picker_);
+    connect(picker_, &QComboBox::activated, this, [this](int i) {
+        const QString id = picker_->itemData(i).toString();
+        if (!id.isEmpty()) emit lessonRequested(id);
+    });
+
+    text_ = new QTextBrowser;
+    text_->setObjectName("lessonText");
+    text_->setOpenExternalLinks(true);
+    layout->addWidget(text_, 1);
+
+    stepRow_ = new QWidget;
+    auto* sr = new QHBoxLayout(stepRow_);
+    sr->setContentsMargins(0, 0, 0, 0);
+    prevStep_ = new QPushButton(tr("< Step"));
+    nextStep_ = new QPushButton(tr("Step >"));
+    prevStep_->setToolTip(tr("Previous step (Page Up)"));
+    nextStep_->setToolTip(tr("Next step (Page Down)"));
+    prevStep_->setShortcut(QKeySequence(Qt::Key_PageUp));
+    nextStep_->setShortcut(QKeySequence(Qt::Key_PageDown));
+    stepLabel_ = new QLabel;
+    stepLabel_->setAlignment(Qt::AlignCenter);
+    sr->addWidget(prevStep_);
+    sr->addWidget(stepLabel_, 1);
+    sr->addWidget(nextStep_);
+    connect(prevStep_, &QPushButton::clicked, this, [this] { goToStep(step_ - 1); });
+    connect(nextStep_, &QPushButton::clicked, this, [this] { goToStep(step_ + 1); });
+    layout->addWidget(stepRow_);
+
+    exerciseBox_ = new QGroupBox(tr("Exercise"));
+    auto* el = new QVBoxLayout(exerciseBox_);
+    auto* er = new QHBoxLayout;
+    auto* prevEx = new QPushButton(QStringLiteral("<"));
+    auto* nextEx = new QPushButton(QStringLiteral(">"));
+    prevEx->setMaximumWidth(30);
+    nextEx->setMaximumWidth(30);
+    exerciseLabel_ = new QLabel;
+    exerciseLabel_->setAlignment(Qt::AlignCenter);
+    er->addWidget(prevEx);
+    er->addWidget(exerciseLabel_, 1);
+    er->addWidget(nextEx);
+    el->addLayout(er);
+    connect(prevEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ - 1); });
+    connect(nextEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ + 1); });
+    prompt_ = new QLabel;
+    prompt_->setWordWrap(true);
+    prompt_->setTextFormat(Qt::MarkdownText);
+    el->addWidget(prompt_);
+    answer_ = new QLineEdit;
+    answer_->setObjectName("answer");
+    candidates_ = new QComboBox;
+    candidates_->setObjectName("candidates");
+    el->addWidget(answer_);
+    el->addWidget(candidates_);
+    auto* br = new QHBoxLayout;
+    checkButton_ = new QPushButton(tr("Check"));
+    hintButton_ = new QPushButton(tr("Hint"));
+    revealButton_ = new QPushButton(tr("Show answer"));
+    br->addWidget(checkButton_);
+    br->addWidget(hintButton_);
+    br->addWidget(revealButton_);
+    el->addLayout(br);
+    connect(checkButton_, &QPushButton::clicked, this, [this] { check(); });
+    connect(answer_, &QLineEdit::returnPressed, this, [this] { check(); });
+    connect(hintButton_, &QPushButton::clicked, this, [this] { hint(); });
+    connect(revealButton_, &QPushButton::clicked, this, [this] { revealAnswer(); });
+    feedback_ = new QLabel;
+    feedback_->setObjectName("feedback");
+    feedback_->setWordWrap(true);
+    feedback_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    el->addWidget(feedback_);
+    layout->addWidget(exerciseBox_);
+
+    sweepButton_ = new QPushButton(tr("Run the sweep"));
+    connect(sweepButton_, &QPushButton::clicked, this, &LessonPanel::sweepRequested);
+    layout->addWidget(sweepButton_);
+    sweepTable_ = new QTableWidget;
+    sweepTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    sweepTable_->verticalHeader()->hide();
+    layout->addWidget(sweepTable_, 1);
+    showText({});
+}
+
+void LessonPanel::setLessons(const std::vector<Lesson>& lessons) {
+    picker_->clear();
+    picker_->addItem(tr("Lessons..."), QString());
+    for (const Lesson& l : lessons)
+        picker_->addItem(QStringLiteral("%1. %2").arg(l.number).arg(q(l.title.in(lang_))),
+                         q(l.id));
+}
+
+void LessonPanel::showText(const QString& markdown) {
+    hasLesson_ = false;
+    log_ = nullptr;
+    freeText_ = markdown;
+    text_->setMarkdown(markdown);
+    stepRow_->hide();
+    exerciseBox_->hide();
+    sweepButton_->hide();
+    sweepTable_->hide();
+    picker_->setCurrentIndex(0);
+}
+
+void LessonPanel::showLesson(const Lesson& lesson, const EventLog* log,
+                             const LessonProgress* progress) {
+    lesson_ = lesson;
+    log_ = log;
+    hasLesson_ = true;
+    attempts_.assign(lesson.exercises.size(), 0);
+    solved_.assign(lesson.exercises.size(), false);
+    if (progress)
+        for (std::size_t i = 0; i < lesson.exercises.size(); ++i)
+            if (const auto it = progress->exercises.find(lesson.exercises[i].id);
+                it != progress->exercises.end()) {
+                attempts_[i] = it->second.attempts;
+                solved_[i] = it->second.correct;
+            }
+    picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
+    stepRow_->setVisible(!lesson.steps.empty());
+    exerciseBox_->setVisible(!lesson.exercises.empty());
+    sweepButton_->setVisible(lesson.sweep.has_value());
+    sweepTable_->hide();
+    step_ = progress ? std::clamp(progress->step, 0, std::max(0, int(lesson.steps.size()) - 1)) : 0;
+    exercise_ = 0;
+    refreshText();
+    refreshExercise();
+}
+
+void LessonPanel::setLecturerMode(bool on) {
+    lecturer_ = on;
+    if (hasLesson_) refreshExercise();
+}
+
+void LessonPanel::goToStep(int index) {
+    if (!hasLesson_ || lesson_.steps.empty()) return;
+    step_ = std::clamp(index, 0, static_cast<int>(lesson_.steps.size()) - 1);
+    refreshText();
+    emit stepShown(step_);
+}
+
+void LessonPanel::selectExercise(int index) {
+    if (!hasLesson_ || lesson_.exercises.empty()) return;
+    exercise_ = std::clamp(index, 0, static_cast<int>(lesson_.exercises.size()) - 1);
+    refreshExercise();
+    emit exerciseShown(exercise_);
+}
+
+void LessonPanel::refreshText() {
+    QString md = QStringLiteral("# %1. %2\n\n%3\n")
+                     .arg(lesson_.number)
+                     .arg(q(lesson_.title.in(lang_)), q(lesson_.text.in(lang_)));
+    if (!lesson_.steps.empty()) {
+        md += QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
+                  .arg(tr("Step"))
+                  .arg(step_ + 1)
+                  .arg(lesson_.steps.size())
+                  .arg(q(lesson_.steps[step_].text.in(lang_)));
+        stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));
+        prevStep_->setEnabled(step_ > 0);
+        nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));
+    }
+    text_->setMarkdown(md);
+    // The step's text is what the lecturer points at: keep it in sight.
+    text_->moveCursor(QTextCursor::End);
+    text_->ensureCursorVisible();
+}
+
+void LessonPanel::refreshExercise() {
+    if (lesson_.exercises.empty()) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    exerciseLabel_->setText(tr("Exercise %1 / %2%3")
+                                .arg(exercise_ + 1)
+                                .arg(lesson_.exercises.size())
+                                .arg(solved_[exercise_] ? tr(" (solved)") : QString()));
+    prompt_->setText(q(ex.prompt.in(lang_)));
+    answer_->clear();
+    feedback_->clear();
+    feedback_->setStyleSheet({});
+    hintButton_->setEnabled(!ex.hint.en.empty());
+    revealButton_->setVisible(lecturer_);
+    const bool split = ex.kind == ExerciseKind::PickSplit;
+    candidates_->setVisible(split);
+    answer_->setVisible(!split);
+    candidates_->clear();
+    if (split && log_) {
+        // The candidates without their cost: computing it is the exercise.
+        for (const SplitCandidate& c : splitCandidates(ex, *log_))
+            candidates_->addItem(QStringLiteral("%1 = %2   (NL %3, NR %4, P(L|C) %5, P(R|C) %6)")
+                                     .arg(QChar("xyz"[c.axis]))
+                                     .arg(c.position, 0, 'g', 6)
+                                     .arg(c.nl)
+                                     .arg(c.nr)
+                                     .arg(c.pl, 0, 'g', 4)
+                                     .arg(c.pr, 0, 'g', 4),
+                                 QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(
+                                     c.position, 0, 'g', 17));
+    }
+    switch (ex.kind) {
+        case ExerciseKind::NextCell:
+            answer_->setPlaceholderText(tr("X,Y (or click the cell in the 2D view)"));
+            break;
+        case ExerciseKind::Value:
+            answer_->setPlaceholderText(tr("a number, e.g. 1.25"));
+            break;
+        case ExerciseKind::Count:
+            answer_->setPlaceholderText(tr("a whole number"));
+            break;
+        case ExerciseKind::HitOrMiss:
+            answer_->setPlaceholderText(ex.withT ? tr("hit T, or miss") : tr("hit or miss"));
+            break;
+        case ExerciseKind::PickSplit:
+            break;
+    }
+    if (lecturer_ && log_) revealAnswer();
+}
+
+void LessonPanel::fillCell(int x, int y) {
+    if (!hasLesson_ || lesson_.exercises.empty() || !answer_->isVisible()) return;
+    if (lesson_.exercises[exercise_].kind != ExerciseKind::NextCell) return;
+    answer_->setText(QStringLiteral("%1,%2").arg(x).arg(y));
+    check();
+}
+
+bool LessonPanel::submit(const QString& answer) {
+    if (lesson_.exercises[exercise_].kind == ExerciseKind::PickSplit) {
+        const int i = candidates_->findData(answer);
+        if (i >= 0) candidates_->setCurrentIndex(i);
+    } else {
+        answer_->setText(answer);
+    }
+    check();
+    return solved_[exercise_] && feedback_->property("correct").toBool();
+}
+
+QString LessonPanel::feedback() const {
+    return feedback_->text();
+}
+QString LessonPanel::exerciseText() const {
+    return prompt_->text();
+}
+
+void LessonPanel::check() {
+    if (!hasLesson_ || !log_ || lesson_.exercises.empty()) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    const QString typed = ex.kind == ExerciseKind::PickSplit ? candidates_->currentData().toString()
+                                                             : answer_->text();
+    std::string why;
+    const auto answer = parseAnswer(ex, typed.toStdString(), &why);
+    if (!answer) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(tr("Cannot read that answer: %1.").arg(q(why)));
+        return;
+    }
+    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file);
+    ++attempts_[exercise_];
+    solved_[exercise_] = solved_[exercise_] || v.correct;
+    feedback_->setProperty("correct", v.correct);
+    // Right: why, from the trace. Wrong: try again; the explanation after three tries.
+    if (v.correct) {
+        feedback_->setStyleSheet(QStringLiteral("color: #1a7f37"));
+        feedback_->setText(tr("Right. %1").arg(q(v.feedback)));
+    } else {
+        feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
+        feedback_->setText(attempts_[exercise_] >= 3 || lecturer_
+                               ? tr("Not right. The answer is %1: %2")
+                                     .arg(q(v.expected), q(v.feedback))
+                               : tr("Not right yet (try %1 of 3). Step the replay and look at the "
+                                    "inspector, or ask for a hint.")
+                                     .arg(attempts_[exercise_]));
+    }
+    exerciseLabel_->setText(tr("Exercise %1 / %2%3")
+                                .arg(exercise_ + 1)
+                                .arg(lesson_.exercises.size())
+                                .arg(solved_[exercise_] ? tr(" (solved)") : QString()));
+    emit answered(q(ex.id), v.correct, typed);
+}
+
+void LessonPanel::hint() {
+    const Exercise& ex = lesson_.exercises[exercise_];
+    feedback_->setStyleSheet({});
+    feedback_->setText(tr("Hint: %1").arg(q(ex.hint.in(lang_))));
+}
+
+void LessonPanel::revealAnswer() {
+    if (!log_) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file);
+    feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
+    feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
+}
+
+void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
+    const QStringList headers = {tr("cells/axis"), tr("cells"),       tr("refs"),
+                                 tr("build ms"),   tr("tests/ray"),   tr("cells/ray"),
+                                 tr("skips/ray"),  tr("trace ms")};
+    sweepTable_->clear();
+    sweepTable_->setColumnCount(headers.size());
+    sweepTable_->setHorizontalHeaderLabels(headers);
+    sweepTable_->setRowCount(static_cast<int>(rows.size()));
+    for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+        const GridSweepRow& row = rows[r];
+        const QStringList cells = {QString::number(row.resolution),
+                                   QString::number(row.cells),
+                                   QString::number(row.references),
+                                   QString::number(row.buildMs, 'f', 1),
+                                   QString::number(row.testsPerRay, 'f', 1),
+                                   QString::number(row.cellsPerRay, 'f', 1),
+                                   QString::number(row.skipsPerRay, 'f', 1),
+                                   QString::number(row.traceMs, 'f', 1)};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            sweepTable_->setItem(r, c, item);
+        }
+    }
+    sweepTable_->resizeColumnsToContents();
+    sweepTable_->show();
+}
+
+}  // namespace raystep::gui
