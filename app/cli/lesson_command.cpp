@@ -1,8 +1,10 @@
 #include "lesson_command.h"
 
 #include "common.h"
+#include "progress.h"
 
 #include "raystep/lesson.h"
+#include "raystep/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +33,10 @@ void addLessonCommand(CLI::App& app, LessonArgs& a) {
     a.check->add_option("--answers", a.answers, "Answers: {\"lesson\": ID, \"answers\": {...}}")
         ->required();
     a.check->add_flag("--json", a.json, "Print the grade as JSON");
+    a.sweep = lesson->add_subcommand(
+        "sweep", "Run a lesson's grid sweep: the same rays at each grid resolution, as a table");
+    a.sweep->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
+    a.sweep->add_flag("--json", a.json, "Print the rows as JSON");
     for (CLI::App* c : {a.show, a.check})
         c->add_option("--lang", a.lang, "Language of the texts: en or it")->capture_default_str();
 }
@@ -104,6 +110,41 @@ int check(const Lesson& l, const std::string& answersPath, Language lang, bool j
     return 0;
 }
 
+int sweep(const Lesson& l, bool json) {
+    if (!l.sweep) return fail(l.file + ": lesson " + l.id + " has no sweep");
+    std::variant<Scene, Scene2D> scene;
+    try {
+        scene = loadAnyScene(lessonScenePath(l));
+    } catch (const SceneError& e) {
+        return fail(e.what());
+    }
+    ProgressBar bar("sweep");
+    const auto rows = runGridSweep(scene, *l.sweep, [&](double f) { return bar.update(f); });
+    bar.finish();
+    if (json) {
+        nlohmann::ordered_json out = nlohmann::ordered_json::array();
+        for (const GridSweepRow& r : rows)
+            out.push_back({{"resolution", r.resolution},
+                           {"cells", r.cells},
+                           {"references", r.references},
+                           {"build_ms", r.buildMs},
+                           {"trace_ms", r.traceMs},
+                           {"tests_per_ray", r.testsPerRay},
+                           {"cells_per_ray", r.cellsPerRay},
+                           {"skips_per_ray", r.skipsPerRay}});
+        std::printf("%s\n", out.dump(2).c_str());
+        return 0;
+    }
+    std::printf("%10s %10s %10s %9s %10s %10s %10s %9s\n", "cells/axis", "cells", "refs",
+                "build ms", "tests/ray", "cells/ray", "skips/ray", "trace ms");
+    for (const GridSweepRow& r : rows)
+        std::printf("%10d %10llu %10llu %9.1f %10.1f %10.1f %10.1f %9.1f\n", r.resolution,
+                    static_cast<unsigned long long>(r.cells),
+                    static_cast<unsigned long long>(r.references), r.buildMs, r.testsPerRay,
+                    r.cellsPerRay, r.skipsPerRay, r.traceMs);
+    return 0;
+}
+
 }  // namespace
 
 int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
@@ -122,6 +163,7 @@ int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
             return 0;
         }
         if (a.key->parsed()) return key(l);
+        if (a.sweep->parsed()) return sweep(l, a.json);
         return check(l, a.answers, *lang, a.json);
     } catch (const FileError& e) {
         return fail(e.what());

@@ -1,5 +1,5 @@
 #pragma once
-// raystep-cli lesson list | show | validate | key | check: the lessons from the command line,
+// raystep-cli lesson list | show | validate | key | check | sweep: the lessons from the command line,
 // and grading a course's answers against the recorded trace.
 #include <CLI/CLI.hpp>
 
@@ -13,6 +13,7 @@ struct LessonArgs {
     CLI::App* validate = nullptr;
     CLI::App* key = nullptr;
     CLI::App* check = nullptr;
+    CLI::App* sweep = nullptr;
     std::string lesson;   // id, number or file
     std::string answers;  // check: the answers file
     std::string lang = "en";

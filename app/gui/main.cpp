@@ -124,7 +124,8 @@ int main(int argc, char** argv) {
             QApplication::exit(2);
             return;
         }
-        std::printf("wrote %s (%dx%d)\n", shot.toUtf8().constData(), image.width(), image.height());
+        std::printf("wrote %s (%dx%d): %s\n", shot.toUtf8().constData(), image.width(),
+                    image.height(), shown->windowTitle().toUtf8().constData());
         QApplication::exit(0);
     });
     return app.exec();

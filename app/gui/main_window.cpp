@@ -324,7 +324,7 @@ void MainWindow::buildUi() {
 }
 
 bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
-                           const AccelOptions& base) {
+                           const AccelOptions& base, bool renderImage) {
     // Load and build off the GUI thread: a big mesh's tree takes seconds.
     std::optional<Session::Prepared> prepared;
     const std::exception_ptr error =
@@ -363,11 +363,13 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
                "and replayed in the 3D view, the inspector and the event list.")
                 .arg(QString::fromStdString(session_.name()),
                      QString::fromStdString(session_.scene3D()->description)));
-        progress_->setValue(0);
-        progress_->show();
-        cancel_->show();
-        statusBar()->showMessage(tr("Rendering %1...").arg(nameOrPath));
-        imageView_->startRender(kImageWidth, kImageHeight);
+        if (renderImage) {
+            progress_->setValue(0);
+            progress_->show();
+            cancel_->show();
+            statusBar()->showMessage(tr("Rendering %1...").arg(nameOrPath));
+            imageView_->startRender(kImageWidth, kImageHeight);
+        }
         // A first ray to replay before any click: the image's centre.
         session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
@@ -421,8 +423,11 @@ bool MainWindow::openLesson(const QString& idOrPath, bool quiet) {
         if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
         return false;
     }
+    const auto shows = [&](LessonView v) {
+        return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
+    };
     if (!openScene(QString::fromStdString(lessonScenePath(lesson)), lesson.accel, quiet,
-                   lesson.options))
+                   lesson.options, shows(LessonView::Image)))
         return false;
     try {
         session_.adoptLog(recordLessonTrace(lesson, session_.sceneVariant(), session_.accel3D(),
@@ -432,9 +437,6 @@ bool MainWindow::openLesson(const QString& idOrPath, bool quiet) {
         if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
         return false;
     }
-    const auto shows = [&](LessonView v) {
-        return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
-    };
     view2D_->setVisible(shows(LessonView::View2D));
     view3D_->setVisible(shows(LessonView::View3D));
     imageView_->setVisible(shows(LessonView::Image));

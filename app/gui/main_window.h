@@ -42,7 +42,7 @@ class MainWindow : public QMainWindow {
     /// Opens a scene (built-in name or file) with a structure; false (and a dialog unless quiet)
     /// on a bad scene, with the current one kept.
     bool openScene(const QString& nameOrPath, AccelKind kind, bool quiet = false,
-                   const AccelOptions& options = {});
+                   const AccelOptions& options = {}, bool renderImage = true);
     /// Opens a lesson (built-in id or number, or a file): its scene, structure and trace, its
     /// views, and the step the user's progress was at. False (and a dialog unless quiet) if not.
     bool openLesson(const QString& idOrPath, bool quiet = false);

@@ -3,6 +3,7 @@
 // clicking a pixel records and replays its ray tree, and --screenshot writes the window.
 #include "compare_window.h"
 #include "image_view.h"
+#include "lesson_panel.h"
 #include "main_window.h"
 #include "view2d.h"
 #include "vtk_view.h"
@@ -11,13 +12,17 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QFile>
 #include <QMouseEvent>
+#include <QStandardPaths>
+#include <QTest>
 #include <QTableWidget>
 
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 namespace raystep::gui {
@@ -165,6 +170,96 @@ TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
     EXPECT_GT(w.session().size(), 0u);
 }
 
+
+// A student's lesson: the steps move the replay, the exercise of the slides' DDA is answered by
+// clicking a cell of the 2D view, checked against the trace, and the progress is saved.
+TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
+    QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                  "/progress.json");
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    ASSERT_TRUE(w.openLesson("grid-2d-dda", true));
+    LessonPanel* p = w.lessonPanel();
+    ASSERT_TRUE(p->hasLesson());
+    EXPECT_TRUE(w.view2D()->isVisible());
+    EXPECT_FALSE(w.view3D()->isVisible());
+    // Step 2 is "after the first cell": the board's values, by hand as in the test above.
+    p->goToStep(1);
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8")) << w.inspectorText().toStdString();
+    const QImage step2 = grab(w.view2D());
+    p->goToStep(2);
+    EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1")) << w.inspectorText().toStdString();
+    EXPECT_NE(grab(w.view2D()), step2);
+
+    // Exercise 3: the ray is in (2, 1); tMaxX 2.6 > tMaxY 2.133, so the next cell is (2, 2).
+    p->selectExercise(2);
+    EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1"));  // the replay waits before the step
+    QApplication::processEvents();
+    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(3, 1).toPoint());
+    EXPECT_TRUE(p->feedback().startsWith("Not right")) << p->feedback().toStdString();
+    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(2, 2).toPoint());
+    EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+    EXPECT_TRUE(p->feedback().contains("steps in Y")) << p->feedback().toStdString();
+    // Typed with an Italian decimal comma, within the tolerance: tDeltaY = 1 / 0.75.
+    p->selectExercise(0);
+    EXPECT_FALSE(p->submit("1,3"));
+    EXPECT_TRUE(p->submit("1,333"));
+
+    // The progress file: written atomically, read back by the core's parser.
+    QFile f(w.progressPath());
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly)) << w.progressPath().toStdString();
+    const Progress saved = parseProgress(f.readAll().toStdString(), "progress.json");
+    const auto& rec = saved.lessons.at("grid-2d-dda").exercises;
+    EXPECT_EQ(rec.at("next-cell").attempts, 2);
+    EXPECT_TRUE(rec.at("next-cell").correct);
+    EXPECT_EQ(rec.at("next-cell").answer, "2,2");
+    EXPECT_EQ(rec.at("tdelta-y").attempts, 2);
+    EXPECT_EQ(saved.lessons.at("grid-2d-dda").step, 2);
+
+    // Reopened, the lesson comes back at the step it was left on.
+    MainWindow again;
+    ASSERT_TRUE(again.openLesson("6", true));
+    EXPECT_EQ(again.lessonPanel()->step(), 2);
+}
+
+TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    ASSERT_TRUE(w.openLesson("building-kdtree", true));
+    LessonPanel* p = w.lessonPanel();
+    EXPECT_TRUE(w.session().showingBuild());
+    p->selectExercise(0);
+    EXPECT_TRUE(p->feedback().isEmpty());  // a student sees no answer
+    const LessonRun run = runLesson(p->lesson());
+    const Answer ref = referenceAnswer(p->lesson().exercises[0], *run.log, p->lesson().file);
+    const QString pick =
+        QStringLiteral("%1=%2").arg(QChar("xyz"[int(ref.numbers[0])])).arg(ref.numbers[1], 0, 'g', 17);
+    EXPECT_TRUE(p->submit(pick)) << p->feedback().toStdString();
+    w.setLecturerMode(true);
+    p->selectExercise(1);
+    EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
+    EXPECT_FALSE(w.openLesson("no-such-lesson", true));
+    EXPECT_EQ(p->lesson().id, "building-kdtree");  // the open lesson is kept
+}
+
+TEST(App, EveryLessonOpensAndEveryStepShows) {
+    MainWindow w;
+    w.resize(1200, 800);
+    w.show();
+    for (const Lesson& l : builtinLessons()) {
+        SCOPED_TRACE(l.id);
+        ASSERT_TRUE(w.openLesson(QString::fromStdString(l.id), true));
+        for (std::size_t i = 0; i < l.steps.size(); ++i) {
+            w.lessonPanel()->goToStep(static_cast<int>(i));
+            EXPECT_EQ(w.session().cursor(), *resolvePosition(l.steps[i].at, w.session().log()));
+        }
+        EXPECT_GT(colours(grab(&w)), 50u);
+    }
+    w.imageView()->cancelRender();  // the last lesson's image is not needed
+}
+
 int run(const std::string& args) {
     const int status = std::system((std::string("'" RAYSTEP_APP "' ") + args).c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -174,6 +269,8 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("raystep-gui-" + std::to_string(getpid()));
     fs::create_directories(dir);
+    // The app saves progress as it runs: into the test's folder, not the user's.
+    setenv("XDG_DATA_HOME", dir.c_str(), 1);
     const fs::path a = dir / "a.png", b = dir / "b.png";
     ASSERT_EQ(
         run("--scene lecture-grid --step 3 --screenshot '" + a.string() + "' >/dev/null 2>&1"), 0);
@@ -184,6 +281,13 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     EXPECT_EQ(ia.size(), QSize(1500, 900));
     EXPECT_GT(colours(ia), 50u);
     EXPECT_NE(ia, ib);  // --step put the cursor elsewhere
+    // With no option the app opens on lesson 1.
+    const fs::path first = dir / "first.png", said = dir / "said.txt";
+    ASSERT_EQ(run("--screenshot '" + first.string() + "' > '" + said.string() + "' 2>/dev/null"), 0);
+    std::ifstream in(said);
+    const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(line.find("lesson 1: Rasterization and ray tracing"), std::string::npos) << line;
+    EXPECT_GT(colours(QImage(QString::fromStdString(first.string()))), 50u);
     // In Italian (--lang it): a different picture of the same replay.
     const fs::path it = dir / "it.png";
     ASSERT_EQ(run("--scene lecture-grid --step 3 --lang it --screenshot '" + it.string() +
@@ -197,6 +301,8 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     EXPECT_EQ(run("--scene nosuch --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--screenshot '" + (dir / "c.jpg").string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--lang fr --screenshot '" + c.string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--lesson 99 --screenshot '" + c.string() + "' 2>/dev/null"), 2);
+    EXPECT_EQ(run("--lesson 6 --scene default --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_FALSE(fs::exists(c));
     fs::remove_all(dir);
 }
@@ -207,6 +313,7 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName("raystep-tests");  // keep the user's settings apart
+    QStandardPaths::setTestModeEnabled(true);            // and the user's progress
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
