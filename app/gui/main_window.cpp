@@ -299,12 +299,8 @@ void MainWindow::buildUi() {
     replay->addAction(tr("&Last event"), QKeySequence(Qt::Key_End), this,
                       [this] { session_.setCursor(session_.size()); });
     QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
-    for (const Lesson& l : builtinLessons()) {
-        const QString id = QString::fromStdString(l.id);
-        lessons->addAction(QStringLiteral("&%1. %2").arg(l.number).arg(QString::fromStdString(l.title.en)),
-                           this, [this, id] { openLesson(id); });
-    }
-    lessons->addSeparator();
+    lessonsMenu_ = lessons->addMenu(tr("&Built-in lessons"));
+    fillLessonsMenu();
     lessons->addAction(tr("Open lesson &file..."), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), QString(),
                                                           tr("Lessons (*.json)"));
@@ -509,6 +505,17 @@ void MainWindow::setLanguage(Language lang) {
     lang_ = lang;
     lesson_->setLanguage(lang);
     lesson_->setLessons(builtinLessons());
+    fillLessonsMenu();
+}
+
+void MainWindow::fillLessonsMenu() {
+    lessonsMenu_->clear();
+    for (const Lesson& l : builtinLessons()) {
+        const QString id = QString::fromStdString(l.id);
+        lessonsMenu_->addAction(
+            QStringLiteral("&%1. %2").arg(l.number).arg(QString::fromStdString(l.title.in(lang_))),
+            this, [this, id] { openLesson(id); });
+    }
 }
 
 void MainWindow::setLecturerMode(bool on) {

@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QLabel;
+class QMenu;
 class QLineEdit;
 class QListView;
 class QProgressBar;
@@ -81,6 +82,7 @@ class MainWindow : public QMainWindow {
     void recordAnswer(const QString& exerciseId, bool correct, const QString& answer);
     void saveProgress();
     void runSweep();
+    void fillLessonsMenu();
     /// Runs `work` on a worker thread behind a progress dialog whose Cancel makes the progress
     /// callback say stop; the window keeps painting. Returns what `work` threw, if anything.
     std::exception_ptr runWithProgress(const QString& label,
@@ -92,6 +94,7 @@ class MainWindow : public QMainWindow {
     ImageView* imageView_ = nullptr;
     LessonPanel* lesson_ = nullptr;
     QAction* lecturerAction_ = nullptr;
+    QMenu* lessonsMenu_ = nullptr;
     Language lang_ = Language::En;
     Progress studentProgress_;
     QString progressPath_;

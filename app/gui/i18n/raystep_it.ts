@@ -97,125 +97,305 @@
     </message>
 </context>
 <context>
+    <name>raystep::gui::LessonPanel</name>
+    <message>
+        <location filename="../lesson_panel.cpp" line="27" />
+        <source>Open a lesson</source>
+        <translation>Apri una lezione</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="42" />
+        <source>&lt; Step</source>
+        <translation>&lt; Passo</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="43" />
+        <source>Step &gt;</source>
+        <translation>Passo &gt;</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="44" />
+        <source>Previous step (Page Up)</source>
+        <translation>Passo precedente (Pagina su)</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="45" />
+        <source>Next step (Page Down)</source>
+        <translation>Passo successivo (Pagina giù)</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="57" />
+        <source>Exercise</source>
+        <translation>Esercizio</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="83" />
+        <source>Check</source>
+        <translation>Verifica</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="84" />
+        <source>Hint</source>
+        <translation>Suggerimento</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="85" />
+        <source>Show answer</source>
+        <translation>Mostra la risposta</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="101" />
+        <source>Run the sweep</source>
+        <translation>Esegui lo sweep</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="113" />
+        <source>Lessons...</source>
+        <translation>Lezioni...</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="181" />
+        <source>Step</source>
+        <translation>Passo</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="185" />
+        <source>Step %1 / %2</source>
+        <translation>Passo %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="198" />
+        <location filename="../lesson_panel.cpp" line="299" />
+        <source>Exercise %1 / %2%3</source>
+        <translation>Esercizio %1 / %2%3</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="201" />
+        <location filename="../lesson_panel.cpp" line="302" />
+        <source> (solved)</source>
+        <translation> (risolto)</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="227" />
+        <source>X,Y (or click the cell in the 2D view)</source>
+        <translation>X,Y (o clicca la cella nella vista 2D)</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="230" />
+        <source>a number, e.g. 1.25</source>
+        <translation>un numero, ad es. 1,25</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="233" />
+        <source>a whole number</source>
+        <translation>un numero intero</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="236" />
+        <source>hit T, or miss</source>
+        <translation>hit T, oppure miss</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="236" />
+        <source>hit or miss</source>
+        <translation>hit oppure miss</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="279" />
+        <source>Cannot read that answer: %1.</source>
+        <translation>Risposta non leggibile: %1.</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="289" />
+        <source>Right. %1</source>
+        <translation>Giusto. %1</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="293" />
+        <source>Not right. The answer is %1: %2</source>
+        <translation>Non è giusto. La risposta è %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="295" />
+        <source>Not right yet (try %1 of 3). Step the replay and look at the inspector, or ask for a hint.</source>
+        <translation>Non ancora giusto (tentativo %1 di 3). Fai avanzare la riproduzione e guarda l'ispettore, oppure chiedi un suggerimento.</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="309" />
+        <source>Hint: %1</source>
+        <translation>Suggerimento: %1</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="317" />
+        <source>Answer: %1. %2</source>
+        <translation>Risposta: %1. %2</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="321" />
+        <source>cells/axis</source>
+        <translation>celle/asse</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="321" />
+        <source>cells</source>
+        <translation>celle</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="321" />
+        <source>refs</source>
+        <translation>riferimenti</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="322" />
+        <source>build ms</source>
+        <translation>costruzione (ms)</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="322" />
+        <source>tests/ray</source>
+        <translation>test/raggio</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="322" />
+        <source>cells/ray</source>
+        <translation>celle/raggio</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="323" />
+        <source>skips/ray</source>
+        <translation>salti/raggio</translation>
+    </message>
+    <message>
+        <location filename="../lesson_panel.cpp" line="323" />
+        <source>trace ms</source>
+        <translation>tracciamento (ms)</translation>
+    </message>
+</context>
+<context>
     <name>raystep::gui::MainWindow</name>
     <message>
-        <location filename="../main_window.cpp" line="74" />
+        <location filename="../main_window.cpp" line="78" />
         <source>DDA step</source>
         <translation>passo del DDA</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="75" />
+        <location filename="../main_window.cpp" line="79" />
         <source>primitive test</source>
         <translation>test di una primitiva</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="77" />
+        <location filename="../main_window.cpp" line="81" />
         <source>mailbox skip</source>
         <translation>saltata dalla mailbox</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="78" />
+        <location filename="../main_window.cpp" line="82" />
         <source>node enter</source>
         <translation>ingresso in un nodo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="79" />
+        <location filename="../main_window.cpp" line="83" />
         <source>ray begin</source>
         <translation>inizio di un raggio</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="80" />
+        <location filename="../main_window.cpp" line="84" />
         <source>hit</source>
         <translation>intersezione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="81" />
+        <location filename="../main_window.cpp" line="85" />
         <source>split chosen</source>
         <translation>split scelto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="96" />
+        <location filename="../main_window.cpp" line="102" />
+        <source>Progress file unreadable, kept as %1: %2</source>
+        <translation>File dei progressi illeggibile, conservato come %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="114" />
         <source>raystep</source>
         <translation>raystep</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="122" />
+        <location filename="../main_window.cpp" line="141" />
         <source>First event (Home)</source>
         <translation>Primo evento (Home)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="123" />
+        <location filename="../main_window.cpp" line="142" />
         <source>Step back (Left)</source>
         <translation>Passo indietro (Sinistra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="124" />
+        <location filename="../main_window.cpp" line="143" />
         <source>Play / pause (Space)</source>
         <translation>Avvia / pausa (Spazio)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="125" />
+        <location filename="../main_window.cpp" line="144" />
         <source>Step forward (Right)</source>
         <translation>Passo avanti (Destra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="129" />
+        <location filename="../main_window.cpp" line="148" />
         <source>next</source>
         <translation>successivo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="129" />
+        <location filename="../main_window.cpp" line="148" />
         <source>Jump to the next event of this kind (N)</source>
         <translation>Salta al prossimo evento di questo tipo (N)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="131" />
+        <location filename="../main_window.cpp" line="150" />
         <source>speed</source>
         <translation>velocità</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="135" />
+        <location filename="../main_window.cpp" line="154" />
         <source> /s</source>
         <translation> /s</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="161" />
+        <location filename="../main_window.cpp" line="180" />
         <source>Inspector</source>
         <translation>Ispettore</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="169" />
+        <location filename="../main_window.cpp" line="188" />
         <source>Filter events (e.g. cell, test, mailbox)</source>
         <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="184" />
+        <location filename="../main_window.cpp" line="203" />
         <source>Events</source>
         <translation>Eventi</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="193" />
-        <location filename="../main_window.cpp" line="300" />
+        <location filename="../main_window.cpp" line="212" />
+        <location filename="../main_window.cpp" line="404" />
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="203" />
+        <location filename="../main_window.cpp" line="222" />
         <source>Render cancelled</source>
         <translation>Rendering annullato</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="204" />
+        <location filename="../main_window.cpp" line="223" />
         <source>Rendered in %1 ms; click a pixel to trace it</source>
         <translation>Rendering in %1 ms; clicca un pixel per tracciarlo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="210" />
+        <location filename="../main_window.cpp" line="229" />
         <source>Pixel (%1, %2): %3 events recorded</source>
         <translation>Pixel (%1, %2): %3 eventi registrati</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="227" />
+        <location filename="../main_window.cpp" line="246" />
         <source>## Building the %1
 
 Each node is split by a plane. Step through the **candidate** planes (dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the next choice with the *split chosen* kind and **N**.</source>
@@ -224,137 +404,177 @@ Each node is split by a plane. Step through the **candidate** planes (dashed): t
 Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="239" />
+        <location filename="../main_window.cpp" line="269" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="240" />
+        <location filename="../main_window.cpp" line="270" />
         <source>&amp;Open scene...</source>
         <translation>&amp;Apri scena...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="241" />
+        <location filename="../main_window.cpp" line="271" />
         <source>Export &amp;trace...</source>
         <translation>Esporta &amp;traccia...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="242" />
+        <location filename="../main_window.cpp" line="272" />
         <source>Export screenshot of the &amp;window...</source>
         <translation>Esporta screenshot della &amp;finestra...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="243" />
+        <location filename="../main_window.cpp" line="273" />
         <source>window</source>
         <translation>finestra</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="244" />
+        <location filename="../main_window.cpp" line="274" />
         <source>Export screenshot of the &amp;2D view...</source>
         <translation>Esporta screenshot della vista &amp;2D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="245" />
+        <location filename="../main_window.cpp" line="275" />
         <source>2D view</source>
         <translation>vista 2D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="246" />
+        <location filename="../main_window.cpp" line="276" />
         <source>Export screenshot of the &amp;3D view...</source>
         <translation>Esporta screenshot della vista &amp;3D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="247" />
+        <location filename="../main_window.cpp" line="277" />
         <source>3D view</source>
         <translation>vista 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="249" />
+        <location filename="../main_window.cpp" line="278" />
+        <source>Export screenshot of the &amp;image view...</source>
+        <translation>Esporta screenshot della vista &amp;immagine...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="279" />
+        <source>image view</source>
+        <translation>vista immagine</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="280" />
+        <source>Export &amp;progress report...</source>
+        <translation>Esporta il resoconto dei &amp;progressi...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="282" />
         <source>&amp;Quit</source>
         <translation>&amp;Esci</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="250" />
+        <location filename="../main_window.cpp" line="283" />
         <source>&amp;Replay</source>
         <translation>&amp;Riproduzione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="251" />
+        <location filename="../main_window.cpp" line="284" />
         <source>Step &amp;forward</source>
         <translation>Passo &amp;avanti</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="253" />
+        <location filename="../main_window.cpp" line="286" />
         <source>Step &amp;back</source>
         <translation>Passo &amp;indietro</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="254" />
+        <location filename="../main_window.cpp" line="287" />
         <source>&amp;Play / pause</source>
         <translation>A&amp;vvia / pausa</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="256" />
+        <location filename="../main_window.cpp" line="289" />
         <source>&amp;Next event of the kind</source>
         <translation>&amp;Prossimo evento del tipo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="259" />
+        <location filename="../main_window.cpp" line="292" />
         <source>Replay the &amp;build (candidates, splits, leaves)</source>
         <translation>Riproduci la &amp;costruzione (candidati, split, foglie)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="261" />
+        <location filename="../main_window.cpp" line="294" />
         <source>Replay the &amp;example ray</source>
         <translation>Riproduci il raggio d'&amp;esempio</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="264" />
+        <location filename="../main_window.cpp" line="297" />
         <source>&amp;First event</source>
         <translation>P&amp;rimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="266" />
+        <location filename="../main_window.cpp" line="299" />
         <source>&amp;Last event</source>
         <translation>&amp;Ultimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="268" />
+        <location filename="../main_window.cpp" line="301" />
+        <source>&amp;Lessons</source>
+        <translation>&amp;Lezioni</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="308" />
+        <source>Open lesson &amp;file...</source>
+        <translation>Apri &amp;file di lezione...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="309" />
+        <source>Open lesson</source>
+        <translation>Apri lezione</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="310" />
+        <source>Lessons (*.json)</source>
+        <translation>Lezioni (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="313" />
+        <source>&amp;Lecturer mode (show answers)</source>
+        <translation>Modalità &amp;docente (mostra le risposte)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="317" />
         <source>&amp;View</source>
         <translation>&amp;Vista</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="269" />
+        <location filename="../main_window.cpp" line="318" />
         <source>&amp;Compare midpoint, median and SAH...</source>
         <translation>&amp;Confronta midpoint, mediana e SAH...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="271" />
+        <location filename="../main_window.cpp" line="320" />
         <source>&amp;Heat map of primitive tests</source>
         <translation>&amp;Mappa di calore dei test di primitive</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="274" />
+        <location filename="../main_window.cpp" line="323" />
         <source>&amp;Reset 3D camera</source>
         <translation>&amp;Reimposta la camera 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="298" />
+        <location filename="../main_window.cpp" line="331" />
         <source>Loading %1 and building its %2...</source>
         <translation>Caricamento di %1 e costruzione del suo %2...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="316" />
+        <location filename="../main_window.cpp" line="343" />
         <source>Opening %1 cancelled</source>
         <translation>Apertura di %1 annullata</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="321" />
+        <location filename="../main_window.cpp" line="348" />
         <source>Cannot open the scene</source>
         <translation>Impossibile aprire la scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="328" />
+        <location filename="../main_window.cpp" line="355" />
         <source>## %1
 
 %2
@@ -367,7 +587,7 @@ The ray is the slides' example. Step with **Right** and **Left**, play with **Sp
 Il raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="335" />
+        <location filename="../main_window.cpp" line="362" />
         <source>## %1
 
 %2
@@ -380,68 +600,101 @@ Click a pixel of the image to trace it: its ray tree is recorded and replayed in
 Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="342" />
+        <location filename="../main_window.cpp" line="370" />
         <source>Rendering %1...</source>
         <translation>Rendering di %1...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="350" />
+        <location filename="../main_window.cpp" line="381" />
         <source>raystep - %1</source>
         <translation>raystep - %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="357" />
+        <location filename="../main_window.cpp" line="423" />
+        <location filename="../main_window.cpp" line="437" />
+        <source>Cannot open the lesson</source>
+        <translation>Impossibile aprire la lezione</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="447" />
+        <source>raystep - lesson %1: %2</source>
+        <translation>raystep - lezione %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="481" />
+        <source>Cannot save the progress to %1</source>
+        <translation>Impossibile salvare i progressi in %1</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="485" />
+        <source>Export progress report</source>
+        <translation>Esporta il resoconto dei progressi</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="487" />
+        <source>Markdown (*.md)</source>
+        <translation>Markdown (*.md)</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="501" />
+        <source>Tracing the same rays at %1 grid resolutions...</source>
+        <translation>Tracciamento degli stessi raggi con %1 risoluzioni della griglia...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="520" />
         <source>Compare</source>
         <translation>Confronto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="358" />
+        <location filename="../main_window.cpp" line="521" />
         <source>Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the same table.</source>
         <translation>Il confronto mostra le scene 2D della lezione; per una scena 3D, raystep-cli compare stampa la stessa tabella.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="405" />
+        <location filename="../main_window.cpp" line="568" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="419" />
+        <location filename="../main_window.cpp" line="582" />
         <source>Open scene</source>
         <translation>Apri scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="419" />
+        <location filename="../main_window.cpp" line="582" />
         <source>Scenes (*.json)</source>
         <translation>Scene (*.json)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="424" />
+        <location filename="../main_window.cpp" line="587" />
         <source>Screenshot of the %1</source>
         <translation>Screenshot della %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="425" />
+        <location filename="../main_window.cpp" line="588" />
         <source>PNG images (*.png)</source>
         <translation>Immagini PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="428" />
-        <location filename="../main_window.cpp" line="442" />
+        <location filename="../main_window.cpp" line="493" />
+        <location filename="../main_window.cpp" line="591" />
+        <location filename="../main_window.cpp" line="605" />
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="428" />
+        <location filename="../main_window.cpp" line="493" />
+        <location filename="../main_window.cpp" line="591" />
         <source>Could not write %1</source>
         <translation>Impossibile scrivere %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="432" />
+        <location filename="../main_window.cpp" line="595" />
         <source>Export trace</source>
         <translation>Esporta traccia</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="433" />
+        <location filename="../main_window.cpp" line="596" />
         <source>Trace files (*.json)</source>
         <translation>File di traccia (*.json)</translation>
     </message>
@@ -449,12 +702,12 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
 <context>
     <name>raystep::gui::View2D</name>
     <message>
-        <location filename="../view2d.cpp" line="60" />
+        <location filename="../view2d.cpp" line="97" />
         <source>The 2D view shows the lecture's 2D scenes.</source>
         <translation>La vista 2D mostra le scene 2D della lezione.</translation>
     </message>
     <message>
-        <location filename="../view2d.cpp" line="305" />
+        <location filename="../view2d.cpp" line="342" />
         <source>SAH cost of each candidate (X blue, Y purple; dashed: leaf)</source>
         <translation>Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)</translation>
     </message>
@@ -462,12 +715,12 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
 <context>
     <name>raystep::gui::VtkView</name>
     <message>
-        <location filename="../vtk_view.cpp" line="246" />
+        <location filename="../vtk_view.cpp" line="258" />
         <source>The 3D view shows 3D scenes.</source>
         <translation>La vista 3D mostra le scene 3D.</translation>
     </message>
     <message>
-        <location filename="../vtk_view.cpp" line="260" />
+        <location filename="../vtk_view.cpp" line="272" />
         <source>Rasterization (VTK, OpenGL): the scene and the recorded rays</source>
         <translation>Rasterizzazione (VTK, OpenGL): la scena e i raggi registrati</translation>
     </message>
