@@ -13,7 +13,7 @@ configure "$RAYSTEP_ROOT/build"
 build "$RAYSTEP_ROOT/build" raystep-cli raystep
 
 if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
-  echo "raystep: opening the replay app (lecture-grid: the slides' DDA example)"
+  echo "raystep: opening the replay app on lesson 1 (Lessons menu: all 13)"
   exec "$RAYSTEP_ROOT/build/app/gui/raystep" "$@"
 fi
 
