@@ -135,7 +135,8 @@ void VtkView::rebuildRays() {
     raysActor_ = markersActor_ = nullptr;
     const Scene* s = session_.scene3D();
     const EventLog& log = session_.log();
-    if (!s || log.rays().empty()) {
+    // A build has no rays but has boxes and planes to show.
+    if (!s || (log.rays().empty() && !session_.showingBuild())) {
         dirty_ = true;
         update();
         return;
@@ -196,8 +197,28 @@ void VtkView::rebuildRays() {
             mc->InsertNextTypedTuple(colour);
         }
     };
+    // A split plane: its outline in the box and the two diagonals, so it reads as a plane.
+    const auto plane = [&](const Vec3& lo, const Vec3& hi, int axis, double at,
+                           const unsigned char* colour) {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        Vec3 c[4];
+        for (int k = 0; k < 4; ++k) {
+            c[k][axis] = at;
+            c[k][u] = (k == 1 || k == 2) ? hi[u] : lo[u];
+            c[k][v] = (k >= 2) ? hi[v] : lo[v];
+        }
+        vtkIdType id[4];
+        for (int k = 0; k < 4; ++k) id[k] = mp->InsertNextPoint(c[k].x, c[k].y, c[k].z);
+        static const int edges[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
+        for (const auto& e : edges) {
+            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
+            ml->InsertNextCell(2, pair);
+            mc->InsertNextTypedTuple(colour);
+        }
+    };
     static const unsigned char kVoxel[3] = {255, 200, 60}, kNode[3] = {120, 200, 255},
-                               kHitMark[3] = {40, 220, 90};
+                               kHitMark[3] = {40, 220, 90}, kCandidate[3] = {150, 150, 160},
+                               kChosen[3] = {230, 50, 50};
     const Accelerator* accel = session_.accel3D();
     if (const auto* grid = accel ? std::get_if<UniformGrid>(accel) : nullptr) {
         const auto& spec = grid->spec();
@@ -222,6 +243,26 @@ void VtkView::rebuildRays() {
             }
         }
         box(lo, hi, kNode);
+        if (!kd->nodes()[id].leaf())
+            plane(lo, hi, kd->nodes()[id].axis, kd->nodes()[id].split, kChosen);
+    } else if (const auto* bvh = accel ? std::get_if<Bvh3>(accel) : nullptr;
+               bvh && !session_.showingBuild()) {
+        // Object subdivision: every box the ray has entered (they may overlap), the current one
+        // brighter.
+        static const unsigned char kEntered[3] = {70, 110, 160};
+        for (const std::uint32_t n : st.nodesEntered)
+            if (n < bvh->nodes().size())
+                box(bvh->nodes()[n].bounds.lo, bvh->nodes()[n].bounds.hi,
+                    st.node && n == st.node->node ? kNode : kEntered);
+    }
+    // A build's replay: the node being split, the candidate plane of the sweep, the choice.
+    if (session_.showingBuild() && st.buildNode && st.buildNode->node < log.nodes().size()) {
+        const NodeRecord& n = log.nodes()[st.buildNode->node];
+        const Vec3 lo(n.lo[0], n.lo[1], n.lo[2]), hi(n.hi[0], n.hi[1], n.hi[2]);
+        box(lo, hi, kNode);
+        if (!st.candidates.empty())
+            plane(lo, hi, st.candidates.back().axis, st.candidates.back().position, kCandidate);
+        if (st.chosen) plane(lo, hi, st.chosen->axis, st.chosen->position, kChosen);
     }
     for (std::size_t r = 0; r < log.rays().size(); ++r) {
         if (!begun[r] || !(ends[r] >= 0) || !std::isfinite(ends[r])) continue;

@@ -162,6 +162,35 @@ TEST(App, CompareModeShowsThreeTrees) {
     c->close();
 }
 
+// In 3D the build's replay draws the node's box, the candidate plane and the chosen plane.
+TEST(App, The3DViewShowsABuildsPlanes) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(w.openScene("default", AccelKind::KdTree, true, {}, /*renderImage=*/false));
+    Session& s = w.session();
+    s.recordBuild();
+    s.setCursor(afterNth(s, variantIndex<BuildNode>(), 0));
+    const QImage node = grab(w.view3D());
+    s.setCursor(afterNth(s, variantIndex<SplitCandidate>(), 3));
+    const QImage candidate = grab(w.view3D());
+    s.setCursor(afterNth(s, variantIndex<SplitChosen>(), 0));
+    const QImage chosen = grab(w.view3D());
+    EXPECT_NE(node, candidate);
+    EXPECT_NE(candidate, chosen);
+    // The chosen plane is red: more strongly red pixels than before it was chosen.
+    const auto reds = [](const QImage& i) {
+        int n = 0;
+        for (int y = 0; y < i.height(); ++y)
+            for (int x = 0; x < i.width(); ++x) {
+                const QColor c = i.pixelColor(x, y);
+                n += c.red() > 200 && c.green() < 80 && c.blue() < 80;
+            }
+        return n;
+    };
+    EXPECT_GT(reds(chosen), reds(candidate));
+}
+
 TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
     MainWindow w;
     ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
