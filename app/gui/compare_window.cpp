@@ -1,6 +1,7 @@
 #include "compare_window.h"
 
 #include "view2d.h"
+#include "vtk_view.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -11,7 +12,8 @@
 
 namespace raystep::gui {
 
-CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, QWidget* parent)
+CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, Pixel pixel,
+                             QWidget* parent)
     : QWidget(parent) {
     setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
     const SplitMethod splits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
@@ -22,14 +24,20 @@ CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, QWidget* 
         AccelOptions o;
         o.kdtree.split = o.bvh.split = splits[i];
         sessions_[i]->load(scene, kind, o);
-        sessions_[i]->traceExampleRay();
+        if (sessions_[i]->is2D())
+            sessions_[i]->traceExampleRay();
+        else
+            sessions_[i]->tracePixel(pixel.x, pixel.y, pixel.width, pixel.height);
         longest = std::max(longest, static_cast<int>(sessions_[i]->size()));
         auto* column = new QVBoxLayout;
         auto* title = new QLabel(QStringLiteral("<b>%1 %2</b>")
                                      .arg(QString::fromUtf8(accelKindName(kind).data()),
                                           QString::fromUtf8(name(splits[i]).data())));
         column->addWidget(title);
-        views_[i] = new View2D(*sessions_[i]);
+        if (sessions_[i]->is2D())
+            views_[i] = new View2D(*sessions_[i]);
+        else
+            views_[i] = new VtkView(*sessions_[i]);
         views_[i]->setMinimumSize(300, 240);
         column->addWidget(views_[i], 1);
         views->addLayout(column, 1);

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption langOpt("lang", "Interface language: en or it.", "en|it", "en");
     const QCommandLineOption compareOpt(
         "compare",
-        "Also open compare mode (midpoint, median, SAH) on the 2D scene; "
+        "Also open compare mode (midpoint, median, SAH) on the scene; "
         "--screenshot then saves that window.");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     QWidget* shown = &window;
     if (parser.isSet(compareOpt)) {
         shown = window.openCompare();
-        if (!shown) return fail("--compare: compare mode shows the lecture's 2D scenes");
+        if (!shown) return fail("--compare: compare mode could not be opened");
     }
     if (shot.isEmpty()) return app.exec();
 

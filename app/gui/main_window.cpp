@@ -523,14 +523,28 @@ void MainWindow::setLecturerMode(bool on) {
 }
 
 CompareWindow* MainWindow::openCompare() {
-    if (!session_.is2D()) {
-        QMessageBox::information(this, tr("Compare"),
-                                 tr("Compare mode shows the lecture's 2D scenes; for a 3D scene, "
-                                    "raystep-cli compare prints the same table."));
+    const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
+    // 3D: the pixel being replayed (clicked, or a lesson's, in the lesson's image size), else
+    // the image's centre.
+    CompareWindow::Pixel pixel{kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight};
+    for (const Event& e : session_.log().events())
+        if (const auto* p = std::get_if<PixelResult>(&e)) {
+            pixel = {static_cast<int>(p->x), static_cast<int>(p->y), kImageWidth, kImageHeight};
+            const bool lessons = lesson_->hasLesson() &&
+                                 lesson_->lesson().trace.kind == LessonTrace::Kind::Pixel;
+            if (lessons && lesson_->lesson().trace.x == pixel.x &&
+                lesson_->lesson().trace.y == pixel.y) {
+                pixel.width = lesson_->lesson().trace.width;
+                pixel.height = lesson_->lesson().trace.height;
+            }
+        }
+    CompareWindow* compare = nullptr;
+    try {
+        compare = new CompareWindow(session_.name(), kind, pixel);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
         return nullptr;
     }
-    const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
-    auto* compare = new CompareWindow(session_.name(), kind);
     compare->setAttribute(Qt::WA_DeleteOnClose);
     compare->resize(1400, 800);
     compare->show();

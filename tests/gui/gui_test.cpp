@@ -191,6 +191,37 @@ TEST(App, The3DViewShowsABuildsPlanes) {
     EXPECT_GT(reds(chosen), reds(candidate));
 }
 
+// Compare mode on a 3D scene: the clicked pixel's ray tree through three kd-trees, in three 3D
+// views; every tree finds the same colour (the PixelResult) for it.
+TEST(App, CompareModeIn3DReplaysTheClickedPixel) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(w.openScene("whitted", AccelKind::KdTree, true, {}, /*renderImage=*/false));
+    w.session().tracePixel(150, 100, 320, 240);
+    CompareWindow* c = w.openCompare();
+    ASSERT_NE(c, nullptr);
+    c->resize(1400, 800);
+    c->show();
+    QApplication::processEvents();
+    const auto pixelOf = [](const Session& s) {
+        return std::get<PixelResult>(s.log().events().back());
+    };
+    const PixelResult main = pixelOf(w.session());
+    for (int i = 0; i < 3; ++i) {
+        const Session& s = c->session(i);
+        ASSERT_FALSE(s.is2D());
+        EXPECT_EQ(s.options().kdtree.split, static_cast<SplitMethod>(i));
+        const PixelResult p = pixelOf(s);
+        EXPECT_EQ(p.x, 150u);
+        EXPECT_EQ(p.y, 100u);
+        EXPECT_EQ(p.rgb, main.rgb);
+    }
+    c->setStep(1 << 20);
+    EXPECT_GT(colours(grab(c)), 50u);
+    delete c;
+}
+
 TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
     MainWindow w;
     ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
