@@ -124,6 +124,19 @@ void View2D::paintEvent(QPaintEvent*) {
 
     // A build being replayed: the node being split, the candidate planes so far, the choice.
     const bool build = session_.showingBuild();
+    if (build) {
+        // The tree as far as it is built: the planes chosen before the cursor.
+        const EventLog& log = session_.log();
+        g.setPen(QPen(QColor(90, 90, 100), 1.5));
+        for (std::size_t i = 0; i < st.cursor; ++i)
+            if (const auto* c = std::get_if<SplitChosen>(&log.events()[i]);
+                c && c->node < log.nodes().size()) {
+                const NodeRecord& n = log.nodes()[c->node];
+                const Vec2 a = c->axis == 0 ? Vec2(c->position, n.lo[1]) : Vec2(n.lo[0], c->position);
+                const Vec2 b = c->axis == 0 ? Vec2(c->position, n.hi[1]) : Vec2(n.hi[0], c->position);
+                g.drawLine(toScreen(a), toScreen(b));
+            }
+    }
     if (build && st.buildNode && st.buildNode->node < session_.log().nodes().size()) {
         const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
         const QRectF box(toScreen(Vec2(n.lo[0], n.hi[1])), toScreen(Vec2(n.hi[0], n.lo[1])));
@@ -282,7 +295,8 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
             l.hi[n.axis] = r.lo[n.axis] = n.split;
             const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
             const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
-            lp.drawLine(toScreen(a), toScreen(b));
+            // A build's replay draws only the planes chosen so far (paintEvent), not the answer.
+            if (!session_.showingBuild()) lp.drawLine(toScreen(a), toScreen(b));
             self(self, id + 1, l);
             self(self, n.index, r);
         };
