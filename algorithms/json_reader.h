@@ -144,7 +144,7 @@ json parseJsonFile(std::string_view text, const std::string& fileName) {
                 ? 1
                 : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
         throw Error(fileName, line, "",
-                         "number '" + token + "' is out of range: values must be finite");
+                    "number '" + token + "' is out of range: values must be finite");
     } catch (const json::parse_error& e) {
         // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
         std::string what = e.what();

@@ -74,11 +74,13 @@ LocalText readText(const Reader& r, const json& j, const std::string& path) {
     // A string, or an array of lines (easier to write and review than one long string).
     const auto one = [&](const json& v, const std::string& p) {
         if (v.is_string()) return v.get<std::string>();
-        if (!v.is_array()) r.fail(p, "expected a string or an array of lines, got " +
-                                         Reader::typeName(v));
+        if (!v.is_array())
+            r.fail(p, "expected a string or an array of lines, got " + Reader::typeName(v));
         std::string s;
-        for (std::size_t i = 0; i < v.size(); ++i)
-            s += (i ? "\n" : "") + r.string(v[i], JsonLineMap::element(p, i));
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            if (i) s += '\n';
+            s += r.string(v[i], JsonLineMap::element(p, i));
+        }
         return s;
     };
     r.requireObject(j, path);
@@ -100,8 +102,9 @@ ReplayPosition readPosition(const Reader& r, const json& j, const std::string& p
             at.mode = ReplayPosition::Mode::End;
             return at;
         }
-        r.fail(path, "expected \"start\", \"end\", a number of events, or {\"after\" | "
-                     "\"before\": EVENT, \"nth\": N}");
+        r.fail(path,
+               "expected \"start\", \"end\", a number of events, or {\"after\" | "
+               "\"before\": EVENT, \"nth\": N}");
     }
     if (j.is_number()) {
         at.mode = ReplayPosition::Mode::Cursor;
@@ -218,9 +221,8 @@ void readTrace(const Reader& r, const json& j, const std::string& path, LessonTr
         t.height = wh[1];
     });
     if (t.kind == LessonTrace::Kind::Pixel && (t.x >= t.width || t.y >= t.height))
-        r.fail(JsonLineMap::child(path, "pixel"),
-               "outside the " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                   " image");
+        r.fail(JsonLineMap::child(path, "pixel"), "outside the " + std::to_string(t.width) + "x" +
+                                                      std::to_string(t.height) + " image");
 }
 
 Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
@@ -267,7 +269,8 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
         const auto q = valueNamed(kQuantities, r.string(j["quantity"], p));
         if (!q) {
             std::string names;
-            for (const auto& [v, n] : kQuantities) names += (names.empty() ? "" : ", ") + std::string(n);
+            for (const auto& [v, n] : kQuantities)
+                names += (names.empty() ? "" : ", ") + std::string(n);
             r.fail(p, "unknown quantity (expected one of " + names + ")");
         }
         ex.quantity = *q;
@@ -390,7 +393,8 @@ Lesson loadLessonText(std::string_view text, const std::string& fileName) {
               [&](const json& v, const std::string& p) { readSetup(r, v, p, l); });
     readTrace(r, root["trace"], "trace", l.trace);
     ifPresent(root, "", "views", [&](const json& v, const std::string& p) {
-        if (!v.is_array() || v.empty()) r.fail(p, "expected a list of views: \"2d\", \"3d\", \"image\"");
+        if (!v.is_array() || v.empty())
+            r.fail(p, "expected a list of views: \"2d\", \"3d\", \"image\"");
         for (std::size_t i = 0; i < v.size(); ++i) {
             const std::string ep = JsonLineMap::element(p, i);
             const auto view = valueNamed(kViews, r.string(v[i], ep));
@@ -459,7 +463,8 @@ Lesson loadLesson(const std::string& idOrPath) {
             ids += (ids.empty() ? "" : ", ") + std::to_string(l.number) + " " + l.id;
         throw LessonError(idOrPath, 0, "",
                           "no such lesson file, and no built-in lesson of that id or number "
-                          "(built-in: " + ids + ")");
+                          "(built-in: " +
+                              ids + ")");
     }
     const auto text = readWholeFile(idOrPath);
     if (!text) throw LessonError(idOrPath, 0, "", "cannot read the lesson file");
@@ -515,15 +520,16 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
 LessonRun runLesson(const Lesson& lesson) {
     LessonRun run;
     try {
-        run.scene = std::make_unique<std::variant<Scene, Scene2D>>(
-            loadAnyScene(lessonScenePath(lesson)));
+        run.scene =
+            std::make_unique<std::variant<Scene, Scene2D>>(loadAnyScene(lessonScenePath(lesson)));
     } catch (const SceneError& e) {
         throw LessonError(lesson.file, 0, "scene", e.what());
     }
     if (const auto* s2 = std::get_if<Scene2D>(run.scene.get()))
         run.accel2D = buildAccelerator2D(*s2, lesson.accel, lesson.options);
     else
-        run.accel3D = buildAccelerator(std::get<Scene>(*run.scene), lesson.accel, {}, lesson.options);
+        run.accel3D =
+            buildAccelerator(std::get<Scene>(*run.scene), lesson.accel, {}, lesson.options);
     run.log = recordLessonTrace(lesson, *run.scene, run.accel3D ? &*run.accel3D : nullptr,
                                 run.accel2D ? &*run.accel2D : nullptr);
     return run;
@@ -682,27 +688,28 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             if (!before) {
                 why = tr2(lang,
                           "The walk starts in the cell that contains the ray's entry point "
-                          "(t_enter): " + cellText(next->second.cell, dims) + ".",
+                          "(t_enter): " +
+                              cellText(next->second.cell, dims) + ".",
                           "La visita comincia dalla cella che contiene il punto d'ingresso del "
-                          "raggio (t_enter): " + cellText(next->second.cell, dims) + ".");
+                          "raggio (t_enter): " +
+                              cellText(next->second.cell, dims) + ".");
             } else {
                 std::string tmax;
                 for (int i = 0; i < dims; ++i)
                     tmax += std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " +
                             fmt(before->tMax[i]);
                 const std::string axes = axesText(next->second.axes);
-                why = tr2(lang,
-                          "In cell " + cellText(before->cell, dims) + " the DDA compares " + tmax +
-                              ": the smallest is along " + axes + ", so it steps in " + axes +
-                              " to " + cellText(next->second.cell, dims) +
-                              (axes.size() > 1 ? " (a tie: the ray passes through a corner)" : "") +
-                              ".",
-                          "Nella cella " + cellText(before->cell, dims) + " il DDA confronta " +
-                              tmax + ": il minore è lungo " + axes + ", quindi avanza in " + axes +
-                              " fino a " + cellText(next->second.cell, dims) +
-                              (axes.size() > 1 ? " (pareggio: il raggio passa per un vertice)"
-                                               : "") +
-                              ".");
+                why = tr2(
+                    lang,
+                    "In cell " + cellText(before->cell, dims) + " the DDA compares " + tmax +
+                        ": the smallest is along " + axes + ", so it steps in " + axes + " to " +
+                        cellText(next->second.cell, dims) +
+                        (axes.size() > 1 ? " (a tie: the ray passes through a corner)" : "") + ".",
+                    "Nella cella " + cellText(before->cell, dims) + " il DDA confronta " + tmax +
+                        ": il minore è lungo " + axes + ", quindi avanza in " + axes + " fino a " +
+                        cellText(next->second.cell, dims) +
+                        (axes.size() > 1 ? " (pareggio: il raggio passa per un vertice)" : "") +
+                        ".");
             }
             break;
         }
@@ -718,15 +725,18 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             } else if (q >= Quantity::TDeltaX && q <= Quantity::TExit) {
                 const auto e = nextEvent<DdaSetup>(log, c.at);
                 if (!e) c.fail("no DDA set-up follows its position");
-                v = q == Quantity::TEnter  ? e->second.tEnter
-                    : q == Quantity::TExit ? e->second.tExit
-                                           : e->second.tDelta[static_cast<int>(q) -
-                                                              static_cast<int>(Quantity::TDeltaX)];
+                v = q == Quantity::TEnter ? e->second.tEnter
+                    : q == Quantity::TExit
+                        ? e->second.tExit
+                        : e->second
+                              .tDelta[static_cast<int>(q) - static_cast<int>(Quantity::TDeltaX)];
                 source = "dda_setup";
             } else if (q >= Quantity::HitT && q <= Quantity::HitV) {
                 const auto e = nextEvent<RayHit>(log, c.at);
                 if (!e) c.fail("no hit follows its position");
-                v = q == Quantity::HitT ? e->second.t : q == Quantity::HitU ? e->second.u : e->second.v;
+                v = q == Quantity::HitT   ? e->second.t
+                    : q == Quantity::HitU ? e->second.u
+                                          : e->second.v;
                 source = "ray_hit (primitive " + std::to_string(e->second.prim) + ")";
             } else if (q == Quantity::TestT) {
                 std::optional<PrimitiveTest> hit;
@@ -745,13 +755,16 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                 const auto e = nextEvent<SplitCandidate>(log, c.at);
                 if (!e) c.fail("no split candidate follows its position");
                 const SplitCandidate& s = e->second;
-                v = q == Quantity::CandidatePL ? s.pl : q == Quantity::CandidatePR ? s.pr : s.sahCost;
+                v = q == Quantity::CandidatePL   ? s.pl
+                    : q == Quantity::CandidatePR ? s.pr
+                                                 : s.sahCost;
                 source = std::string("split_candidate ") + axisName(s.axis) + " = " +
                          fmt(s.position) + " (NL " + std::to_string(s.nl) + ", NR " +
-                         std::to_string(s.nr) + ", P(L|C) " + fmt(s.pl) + ", P(R|C) " +
-                         fmt(s.pr) + ", cost " + fmt(s.sahCost) + ")";
+                         std::to_string(s.nr) + ", P(L|C) " + fmt(s.pl) + ", P(R|C) " + fmt(s.pr) +
+                         ", cost " + fmt(s.sahCost) + ")";
             }
-            if (!std::isfinite(v)) c.fail("the trace's value is not finite (the ray never crosses)");
+            if (!std::isfinite(v))
+                c.fail("the trace's value is not finite (the ray never crosses)");
             a.numbers.push_back(v);
             why = tr2(lang,
                       "The trace records " + std::string(quantityName(q)) + " = " + fmt(v) +
@@ -766,7 +779,8 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             std::optional<SplitCandidate> best;
             int count = 0;
             for (const Event& e : log.events())
-                if (const auto* s = std::get_if<SplitCandidate>(&e); s && s->node == node->second.node) {
+                if (const auto* s = std::get_if<SplitCandidate>(&e);
+                    s && s->node == node->second.node) {
                     ++count;
                     if (!best || s->sahCost < best->sahCost) best = *s;
                 }
@@ -775,17 +789,18 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             const std::string formula = "C_trav + C_isect (" + fmt(best->pl) + " x " +
                                         std::to_string(best->nl) + " + " + fmt(best->pr) + " x " +
                                         std::to_string(best->nr) + ")";
-            why = tr2(lang,
-                      "Of the " + std::to_string(count) + " candidates of node " +
-                          std::to_string(node->second.node) + ", the cheapest is " +
-                          axisName(best->axis) + " = " + fmt(best->position) + ": NL = " +
-                          std::to_string(best->nl) + ", NR = " + std::to_string(best->nr) +
-                          ", cost " + formula + " = " + fmt(best->sahCost) + ".",
-                      "Tra i " + std::to_string(count) + " candidati del nodo " +
-                          std::to_string(node->second.node) + ", il meno costoso è " +
-                          axisName(best->axis) + " = " + fmt(best->position) + ": NL = " +
-                          std::to_string(best->nl) + ", NR = " + std::to_string(best->nr) +
-                          ", costo " + formula + " = " + fmt(best->sahCost) + ".");
+            why = tr2(
+                lang,
+                "Of the " + std::to_string(count) + " candidates of node " +
+                    std::to_string(node->second.node) + ", the cheapest is " +
+                    axisName(best->axis) + " = " + fmt(best->position) +
+                    ": NL = " + std::to_string(best->nl) + ", NR = " + std::to_string(best->nr) +
+                    ", cost " + formula + " = " + fmt(best->sahCost) + ".",
+                "Tra i " + std::to_string(count) + " candidati del nodo " +
+                    std::to_string(node->second.node) + ", il meno costoso è " +
+                    axisName(best->axis) + " = " + fmt(best->position) +
+                    ": NL = " + std::to_string(best->nl) + ", NR = " + std::to_string(best->nr) +
+                    ", costo " + formula + " = " + fmt(best->sahCost) + ".");
             break;
         }
         case ExerciseKind::Count: {
@@ -812,13 +827,14 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                 (c.ex.rayKind ? " " + std::string(kRayKindNames[static_cast<int>(*c.ex.rayKind)])
                               : std::string()) +
                 (c.ex.rayDepth ? " depth " + std::to_string(*c.ex.rayDepth) : std::string());
-            why = tr2(lang,
-                      "The trace holds " + std::to_string(n) + " events " + what + " from " +
-                          describePosition(c.ex.at) + " to " +
-                          (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".",
-                      "La traccia contiene " + std::to_string(n) + " eventi " + what + " da " +
-                          describePosition(c.ex.at) + " a " +
-                          (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".");
+            why = tr2(
+                lang,
+                "The trace holds " + std::to_string(n) + " events " + what + " from " +
+                    describePosition(c.ex.at) + " to " +
+                    (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".",
+                "La traccia contiene " + std::to_string(n) + " eventi " + what + " da " +
+                    describePosition(c.ex.at) + " a " +
+                    (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".");
             break;
         }
         case ExerciseKind::HitOrMiss: {
@@ -831,8 +847,8 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                       ? tr2(lang,
                             "The test of primitive " + prim + " hits at t = " + fmt(t->second.t) +
                                 " (the smallest root inside the ray's interval).",
-                            "Il test della primitiva " + prim + " colpisce a t = " +
-                                fmt(t->second.t) +
+                            "Il test della primitiva " + prim +
+                                " colpisce a t = " + fmt(t->second.t) +
                                 " (la radice più piccola nell'intervallo del raggio).")
                       : tr2(lang,
                             "The test of primitive " + prim +
@@ -882,7 +898,8 @@ std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std
         case ExerciseKind::PickSplit: {
             const std::string s = lower(text);
             const auto eq = s.find('=');
-            if (eq == std::string::npos) return bad("expected a split plane as x=POSITION (or y=, z=)");
+            if (eq == std::string::npos)
+                return bad("expected a split plane as x=POSITION (or y=, z=)");
             const auto axisPart = splitAny(std::string_view(s).substr(0, eq), " \t");
             if (axisPart.size() != 1 || axisPart[0].size() != 1 ||
                 std::string_view("xyz").find(axisPart[0][0]) == std::string_view::npos)
@@ -932,10 +949,9 @@ std::string formatAnswer(const Exercise& ex, const Answer& a) {
         case ExerciseKind::Count:
             return a.numbers.empty() ? "" : std::to_string(static_cast<long long>(a.numbers[0]));
         case ExerciseKind::PickSplit:
-            return a.numbers.size() < 2
-                       ? ""
-                       : std::string(axisName(static_cast<int>(a.numbers[0]))) + "=" +
-                             fmt(a.numbers[1]);
+            return a.numbers.size() < 2 ? ""
+                                        : std::string(axisName(static_cast<int>(a.numbers[0]))) +
+                                              "=" + fmt(a.numbers[1]);
         case ExerciseKind::HitOrMiss:
             if (!a.hit) return "";
             if (!*a.hit) return "miss";
@@ -981,7 +997,8 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
             if (answer.numbers.size() != 2) break;
             const double bestCost = [&] {
                 double best = kInfinity;
-                for (const SplitCandidate& s : splitCandidates(ex, log)) best = std::min(best, s.sahCost);
+                for (const SplitCandidate& s : splitCandidates(ex, log))
+                    best = std::min(best, s.sahCost);
                 return best;
             }();
             for (const SplitCandidate& s : splitCandidates(ex, log))
@@ -991,10 +1008,10 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
             break;
         }
         case ExerciseKind::HitOrMiss:
-            v.correct = answer.hit == ref.hit &&
-                        (!ex.withT || !*ref.hit ||
-                         (answer.numbers.size() == 1 &&
-                          close(answer.numbers[0], ref.numbers[0], ex.tolerance)));
+            v.correct =
+                answer.hit == ref.hit && (!ex.withT || !*ref.hit ||
+                                          (answer.numbers.size() == 1 &&
+                                           close(answer.numbers[0], ref.numbers[0], ex.tolerance)));
             break;
     }
     return v;
@@ -1061,8 +1078,9 @@ AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName) 
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile) {
     if (sheet.lesson != lesson.id && sheet.lesson != std::to_string(lesson.number))
-        throw LessonError(sheetFile, 0, "lesson",
-                          "the answers are for lesson '" + sheet.lesson + "', not '" + lesson.id + "'");
+        throw LessonError(
+            sheetFile, 0, "lesson",
+            "the answers are for lesson '" + sheet.lesson + "', not '" + lesson.id + "'");
     for (const auto& [id, text] : sheet.answers)
         if (!lesson.exercise(id))
             throw LessonError(sheetFile, sheet.lines.at(id), "answers." + id,
@@ -1158,7 +1176,8 @@ std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons
         int d = 0, r = 0, attempts = 0;
         if (const auto lp = p.lessons.find(l.id); lp != p.lessons.end())
             for (const Exercise& ex : l.exercises)
-                if (const auto e = lp->second.exercises.find(ex.id); e != lp->second.exercises.end()) {
+                if (const auto e = lp->second.exercises.find(ex.id);
+                    e != lp->second.exercises.end()) {
                     d += e->second.attempts > 0;
                     r += e->second.correct;
                     attempts += e->second.attempts;
@@ -1203,7 +1222,8 @@ std::vector<GridSweepRow> runGridSweep(const std::variant<Scene, Scene2D>& scene
             row.references = sum.stats.references;
             for (int y = 0; y < spec.height; ++y)
                 for (int x = 0; x < spec.width; ++x, ++rays)
-                    intersect(accel, s3->camera.generateRay(x + 0.5, y + 0.5, spec.width, spec.height), c);
+                    intersect(accel,
+                              s3->camera.generateRay(x + 0.5, y + 0.5, spec.width, spec.height), c);
         } else {
             // 2D: a fan of rays from the example ray's origin (or the scene's corner).
             const Accelerator2D accel = buildAccelerator2D(*s2, AccelKind::Grid, o);

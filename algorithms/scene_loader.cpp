@@ -15,9 +15,9 @@
 
 namespace raystep {
 
-using nlohmann::json;
 using detail::ifPresent;
 using detail::joinNames;
+using nlohmann::json;
 using Reader = detail::JsonReader<SceneError>;
 
 namespace {
@@ -392,7 +392,8 @@ namespace {
 std::vector<std::string> builtinNames(bool twoD) {
     std::vector<std::string> names;
     for (const std::string& f : embeddedFileNames())
-        if (f.find('/') == std::string::npos && f.ends_with(".json") && isScene2DText(*embeddedFile(f)) == twoD)
+        if (f.find('/') == std::string::npos && f.ends_with(".json") &&
+            isScene2DText(*embeddedFile(f)) == twoD)
             names.push_back(f.substr(0, f.size() - 5));
     return names;
 }

@@ -9,9 +9,8 @@ namespace raystep {
 class FileError : public std::runtime_error {
   public:
     FileError(std::string file, int line, std::string key, const std::string& message)
-        : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
-                             ": " + (key.empty() ? std::string() : "key '" + key + "': ") +
-                             message),
+        : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                             (key.empty() ? std::string() : "key '" + key + "': ") + message),
           file_(std::move(file)),
           line_(line),
           key_(std::move(key)) {}

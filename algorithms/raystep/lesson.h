@@ -64,8 +64,8 @@ struct LessonStep {
 struct LessonTrace {
     enum class Kind { ExampleRay, Ray2D, Pixel, Build };
     Kind kind = Kind::ExampleRay;
-    Ray2 ray;            // Ray2D
-    int x = 0, y = 0;    // Pixel, in a width x height image
+    Ray2 ray;          // Ray2D
+    int x = 0, y = 0;  // Pixel, in a width x height image
     int width = 320, height = 240;
 };
 
@@ -81,13 +81,23 @@ std::string_view exerciseKindName(ExerciseKind k);
 /// Quantities a Value exercise asks for; each is read from the next event of its kind at or after
 /// the exercise's position.
 enum class Quantity {
-    TMaxX, TMaxY, TMaxZ,        // next dda_cell
-    TDeltaX, TDeltaY, TDeltaZ,  // next dda_setup
-    TEnter, TExit,              // next dda_setup
-    HitT, HitU, HitV,           // next ray_hit (u, v: barycentric coordinates on a triangle)
-    TestT,                      // next primitive_test that hits
-    NodeTNear, NodeTFar,        // next node_enter
-    CandidatePL, CandidatePR, CandidateCost,  // next split_candidate
+    TMaxX,
+    TMaxY,
+    TMaxZ,  // next dda_cell
+    TDeltaX,
+    TDeltaY,
+    TDeltaZ,  // next dda_setup
+    TEnter,
+    TExit,  // next dda_setup
+    HitT,
+    HitU,
+    HitV,   // next ray_hit (u, v: barycentric coordinates on a triangle)
+    TestT,  // next primitive_test that hits
+    NodeTNear,
+    NodeTFar,  // next node_enter
+    CandidatePL,
+    CandidatePR,
+    CandidateCost,  // next split_candidate
 };
 std::optional<Quantity> parseQuantity(std::string_view name);
 std::string_view quantityName(Quantity q);

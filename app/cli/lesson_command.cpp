@@ -89,10 +89,8 @@ int check(const Lesson& l, const std::string& answersPath, Language lang, bool j
                              {"given", i.given},
                              {"expected", i.expected},
                              {"feedback", i.feedback}});
-        const nlohmann::ordered_json out = {{"lesson", l.id},
-                                            {"score", g.score},
-                                            {"out_of", g.items.size()},
-                                            {"exercises", items}};
+        const nlohmann::ordered_json out = {
+            {"lesson", l.id}, {"score", g.score}, {"out_of", g.items.size()}, {"exercises", items}};
         std::printf("%s\n", out.dump(2).c_str());
         return 0;
     }
@@ -156,10 +154,10 @@ int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
         if (a.show->parsed()) return show(l, *lang);
         if (a.validate->parsed()) {
             validateLesson(l);
-            std::printf("%s: lesson %d '%s' is valid: %zu steps, %zu exercises, each with a "
-                        "reference answer in its trace\n",
-                        a.lesson.c_str(), l.number, l.id.c_str(), l.steps.size(),
-                        l.exercises.size());
+            std::printf(
+                "%s: lesson %d '%s' is valid: %zu steps, %zu exercises, each with a "
+                "reference answer in its trace\n",
+                a.lesson.c_str(), l.number, l.id.c_str(), l.steps.size(), l.exercises.size());
             return 0;
         }
         if (a.key->parsed()) return key(l);

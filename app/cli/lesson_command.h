@@ -1,6 +1,6 @@
 #pragma once
-// raystep-cli lesson list | show | validate | key | check | sweep: the lessons from the command line,
-// and grading a course's answers against the recorded trace.
+// raystep-cli lesson list | show | validate | key | check | sweep: the lessons from the command
+// line, and grading a course's answers against the recorded trace.
 #include <CLI/CLI.hpp>
 
 #include <string>

@@ -238,6 +238,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("build")) return cli::runBuild(buildArgs);
     if (app.got_subcommand("trace")) return cli::runTrace(traceArgs);
     if (app.got_subcommand("compare")) return cli::runCompare(compareArgs);
-    if (app.got_subcommand("lesson")) return cli::runLesson(app.get_subcommand("lesson"), lessonArgs);
+    if (app.got_subcommand("lesson"))
+        return cli::runLesson(app.get_subcommand("lesson"), lessonArgs);
     return runRender(r);
 }

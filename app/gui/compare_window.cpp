@@ -12,8 +12,7 @@
 
 namespace raystep::gui {
 
-CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, Pixel pixel,
-                             QWidget* parent)
+CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, Pixel pixel, QWidget* parent)
     : QWidget(parent) {
     setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
     const SplitMethod splits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};

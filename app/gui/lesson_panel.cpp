@@ -112,8 +112,7 @@ void LessonPanel::setLessons(const std::vector<Lesson>& lessons) {
     picker_->clear();
     picker_->addItem(tr("Lessons..."), QString());
     for (const Lesson& l : lessons)
-        picker_->addItem(QStringLiteral("%1. %2").arg(l.number).arg(q(l.title.in(lang_))),
-                         q(l.id));
+        picker_->addItem(QStringLiteral("%1. %2").arg(l.number).arg(q(l.title.in(lang_))), q(l.id));
 }
 
 void LessonPanel::showText(const QString& markdown) {
@@ -212,15 +211,15 @@ void LessonPanel::refreshExercise() {
     if (split && log_) {
         // The candidates without their cost: computing it is the exercise.
         for (const SplitCandidate& c : splitCandidates(ex, *log_))
-            candidates_->addItem(QStringLiteral("%1 = %2   (NL %3, NR %4, P(L|C) %5, P(R|C) %6)")
-                                     .arg(QChar("xyz"[c.axis]))
-                                     .arg(c.position, 0, 'g', 6)
-                                     .arg(c.nl)
-                                     .arg(c.nr)
-                                     .arg(c.pl, 0, 'g', 4)
-                                     .arg(c.pr, 0, 'g', 4),
-                                 QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(
-                                     c.position, 0, 'g', 17));
+            candidates_->addItem(
+                QStringLiteral("%1 = %2   (NL %3, NR %4, P(L|C) %5, P(R|C) %6)")
+                    .arg(QChar("xyz"[c.axis]))
+                    .arg(c.position, 0, 'g', 6)
+                    .arg(c.nl)
+                    .arg(c.nr)
+                    .arg(c.pl, 0, 'g', 4)
+                    .arg(c.pr, 0, 'g', 4),
+                QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(c.position, 0, 'g', 17));
     }
     switch (ex.kind) {
         case ExerciseKind::NextCell:
@@ -289,12 +288,12 @@ void LessonPanel::check() {
         feedback_->setText(tr("Right. %1").arg(q(v.feedback)));
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
-        feedback_->setText(attempts_[exercise_] >= 3 || lecturer_
-                               ? tr("Not right. The answer is %1: %2")
-                                     .arg(q(v.expected), q(v.feedback))
-                               : tr("Not right yet (try %1 of 3). Step the replay and look at the "
-                                    "inspector, or ask for a hint.")
-                                     .arg(attempts_[exercise_]));
+        feedback_->setText(
+            attempts_[exercise_] >= 3 || lecturer_
+                ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
+                : tr("Not right yet (try %1 of 3). Step the replay and look at the "
+                     "inspector, or ask for a hint.")
+                      .arg(attempts_[exercise_]));
     }
     exerciseLabel_->setText(tr("Exercise %1 / %2%3")
                                 .arg(exercise_ + 1)
@@ -318,8 +317,8 @@ void LessonPanel::revealAnswer() {
 }
 
 void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
-    const QStringList headers = {tr("cells/axis"), tr("cells"),       tr("refs"),
-                                 tr("build ms"),   tr("tests/ray"),   tr("cells/ray"),
+    const QStringList headers = {tr("cells/axis"), tr("cells"),     tr("refs"),
+                                 tr("build ms"),   tr("tests/ray"), tr("cells/ray"),
                                  tr("skips/ray"),  tr("trace ms")};
     sweepTable_->clear();
     sweepTable_->setColumnCount(headers.size());
@@ -327,14 +326,11 @@ void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
     sweepTable_->setRowCount(static_cast<int>(rows.size()));
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
         const GridSweepRow& row = rows[r];
-        const QStringList cells = {QString::number(row.resolution),
-                                   QString::number(row.cells),
-                                   QString::number(row.references),
-                                   QString::number(row.buildMs, 'f', 1),
-                                   QString::number(row.testsPerRay, 'f', 1),
-                                   QString::number(row.cellsPerRay, 'f', 1),
-                                   QString::number(row.skipsPerRay, 'f', 1),
-                                   QString::number(row.traceMs, 'f', 1)};
+        const QStringList cells = {
+            QString::number(row.resolution),          QString::number(row.cells),
+            QString::number(row.references),          QString::number(row.buildMs, 'f', 1),
+            QString::number(row.testsPerRay, 'f', 1), QString::number(row.cellsPerRay, 'f', 1),
+            QString::number(row.skipsPerRay, 'f', 1), QString::number(row.traceMs, 'f', 1)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

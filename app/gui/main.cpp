@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
                                        "id|file");
     const QCommandLineOption sceneOpt("scene", "Open a built-in scene or scene file instead.",
                                       "name|file");
-    const QCommandLineOption lecturerOpt("lecturer", "Lecturer mode: the exercises show their answers.");
+    const QCommandLineOption lecturerOpt("lecturer",
+                                         "Lecturer mode: the exercises show their answers.");
     const QCommandLineOption accelOpt("accel", "Structure: bruteforce, grid, kdtree or bvh.",
                                       "kind", "grid");
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
@@ -88,7 +89,8 @@ int main(int argc, char** argv) {
             !shot.isEmpty())  // from a script: one line; interactively the dialog has said it
             return fail("--scene " + parser.value(sceneOpt) + ": cannot be opened");
     } else {
-        const QString lesson = parser.isSet(lessonOpt) ? parser.value(lessonOpt) : QStringLiteral("1");
+        const QString lesson =
+            parser.isSet(lessonOpt) ? parser.value(lessonOpt) : QStringLiteral("1");
         if (!window.openLesson(lesson, /*quiet=*/!shot.isEmpty()) && !shot.isEmpty()) {
             try {
                 raystep::loadLesson(lesson.toStdString());

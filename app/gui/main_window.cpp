@@ -29,11 +29,11 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QSlider>
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
@@ -94,7 +94,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
     if (QFile f(progressPath_); f.open(QIODevice::ReadOnly)) {
         try {
-            studentProgress_ = parseProgress(f.readAll().toStdString(), progressPath_.toStdString());
+            studentProgress_ =
+                parseProgress(f.readAll().toStdString(), progressPath_.toStdString());
         } catch (const LessonError& e) {
             // Keep the unreadable file aside rather than overwrite it at the next answer.
             f.close();
@@ -255,7 +256,8 @@ void MainWindow::buildUi() {
     });
 
     // The lesson panel asks; the window moves the replay, opens lessons, saves progress.
-    connect(lesson_, &LessonPanel::lessonRequested, this, [this](const QString& id) { openLesson(id); });
+    connect(lesson_, &LessonPanel::lessonRequested, this,
+            [this](const QString& id) { openLesson(id); });
     connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
     connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
         const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
@@ -379,8 +381,8 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
     return true;
 }
 
-std::exception_ptr MainWindow::runWithProgress(
-    const QString& label, const std::function<void(const ProgressFn&)>& work) {
+std::exception_ptr MainWindow::runWithProgress(const QString& label,
+                                               const std::function<void(const ProgressFn&)>& work) {
     std::atomic<bool> cancel{false}, done{false};
     std::atomic<int> percent{0};
     const ProgressFn progress = [&](double f) {
@@ -455,7 +457,8 @@ void MainWindow::applyStep(int index) {
     const LessonStep& step = lesson_->lesson().steps[index];
     if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
     filterEdit_->setText(QString::fromStdString(step.filter));
-    if (step.camera) view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
+    if (step.camera)
+        view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
     studentProgress_.lessons[lesson_->lesson().id].step = index;
     saveProgress();
 }
@@ -478,13 +481,14 @@ void MainWindow::saveProgress() {
 }
 
 void MainWindow::exportProgressReport() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export progress report"),
-                                                      QStringLiteral("raystep-progress.md"),
-                                                      tr("Markdown (*.md)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export progress report"),
+                                     QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
     if (path.isEmpty()) return;
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) ||
-        f.write(QByteArray::fromStdString(progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
+        f.write(QByteArray::fromStdString(
+            progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
         !f.commit())
         QMessageBox::warning(this, tr("Cannot save"), tr("Could not write %1").arg(path));
 }
@@ -493,11 +497,11 @@ void MainWindow::runSweep() {
     if (!lesson_->hasLesson() || !lesson_->lesson().sweep) return;
     std::vector<GridSweepRow> rows;
     const GridSweepSpec spec = *lesson_->lesson().sweep;
-    const std::exception_ptr error =
-        runWithProgress(tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
-                        [&](const ProgressFn& progress) {
-                            rows = runGridSweep(session_.sceneVariant(), spec, progress);
-                        });
+    const std::exception_ptr error = runWithProgress(
+        tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
+        [&](const ProgressFn& progress) {
+            rows = runGridSweep(session_.sceneVariant(), spec, progress);
+        });
     if (!error) lesson_->showSweep(rows);
 }
 
@@ -530,8 +534,8 @@ CompareWindow* MainWindow::openCompare() {
     for (const Event& e : session_.log().events())
         if (const auto* p = std::get_if<PixelResult>(&e)) {
             pixel = {static_cast<int>(p->x), static_cast<int>(p->y), kImageWidth, kImageHeight};
-            const bool lessons = lesson_->hasLesson() &&
-                                 lesson_->lesson().trace.kind == LessonTrace::Kind::Pixel;
+            const bool lessons =
+                lesson_->hasLesson() && lesson_->lesson().trace.kind == LessonTrace::Kind::Pixel;
             if (lessons && lesson_->lesson().trace.x == pixel.x &&
                 lesson_->lesson().trace.y == pixel.y) {
                 pixel.width = lesson_->lesson().trace.width;

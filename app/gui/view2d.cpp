@@ -80,8 +80,8 @@ QPointF View2D::cellCentre(int x, int y) const {
     if (!grid) return {};
     fit();
     const auto& spec = grid->spec();
-    return toScreen(Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0),
-                         spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
+    return toScreen(
+        Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0), spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
 }
 
 void View2D::mousePressEvent(QMouseEvent* e) {
@@ -132,8 +132,10 @@ void View2D::paintEvent(QPaintEvent*) {
             if (const auto* c = std::get_if<SplitChosen>(&log.events()[i]);
                 c && c->node < log.nodes().size()) {
                 const NodeRecord& n = log.nodes()[c->node];
-                const Vec2 a = c->axis == 0 ? Vec2(c->position, n.lo[1]) : Vec2(n.lo[0], c->position);
-                const Vec2 b = c->axis == 0 ? Vec2(c->position, n.hi[1]) : Vec2(n.hi[0], c->position);
+                const Vec2 a =
+                    c->axis == 0 ? Vec2(c->position, n.lo[1]) : Vec2(n.lo[0], c->position);
+                const Vec2 b =
+                    c->axis == 0 ? Vec2(c->position, n.hi[1]) : Vec2(n.hi[0], c->position);
                 g.drawLine(toScreen(a), toScreen(b));
             }
     }

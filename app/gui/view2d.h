@@ -47,7 +47,7 @@ class View2D : public QWidget {
     QSize layerSize_;
     bool layerDirty_ = true;
     std::vector<BoxN<2>> kdBoxes_;  // every kd node's box, made with the layer
-    mutable BoxN<2> world_;  // what is shown, in scene units
+    mutable BoxN<2> world_;         // what is shown, in scene units
     mutable double scale_ = 1.0;
     mutable QPointF offset_;
 };

@@ -465,8 +465,7 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
     const CliRun full = run("lesson check 6 --answers key.json");
     ASSERT_EQ(full.code, 0) << full.err;
     EXPECT_NE(full.out.find(": 3 / 3"), std::string::npos) << full.out;
-    std::ofstream(dir / "sheet.json")
-        << R"({"lesson": "grid-2d-dda", "student": "ada",
+    std::ofstream(dir / "sheet.json") << R"({"lesson": "grid-2d-dda", "student": "ada",
                "answers": {"tdelta-y": "1,3333", "tmax-x-after-step": 2.6, "next-cell": [3, 1]}})";
     const CliRun graded = run("lesson check grid-2d-dda --answers sheet.json --json");
     ASSERT_EQ(graded.code, 0) << graded.err;
@@ -483,8 +482,9 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
 
 TEST_F(Cli, LessonBadInput) {
     std::ofstream(dir / "bad.json") << "{\"lesson\": \"6\",\n \"answers\": {\"next-cel\": [2, 2]}}";
-    expectBadInputKeepFiles("lesson check 6 --answers bad.json",
-                            "bad.json:2: key 'answers.next-cel': lesson grid-2d-dda has no exercise");
+    expectBadInputKeepFiles(
+        "lesson check 6 --answers bad.json",
+        "bad.json:2: key 'answers.next-cel': lesson grid-2d-dda has no exercise");
     std::ofstream(dir / "lesson.json") << "{\"format\": \"raystep-lesson\", \"version\": 1,\n"
                                           "\"id\": \"x y\"}";
     expectBadInputKeepFiles("lesson validate lesson.json", "lesson.json:1: ");

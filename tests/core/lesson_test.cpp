@@ -92,7 +92,9 @@ TEST(Lessons, EveryStepReplaysAndEveryExerciseChecksItsOwnReference) {
 TEST(Lessons, TheGridLessonsReferencesEqualAHandComputation) {
     const Lesson l = loadLesson("grid-2d-dda");
     const LessonRun run = runLesson(l);
-    const auto ref = [&](const char* id) { return referenceAnswer(*l.exercise(id), *run.log, l.file); };
+    const auto ref = [&](const char* id) {
+        return referenceAnswer(*l.exercise(id), *run.log, l.file);
+    };
     EXPECT_NEAR(ref("tdelta-y").numbers[0], 1.0 / 0.75, 1e-15);
     // After the step in X: tMaxX = 0.6 + tDeltaX = 1.6.
     EXPECT_NEAR(ref("tmax-x-after-step").numbers[0], 1.6, 1e-15);
@@ -101,9 +103,11 @@ TEST(Lessons, TheGridLessonsReferencesEqualAHandComputation) {
     std::string why;
     const auto near = parseAnswer(*l.exercise("tdelta-y"), "1,333", &why);  // Italian comma
     ASSERT_TRUE(near) << why;
-    EXPECT_TRUE(checkAnswer(*l.exercise("tdelta-y"), *run.log, *near, Language::It, l.file).correct);
-    EXPECT_FALSE(checkAnswer(*l.exercise("tdelta-y"), *run.log, Answer{{1.3}, {}}, Language::En,
-                             l.file).correct);
+    EXPECT_TRUE(
+        checkAnswer(*l.exercise("tdelta-y"), *run.log, *near, Language::It, l.file).correct);
+    EXPECT_FALSE(
+        checkAnswer(*l.exercise("tdelta-y"), *run.log, Answer{{1.3}, {}}, Language::En, l.file)
+            .correct);
 }
 
 // The mailboxing ray (1, 3.45) + t (1, 0.03) stays in row 3, cells x = 1..5. The wall
@@ -125,8 +129,8 @@ TEST(Lessons, TheRobustnessLessonsTieGoesThroughTheCorner) {
     EXPECT_EQ(referenceAnswer(*l.exercise("tie-cell"), *run.log, l.file).numbers,
               (std::vector<double>{1, 1}));
     EXPECT_EQ(referenceAnswer(*l.exercise("tie-tmax"), *run.log, l.file).numbers[0], 0.5);
-    const Verdict v = checkAnswer(*l.exercise("tie-cell"), *run.log, Answer{{1, 0}, {}},
-                                  Language::En, l.file);
+    const Verdict v =
+        checkAnswer(*l.exercise("tie-cell"), *run.log, Answer{{1, 0}, {}}, Language::En, l.file);
     EXPECT_FALSE(v.correct);
     EXPECT_NE(v.feedback.find("tie"), std::string::npos) << v.feedback;
 }
@@ -206,27 +210,34 @@ void expectLessonError(const std::string& text, int line, const std::string& key
 TEST(Lessons, ABadLessonFileNamesLineAndKey) {
     EXPECT_NO_THROW(loadLessonText(lessonWith(""), "ok.json"));
     expectLessonError(lessonWith(",\n\"colour\": 1"), 11, "colour", "unknown key");
-    expectLessonError(lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\"},\n \"at\": {\"after\": \"dda_walk\"}}]"),
-                      12, "steps[0].at.after", "unknown event kind");
     expectLessonError(
-        lessonWith(",\n\"exercises\": [\n{\"id\": \"a\", \"type\": \"count\", \"count\": \"dda_cell\", \"prompt\": {\"en\": \"?\"}},\n"
-                   "{\"id\": \"a\", \"type\": \"count\", \"count\": \"dda_cell\", \"prompt\": {\"en\": \"?\"}}]"),
-        13, "exercises[1].id", "used twice");
+        lessonWith(
+            ",\n\"steps\": [{\"text\": {\"en\": \"a\"},\n \"at\": {\"after\": \"dda_walk\"}}]"),
+        12, "steps[0].at.after", "unknown event kind");
+    expectLessonError(lessonWith(",\n\"exercises\": [\n{\"id\": \"a\", \"type\": \"count\", "
+                                 "\"count\": \"dda_cell\", \"prompt\": {\"en\": \"?\"}},\n"
+                                 "{\"id\": \"a\", \"type\": \"count\", \"count\": \"dda_cell\", "
+                                 "\"prompt\": {\"en\": \"?\"}}]"),
+                      13, "exercises[1].id", "used twice");
     expectLessonError(
-        lessonWith(",\n\"exercises\": [{\"id\": \"a\", \"type\": \"value\", \"quantity\": \"tMax.x\",\n"
-                   "\"tolerance\": 1.5, \"prompt\": {\"en\": \"?\"}}]"),
+        lessonWith(
+            ",\n\"exercises\": [{\"id\": \"a\", \"type\": \"value\", \"quantity\": \"tMax.x\",\n"
+            "\"tolerance\": 1.5, \"prompt\": {\"en\": \"?\"}}]"),
         12, "exercises[0].tolerance", "accepts anything");
-    expectLessonError(
-        lessonWith(",\n\"exercises\": [{\"id\": \"a\", \"type\": \"guess\", \"prompt\": {\"en\": \"?\"}}]"),
-        11, "exercises[0].type", "expected next_cell");
-    expectLessonError(lessonWith(",\n\"sweep\": {\"grid_res\": [4, NaN]}"), 11, "", "malformed JSON");
-    expectLessonError(lessonWith(",\n\"setup\": {\"accel\": \"octree\"}"), 11, "setup", "given twice");
+    expectLessonError(lessonWith(",\n\"exercises\": [{\"id\": \"a\", \"type\": \"guess\", "
+                                 "\"prompt\": {\"en\": \"?\"}}]"),
+                      11, "exercises[0].type", "expected next_cell");
+    expectLessonError(lessonWith(",\n\"sweep\": {\"grid_res\": [4, NaN]}"), 11, "",
+                      "malformed JSON");
+    expectLessonError(lessonWith(",\n\"setup\": {\"accel\": \"octree\"}"), 11, "setup",
+                      "given twice");
     expectLessonError(
         "{\"format\": \"raystep-lesson\", \"version\": 1, \"id\": \"t\", \"number\": 1,\n"
-        "\"title\": {\"it\": \"Titolo\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"s\", \"trace\": {\"build\": true}}",
+        "\"title\": {\"it\": \"Titolo\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"s\", \"trace\": "
+        "{\"build\": true}}",
         2, "title", "English text");
-    expectLessonError(
-        "{\"format\": \"raystep-lesson\", \"version\": 2}", 1, "version", "version 1");
+    expectLessonError("{\"format\": \"raystep-lesson\", \"version\": 2}", 1, "version",
+                      "version 1");
 }
 
 TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
@@ -245,17 +256,20 @@ TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
     EXPECT_FALSE(g.items[2].correct);
     EXPECT_EQ(g.items[2].expected, "2,2");
     try {
-        gradeAnswers(l, *run.log, loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"x\": 1}}", "a.json"),
+        gradeAnswers(l, *run.log,
+                     loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"x\": 1}}", "a.json"),
                      Language::En, "a.json");
         ADD_FAILURE();
     } catch (const LessonError& e) {
         EXPECT_EQ(e.line(), 2);
         EXPECT_EQ(e.key(), "answers.x");
     }
-    EXPECT_THROW(gradeAnswers(l, *run.log, loadAnswerSheet("{\"lesson\": \"7\", \"answers\": {}}", "a.json"),
-                              Language::En, "a.json"),
+    EXPECT_THROW(
+        gradeAnswers(l, *run.log, loadAnswerSheet("{\"lesson\": \"7\", \"answers\": {}}", "a.json"),
+                     Language::En, "a.json"),
+        LessonError);
+    EXPECT_THROW(loadAnswerSheet("{\"lesson\": \"6\", \"answers\": {\"a\": {}}}", "a.json"),
                  LessonError);
-    EXPECT_THROW(loadAnswerSheet("{\"lesson\": \"6\", \"answers\": {\"a\": {}}}", "a.json"), LessonError);
 }
 
 TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {

@@ -11,12 +11,12 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
-#include <QImage>
 #include <QFile>
+#include <QImage>
 #include <QMouseEvent>
 #include <QStandardPaths>
-#include <QTest>
 #include <QTableWidget>
+#include <QTest>
 
 #include <sys/wait.h>
 
@@ -230,7 +230,6 @@ TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
     EXPECT_GT(w.session().size(), 0u);
 }
 
-
 // A student's lesson: the steps move the replay, the exercise of the slides' DDA is answered by
 // clicking a cell of the 2D view, checked against the trace, and the progress is saved.
 TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
@@ -246,7 +245,8 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
     EXPECT_FALSE(w.view3D()->isVisible());
     // Step 2 is "after the first cell": the board's values, by hand as in the test above.
     p->goToStep(1);
-    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8")) << w.inspectorText().toStdString();
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8"))
+        << w.inspectorText().toStdString();
     const QImage step2 = grab(w.view2D());
     p->goToStep(2);
     EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1")) << w.inspectorText().toStdString();
@@ -294,8 +294,9 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
     EXPECT_TRUE(p->feedback().isEmpty());  // a student sees no answer
     const LessonRun run = runLesson(p->lesson());
     const Answer ref = referenceAnswer(p->lesson().exercises[0], *run.log, p->lesson().file);
-    const QString pick =
-        QStringLiteral("%1=%2").arg(QChar("xyz"[int(ref.numbers[0])])).arg(ref.numbers[1], 0, 'g', 17);
+    const QString pick = QStringLiteral("%1=%2")
+                             .arg(QChar("xyz"[int(ref.numbers[0])]))
+                             .arg(ref.numbers[1], 0, 'g', 17);
     EXPECT_TRUE(p->submit(pick)) << p->feedback().toStdString();
     w.setLecturerMode(true);
     p->selectExercise(1);
@@ -343,7 +344,8 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     EXPECT_NE(ia, ib);  // --step put the cursor elsewhere
     // With no option the app opens on lesson 1.
     const fs::path first = dir / "first.png", said = dir / "said.txt";
-    ASSERT_EQ(run("--screenshot '" + first.string() + "' > '" + said.string() + "' 2>/dev/null"), 0);
+    ASSERT_EQ(run("--screenshot '" + first.string() + "' > '" + said.string() + "' 2>/dev/null"),
+              0);
     std::ifstream in(said);
     const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(line.find("lesson 1: Rasterization and ray tracing"), std::string::npos) << line;
