@@ -14,6 +14,7 @@
 #include <QFile>
 #include <QImage>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
@@ -303,6 +304,33 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
     EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
     EXPECT_FALSE(w.openLesson("no-such-lesson", true));
     EXPECT_EQ(p->lesson().id, "building-kdtree");  // the open lesson is kept
+}
+
+// The voxel-size lesson's sweep runs behind its progress dialog and fills one row a resolution.
+// At one cell per axis a primary ray tests at most the Cornell box's 30 primitives (fewer when
+// it misses the grid's box).
+TEST(App, TheVoxelSizeLessonsSweepFillsItsTable) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    ASSERT_TRUE(w.openLesson("voxel-size", true));
+    QPushButton* run = nullptr;
+    for (QPushButton* b : w.lessonPanel()->findChildren<QPushButton*>())
+        if (b->text() == "Run the sweep") run = b;
+    ASSERT_NE(run, nullptr);
+    ASSERT_TRUE(run->isVisible());
+    run->click();
+    QTableWidget* table = w.lessonPanel()->findChild<QTableWidget*>();
+    ASSERT_NE(table, nullptr);
+    ASSERT_EQ(table->rowCount(),
+              static_cast<int>(w.lessonPanel()->lesson().sweep->resolutions.size()));
+    EXPECT_EQ(table->item(0, 0)->text(), "1");
+    EXPECT_EQ(table->item(0, 1)->text(), "1");  // one cell
+    EXPECT_LE(table->item(0, 4)->text().toDouble(), 30.0);
+    // Finer grids: fewer tests per ray, more cells per ray.
+    const int last = table->rowCount() - 1;
+    EXPECT_LT(table->item(last, 4)->text().toDouble(), table->item(0, 4)->text().toDouble());
+    EXPECT_GT(table->item(last, 5)->text().toDouble(), table->item(0, 5)->text().toDouble());
 }
 
 TEST(App, EveryLessonOpensAndEveryStepShows) {
