@@ -557,19 +557,22 @@ std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const Event
     return std::nullopt;
 }
 
-std::string describePosition(const ReplayPosition& at) {
+std::string describePosition(const ReplayPosition& at, Language lang) {
+    const bool it = lang == Language::It;
     switch (at.mode) {
         case ReplayPosition::Mode::Start:
-            return "the start";
+            return it ? "l'inizio" : "the start";
         case ReplayPosition::Mode::End:
-            return "the end";
+            return it ? "la fine" : "the end";
         case ReplayPosition::Mode::Cursor:
-            return "event " + std::to_string(at.cursor);
+            return (it ? "l'evento " : "event ") + std::to_string(at.cursor);
         case ReplayPosition::Mode::AfterEvent:
-        case ReplayPosition::Mode::BeforeEvent:
-            return std::string(at.mode == ReplayPosition::Mode::AfterEvent ? "after" : "before") +
-                   " " + std::string(kEventNames[at.eventKind]) + " number " +
+        case ReplayPosition::Mode::BeforeEvent: {
+            const bool after = at.mode == ReplayPosition::Mode::AfterEvent;
+            return std::string(after ? (it ? "dopo" : "after") : (it ? "prima di" : "before")) +
+                   " " + std::string(kEventNames[at.eventKind]) + (it ? " numero " : " number ") +
                    std::to_string(at.nth);
+        }
     }
     return "?";
 }
@@ -831,10 +834,14 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                 lang,
                 "The trace holds " + std::to_string(n) + " events " + what + " from " +
                     describePosition(c.ex.at) + " to " +
-                    (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".",
-                "La traccia contiene " + std::to_string(n) + " eventi " + what + " da " +
-                    describePosition(c.ex.at) + " a " +
-                    (c.ex.until ? describePosition(*c.ex.until) : std::string("the end")) + ".");
+                    describePosition(
+                        c.ex.until.value_or(ReplayPosition{ReplayPosition::Mode::End})) +
+                    ".",
+                "La traccia contiene " + std::to_string(n) + " eventi " + what + " tra " +
+                    describePosition(c.ex.at, Language::It) + " e " +
+                    describePosition(c.ex.until.value_or(ReplayPosition{ReplayPosition::Mode::End}),
+                                     Language::It) +
+                    ".");
             break;
         }
         case ExerciseKind::HitOrMiss: {
@@ -1054,10 +1061,9 @@ AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName) 
         } else if (v.is_boolean()) {
             t = v.get<bool>() ? "hit" : "miss";
         } else if (v.is_number()) {
-            t = Reader::fmt(r.number(v, p));
             std::ostringstream s;
             s.precision(17);
-            s << v.get<double>();
+            s << r.number(v, p);  // finite, checked
             t = s.str();
         } else if (v.is_array()) {
             for (std::size_t i = 0; i < v.size(); ++i) {

@@ -160,7 +160,7 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
 
 /// The cursor a position stands for in `log`; nullopt when the log has no such event.
 std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const EventLog& log);
-std::string describePosition(const ReplayPosition& at);
+std::string describePosition(const ReplayPosition& at, Language lang = Language::En);
 
 /// A student's answer. NextCell: the cell's indices; Value and Count: one number; PickSplit:
 /// axis (0, 1, 2) and position; HitOrMiss: hit, and t when asked.

@@ -54,7 +54,8 @@ int show(const Lesson& l, Language lang) {
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
     for (std::size_t i = 0; i < l.steps.size(); ++i)
         std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
-                    describePosition(l.steps[i].at).c_str(), l.steps[i].text.in(lang).c_str());
+                    describePosition(l.steps[i].at, lang).c_str(),
+                    l.steps[i].text.in(lang).c_str());
     for (const Exercise& ex : l.exercises)
         std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",
                     ex.id.c_str(), std::string(exerciseKindName(ex.kind)).c_str(),
