@@ -383,6 +383,10 @@ bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
 
 std::exception_ptr MainWindow::runWithProgress(const QString& label,
                                                const std::function<void(const ProgressFn&)>& work) {
+    // The events processed while waiting may ask for more long work (a lesson picked before the
+    // dialog shows): refuse it rather than run two at once.
+    if (busy_) return std::make_exception_ptr(BuildCancelled());
+    busy_ = true;
     std::atomic<bool> cancel{false}, done{false};
     std::atomic<int> percent{0};
     const ProgressFn progress = [&](double f) {
@@ -410,6 +414,7 @@ std::exception_ptr MainWindow::runWithProgress(const QString& label,
         }
     }
     worker.join();
+    busy_ = false;
     return error;
 }
 

@@ -95,6 +95,7 @@ class MainWindow : public QMainWindow {
     LessonPanel* lesson_ = nullptr;
     QAction* lecturerAction_ = nullptr;
     QMenu* lessonsMenu_ = nullptr;
+    bool busy_ = false;  // long work under way (runWithProgress)
     Language lang_ = Language::En;
     Progress studentProgress_;
     QString progressPath_;
