@@ -135,19 +135,29 @@ QString describeEvent(const Event& event) {
                     .arg(QString::fromUtf8(kRayKindNames[static_cast<int>(e.kind)].data()))
                     .arg(e.depth);
             else if constexpr (std::is_same_v<E, DdaSetup>)
-                return QStringLiteral("DDA set-up: step (%1, %2), tDelta (%3, %4)")
-                    .arg(e.step[0])
-                    .arg(e.step[1])
-                    .arg(num(e.tDelta[0]), num(e.tDelta[1]));
-            else if constexpr (std::is_same_v<E, DdaCell>)
-                return QStringLiteral("cell (%1, %2%3)%4, tMax (%5, %6)")
+                return e.dims == 3
+                           ? QStringLiteral("DDA set-up: step (%1, %2, %3), tDelta (%4, %5, %6)")
+                                 .arg(e.step[0])
+                                 .arg(e.step[1])
+                                 .arg(e.step[2])
+                                 .arg(num(e.tDelta[0]), num(e.tDelta[1]), num(e.tDelta[2]))
+                           : QStringLiteral("DDA set-up: step (%1, %2), tDelta (%3, %4)")
+                                 .arg(e.step[0])
+                                 .arg(e.step[1])
+                                 .arg(num(e.tDelta[0]), num(e.tDelta[1]));
+            else if constexpr (std::is_same_v<E, DdaCell>) {
+                // A 2D walk leaves the third axis at 0 (cell and tMax); a 3D one never has
+                // tMaxZ = 0 (the first crossing lies ahead of the ray's start).
+                const bool threeD = e.cell[2] != 0 || e.tMax[2] != 0.0;
+                return QStringLiteral("cell (%1, %2%3)%4, tMax (%5, %6%7)")
                     .arg(e.cell[0])
                     .arg(e.cell[1])
-                    .arg(e.cell[2] ? QStringLiteral(", %1").arg(e.cell[2]) : QString())
+                    .arg(threeD ? QStringLiteral(", %1").arg(e.cell[2]) : QString())
                     .arg(e.axes ? QStringLiteral(" by ") + axesName(e.axes)
                                 : QStringLiteral(" (first cell)"),
-                         num(e.tMax[0]), num(e.tMax[1]));
-            else if constexpr (std::is_same_v<E, MailboxSkip>)
+                         num(e.tMax[0]), num(e.tMax[1]),
+                         threeD ? QStringLiteral(", ") + num(e.tMax[2]) : QString());
+            } else if constexpr (std::is_same_v<E, MailboxSkip>)
                 return QStringLiteral("mailbox: primitive %1 already tested").arg(e.prim);
             else if constexpr (std::is_same_v<E, PrimitiveTest>)
                 return e.hit ? QStringLiteral("test primitive %1: hit at t = %2")
@@ -219,9 +229,15 @@ QString describeState(const Session& s) {
     }
     if (st.ddaSetup) {
         const DdaSetup& d = *st.ddaSetup;
-        lines << QStringLiteral("tDeltaX = %1   tDeltaY = %2")
-                     .arg(num(d.tDelta[0]), num(d.tDelta[1]));
-        lines << QStringLiteral("stepX = %1   stepY = %2").arg(d.step[0]).arg(d.step[1]);
+        const bool threeD = d.dims == 3;
+        lines << QStringLiteral("tDeltaX = %1   tDeltaY = %2%3")
+                     .arg(num(d.tDelta[0]), num(d.tDelta[1]),
+                          threeD ? QStringLiteral("   tDeltaZ = ") + num(d.tDelta[2]) : QString());
+        lines << QStringLiteral("stepX = %1   stepY = %2%3")
+                     .arg(d.step[0])
+                     .arg(d.step[1])
+                     .arg(threeD ? QStringLiteral("   stepZ = %1").arg(d.step[2]) : QString());
+        lines << QStringLiteral("t_enter = %1   t_exit = %2").arg(num(d.tEnter), num(d.tExit));
     }
     if (st.node)
         lines << QStringLiteral("node %1, t in [%2, %3]")

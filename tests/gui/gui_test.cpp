@@ -333,6 +333,20 @@ TEST(App, TheVoxelSizeLessonsSweepFillsItsTable) {
     EXPECT_GT(table->item(last, 5)->text().toDouble(), table->item(0, 5)->text().toDouble());
 }
 
+// The 3D DDA's inspector shows the third axis: Z, tMaxZ, tDeltaZ, stepZ, and where the ray
+// enters the grid.
+TEST(App, The3DDdaLessonShowsTheThirdAxis) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    ASSERT_TRUE(w.openLesson("dda-3d", true));
+    w.lessonPanel()->goToStep(1);  // after the second voxel
+    const QString text = w.inspectorText();
+    for (const char* part : {"   Z = ", "tMaxZ = ", "tDeltaZ = ", "stepZ = ", "t_enter = 0"})
+        EXPECT_TRUE(text.contains(part)) << part << "\n" << text.toStdString();
+    w.imageView()->cancelRender();
+}
+
 TEST(App, EveryLessonOpensAndEveryStepShows) {
     MainWindow w;
     w.resize(1200, 800);
