@@ -480,6 +480,29 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
               std::string::npos);
 }
 
+// A lecturer's own lesson beside its own scene file: the scene path is relative to the lesson.
+TEST_F(Cli, ALessonFileWithItsOwnScene) {
+    fs::create_directories(dir / "course");
+    std::ofstream(dir / "course" / "room.json")
+        << R"({"dimensions": 2, "grid": [2, 1], "ray": {"origin": [0.5, 0.5], "dir": [1, 0]},
+               "segments": [{"from": [1.5, 0], "to": [1.5, 1]}]})";
+    std::ofstream(dir / "course" / "mine.json") << R"({
+        "format": "raystep-lesson", "version": 1, "id": "mine", "number": 40,
+        "title": {"en": "Mine"}, "text": {"en": "Two cells."}, "scene": "room.json",
+        "setup": {"accel": "grid"}, "trace": {"ray": "example"},
+        "exercises": [{"id": "second", "type": "next_cell", "at": {"before": "dda_cell", "nth": 2},
+                       "prompt": {"en": "Next?"}},
+                      {"id": "t", "type": "value", "quantity": "hit.t", "prompt": {"en": "t?"}}]})";
+    const CliRun v = run("lesson validate course/mine.json");
+    ASSERT_EQ(v.code, 0) << v.err;
+    const CliRun key = run("lesson key course/mine.json");
+    ASSERT_EQ(key.code, 0) << key.err;
+    // By hand: from (0.5, 0.5) along +x the walk goes (0, 0), (1, 0); the wall x = 1.5 at t = 1.
+    const auto j = nlohmann::json::parse(key.out);
+    EXPECT_EQ(j["answers"]["second"], "1,0");
+    EXPECT_EQ(j["answers"]["t"], "1");
+}
+
 TEST_F(Cli, LessonBadInput) {
     std::ofstream(dir / "bad.json") << "{\"lesson\": \"6\",\n \"answers\": {\"next-cel\": [2, 2]}}";
     expectBadInputKeepFiles(
