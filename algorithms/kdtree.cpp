@@ -5,6 +5,8 @@
 #include "raystep/names.h"
 #include "raystep/scene2d.h"
 
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +18,7 @@ namespace {
 constexpr NameTable<SplitMethod, 3> kSplitNames{{{SplitMethod::Midpoint, "midpoint"},
                                                  {SplitMethod::Median, "median"},
                                                  {SplitMethod::Sah, "sah"}}};
+constexpr NameTable<KdBuild, 2> kBuildNames{{{KdBuild::Exact, "exact"}, {KdBuild::Fast, "fast"}}};
 
 // Wald & Havran's split events: where a primitive's (clipped) bounds start and end along an
 // axis, or lie flat in a plane. Sorted by (axis, position, type): at one position, the primitives
@@ -45,6 +48,12 @@ std::optional<SplitMethod> parseSplitMethod(std::string_view s) {
 std::string_view name(SplitMethod m) {
     return nameOf(kSplitNames, m);
 }
+std::optional<KdBuild> parseKdBuild(std::string_view s) {
+    return valueNamed(kBuildNames, s);
+}
+std::string_view name(KdBuild b) {
+    return nameOf(kBuildNames, b);
+}
 
 /// The build: state shared by the recursion.
 template <typename Prims, typename Rec>
@@ -61,17 +70,33 @@ class KdBuilder {
           rec_(rec),
           nodes_(nodes),
           ids_(ids),
-          stats_(stats) {
-        primBounds_.resize(prims.count());
-        for (std::uint32_t p = 0; p < prims.count(); ++p) primBounds_[p] = prims.bounds(p);
+          stats_(stats),
+          progress_(opt.progress) {
+        ownBounds_.resize(prims.count());
+        for (std::uint32_t p = 0; p < prims.count(); ++p) ownBounds_[p] = prims.bounds(p);
+        primBounds_ = &ownBounds_;
     }
+
+    /// A builder for one subtree on another thread: its own nodes, ids and stats (spliced into
+    /// the parent's afterwards), the parent's primitive bounds, no progress reports.
+    KdBuilder(const KdBuilder& parent, std::vector<KdNode>& nodes, std::vector<std::uint32_t>& ids,
+              TreeStats& stats)
+        : prims_(parent.prims_),
+          opt_(parent.opt_),
+          maxDepth_(parent.maxDepth_),
+          rec_(parent.rec_),
+          nodes_(nodes),
+          ids_(ids),
+          stats_(stats),
+          primBounds_(parent.primBounds_),
+          progress_(noProgress_) {}
 
     void run(const Box& box) {
         const std::uint32_t n = prims_.count();
         if (opt_.split == SplitMethod::Sah) {
             side_.assign(n, Side::Both);
             std::vector<Ref> refs(n);
-            for (std::uint32_t p = 0; p < n; ++p) refs[p] = {p, primBounds_[p].clippedTo(box)};
+            for (std::uint32_t p = 0; p < n; ++p) refs[p] = {p, (*primBounds_)[p].clippedTo(box)};
             buildBinned(std::move(refs), box, 0, kNoId);
         } else {
             std::vector<std::uint32_t> all(n);
@@ -104,7 +129,8 @@ class KdBuilder {
     /// sorted events takes over (buildSah). Candidates are the bin boundaries.
     void buildBinned(std::vector<Ref> refs, const Box& box, int depth, std::uint32_t parent) {
         const auto n = static_cast<std::uint32_t>(refs.size());
-        if (opt_.exactBelow <= 0 || n <= static_cast<std::uint32_t>(opt_.exactBelow)) {
+        const bool fast = opt_.build == KdBuild::Fast;
+        if (!fast && (opt_.exactBelow <= 0 || n <= static_cast<std::uint32_t>(opt_.exactBelow))) {
             std::vector<SplitEvent> events;
             events.reserve(std::size_t(2) * N * n);
             for (const Ref& r : refs) addEvents(r.prim, r.b, events);
@@ -120,43 +146,63 @@ class KdBuilder {
         };
         if (leafByCount(id, n, depth, nodePrims)) return;
 
-        constexpr int kBins = 256;
+        constexpr int kMaxBins = 256;
+        const int kBins = fast ? 32 : kMaxBins;
         const double areaC = box.area();
         const double leafCost = opt_.cIsect * n;
         double bestCost = kInfinity, bestPos = 0.0;
         int bestAxis = -1;
-        std::array<std::uint32_t, kBins> starts, ends;
+        // Where each primitive starts and ends, binned along every axis in one pass over them.
+        std::array<std::array<std::uint32_t, kMaxBins>, N> starts, ends;
+        std::array<double, N> scale{};
+        std::array<bool, N> usable{};
+        // The primitives' extent per axis: empty space is cut off at its edge, as the exact
+        // sweep does, never at a bin boundary (which would slice ever thinner slabs off a flat
+        // primitive lying in the node's face, down to the depth limit).
+        VecN<N, double> minLo(kInfinity), maxHi(-kInfinity);
         for (int axis = 0; axis < N; ++axis) {
-            const double lo = box.lo[axis], hi = box.hi[axis];
-            if (!(hi > lo) || !(areaC > 0.0)) continue;
-            const double scale = kBins / (hi - lo);
-            starts.fill(0);
-            ends.fill(0);
-            const auto binOf = [&](double x) {
-                return std::clamp(static_cast<int>((x - lo) * scale), 0, kBins - 1);
-            };
-            for (const Ref& r : refs) {
-                ++starts[binOf(r.b.lo[axis])];
-                ++ends[binOf(r.b.hi[axis])];
+            usable[axis] = box.hi[axis] > box.lo[axis] && areaC > 0.0;
+            if (usable[axis]) scale[axis] = kBins / (box.hi[axis] - box.lo[axis]);
+            std::fill_n(starts[axis].begin(), kBins, 0u);
+            std::fill_n(ends[axis].begin(), kBins, 0u);
+        }
+        const auto binOf = [&](int axis, double x) {
+            return std::clamp(static_cast<int>((x - box.lo[axis]) * scale[axis]), 0, kBins - 1);
+        };
+        for (const Ref& r : refs)
+            for (int axis = 0; axis < N; ++axis) {
+                ++starts[axis][binOf(axis, r.b.lo[axis])];
+                ++ends[axis][binOf(axis, r.b.hi[axis])];
+                minLo[axis] = std::min(minLo[axis], r.b.lo[axis]);
+                maxHi[axis] = std::max(maxHi[axis], r.b.hi[axis]);
             }
+        const auto consider = [&](int axis, double pos, std::uint32_t nl, std::uint32_t nr) {
+            const double pl = areaWithWidth(box, axis, pos - box.lo[axis]) / areaC;
+            const double pr = areaWithWidth(box, axis, box.hi[axis] - pos) / areaC;
+            const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
+            if constexpr (Rec::kEnabled)
+                rec_(
+                    SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr, cost});
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestPos = pos;
+                bestAxis = axis;
+            }
+        };
+        for (int axis = 0; axis < N; ++axis) {
+            if (!usable[axis]) continue;
+            const double lo = box.lo[axis], hi = box.hi[axis];
             std::uint32_t nl = 0, nr = n;
             for (int b = 1; b < kBins; ++b) {
-                nl += starts[b - 1];  // started in a bin below this boundary
-                nr -= ends[b - 1];    // ended in a bin below it
+                nl += starts[axis][b - 1];  // started in a bin below this boundary
+                nr -= ends[axis][b - 1];    // ended in a bin below it
                 const double pos = lo + (hi - lo) * b / kBins;
-                const double pl = areaWithWidth(box, axis, pos - lo) / areaC;
-                const double pr = areaWithWidth(box, axis, hi - pos) / areaC;
-                const double cost =
-                    sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
-                if constexpr (Rec::kEnabled)
-                    rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr,
-                                        cost});
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestPos = pos;
-                    bestAxis = axis;
-                }
+                if (nl > 0 && nr > 0 && pos > minLo[axis] && pos < maxHi[axis])
+                    consider(axis, pos, nl, nr);
             }
+            // The empty space on either side, cut at the primitives' edge.
+            if (minLo[axis] > lo && minLo[axis] < hi) consider(axis, minLo[axis], 0, n);
+            if (maxHi[axis] > lo && maxHi[axis] < hi) consider(axis, maxHi[axis], n, 0);
         }
         if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
         if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
@@ -182,9 +228,50 @@ class KdBuilder {
         refs = {};
         split(id, bestAxis, bestPos, bestCost, leafCost);
         const double fl = double(left.size()) / double(left.size() + right.size());
+        constexpr std::size_t kParallelAbove = 4096;
+        if (fast && !Rec::kEnabled && right.size() > kParallelAbove) {
+            // The right subtree on another core, into its own arrays; spliced in after.
+            std::vector<KdNode> subNodes;
+            std::vector<std::uint32_t> subIds;
+            TreeStats subStats;
+            tbb::task_group group;
+            group.run([&] {
+                KdBuilder sub(*this, subNodes, subIds, subStats);
+                sub.buildBinned(std::move(right), boxR, depth + 1, id);
+            });
+            try {
+                progress_.child(fl, [&] { buildBinned(std::move(left), boxL, depth + 1, id); });
+            } catch (...) {
+                group.wait();  // the task uses this frame's locals
+                throw;
+            }
+            group.wait();
+            splice(id, subNodes, subIds, subStats);
+            progress_.child(1 - fl, [&] { progress_.leafDone(); });
+            return;
+        }
         progress_.child(fl, [&] { buildBinned(std::move(left), boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
         progress_.child(1 - fl, [&] { buildBinned(std::move(right), boxR, depth + 1, id); });
+    }
+
+    /// Appends a subtree built apart as node `parent`'s right child: its node and id indices
+    /// shift by where they land.
+    void splice(std::uint32_t parent, const std::vector<KdNode>& subNodes,
+                const std::vector<std::uint32_t>& subIds, const TreeStats& subStats) {
+        const auto nodeBase = static_cast<std::uint32_t>(nodes_.size());
+        const auto idBase = static_cast<std::uint32_t>(ids_.size());
+        nodes_[parent].index = nodeBase;
+        for (KdNode node : subNodes) {
+            node.index += node.leaf() ? idBase : nodeBase;
+            nodes_.push_back(node);
+        }
+        ids_.insert(ids_.end(), subIds.begin(), subIds.end());
+        stats_.leaves += subStats.leaves;
+        stats_.emptyLeaves += subStats.emptyLeaves;
+        stats_.maxDepth = std::max(stats_.maxDepth, subStats.maxDepth);
+        for (std::size_t r = 0; r < stats_.leafReasons.size(); ++r)
+            stats_.leafReasons[r] += subStats.leafReasons[r];
     }
 
     static void addEvents(std::uint32_t p, const Box& b, std::vector<SplitEvent>& out) {
@@ -407,7 +494,7 @@ class KdBuilder {
         const auto [boxL, boxR] = splitBox(box, axis, pos);
         std::vector<std::uint32_t> left, right;
         for (std::uint32_t p : prims) {
-            const Box& b = primBounds_[p];
+            const Box& b = (*primBounds_)[p];
             if (b.hi[axis] < pos) {
                 left.push_back(p);  // wholly on one side: no clipping needed
             } else if (b.lo[axis] > pos) {
@@ -442,9 +529,11 @@ class KdBuilder {
     std::vector<KdNode>& nodes_;
     std::vector<std::uint32_t>& ids_;
     TreeStats& stats_;
-    std::vector<Box> primBounds_;
+    std::vector<Box> ownBounds_;
+    const std::vector<Box>* primBounds_ = nullptr;
     std::vector<Side> side_;
-    BuildProgress progress_{opt_.progress};
+    ProgressFn noProgress_;
+    BuildProgress progress_;
 };
 
 /// The tree's SAH cost, node by node from the root box (no empty bonus: the expected cost).

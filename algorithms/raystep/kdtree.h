@@ -21,6 +21,14 @@ enum class SplitMethod { Midpoint, Median, Sah };
 std::optional<SplitMethod> parseSplitMethod(std::string_view s);
 std::string_view name(SplitMethod m);
 
+/// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
+/// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over 32
+/// bins per axis at every node, a straddler's box cut at the plane instead of the triangle
+/// clipped, subtrees built on all cores: a somewhat dearer tree, built many times faster.
+enum class KdBuild { Exact, Fast };
+std::optional<KdBuild> parseKdBuild(std::string_view s);
+std::string_view name(KdBuild b);
+
 /// Build parameters, the lecture's names. Defaults after pbrt-v4's kd-tree (traversal 1,
 /// intersection 5, empty bonus 0.5, one primitive a leaf for the SAH). Midpoint and median have
 /// no cost to stop them, so their leaves default to 4 primitives.
@@ -35,6 +43,7 @@ struct KdTreeOptions {
     // SAH: 0 (the default) sweeps every split event exactly (Wald & Havran). N > 0: nodes with
     // more than N primitives choose among 256 bin boundaries per axis instead (min-max binning).
     int exactBelow = 0;
+    KdBuild build = KdBuild::Exact;  // SAH only
     ProgressFn progress;  // build progress (share of the primitives placed in leaves); may cancel
 };
 

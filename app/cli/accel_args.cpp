@@ -24,6 +24,11 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
     cmd->add_option("--bin-above", a.binAbove,
                     "kd-tree SAH: nodes of more primitives pick among 256 bins per axis "
                     "(default: the exact event sweep everywhere)");
+    cmd->add_option(
+           "--kd-build", a.kdBuild,
+           "kd-tree SAH build: exact (every split event, perfect splits) or fast (32 bins, "
+           "boxes cut at the plane, all cores)")
+        ->capture_default_str();
     cmd->add_option("--grid-lambda", a.gridLambda,
                     "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
         ->capture_default_str();
@@ -96,6 +101,13 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
         if (*a.binAbove < 1)
             return "--bin-above " + std::to_string(*a.binAbove) + ": must be 1 or more";
         o.kdtree.exactBelow = *a.binAbove;
+    }
+    const auto kdBuild = parseKdBuild(a.kdBuild);
+    if (!kdBuild) return "--kd-build " + a.kdBuild + ": expected exact or fast";
+    o.kdtree.build = *kdBuild;
+    if (o.kdtree.build == KdBuild::Fast && a.binAbove) {
+        return std::string(
+            "--bin-above and --kd-build fast: the fast build bins every node already");
     }
     if (a.buckets) {
         if (*a.buckets < 2 || *a.buckets > 256)

@@ -13,6 +13,7 @@ namespace raystep::cli {
 struct AccelArgs {
     std::string accel = "bruteforce";
     std::string split = "sah";
+    std::string kdBuild = "exact";
     std::optional<double> cTrav, cIsect, emptyBonus;
     std::optional<int> maxDepth, leafSize, buckets, binAbove;
     double gridLambda = 4.0;

@@ -146,6 +146,10 @@ TEST_F(Cli, BadCommandLineValues) {
     expectBadInput("render --accel bvh --leaf-size 0", "--leaf-size");
     expectBadInput("render --accel bvh --buckets 1", "--buckets");
     expectBadInput("render --accel grid --grid-res 4,4", "--grid-res");
+    expectBadInput("build --accel kdtree --kd-build quick",
+                   "--kd-build quick: expected exact or fast");
+    expectBadInput("build --accel kdtree --kd-build fast --bin-above 64",
+                   "--bin-above and --kd-build");
     expectBadInput("build --accel octree", "--accel octree");
     expectBadInput("build nosuchscene", "nosuchscene");
     expectBadInput("build --events missing/e.json", "does not exist");

@@ -114,6 +114,15 @@ TEST_P(EveryScene, KdTreeFindsWhatBruteForceFinds) {
                                (mailbox ? "" : " without mailbox"));
         }
     }
+    // The other SAH builds: 256 bins above 64 primitives, and the fast build (32 bins, boxes cut
+    // at the plane, subtrees on other threads for the stadium).
+    AccelOptions binned, fast;
+    binned.kdtree.exactBelow = 64;
+    fast.kdtree.build = KdBuild::Fast;
+    expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, binned), count,
+                   GetParam() + " kdtree binned above 64");
+    expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, fast), count,
+                   GetParam() + " kdtree fast build");
     // Extremes of the parameters: one level only, and huge leaves.
     AccelOptions shallow, fat;
     shallow.kdtree.maxDepth = 1;

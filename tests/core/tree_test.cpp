@@ -46,6 +46,21 @@ TEST(KdTree, SahCostEqualsARecomputation) {
             const double expected = recomputeKdCost(t, 0, b.lo, b.hi);
             EXPECT_NEAR(t.stats().sahCost, expected, 1e-9 * expected) << name;
         }
+        // The fast build splices subtrees made on other threads: the same recomputation holds,
+        // and every primitive is listed in some leaf.
+        KdTreeOptions fast;
+        fast.build = KdBuild::Fast;
+        const KdTree3 t(ScenePrims(s, {}), fast);
+        const Bounds3 b = s.bounds();
+        const double expected = recomputeKdCost(t, 0, b.lo, b.hi);
+        EXPECT_NEAR(t.stats().sahCost, expected, 1e-9 * expected) << name << " fast";
+        std::vector<bool> listed(s.primitiveCount(), false);
+        for (const std::uint32_t p : t.primIds()) listed[p] = true;
+        EXPECT_EQ(std::count(listed.begin(), listed.end(), false), 0) << name << " fast";
+        EXPECT_EQ(t.stats().nodes, t.nodes().size());
+        EXPECT_EQ(t.stats().leaves, std::count_if(t.nodes().begin(), t.nodes().end(),
+                                                  [](const KdNode& n) { return n.leaf(); }));
+        EXPECT_EQ(t.stats().references, t.primIds().size());
     }
 }
 
