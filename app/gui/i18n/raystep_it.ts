@@ -3,72 +3,72 @@
 <context>
     <name>raystep::gui::CompareWindow</name>
     <message>
-        <location filename="../compare_window.cpp" line="16" />
+        <location filename="../compare_window.cpp" line="17" />
         <source>raystep - compare midpoint, median and SAH</source>
         <translation>raystep - confronto tra midpoint, mediana e SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="43" />
+        <location filename="../compare_window.cpp" line="50" />
         <source>build ms</source>
         <translation>costruzione (ms)</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="43" />
+        <location filename="../compare_window.cpp" line="50" />
         <source>nodes</source>
         <translation>nodi</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="43" />
+        <location filename="../compare_window.cpp" line="50" />
         <source>leaves</source>
         <translation>foglie</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="43" />
+        <location filename="../compare_window.cpp" line="50" />
         <source>max depth</source>
         <translation>profondità massima</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="44" />
+        <location filename="../compare_window.cpp" line="51" />
         <source>references</source>
         <translation>riferimenti</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="44" />
+        <location filename="../compare_window.cpp" line="51" />
         <source>SAH cost</source>
         <translation>costo SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="44" />
+        <location filename="../compare_window.cpp" line="51" />
         <source>ray: tests</source>
         <translation>raggio: test</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="44" />
+        <location filename="../compare_window.cpp" line="51" />
         <source>ray: nodes visited</source>
         <translation>raggio: nodi visitati</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="45" />
+        <location filename="../compare_window.cpp" line="52" />
         <source>ray: events</source>
         <translation>raggio: eventi</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="48" />
+        <location filename="../compare_window.cpp" line="55" />
         <source>midpoint</source>
         <translation>midpoint</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="48" />
+        <location filename="../compare_window.cpp" line="55" />
         <source>median</source>
         <translation>mediana</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="48" />
+        <location filename="../compare_window.cpp" line="55" />
         <source>SAH</source>
         <translation>SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="76" />
+        <location filename="../compare_window.cpp" line="83" />
         <source>step (the same ray in each)</source>
         <translation>passo (lo stesso raggio in ognuno)</translation>
     </message>
@@ -154,59 +154,59 @@
         <translation>Lezioni...</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="181" />
+        <location filename="../lesson_panel.cpp" line="180" />
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="185" />
+        <location filename="../lesson_panel.cpp" line="184" />
         <source>Step %1 / %2</source>
         <translation>Passo %1 / %2</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="198" />
-        <location filename="../lesson_panel.cpp" line="299" />
+        <location filename="../lesson_panel.cpp" line="197" />
+        <location filename="../lesson_panel.cpp" line="298" />
         <source>Exercise %1 / %2%3</source>
         <translation>Esercizio %1 / %2%3</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="201" />
-        <location filename="../lesson_panel.cpp" line="302" />
+        <location filename="../lesson_panel.cpp" line="200" />
+        <location filename="../lesson_panel.cpp" line="301" />
         <source> (solved)</source>
         <translation> (risolto)</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="227" />
+        <location filename="../lesson_panel.cpp" line="226" />
         <source>X,Y (or click the cell in the 2D view)</source>
         <translation>X,Y (o clicca la cella nella vista 2D)</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="230" />
+        <location filename="../lesson_panel.cpp" line="229" />
         <source>a number, e.g. 1.25</source>
         <translation>un numero, ad es. 1,25</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="233" />
+        <location filename="../lesson_panel.cpp" line="232" />
         <source>a whole number</source>
         <translation>un numero intero</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="236" />
+        <location filename="../lesson_panel.cpp" line="235" />
         <source>hit T, or miss</source>
         <translation>hit T, oppure miss</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="236" />
+        <location filename="../lesson_panel.cpp" line="235" />
         <source>hit or miss</source>
         <translation>hit oppure miss</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="279" />
+        <location filename="../lesson_panel.cpp" line="278" />
         <source>Cannot read that answer: %1.</source>
         <translation>Risposta non leggibile: %1.</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="289" />
+        <location filename="../lesson_panel.cpp" line="288" />
         <source>Right. %1</source>
         <translation>Giusto. %1</translation>
     </message>
@@ -216,17 +216,17 @@
         <translation>Non è giusto. La risposta è %1: %2</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="295" />
+        <location filename="../lesson_panel.cpp" line="294" />
         <source>Not right yet (try %1 of 3). Step the replay and look at the inspector, or ask for a hint.</source>
         <translation>Non ancora giusto (tentativo %1 di 3). Fai avanzare la riproduzione e guarda l'ispettore, oppure chiedi un suggerimento.</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="309" />
+        <location filename="../lesson_panel.cpp" line="308" />
         <source>Hint: %1</source>
         <translation>Suggerimento: %1</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="317" />
+        <location filename="../lesson_panel.cpp" line="316" />
         <source>Answer: %1. %2</source>
         <translation>Risposta: %1. %2</translation>
     </message>
@@ -236,27 +236,27 @@
         <translation>celle/asse</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="321" />
+        <location filename="../lesson_panel.cpp" line="322" />
         <source>cells</source>
         <translation>celle</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="321" />
+        <location filename="../lesson_panel.cpp" line="322" />
         <source>refs</source>
         <translation>riferimenti</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="322" />
+        <location filename="../lesson_panel.cpp" line="323" />
         <source>build ms</source>
         <translation>costruzione (ms)</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="322" />
+        <location filename="../lesson_panel.cpp" line="321" />
         <source>tests/ray</source>
         <translation>test/raggio</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="322" />
+        <location filename="../lesson_panel.cpp" line="321" />
         <source>cells/ray</source>
         <translation>celle/raggio</translation>
     </message>
@@ -266,7 +266,7 @@
         <translation>salti/raggio</translation>
     </message>
     <message>
-        <location filename="../lesson_panel.cpp" line="323" />
+        <location filename="../lesson_panel.cpp" line="322" />
         <source>trace ms</source>
         <translation>tracciamento (ms)</translation>
     </message>
@@ -309,93 +309,93 @@
         <translation>split scelto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="102" />
+        <location filename="../main_window.cpp" line="103" />
         <source>Progress file unreadable, kept as %1: %2</source>
         <translation>File dei progressi illeggibile, conservato come %1: %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="114" />
+        <location filename="../main_window.cpp" line="115" />
         <source>raystep</source>
         <translation>raystep</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="141" />
+        <location filename="../main_window.cpp" line="142" />
         <source>First event (Home)</source>
         <translation>Primo evento (Home)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="142" />
+        <location filename="../main_window.cpp" line="143" />
         <source>Step back (Left)</source>
         <translation>Passo indietro (Sinistra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="143" />
+        <location filename="../main_window.cpp" line="144" />
         <source>Play / pause (Space)</source>
         <translation>Avvia / pausa (Spazio)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="144" />
+        <location filename="../main_window.cpp" line="145" />
         <source>Step forward (Right)</source>
         <translation>Passo avanti (Destra)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="148" />
+        <location filename="../main_window.cpp" line="149" />
         <source>next</source>
         <translation>successivo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="148" />
+        <location filename="../main_window.cpp" line="149" />
         <source>Jump to the next event of this kind (N)</source>
         <translation>Salta al prossimo evento di questo tipo (N)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="150" />
+        <location filename="../main_window.cpp" line="151" />
         <source>speed</source>
         <translation>velocità</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="154" />
+        <location filename="../main_window.cpp" line="155" />
         <source> /s</source>
         <translation> /s</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="180" />
+        <location filename="../main_window.cpp" line="181" />
         <source>Inspector</source>
         <translation>Ispettore</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="188" />
+        <location filename="../main_window.cpp" line="189" />
         <source>Filter events (e.g. cell, test, mailbox)</source>
         <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="203" />
+        <location filename="../main_window.cpp" line="204" />
         <source>Events</source>
         <translation>Eventi</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="212" />
-        <location filename="../main_window.cpp" line="404" />
+        <location filename="../main_window.cpp" line="213" />
+        <location filename="../main_window.cpp" line="406" />
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="222" />
+        <location filename="../main_window.cpp" line="223" />
         <source>Render cancelled</source>
         <translation>Rendering annullato</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="223" />
+        <location filename="../main_window.cpp" line="224" />
         <source>Rendered in %1 ms; click a pixel to trace it</source>
         <translation>Rendering in %1 ms; clicca un pixel per tracciarlo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="229" />
+        <location filename="../main_window.cpp" line="230" />
         <source>Pixel (%1, %2): %3 events recorded</source>
         <translation>Pixel (%1, %2): %3 eventi registrati</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="246" />
+        <location filename="../main_window.cpp" line="247" />
         <source>## Building the %1
 
 Each node is split by a plane. Step through the **candidate** planes (dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the next choice with the *split chosen* kind and **N**.</source>
@@ -404,177 +404,182 @@ Each node is split by a plane. Step through the **candidate** planes (dashed): t
 Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="269" />
+        <location filename="../main_window.cpp" line="271" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="270" />
+        <location filename="../main_window.cpp" line="272" />
         <source>&amp;Open scene...</source>
         <translation>&amp;Apri scena...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="271" />
+        <location filename="../main_window.cpp" line="273" />
         <source>Export &amp;trace...</source>
         <translation>Esporta &amp;traccia...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="272" />
+        <location filename="../main_window.cpp" line="274" />
         <source>Export screenshot of the &amp;window...</source>
         <translation>Esporta screenshot della &amp;finestra...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="273" />
+        <location filename="../main_window.cpp" line="275" />
         <source>window</source>
         <translation>finestra</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="274" />
+        <location filename="../main_window.cpp" line="276" />
         <source>Export screenshot of the &amp;2D view...</source>
         <translation>Esporta screenshot della vista &amp;2D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="275" />
+        <location filename="../main_window.cpp" line="277" />
         <source>2D view</source>
         <translation>vista 2D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="276" />
+        <location filename="../main_window.cpp" line="278" />
         <source>Export screenshot of the &amp;3D view...</source>
         <translation>Esporta screenshot della vista &amp;3D...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="277" />
+        <location filename="../main_window.cpp" line="279" />
         <source>3D view</source>
         <translation>vista 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="278" />
+        <location filename="../main_window.cpp" line="280" />
         <source>Export screenshot of the &amp;image view...</source>
         <translation>Esporta screenshot della vista &amp;immagine...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="279" />
+        <location filename="../main_window.cpp" line="281" />
         <source>image view</source>
         <translation>vista immagine</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="280" />
+        <location filename="../main_window.cpp" line="282" />
         <source>Export &amp;progress report...</source>
         <translation>Esporta il resoconto dei &amp;progressi...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="282" />
+        <location filename="../main_window.cpp" line="284" />
         <source>&amp;Quit</source>
         <translation>&amp;Esci</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="283" />
+        <location filename="../main_window.cpp" line="285" />
         <source>&amp;Replay</source>
         <translation>&amp;Riproduzione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="284" />
+        <location filename="../main_window.cpp" line="286" />
         <source>Step &amp;forward</source>
         <translation>Passo &amp;avanti</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="286" />
+        <location filename="../main_window.cpp" line="288" />
         <source>Step &amp;back</source>
         <translation>Passo &amp;indietro</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="287" />
+        <location filename="../main_window.cpp" line="289" />
         <source>&amp;Play / pause</source>
         <translation>A&amp;vvia / pausa</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="289" />
+        <location filename="../main_window.cpp" line="291" />
         <source>&amp;Next event of the kind</source>
         <translation>&amp;Prossimo evento del tipo</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="292" />
+        <location filename="../main_window.cpp" line="294" />
         <source>Replay the &amp;build (candidates, splits, leaves)</source>
         <translation>Riproduci la &amp;costruzione (candidati, split, foglie)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="294" />
+        <location filename="../main_window.cpp" line="296" />
         <source>Replay the &amp;example ray</source>
         <translation>Riproduci il raggio d'&amp;esempio</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="297" />
+        <location filename="../main_window.cpp" line="299" />
         <source>&amp;First event</source>
         <translation>P&amp;rimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="299" />
+        <location filename="../main_window.cpp" line="301" />
         <source>&amp;Last event</source>
         <translation>&amp;Ultimo evento</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="301" />
+        <location filename="../main_window.cpp" line="303" />
         <source>&amp;Lessons</source>
         <translation>&amp;Lezioni</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="308" />
+        <location filename="../main_window.cpp" line="304" />
+        <source>&amp;Built-in lessons</source>
+        <translation>Lezioni &amp;incluse</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="306" />
         <source>Open lesson &amp;file...</source>
         <translation>Apri &amp;file di lezione...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="309" />
+        <location filename="../main_window.cpp" line="307" />
         <source>Open lesson</source>
         <translation>Apri lezione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="310" />
+        <location filename="../main_window.cpp" line="308" />
         <source>Lessons (*.json)</source>
         <translation>Lezioni (*.json)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="313" />
+        <location filename="../main_window.cpp" line="311" />
         <source>&amp;Lecturer mode (show answers)</source>
         <translation>Modalità &amp;docente (mostra le risposte)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="317" />
+        <location filename="../main_window.cpp" line="315" />
         <source>&amp;View</source>
         <translation>&amp;Vista</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="318" />
+        <location filename="../main_window.cpp" line="316" />
         <source>&amp;Compare midpoint, median and SAH...</source>
         <translation>&amp;Confronta midpoint, mediana e SAH...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="320" />
+        <location filename="../main_window.cpp" line="318" />
         <source>&amp;Heat map of primitive tests</source>
         <translation>&amp;Mappa di calore dei test di primitive</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="323" />
+        <location filename="../main_window.cpp" line="321" />
         <source>&amp;Reset 3D camera</source>
         <translation>&amp;Reimposta la camera 3D</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="331" />
+        <location filename="../main_window.cpp" line="329" />
         <source>Loading %1 and building its %2...</source>
         <translation>Caricamento di %1 e costruzione del suo %2...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="343" />
+        <location filename="../main_window.cpp" line="341" />
         <source>Opening %1 cancelled</source>
         <translation>Apertura di %1 annullata</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="348" />
+        <location filename="../main_window.cpp" line="346" />
         <source>Cannot open the scene</source>
         <translation>Impossibile aprire la scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="355" />
+        <location filename="../main_window.cpp" line="353" />
         <source>## %1
 
 %2
@@ -587,7 +592,7 @@ The ray is the slides' example. Step with **Right** and **Left**, play with **Sp
 Il raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="362" />
+        <location filename="../main_window.cpp" line="360" />
         <source>## %1
 
 %2
@@ -600,101 +605,96 @@ Click a pixel of the image to trace it: its ray tree is recorded and replayed in
 Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="370" />
+        <location filename="../main_window.cpp" line="368" />
         <source>Rendering %1...</source>
         <translation>Rendering di %1...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="381" />
+        <location filename="../main_window.cpp" line="379" />
         <source>raystep - %1</source>
         <translation>raystep - %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="423" />
-        <location filename="../main_window.cpp" line="437" />
+        <location filename="../main_window.cpp" line="426" />
+        <location filename="../main_window.cpp" line="440" />
         <source>Cannot open the lesson</source>
         <translation>Impossibile aprire la lezione</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="447" />
+        <location filename="../main_window.cpp" line="450" />
         <source>raystep - lesson %1: %2</source>
         <translation>raystep - lezione %1: %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="481" />
+        <location filename="../main_window.cpp" line="485" />
         <source>Cannot save the progress to %1</source>
         <translation>Impossibile salvare i progressi in %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="485" />
+        <location filename="../main_window.cpp" line="490" />
         <source>Export progress report</source>
         <translation>Esporta il resoconto dei progressi</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="487" />
+        <location filename="../main_window.cpp" line="491" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="501" />
+        <location filename="../main_window.cpp" line="506" />
         <source>Tracing the same rays at %1 grid resolutions...</source>
         <translation>Tracciamento degli stessi raggi con %1 risoluzioni della griglia...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="520" />
+        <location filename="../main_window.cpp" line="554" />
         <source>Compare</source>
         <translation>Confronto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="521" />
-        <source>Compare mode shows the lecture's 2D scenes; for a 3D scene, raystep-cli compare prints the same table.</source>
-        <translation>Il confronto mostra le scene 2D della lezione; per una scena 3D, raystep-cli compare stampa la stessa tabella.</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="568" />
+        <location filename="../main_window.cpp" line="598" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="582" />
+        <location filename="../main_window.cpp" line="612" />
         <source>Open scene</source>
         <translation>Apri scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="582" />
+        <location filename="../main_window.cpp" line="612" />
         <source>Scenes (*.json)</source>
         <translation>Scene (*.json)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="587" />
+        <location filename="../main_window.cpp" line="617" />
         <source>Screenshot of the %1</source>
         <translation>Screenshot della %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="588" />
+        <location filename="../main_window.cpp" line="618" />
         <source>PNG images (*.png)</source>
         <translation>Immagini PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="493" />
-        <location filename="../main_window.cpp" line="591" />
-        <location filename="../main_window.cpp" line="605" />
+        <location filename="../main_window.cpp" line="498" />
+        <location filename="../main_window.cpp" line="621" />
+        <location filename="../main_window.cpp" line="635" />
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="493" />
-        <location filename="../main_window.cpp" line="591" />
+        <location filename="../main_window.cpp" line="498" />
+        <location filename="../main_window.cpp" line="621" />
         <source>Could not write %1</source>
         <translation>Impossibile scrivere %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="595" />
+        <location filename="../main_window.cpp" line="625" />
         <source>Export trace</source>
         <translation>Esporta traccia</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="596" />
+        <location filename="../main_window.cpp" line="626" />
         <source>Trace files (*.json)</source>
         <translation>File di traccia (*.json)</translation>
     </message>
@@ -707,7 +707,7 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <translation>La vista 2D mostra le scene 2D della lezione.</translation>
     </message>
     <message>
-        <location filename="../view2d.cpp" line="342" />
+        <location filename="../view2d.cpp" line="358" />
         <source>SAH cost of each candidate (X blue, Y purple; dashed: leaf)</source>
         <translation>Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)</translation>
     </message>
@@ -715,12 +715,12 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
 <context>
     <name>raystep::gui::VtkView</name>
     <message>
-        <location filename="../vtk_view.cpp" line="258" />
+        <location filename="../vtk_view.cpp" line="299" />
         <source>The 3D view shows 3D scenes.</source>
         <translation>La vista 3D mostra le scene 3D.</translation>
     </message>
     <message>
-        <location filename="../vtk_view.cpp" line="272" />
+        <location filename="../vtk_view.cpp" line="313" />
         <source>Rasterization (VTK, OpenGL): the scene and the recorded rays</source>
         <translation>Rasterizzazione (VTK, OpenGL): la scena e i raggi registrati</translation>
     </message>
