@@ -24,7 +24,11 @@ TEST(Lessons, ThirteenInTheLecturesOrderEachInBothLanguages) {
         EXPECT_FALSE(l.text.it.empty());
         EXPECT_FALSE(l.exercises.empty()) << "every lesson has exercises";
         for (const LessonStep& s : l.steps) EXPECT_FALSE(s.text.it.empty());
-        for (const Exercise& e : l.exercises) EXPECT_FALSE(e.prompt.it.empty()) << e.id;
+        for (const Exercise& e : l.exercises) {
+            EXPECT_FALSE(e.prompt.it.empty()) << e.id;
+            EXPECT_FALSE(e.hint.en.empty()) << e.id << ": every exercise has a hint";
+            EXPECT_FALSE(e.hint.it.empty()) << e.id;
+        }
         // By id, by number, the same lesson.
         EXPECT_EQ(loadLesson(l.id).number, l.number);
         EXPECT_EQ(loadLesson(std::to_string(l.number)).id, l.id);
