@@ -114,8 +114,8 @@ TEST_P(EveryScene, KdTreeFindsWhatBruteForceFinds) {
                                (mailbox ? "" : " without mailbox"));
         }
     }
-    // The other SAH builds: 256 bins above 64 primitives, and the fast build (32 bins, boxes cut
-    // at the plane, subtrees on other threads for the stadium).
+    // The other SAH builds: 256 bins above 64 primitives, and the fast build (32 bins at every
+    // node, subtrees on other threads for the stadium).
     AccelOptions binned, fast;
     binned.kdtree.exactBelow = 64;
     fast.kdtree.build = KdBuild::Fast;
