@@ -29,7 +29,10 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
         layerDirty_ = true;
         update();
     });
-    connect(&session_, &Session::logChanged, this, [this] { layerDirty_ = true; });
+    connect(&session_, &Session::logChanged, this, [this] {
+        layerDirty_ = true;
+        indexBuild();
+    });
 }
 
 void View2D::fit() const {
@@ -88,6 +91,34 @@ void View2D::mousePressEvent(QMouseEvent* e) {
     if (const auto c = cellAt(e->position())) emit cellClicked((*c)[0], (*c)[1]);
 }
 
+void View2D::indexBuild() {
+    // Once per log: where each split was chosen, and each node's parent (a build's replay).
+    chosenAt_.clear();
+    buildParent_.clear();
+    splitOf_.clear();
+    splitAt_.clear();
+    if (!session_.showingBuild()) return;
+    const auto& events = session_.log().events();
+    const auto grow = [&](std::uint32_t node) {
+        if (node >= buildParent_.size()) {
+            buildParent_.resize(node + 1, kNoId);
+            splitOf_.resize(node + 1, {-1, 0.0});
+            splitAt_.resize(node + 1, 0);
+        }
+    };
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        if (const auto* b = std::get_if<BuildNode>(&events[i])) {
+            grow(b->node);
+            buildParent_[b->node] = b->parent;
+        } else if (const auto* c = std::get_if<SplitChosen>(&events[i])) {
+            grow(c->node);
+            splitOf_[c->node] = {c->axis, c->position};
+            splitAt_[c->node] = i;
+            chosenAt_.push_back(i);
+        }
+    }
+}
+
 void View2D::paintEvent(QPaintEvent*) {
     QPainter g(this);
     g.setRenderHint(QPainter::Antialiasing);
@@ -125,19 +156,31 @@ void View2D::paintEvent(QPaintEvent*) {
     // A build being replayed: the node being split, the candidate planes so far, the choice.
     const bool build = session_.showingBuild();
     if (build) {
-        // The tree as far as it is built: the planes chosen before the cursor.
+        // The tree as far as it is built: the planes chosen before the cursor. A big build has
+        // thousands (a frame must stay cheap while scrubbing): then only the current node's
+        // ancestors' planes, which frame the node being split.
         const EventLog& log = session_.log();
+        const auto line = [&](std::uint32_t node, int axis, double pos) {
+            if (node >= log.nodes().size()) return;
+            const NodeRecord& n = log.nodes()[node];
+            const Vec2 a = axis == 0 ? Vec2(pos, n.lo[1]) : Vec2(n.lo[0], pos);
+            const Vec2 b = axis == 0 ? Vec2(pos, n.hi[1]) : Vec2(n.hi[0], pos);
+            g.drawLine(toScreen(a), toScreen(b));
+        };
         g.setPen(QPen(QColor(90, 90, 100), 1.5));
-        for (std::size_t i = 0; i < st.cursor; ++i)
-            if (const auto* c = std::get_if<SplitChosen>(&log.events()[i]);
-                c && c->node < log.nodes().size()) {
-                const NodeRecord& n = log.nodes()[c->node];
-                const Vec2 a =
-                    c->axis == 0 ? Vec2(c->position, n.lo[1]) : Vec2(n.lo[0], c->position);
-                const Vec2 b =
-                    c->axis == 0 ? Vec2(c->position, n.hi[1]) : Vec2(n.hi[0], c->position);
-                g.drawLine(toScreen(a), toScreen(b));
+        const std::size_t chosenSoFar = static_cast<std::size_t>(
+            std::lower_bound(chosenAt_.begin(), chosenAt_.end(), st.cursor) - chosenAt_.begin());
+        if (chosenSoFar <= kAllSplitsUpTo) {
+            for (std::size_t k = 0; k < chosenSoFar; ++k) {
+                const auto& c = std::get<SplitChosen>(log.events()[chosenAt_[k]]);
+                line(c.node, c.axis, c.position);
             }
+        } else if (st.buildNode) {
+            for (std::uint32_t n = st.buildNode->parent; n != kNoId && n < buildParent_.size();
+                 n = buildParent_[n])
+                if (splitOf_[n].first >= 0 && splitAt_[n] < st.cursor)
+                    line(n, splitOf_[n].first, splitOf_[n].second);
+        }
     }
     if (build && st.buildNode && st.buildNode->node < session_.log().nodes().size()) {
         const NodeRecord& n = session_.log().nodes()[st.buildNode->node];

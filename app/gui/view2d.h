@@ -10,6 +10,8 @@
 
 #include <array>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace raystep::gui {
 
@@ -41,13 +43,20 @@ class View2D : public QWidget {
     /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
     void buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Scene2DPrims>* kd);
     void drawPrimitive(QPainter& painter, std::uint32_t prim) const;
+    /// A build's replay: where each split was chosen and each node's parent, once per log.
+    void indexBuild();
 
     Session& session_;
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;
     std::vector<BoxN<2>> kdBoxes_;  // every kd node's box, made with the layer
-    mutable BoxN<2> world_;         // what is shown, in scene units
+    static constexpr std::size_t kAllSplitsUpTo = 2000;
+    std::vector<std::size_t> chosenAt_;  // event indices of the SplitChosen events, in order
+    std::vector<std::uint32_t> buildParent_;
+    std::vector<std::pair<int, double>> splitOf_;  // per node: axis (-1: none) and position
+    std::vector<std::size_t> splitAt_;             // per node: the event that chose its split
+    mutable BoxN<2> world_;                        // what is shown, in scene units
     mutable double scale_ = 1.0;
     mutable QPointF offset_;
 };
