@@ -1,5 +1,5 @@
 #pragma once
-// Reading a JSON file (scene or lesson) so that every error names the file, the line and the key:
+// Reading a file (scene or lesson) so that every error names the file, the line and the key:
 // typed accessors over nlohmann::json that throw the loader's own error type. Internal to the core.
 #include "raystep/json_lines.h"
 #include "raystep/math.h"
@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -16,6 +19,15 @@
 namespace raystep::detail {
 
 using nlohmann::json;
+
+/// A whole file's bytes, or nullopt when it cannot be read (missing, a folder).
+inline std::optional<std::string> readWholeFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in || std::filesystem::is_directory(path)) return std::nullopt;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 
 inline std::string joinNames(std::initializer_list<const char*> names) {
     std::string out;

@@ -331,14 +331,6 @@ LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
     return s;
 }
 
-std::optional<std::string> readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 constexpr std::string_view kLessonPrefix = "lessons/";
 
 }  // namespace
@@ -466,7 +458,7 @@ Lesson loadLesson(const std::string& idOrPath) {
                           "(built-in: " +
                               ids + ")");
     }
-    const auto text = readWholeFile(idOrPath);
+    const auto text = detail::readWholeFile(idOrPath);
     if (!text) throw LessonError(idOrPath, 0, "", "cannot read the lesson file");
     return loadLessonText(*text, idOrPath);
 }
@@ -1095,19 +1087,19 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
     for (const Exercise& ex : lesson.exercises) {
         Grade::Item item;
         item.exercise = ex.id;
-        const Verdict ref = checkAnswer(ex, log, Answer{}, lang, lesson.file);
-        item.expected = ref.expected;
-        item.feedback = ref.feedback;
+        // One check per exercise: an unanswered or unreadable answer is checked as empty, which
+        // still gives the expected answer and its explanation.
+        std::optional<Answer> given;
+        std::string why;
         if (const auto it = sheet.answers.find(ex.id); it != sheet.answers.end()) {
             item.answered = true;
             item.given = it->second;
-            std::string why;
-            if (const auto a = parseAnswer(ex, it->second, &why)) {
-                item.correct = checkAnswer(ex, log, *a, lang, lesson.file).correct;
-            } else {
-                item.feedback = why + ". " + item.feedback;
-            }
+            given = parseAnswer(ex, it->second, &why);
         }
+        const Verdict v = checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file);
+        item.correct = given.has_value() && v.correct;
+        item.expected = v.expected;
+        item.feedback = item.answered && !given ? why + ". " + v.feedback : v.feedback;
         g.score += item.correct;
         g.items.push_back(std::move(item));
     }

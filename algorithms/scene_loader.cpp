@@ -17,6 +17,7 @@ namespace raystep {
 
 using detail::ifPresent;
 using detail::joinNames;
+using detail::readWholeFile;
 using nlohmann::json;
 using Reader = detail::JsonReader<SceneError>;
 
@@ -369,16 +370,6 @@ Scene2D loadScene2DText(std::string_view text, const std::string& fileName) {
         r.fail("segments", "the scene is empty: give at least one circle or segment");
     return scene;
 }
-
-namespace {
-std::optional<std::string> readWholeFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path)) return std::nullopt;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-}  // namespace
 
 Scene loadSceneFile(const std::string& path) {
     const auto text = readWholeFile(path);
