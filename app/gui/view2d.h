@@ -50,8 +50,8 @@ class View2D : public QWidget {
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;
-    std::vector<BoxN<2>> kdBoxes_;  // every kd node's box, made with the layer
-    static constexpr std::size_t kAllSplitsUpTo = 2000;
+    std::vector<BoxN<2>> kdBoxes_;                      // every kd node's box, made with the layer
+    static constexpr std::size_t kAllSplitsUpTo = 256;  // as many lines as the candidates shown
     std::vector<std::size_t> chosenAt_;  // event indices of the SplitChosen events, in order
     std::vector<std::uint32_t> buildParent_;
     std::vector<std::pair<int, double>> splitOf_;  // per node: axis (-1: none) and position
