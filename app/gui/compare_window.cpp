@@ -12,17 +12,32 @@
 
 namespace raystep::gui {
 
-CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, Pixel pixel, QWidget* parent)
-    : QWidget(parent) {
+namespace {
+constexpr SplitMethod kSplits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
+}
+
+CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKind kind,
+                                               const ProgressFn& progress) {
+    Prepared p;
+    for (int i = 0; i < 3; ++i) {
+        AccelOptions o;
+        o.kdtree.split = o.bvh.split = kSplits[i];
+        if (progress)
+            o.kdtree.progress =
+                o.bvh.progress = [&progress, i](double f) { return progress((i + f) / 3.0); };
+        p[i] = Session::prepare(scene, kind, o);
+    }
+    return p;
+}
+
+CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : QWidget(parent) {
     setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
-    const SplitMethod splits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
+    const AccelKind kind = prepared[0].kind;
     auto* views = new QHBoxLayout;
     int longest = 0;
     for (int i = 0; i < 3; ++i) {
         sessions_[i] = std::make_unique<Session>();
-        AccelOptions o;
-        o.kdtree.split = o.bvh.split = splits[i];
-        sessions_[i]->load(scene, kind, o);
+        sessions_[i]->adopt(std::move(prepared[i]));
         if (sessions_[i]->is2D())
             sessions_[i]->traceExampleRay();
         else
@@ -31,7 +46,7 @@ CompareWindow::CompareWindow(const std::string& scene, AccelKind kind, Pixel pix
         auto* column = new QVBoxLayout;
         auto* title = new QLabel(QStringLiteral("<b>%1 %2</b>")
                                      .arg(QString::fromUtf8(accelKindName(kind).data()),
-                                          QString::fromUtf8(name(splits[i]).data())));
+                                          QString::fromUtf8(name(kSplits[i]).data())));
         column->addWidget(title);
         if (sessions_[i]->is2D())
             views_[i] = new View2D(*sessions_[i]);

@@ -19,13 +19,18 @@ class View2D;
 class CompareWindow : public QWidget {
     Q_OBJECT
   public:
-    /// The three splits of `kind` (kdtree or bvh) on a scene; for a 3D scene the ray tree of
-    /// pixel (x, y) of a width x height image. Throws SceneError.
+    /// For a 3D scene: which ray tree to replay, pixel (x, y) of a width x height image.
     struct Pixel {
         int x, y, width, height;
     };
-    CompareWindow(const std::string& scene, AccelKind kind, Pixel pixel = {160, 120, 320, 240},
-                  QWidget* parent = nullptr);
+    /// The three splits of `kind` (kdtree or bvh) loaded and built, on any thread (the main
+    /// window builds them behind a progress dialog); `progress` sees the three builds as one.
+    /// Throws SceneError, or BuildCancelled.
+    using Prepared = std::array<Session::Prepared, 3>;
+    static Prepared prepare(const std::string& scene, AccelKind kind,
+                            const ProgressFn& progress = {});
+    /// Shows them, each replaying the 2D scene's example ray or the 3D scene's `pixel`.
+    CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent = nullptr);
     ~CompareWindow() override;
     Session& session(int i) { return *sessions_[i]; }
     QTableWidget* table() const { return table_; }

@@ -547,13 +547,23 @@ CompareWindow* MainWindow::openCompare() {
                 pixel.height = lesson_->lesson().trace.height;
             }
         }
-    CompareWindow* compare = nullptr;
-    try {
-        compare = new CompareWindow(session_.name(), kind, pixel);
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
+    // Three trees of a big mesh take seconds: built off the GUI thread, with Cancel.
+    CompareWindow::Prepared prepared;
+    const std::exception_ptr error = runWithProgress(
+        tr("Building the midpoint, median and SAH trees..."), [&](const ProgressFn& progress) {
+            prepared = CompareWindow::prepare(session_.name(), kind, progress);
+        });
+    if (error) {
+        try {
+            std::rethrow_exception(error);
+        } catch (const BuildCancelled&) {
+            statusBar()->showMessage(tr("Compare cancelled"));
+        } catch (const std::exception& e) {
+            QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
+        }
         return nullptr;
     }
+    auto* compare = new CompareWindow(std::move(prepared), pixel);
     compare->setAttribute(Qt::WA_DeleteOnClose);
     compare->resize(1400, 800);
     compare->show();

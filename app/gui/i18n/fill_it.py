@@ -161,6 +161,9 @@ IT = {
     "Export &progress report...": "Esporta il resoconto dei &progressi...",
     "&Lessons": "&Lezioni",
     "&Built-in lessons": "Lezioni &incluse",
+    "Building the midpoint, median and SAH trees...":
+        "Costruzione degli alberi midpoint, mediana e SAH...",
+    "Compare cancelled": "Confronto annullato",
     "Open lesson &file...": "Apri &file di lezione...",
     "Open lesson": "Apri lezione",
     "Lessons (*.json)": "Lezioni (*.json)",

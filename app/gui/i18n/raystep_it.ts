@@ -3,72 +3,72 @@
 <context>
     <name>raystep::gui::CompareWindow</name>
     <message>
-        <location filename="../compare_window.cpp" line="17" />
+        <location filename="../compare_window.cpp" line="34" />
         <source>raystep - compare midpoint, median and SAH</source>
         <translation>raystep - confronto tra midpoint, mediana e SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="50" />
+        <location filename="../compare_window.cpp" line="65" />
         <source>build ms</source>
         <translation>costruzione (ms)</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="50" />
+        <location filename="../compare_window.cpp" line="65" />
         <source>nodes</source>
         <translation>nodi</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="50" />
+        <location filename="../compare_window.cpp" line="65" />
         <source>leaves</source>
         <translation>foglie</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="50" />
+        <location filename="../compare_window.cpp" line="65" />
         <source>max depth</source>
         <translation>profondità massima</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="51" />
+        <location filename="../compare_window.cpp" line="66" />
         <source>references</source>
         <translation>riferimenti</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="51" />
+        <location filename="../compare_window.cpp" line="66" />
         <source>SAH cost</source>
         <translation>costo SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="51" />
+        <location filename="../compare_window.cpp" line="66" />
         <source>ray: tests</source>
         <translation>raggio: test</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="51" />
+        <location filename="../compare_window.cpp" line="66" />
         <source>ray: nodes visited</source>
         <translation>raggio: nodi visitati</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="52" />
+        <location filename="../compare_window.cpp" line="67" />
         <source>ray: events</source>
         <translation>raggio: eventi</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="55" />
+        <location filename="../compare_window.cpp" line="70" />
         <source>midpoint</source>
         <translation>midpoint</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="55" />
+        <location filename="../compare_window.cpp" line="70" />
         <source>median</source>
         <translation>mediana</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="55" />
+        <location filename="../compare_window.cpp" line="70" />
         <source>SAH</source>
         <translation>SAH</translation>
     </message>
     <message>
-        <location filename="../compare_window.cpp" line="83" />
+        <location filename="../compare_window.cpp" line="98" />
         <source>step (the same ray in each)</source>
         <translation>passo (lo stesso raggio in ognuno)</translation>
     </message>
@@ -646,55 +646,65 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <translation>Tracciamento degli stessi raggi con %1 risoluzioni della griglia...</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="554" />
+        <location filename="../main_window.cpp" line="553" />
+        <source>Building the midpoint, median and SAH trees...</source>
+        <translation>Costruzione degli alberi midpoint, mediana e SAH...</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="560" />
+        <source>Compare cancelled</source>
+        <translation>Confronto annullato</translation>
+    </message>
+    <message>
+        <location filename="../main_window.cpp" line="562" />
         <source>Compare</source>
         <translation>Confronto</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="598" />
+        <location filename="../main_window.cpp" line="608" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="612" />
+        <location filename="../main_window.cpp" line="622" />
         <source>Open scene</source>
         <translation>Apri scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="612" />
+        <location filename="../main_window.cpp" line="622" />
         <source>Scenes (*.json)</source>
         <translation>Scene (*.json)</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="617" />
+        <location filename="../main_window.cpp" line="627" />
         <source>Screenshot of the %1</source>
         <translation>Screenshot della %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="618" />
+        <location filename="../main_window.cpp" line="628" />
         <source>PNG images (*.png)</source>
         <translation>Immagini PNG (*.png)</translation>
     </message>
     <message>
         <location filename="../main_window.cpp" line="498" />
-        <location filename="../main_window.cpp" line="621" />
-        <location filename="../main_window.cpp" line="635" />
+        <location filename="../main_window.cpp" line="631" />
+        <location filename="../main_window.cpp" line="645" />
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
         <location filename="../main_window.cpp" line="498" />
-        <location filename="../main_window.cpp" line="621" />
+        <location filename="../main_window.cpp" line="631" />
         <source>Could not write %1</source>
         <translation>Impossibile scrivere %1</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="625" />
+        <location filename="../main_window.cpp" line="635" />
         <source>Export trace</source>
         <translation>Esporta traccia</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="626" />
+        <location filename="../main_window.cpp" line="636" />
         <source>Trace files (*.json)</source>
         <translation>File di traccia (*.json)</translation>
     </message>
@@ -702,12 +712,12 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
 <context>
     <name>raystep::gui::View2D</name>
     <message>
-        <location filename="../view2d.cpp" line="97" />
+        <location filename="../view2d.cpp" line="128" />
         <source>The 2D view shows the lecture's 2D scenes.</source>
         <translation>La vista 2D mostra le scene 2D della lezione.</translation>
     </message>
     <message>
-        <location filename="../view2d.cpp" line="358" />
+        <location filename="../view2d.cpp" line="401" />
         <source>SAH cost of each candidate (X blue, Y purple; dashed: leaf)</source>
         <translation>Costo SAH di ogni candidato (X blu, Y viola; tratteggio: foglia)</translation>
     </message>
