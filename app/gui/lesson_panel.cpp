@@ -127,26 +127,18 @@ void LessonPanel::showText(const QString& markdown) {
     picker_->setCurrentIndex(0);
 }
 
-void LessonPanel::showLesson(const Lesson& lesson, const EventLog* log,
-                             const LessonProgress* progress) {
+void LessonPanel::showLesson(const Lesson& lesson, const EventLog* log, LessonProgress* progress) {
     lesson_ = lesson;
     log_ = log;
     hasLesson_ = true;
-    attempts_.assign(lesson.exercises.size(), 0);
-    solved_.assign(lesson.exercises.size(), false);
-    if (progress)
-        for (std::size_t i = 0; i < lesson.exercises.size(); ++i)
-            if (const auto it = progress->exercises.find(lesson.exercises[i].id);
-                it != progress->exercises.end()) {
-                attempts_[i] = it->second.attempts;
-                solved_[i] = it->second.correct;
-            }
+    ownProgress_ = {};
+    progress_ = progress ? progress : &ownProgress_;
     picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
     stepRow_->setVisible(!lesson.steps.empty());
     exerciseBox_->setVisible(!lesson.exercises.empty());
     sweepButton_->setVisible(lesson.sweep.has_value());
     sweepTable_->hide();
-    step_ = progress ? std::clamp(progress->step, 0, std::max(0, int(lesson.steps.size()) - 1)) : 0;
+    step_ = std::clamp(progress_->step, 0, std::max(0, int(lesson.steps.size()) - 1));
     exercise_ = 0;
     refreshText();
     refreshExercise();
@@ -197,7 +189,7 @@ void LessonPanel::refreshExercise() {
     exerciseLabel_->setText(tr("Exercise %1 / %2%3")
                                 .arg(exercise_ + 1)
                                 .arg(lesson_.exercises.size())
-                                .arg(solved_[exercise_] ? tr(" (solved)") : QString()));
+                                .arg(solved(exercise_) ? tr(" (solved)") : QString()));
     prompt_->setText(q(ex.prompt.in(lang_)));
     answer_->clear();
     feedback_->clear();
@@ -255,7 +247,7 @@ bool LessonPanel::submit(const QString& answer) {
         answer_->setText(answer);
     }
     check();
-    return solved_[exercise_] && feedback_->property("correct").toBool();
+    return feedback_->property("correct").toBool();
 }
 
 QString LessonPanel::feedback() const {
@@ -279,8 +271,10 @@ void LessonPanel::check() {
         return;
     }
     const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file);
-    ++attempts_[exercise_];
-    solved_[exercise_] = solved_[exercise_] || v.correct;
+    LessonProgress::ExerciseRecord& rec = record(exercise_);
+    ++rec.attempts;
+    rec.correct = rec.correct || v.correct;
+    rec.answer = typed.toStdString();
     feedback_->setProperty("correct", v.correct);
     // Right: why, from the trace. Wrong: try again; the explanation after three tries.
     if (v.correct) {
@@ -289,17 +283,26 @@ void LessonPanel::check() {
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
         feedback_->setText(
-            attempts_[exercise_] >= 3 || lecturer_
+            rec.attempts >= 3 || lecturer_
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
                 : tr("Not right yet (try %1 of 3). Step the replay and look at the "
                      "inspector, or ask for a hint.")
-                      .arg(attempts_[exercise_]));
+                      .arg(rec.attempts));
     }
     exerciseLabel_->setText(tr("Exercise %1 / %2%3")
                                 .arg(exercise_ + 1)
                                 .arg(lesson_.exercises.size())
-                                .arg(solved_[exercise_] ? tr(" (solved)") : QString()));
+                                .arg(solved(exercise_) ? tr(" (solved)") : QString()));
     emit answered(q(ex.id), v.correct, typed);
+}
+
+LessonProgress::ExerciseRecord& LessonPanel::record(int exercise) {
+    return progress_->exercises[lesson_.exercises[exercise].id];
+}
+
+bool LessonPanel::solved(int exercise) const {
+    const auto it = progress_->exercises.find(lesson_.exercises[exercise].id);
+    return it != progress_->exercises.end() && it->second.correct;
 }
 
 void LessonPanel::hint() {

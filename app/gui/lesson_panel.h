@@ -26,8 +26,10 @@ class LessonPanel : public QWidget {
     void setLanguage(Language lang) { lang_ = lang; }
     /// The lessons the picker offers.
     void setLessons(const std::vector<Lesson>& lessons);
-    /// Shows a lesson whose trace is `log` (owned by the session; must outlive the lesson).
-    void showLesson(const Lesson& lesson, const EventLog* log, const LessonProgress* progress);
+    /// Shows a lesson whose trace is `log` (owned by the session; must outlive the lesson). The
+    /// panel records answers into `progress` (the window's, which it saves on `answered`); null
+    /// keeps them in the panel only.
+    void showLesson(const Lesson& lesson, const EventLog* log, LessonProgress* progress);
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
     void showText(const QString& markdown);
     bool hasLesson() const { return hasLesson_; }
@@ -53,7 +55,7 @@ class LessonPanel : public QWidget {
     void lessonRequested(const QString& id);
     void stepShown(int index);
     void exerciseShown(int index);
-    /// An answer was checked: the main window saves the progress.
+    /// An answer was checked and recorded in the progress: the main window saves it.
     void answered(const QString& exerciseId, bool correct, const QString& answer);
     void sweepRequested();
 
@@ -71,8 +73,11 @@ class LessonPanel : public QWidget {
     bool lecturer_ = false;
     int step_ = 0;
     int exercise_ = 0;
-    std::vector<int> attempts_;  // per exercise, this session and before
-    std::vector<bool> solved_;
+    /// This exercise's record in the progress (made on first use).
+    LessonProgress::ExerciseRecord& record(int exercise);
+    bool solved(int exercise) const;
+    LessonProgress* progress_ = nullptr;  // the window's, or ownProgress_
+    LessonProgress ownProgress_;
     QString freeText_;
 
     QComboBox* picker_ = nullptr;

@@ -263,7 +263,7 @@ void MainWindow::buildUi() {
         const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
         if (at) session_.setCursor(*at);
     });
-    connect(lesson_, &LessonPanel::answered, this, &MainWindow::recordAnswer);
+    connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
     connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
     connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
 
@@ -444,9 +444,8 @@ bool MainWindow::openLesson(const QString& idOrPath, bool quiet) {
     view3D_->setVisible(shows(LessonView::View3D));
     imageView_->setVisible(shows(LessonView::Image));
     view3D_->parentWidget()->setVisible(shows(LessonView::View3D) || shows(LessonView::Image));
-    const auto saved = studentProgress_.lessons.find(lesson.id);
-    lesson_->showLesson(lesson, &session_.log(),
-                        saved == studentProgress_.lessons.end() ? nullptr : &saved->second);
+    // The panel records answers into this lesson's progress (std::map entries do not move).
+    lesson_->showLesson(lesson, &session_.log(), &studentProgress_.lessons[lesson.id]);
     setWindowTitle(tr("raystep - lesson %1: %2")
                        .arg(lesson.number)
                        .arg(QString::fromStdString(lesson.title.in(lang_))));
@@ -465,14 +464,6 @@ void MainWindow::applyStep(int index) {
     if (step.camera)
         view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
     studentProgress_.lessons[lesson_->lesson().id].step = index;
-    saveProgress();
-}
-
-void MainWindow::recordAnswer(const QString& exerciseId, bool correct, const QString& answer) {
-    auto& rec = studentProgress_.lessons[lesson_->lesson().id].exercises[exerciseId.toStdString()];
-    ++rec.attempts;
-    rec.correct = rec.correct || correct;
-    rec.answer = answer.toStdString();
     saveProgress();
 }
 

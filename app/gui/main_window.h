@@ -79,7 +79,6 @@ class MainWindow : public QMainWindow {
     void exportTrace();
     void exportProgressReport();
     void applyStep(int index);
-    void recordAnswer(const QString& exerciseId, bool correct, const QString& answer);
     void saveProgress();
     void runSweep();
     void fillLessonsMenu();

@@ -22,6 +22,21 @@
 namespace raystep::gui {
 
 namespace {
+/// One actor drawing coloured line segments (the rays; the voxels, boxes, planes and hits).
+vtkSmartPointer<vtkActor> linesActor(vtkPoints* points, vtkCellArray* lines,
+                                     vtkUnsignedCharArray* colours, double width) {
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetLines(lines);
+    poly->GetCellData()->SetScalars(colours);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetLineWidth(width);
+    return actor;
+}
+
 /// Colours of the lecture's kinds of ray: primary, shadow, reflection, refraction, diffuse.
 constexpr unsigned char kRayColours[kRayKindCount][3] = {
     {230, 60, 50}, {90, 90, 90}, {40, 120, 230}, {40, 190, 170}, {220, 160, 40}};
@@ -167,15 +182,7 @@ void VtkView::rebuildRays() {
         lines->InsertNextCell(2, ids);
         colours->InsertNextTypedTuple(kRayColours[static_cast<int>(ray.kind)]);
     }
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    poly->SetLines(lines);
-    poly->GetCellData()->SetScalars(colours);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    raysActor_ = vtkSmartPointer<vtkActor>::New();
-    raysActor_->SetMapper(mapper);
-    raysActor_->GetProperty()->SetLineWidth(2.5);
+    raysActor_ = linesActor(points, lines, colours, 2.5);
     renderer_->AddActor(raysActor_);
 
     // The current ray's structure: visited voxels (grid) or the node being entered (kd-tree),
@@ -184,6 +191,14 @@ void VtkView::rebuildRays() {
     vtkNew<vtkCellArray> ml;
     vtkNew<vtkUnsignedCharArray> mc;
     mc->SetNumberOfComponents(3);
+    // Segments between points already inserted, `edges` as pairs of indices into `id`.
+    const auto addEdges = [&](const vtkIdType* id, const auto& edges, const unsigned char* colour) {
+        for (const auto& e : edges) {
+            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
+            ml->InsertNextCell(2, pair);
+            mc->InsertNextTypedTuple(colour);
+        }
+    };
     const auto box = [&](const Vec3& lo, const Vec3& hi, const unsigned char* colour) {
         vtkIdType id[8];
         for (int k = 0; k < 8; ++k)
@@ -191,11 +206,7 @@ void VtkView::rebuildRays() {
                 mp->InsertNextPoint(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
         static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                          {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-        for (const auto& e : edges) {
-            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
-            ml->InsertNextCell(2, pair);
-            mc->InsertNextTypedTuple(colour);
-        }
+        addEdges(id, edges, colour);
     };
     // A split plane: its outline in the box and the two diagonals, so it reads as a plane.
     const auto plane = [&](const Vec3& lo, const Vec3& hi, int axis, double at,
@@ -210,11 +221,7 @@ void VtkView::rebuildRays() {
         vtkIdType id[4];
         for (int k = 0; k < 4; ++k) id[k] = mp->InsertNextPoint(c[k].x, c[k].y, c[k].z);
         static const int edges[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
-        for (const auto& e : edges) {
-            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
-            ml->InsertNextCell(2, pair);
-            mc->InsertNextTypedTuple(colour);
-        }
+        addEdges(id, edges, colour);
     };
     static const unsigned char kVoxel[3] = {255, 200, 60}, kNode[3] = {120, 200, 255},
                                kHitMark[3] = {40, 220, 90}, kCandidate[3] = {150, 150, 160},
@@ -271,15 +278,7 @@ void VtkView::rebuildRays() {
         const double m = 0.01 * sceneSize;
         box(p - Vec3(m), p + Vec3(m), kHitMark);
     }
-    vtkNew<vtkPolyData> markers;
-    markers->SetPoints(mp);
-    markers->SetLines(ml);
-    markers->GetCellData()->SetScalars(mc);
-    vtkNew<vtkPolyDataMapper> markerMapper;
-    markerMapper->SetInputData(markers);
-    markersActor_ = vtkSmartPointer<vtkActor>::New();
-    markersActor_->SetMapper(markerMapper);
-    markersActor_->GetProperty()->SetLineWidth(1.5);
+    markersActor_ = linesActor(mp, ml, mc, 1.5);
     renderer_->AddActor(markersActor_);
     dirty_ = true;
     update();
