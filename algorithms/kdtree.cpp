@@ -219,8 +219,7 @@ class KdBuilder {
                 right.push_back(r);
             } else {
                 // Straddles: clipped to each side ("perfect splits"), dropped where it misses.
-                const Box l = prims_.clippedBounds(r.prim, boxL);
-                const Box rr = prims_.clippedBounds(r.prim, boxR);
+                const auto [l, rr] = clipToSides(r.prim, box, bestAxis, bestPos);
                 if (!l.empty()) left.push_back({r.prim, l});
                 if (!rr.empty()) right.push_back({r.prim, rr});
             }
@@ -328,6 +327,17 @@ class KdBuilder {
         return false;
     }
 
+    /// A straddling primitive's bounds on each side of the plane: one clip of it to the node
+    /// where the primitive set offers that (triangles), else one clip per side.
+    std::pair<Box, Box> clipToSides(std::uint32_t p, const Box& box, int axis, double pos) const {
+        if constexpr (requires { prims_.splitBounds(p, box, axis, pos); }) {
+            return prims_.splitBounds(p, box, axis, pos);
+        } else {
+            const auto [l, r] = splitBox(box, axis, pos);
+            return {prims_.clippedBounds(p, l), prims_.clippedBounds(p, r)};
+        }
+    }
+
     static std::pair<Box, Box> splitBox(const Box& box, int axis, double pos) {
         Box l = box, r = box;
         l.hi[axis] = pos;
@@ -430,8 +440,7 @@ class KdBuilder {
                     // A straddling primitive, clipped to each side, gives new events there
                     // ("perfect splits"); a side its bounding box overlaps but the primitive
                     // itself misses does not get it at all.
-                    const Box l = prims_.clippedBounds(e.prim, boxL);
-                    const Box r = prims_.clippedBounds(e.prim, boxR);
+                    const auto [l, r] = clipToSides(e.prim, box, bestAxis, bestPos);
                     if (l.empty())
                         --nl;
                     else
@@ -500,8 +509,9 @@ class KdBuilder {
             } else if (b.lo[axis] > pos) {
                 right.push_back(p);
             } else {
-                if (!prims_.clippedBounds(p, boxL).empty()) left.push_back(p);
-                if (!prims_.clippedBounds(p, boxR).empty()) right.push_back(p);
+                const auto [l, r] = clipToSides(p, box, axis, pos);
+                if (!l.empty()) left.push_back(p);
+                if (!r.empty()) right.push_back(p);
             }
         }
         const auto nl = static_cast<std::uint32_t>(left.size());

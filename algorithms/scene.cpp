@@ -113,37 +113,99 @@ Vec3 Scene::normalAt(const Hit& hit, const Vec3& p) const {
     return triangle(hit.prim).normal();
 }
 
-BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
-    const Vec3 pad = 1e-6 * glm::max(box.diagonal(), Vec3(0.0));
-    const Vec3 lo = box.lo - pad, hi = box.hi + pad;
-    // A triangle clipped by six planes has at most 9 vertices.
-    std::array<Vec3, 12> poly{a, b, c}, next{};
-    std::size_t n = 3;
-    for (int axis = 0; axis < 3 && n > 0; ++axis) {
-        for (int side = 0; side < 2 && n > 0; ++side) {
-            const double plane = side == 0 ? lo[axis] : hi[axis];
-            const auto inside = [&](const Vec3& p) {
-                return side == 0 ? p[axis] >= plane : p[axis] <= plane;
-            };
-            std::size_t m = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec3& p = poly[i];
-                const Vec3& q = poly[(i + 1) % n];
-                if (inside(p)) next[m++] = p;
-                if (inside(p) != inside(q)) {
-                    // The edge crosses the plane: the crossing point, exactly on the plane.
-                    Vec3 x = p + (q - p) * ((plane - p[axis]) / (q[axis] - p[axis]));
-                    x[axis] = plane;
-                    next[m++] = x;
-                }
-            }
-            poly = next;
-            n = m;
-        }
+namespace {
+/// A triangle being clipped (Sutherland-Hodgman): a convex polygon of at most 9 vertices after
+/// six planes, in two buffers used in turn so a cut never copies the polygon back.
+class ClipPolygon {
+  public:
+    ClipPolygon(const Vec3& a, const Vec3& b, const Vec3& c) : n_(3) {
+        buf_[0][0] = a, buf_[0][1] = b, buf_[0][2] = c;
     }
-    BoxN<3> out;
-    for (std::size_t i = 0; i < n; ++i) out.extend(poly[i]);
-    return n == 0 ? BoxN<3>{} : out.clippedTo(box);
+    /// Keeps the part with p[axis] >= plane (above) or <= plane. A plane no vertex lies beyond
+    /// is skipped: in a node much larger than the triangle, most of the six are.
+    void cut(int axis, double plane, bool above) {
+        const auto inside = [&](const Vec3& p) {
+            return above ? p[axis] >= plane : p[axis] <= plane;
+        };
+        const auto& in = buf_[cur_];
+        std::size_t outside = 0;
+        for (std::size_t i = 0; i < n_; ++i) outside += !inside(in[i]);
+        if (outside == 0) return;
+        if (outside == n_) {
+            n_ = 0;
+            return;
+        }
+        auto& out = buf_[1 - cur_];
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < n_; ++i) {
+            const Vec3& p = in[i];
+            const Vec3& q = in[i + 1 == n_ ? 0 : i + 1];
+            if (inside(p)) out[m++] = p;
+            if (inside(p) != inside(q)) out[m++] = crossing(p, q, axis, plane);
+        }
+        n_ = m;
+        cur_ = 1 - cur_;
+    }
+    /// The bounds of the parts on each side of the plane axis = pos, each side widened by `pad`
+    /// (one pass over the edges: only the bounds are needed, not the two polygons).
+    std::pair<BoxN<3>, BoxN<3>> splitBounds(int axis, double pos, double pad) const {
+        const double planeL = pos + pad, planeR = pos - pad;
+        const auto& v = buf_[cur_];
+        BoxN<3> l, r;
+        for (std::size_t i = 0; i < n_; ++i) {
+            const Vec3& p = v[i];
+            const Vec3& q = v[i + 1 == n_ ? 0 : i + 1];
+            if (p[axis] <= planeL) l.extend(p);
+            if (p[axis] >= planeR) r.extend(p);
+            if ((p[axis] <= planeL) != (q[axis] <= planeL)) l.extend(crossing(p, q, axis, planeL));
+            if ((p[axis] >= planeR) != (q[axis] >= planeR)) r.extend(crossing(p, q, axis, planeR));
+        }
+        return {l, r};
+    }
+    BoxN<3> bounds() const {
+        BoxN<3> b;
+        for (std::size_t i = 0; i < n_; ++i) b.extend(buf_[cur_][i]);
+        return b;
+    }
+
+  private:
+    /// Where edge pq crosses the plane, exactly on it.
+    static Vec3 crossing(const Vec3& p, const Vec3& q, int axis, double plane) {
+        Vec3 x = p + (q - p) * ((plane - p[axis]) / (q[axis] - p[axis]));
+        x[axis] = plane;
+        return x;
+    }
+
+    std::array<std::array<Vec3, 10>, 2> buf_;
+    int cur_ = 0;
+    std::size_t n_;
+};
+
+/// The triangle clipped to `box` widened by a millionth of its size (so rounding never drops a
+/// triangle that touches the box).
+ClipPolygon clipToBox(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
+    const Vec3 pad = 1e-6 * glm::max(box.diagonal(), Vec3(0.0));
+    ClipPolygon poly(a, b, c);
+    for (int axis = 0; axis < 3; ++axis) {
+        poly.cut(axis, box.lo[axis] - pad[axis], true);
+        poly.cut(axis, box.hi[axis] + pad[axis], false);
+    }
+    return poly;
+}
+}  // namespace
+
+BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
+    return clipToBox(a, b, c, box).bounds().clippedTo(box);
+}
+
+std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c,
+                                                const BoxN<3>& box, int axis, double pos) {
+    const double pad = 1e-6 * std::max(box.hi[axis] - box.lo[axis], 0.0);
+    auto [l, r] = clipToBox(a, b, c, box).splitBounds(axis, pos, pad);
+    BoxN<3> boxL = box, boxR = box;
+    boxL.hi[axis] = pos;
+    boxR.lo[axis] = pos;
+    return {l.clippedTo(boxL), r.clippedTo(boxR)};
 }
 
 Scene transformScene(Scene s, double scale, const Vec3& shift) {

@@ -25,6 +25,10 @@ class FloatScenePrims {
     BoxN<3> clippedBounds(std::uint32_t p, const BoxN<3>& box) const {
         return ScenePrims(*scene_, kernels_).clippedBounds(p, box);
     }
+    std::pair<BoxN<3>, BoxN<3>> splitBounds(std::uint32_t p, const BoxN<3>& box, int axis,
+                                            double pos) const {
+        return ScenePrims(*scene_, kernels_).splitBounds(p, box, axis, pos);
+    }
     bool intersect(std::uint32_t p, Ray& ray, Hit& hit) const {
         const glm::vec3 o(ray.origin), d(ray.dir);
         const float tMin = static_cast<float>(ray.tMin), tMax = static_cast<float>(ray.tMax);

@@ -48,6 +48,10 @@ VecN<N, double> inverseDirection(const VecN<N, double>& d) {
 /// a kd-tree's "perfect split" bounds. Empty when the triangle misses the box. Clipped against
 /// the box widened by a millionth of its size, so rounding never drops a triangle that touches it.
 BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box);
+/// The same for both sides of the plane axis = pos inside `box` at once: one clip to the box,
+/// then one pass over the polygon's edges. The kd-tree's split of a straddling triangle.
+std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c,
+                                                const BoxN<3>& box, int axis, double pos);
 
 /// Tests primitive `p` for the nearest hit, which is defined as the smallest t and, at equal t
 /// (a ray through a shared edge), the lowest primitive id: brute force's answer, whatever order a
@@ -82,6 +86,18 @@ class ScenePrims {
         if (scene_->isSphere(p)) return bounds(p).clippedTo(box);
         const Triangle& t = scene_->triangle(p);
         return clipTriangleBounds(t.a, t.b, t.c, box);
+    }
+    /// Bounds of the parts of `p` inside `box` on each side of the plane axis = pos.
+    std::pair<BoxN<3>, BoxN<3>> splitBounds(std::uint32_t p, const BoxN<3>& box, int axis,
+                                            double pos) const {
+        if (scene_->isSphere(p)) {
+            BoxN<3> l = box, r = box;
+            l.hi[axis] = pos;
+            r.lo[axis] = pos;
+            return {bounds(p).clippedTo(l), bounds(p).clippedTo(r)};
+        }
+        const Triangle& t = scene_->triangle(p);
+        return splitTriangleBounds(t.a, t.b, t.c, box, axis, pos);
     }
     /// Updates `hit` and shortens ray.tMax when `p` is hit nearer.
     bool intersect(std::uint32_t p, Ray& ray, Hit& hit) const {

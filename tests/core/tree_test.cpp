@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 
 namespace raystep {
@@ -129,6 +130,118 @@ TEST(KdTree, BuildScalesAndStopsAtTheDepthLimit) {
     EXPECT_LE(t.stats().maxDepth, 5u);
     EXPECT_GT(t.stats().leafReasons[static_cast<int>(LeafReason::MaxDepth)], 0u);
     EXPECT_EQ(t.stats().nodes, 2 * t.stats().leaves - 1);
+}
+
+// Perfect splits: the triangle (0,0,0) (4,0,0) (0,4,0) cut at x = 1. By hand, the part left of
+// the plane is the quad (0,0) (1,0) (1,3) (0,4), the part right of it the triangle (1,0) (4,0)
+// (1,3). The clip is widened by a millionth of the node's width (4e-6 here).
+TEST(KdTree, SplitClipsAStraddlingTriangleByHand) {
+    const Vec3 a(0, 0, 0), b(4, 0, 0), c(0, 4, 0);
+    const BoxN<3> box{Vec3(0, 0, -1), Vec3(4, 4, 1)};
+    const auto [l, r] = splitTriangleBounds(a, b, c, box, 0, 1.0);
+    const double tol = 1e-5;
+    EXPECT_EQ(l.lo.x, 0.0);
+    EXPECT_EQ(l.hi.x, 1.0);
+    EXPECT_NEAR(l.hi.y, 4.0, tol);
+    EXPECT_EQ(r.lo.x, 1.0);
+    EXPECT_EQ(r.hi.x, 4.0);
+    EXPECT_NEAR(r.hi.y, 3.0, tol);
+    EXPECT_EQ(l.lo.z, 0.0);
+    EXPECT_EQ(r.hi.z, 0.0);
+    // A node the triangle misses on one side: only the other side gets it.
+    const BoxN<3> corner{Vec3(2.5, 2.5, -1), Vec3(4, 4, 1)};
+    EXPECT_TRUE(clipTriangleBounds(a, b, c, corner).empty());
+    const BoxN<3> across{Vec3(1, 1, -1), Vec3(4, 4, 1)};
+    const auto [l2, r2] = splitTriangleBounds(a, b, c, across, 1, 3.5);
+    EXPECT_FALSE(l2.empty());
+    EXPECT_TRUE(r2.empty());  // inside the node x >= 1, so y <= 4 - x <= 3 < 3.5
+}
+
+/// Bounds of triangle abc inside `box`, by listing the corners the part inside can have (not by
+/// clipping, as the tree does): the triangle's vertices inside the box, where its edges cross the
+/// box's faces, and where the box's edges pierce the triangle.
+BoxN<3> cornerBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
+    const double eps = 1e-12;
+    const auto inBox = [&](const Vec3& p) {
+        for (int k = 0; k < 3; ++k)
+            if (p[k] < box.lo[k] - eps || p[k] > box.hi[k] + eps) return false;
+        return true;
+    };
+    BoxN<3> out;
+    const std::array<Vec3, 3> v{a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 p = v[i], q = v[(i + 1) % 3];
+        if (inBox(p)) out.extend(p);
+        for (int k = 0; k < 3; ++k)
+            for (const double plane : {box.lo[k], box.hi[k]})
+                if ((p[k] - plane) * (q[k] - plane) < 0) {
+                    Vec3 x = p + (q - p) * ((plane - p[k]) / (q[k] - p[k]));
+                    x[k] = plane;
+                    if (inBox(x)) out.extend(x);
+                }
+    }
+    const Vec3 n = glm::cross(b - a, c - a);
+    for (int k = 0; k < 3; ++k)  // the four box edges along axis k
+        for (int corner = 0; corner < 4; ++corner) {
+            Vec3 s0 = box.lo, s1;
+            s0[(k + 1) % 3] = corner & 1 ? box.hi[(k + 1) % 3] : box.lo[(k + 1) % 3];
+            s0[(k + 2) % 3] = corner & 2 ? box.hi[(k + 2) % 3] : box.lo[(k + 2) % 3];
+            s1 = s0;
+            s1[k] = box.hi[k];
+            const double den = glm::dot(n, s1 - s0);
+            if (den == 0) continue;
+            const double t = glm::dot(n, a - s0) / den;
+            if (t < 0 || t > 1) continue;
+            const Vec3 x = s0 + t * (s1 - s0);
+            // Inside the triangle: on the inner side of all three edges.
+            const double w0 = glm::dot(glm::cross(b - a, x - a), n);
+            const double w1 = glm::dot(glm::cross(c - b, x - b), n);
+            const double w2 = glm::dot(glm::cross(a - c, x - c), n);
+            if (w0 >= 0 && w1 >= 0 && w2 >= 0) out.extend(x);
+        }
+    return out;
+}
+
+// The same on random triangles and nodes, against the corners listed above: each side's bounds
+// hold all of the triangle on that side, and no more than what lies within the clip's widening
+// (a millionth of the node) of it.
+TEST(KdTree, SplitBoundsHoldTheTriangleAndNoMore) {
+    Pcg32 rng(7, 1);
+    const auto point = [&] { return Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 4.0; };
+    int straddling = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Vec3 a = point(), b = point(), c = point();
+        BoxN<3> box;
+        box.extend(point());
+        box.extend(point());
+        const int axis = trial % 3;
+        const double pos = box.lo[axis] + (box.hi[axis] - box.lo[axis]) * rng.uniform();
+        const auto [l, r] = splitTriangleBounds(a, b, c, box, axis, pos);
+        BoxN<3> boxL = box, boxR = box;
+        boxL.hi[axis] = pos;
+        boxR.lo[axis] = pos;
+        const Vec3 pad = 1e-6 * box.diagonal();
+        const auto widened = [&](BoxN<3> b) { return BoxN<3>{b.lo - pad, b.hi + pad}; };
+        for (const auto& [got, side] : {std::pair{l, boxL}, std::pair{r, boxR}}) {
+            const BoxN<3> inner = cornerBounds(a, b, c, side);
+            const BoxN<3> outer = cornerBounds(a, b, c, widened(side)).clippedTo(side);
+            if (!inner.empty()) {
+                ASSERT_FALSE(got.empty()) << "trial " << trial;
+                for (int k = 0; k < 3; ++k) {
+                    EXPECT_LE(got.lo[k], inner.lo[k] + 1e-12) << "trial " << trial;
+                    EXPECT_GE(got.hi[k], inner.hi[k] - 1e-12) << "trial " << trial;
+                }
+            }
+            if (got.empty()) continue;
+            ASSERT_FALSE(outer.empty()) << "trial " << trial;
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_GE(got.lo[k], outer.lo[k] - 1e-12) << "trial " << trial;
+                EXPECT_LE(got.hi[k], outer.hi[k] + 1e-12) << "trial " << trial;
+            }
+        }
+        straddling += !l.empty() && !r.empty();
+    }
+    EXPECT_GT(straddling, 200);  // the plane cuts the triangle often enough to test the cut
 }
 
 TEST(Bvh, EveryPrimitiveInExactlyOneLeaf) {
