@@ -1,6 +1,7 @@
 // Every accelerator must find what brute force finds: the same nearest primitive at the same t,
 // for seeded random rays of every awkward kind, on every built-in scene.
 #include "raystep/accel.h"
+#include "meshes.h"
 #include "raystep/rng.h"
 #include "raystep/scene_loader.h"
 #include "raystep/tracer.h"
@@ -146,6 +147,33 @@ TEST_P(EveryScene, BvhFindsWhatBruteForceFinds) {
 
 INSTANTIATE_TEST_SUITE_P(Builtin, EveryScene,
                          ::testing::Values("default", "whitted", "cornell", "stadium"));
+
+// The fast build's biggest nodes (over 65,536 references) are binned and partitioned by all
+// cores in shares, and its subtrees built on other threads. With recording on the same build runs
+// on one thread: both must make the same tree, node for node, and find what brute force finds.
+TEST(KdTree, FastBuildOnAllCoresMakesTheOneThreadTree) {
+    const Scene s = bench::knotScene(4 * 93, 93);  // 69,192 triangles
+    ASSERT_GT(s.primitiveCount(), 65536u);
+    KdTreeOptions o;
+    o.build = KdBuild::Fast;
+    const KdTree3 parallel(ScenePrims(s, {}), o);
+    EventLog log(1000);  // capped: the build goes on unrecorded, on one thread
+    const KdTree3 serial(ScenePrims(s, {}), o, log);
+    ASSERT_EQ(parallel.nodes().size(), serial.nodes().size());
+    for (std::size_t i = 0; i < parallel.nodes().size(); ++i) {
+        const KdNode& a = parallel.nodes()[i];
+        const KdNode& b = serial.nodes()[i];
+        ASSERT_EQ(a.axis, b.axis) << "node " << i;
+        ASSERT_EQ(a.split, b.split) << "node " << i;
+        ASSERT_EQ(a.index, b.index) << "node " << i;
+        ASSERT_EQ(a.count, b.count) << "node " << i;
+    }
+    EXPECT_EQ(parallel.primIds(), serial.primIds());
+    EXPECT_EQ(parallel.stats().sahCost, serial.stats().sahCost);
+    AccelOptions fast;
+    fast.kdtree.build = KdBuild::Fast;
+    expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, fast), 300, "knot fast build");
+}
 
 TEST(Accelerators, RendersMatchBruteForce) {
     for (const char* scene : {"default", "whitted", "cornell"}) {
