@@ -42,6 +42,11 @@ struct SplitEvent {
 enum class Side : std::uint8_t { Both, Left, Right };
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+// An empty side thinner than this share of the node's width is not cut off. Clipping a straddling
+// triangle rounds its bounds (and clipTriangleBounds widens the node by a millionth for that
+// reason), so such a slab is rounding, not space; with the empty bonus it would still halve the
+// node's cost, and the sweep would spend a level of the depth limit on it at nearly every node.
+constexpr double kMinEmptySlab = 1e-6;
 constexpr int kMaxDepthCap = 60;  // the traversal stack holds one entry per level
 }  // namespace
 
@@ -328,8 +333,11 @@ class KdBuilder {
                     consider(axis, pos, nl, nr, a, b);
             }
             // The empty space on either side, cut at the primitives' edge.
-            if (minLo[axis] > lo && minLo[axis] < hi) consider(axis, minLo[axis], 0, n, a, b);
-            if (maxHi[axis] > lo && maxHi[axis] < hi) consider(axis, maxHi[axis], n, 0, a, b);
+            const double minSlab = kMinEmptySlab * (hi - lo);
+            if (minLo[axis] - lo >= minSlab && minLo[axis] < hi)
+                consider(axis, minLo[axis], 0, n, a, b);
+            if (hi - maxHi[axis] >= minSlab && maxHi[axis] > lo)
+                consider(axis, maxHi[axis], n, 0, a, b);
         }
         if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
         if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
@@ -546,10 +554,17 @@ class KdBuilder {
                         sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr + planars);
                     const bool planarLeft = costL <= costR;
                     const double cost = planarLeft ? costL : costR;
+                    const std::uint32_t nlChosen = planarLeft ? nl + planars : nl;
+                    const std::uint32_t nrChosen = planarLeft ? nr : nr + planars;
+                    const double minSlab = kMinEmptySlab * (box.hi[axis] - box.lo[axis]);
+                    if ((nlChosen == 0 && p - box.lo[axis] < minSlab) ||
+                        (nrChosen == 0 && box.hi[axis] - p < minSlab)) {
+                        nl += starts + planars;
+                        continue;  // a rounding-thin "empty" slab (kMinEmptySlab)
+                    }
                     if constexpr (Rec::kEnabled)
-                        rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis),
-                                            planarLeft ? nl + planars : nl,
-                                            planarLeft ? nr : nr + planars, p, pl, pr, cost});
+                        rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nlChosen, nrChosen,
+                                            p, pl, pr, cost});
                     if (cost < bestCost) {
                         bestCost = cost;
                         bestPos = p;
