@@ -22,9 +22,10 @@ std::optional<SplitMethod> parseSplitMethod(std::string_view s);
 std::string_view name(SplitMethod m);
 
 /// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
-/// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over 32
-/// bins per axis at every node (still perfect splits), big subtrees built on all cores: a tree
-/// up to a quarter dearer (or cheaper: the greedy sweep is not optimal), built about 7x faster.
+/// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over
+/// 16-32 bins per axis at every node (still perfect splits), float bounds rounded outward, big
+/// nodes and subtrees on all cores: a tree 3-23% dearer on the knot meshes (cheaper on the
+/// stadium: the greedy sweep is not optimal), built 7-10x faster (docs/performance.md).
 enum class KdBuild { Exact, Fast };
 std::optional<KdBuild> parseKdBuild(std::string_view s);
 std::string_view name(KdBuild b);
