@@ -342,7 +342,7 @@ class KdBuilder {
         if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
         if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
 
-        const auto [boxL, boxR] = splitBox(box, bestAxis, bestPos);
+        const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
         const auto partitionRange = [&](const Ref* first, const Ref* last, std::vector<Ref>& left,
                                         std::vector<Ref>& right) {
             for (const Ref* r = first; r != last; ++r) {
@@ -495,16 +495,9 @@ class KdBuilder {
         if constexpr (requires { prims_.splitBounds(p, box, axis, pos); }) {
             return prims_.splitBounds(p, box, axis, pos);
         } else {
-            const auto [l, r] = splitBox(box, axis, pos);
+            const auto [l, r] = box.splitAt(axis, pos);
             return {prims_.clippedBounds(p, l), prims_.clippedBounds(p, r)};
         }
-    }
-
-    static std::pair<Box, Box> splitBox(const Box& box, int axis, double pos) {
-        Box l = box, r = box;
-        l.hi[axis] = pos;
-        r.lo[axis] = pos;
-        return {l, r};
     }
 
     /// Wald & Havran: one sweep over the sorted events of each axis evaluates every candidate
@@ -593,7 +586,7 @@ class KdBuilder {
                     side_[e.prim] = Side::Right;
             }
         }
-        const auto [boxL, boxR] = splitBox(box, bestAxis, bestPos);
+        const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
         std::vector<SplitEvent> left, right, bothL, bothR;
         std::uint32_t nl = 0, nr = 0;
         for (const SplitEvent& e : events) {
@@ -669,7 +662,7 @@ class KdBuilder {
             return makeLeaf(id, std::move(prims), LeafReason::NoSplit, depth);
 
         // Each primitive goes to every side its clipped part reaches (one flat in the plane, both).
-        const auto [boxL, boxR] = splitBox(box, axis, pos);
+        const auto [boxL, boxR] = box.splitAt(axis, pos);
         std::vector<std::uint32_t> left, right;
         for (std::uint32_t p : prims) {
             const Box& b = (*primBounds_)[p];

@@ -202,9 +202,7 @@ std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, co
                                                 const BoxN<3>& box, int axis, double pos) {
     const double pad = 1e-6 * std::max(box.hi[axis] - box.lo[axis], 0.0);
     auto [l, r] = clipToBox(a, b, c, box).splitBounds(axis, pos, pad);
-    BoxN<3> boxL = box, boxR = box;
-    boxL.hi[axis] = pos;
-    boxR.lo[axis] = pos;
+    const auto [boxL, boxR] = box.splitAt(axis, pos);
     return {l.clippedTo(boxL), r.clippedTo(boxR)};
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace raystep {
 
@@ -74,6 +75,13 @@ struct BoxN {
         return axis;
     }
     BoxN clippedTo(const BoxN& b) const { return {glm::max(lo, b.lo), glm::min(hi, b.hi)}; }
+    /// The two halves either side of the plane axis = pos (a kd-tree node's children).
+    std::pair<BoxN, BoxN> splitAt(int axis, double pos) const {
+        BoxN l = *this, r = *this;
+        l.hi[axis] = pos;
+        r.lo[axis] = pos;
+        return {l, r};
+    }
     /// Padded to three coordinates, for the event log's node table.
     std::array<double, 3> lo3() const { return pad(lo); }
     std::array<double, 3> hi3() const { return pad(hi); }

@@ -91,9 +91,7 @@ class ScenePrims {
     std::pair<BoxN<3>, BoxN<3>> splitBounds(std::uint32_t p, const BoxN<3>& box, int axis,
                                             double pos) const {
         if (scene_->isSphere(p)) {
-            BoxN<3> l = box, r = box;
-            l.hi[axis] = pos;
-            r.lo[axis] = pos;
+            const auto [l, r] = box.splitAt(axis, pos);
             return {bounds(p).clippedTo(l), bounds(p).clippedTo(r)};
         }
         const Triangle& t = scene_->triangle(p);
