@@ -9,6 +9,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -99,18 +101,7 @@ class KdBuilder {
         const std::uint32_t n = prims_.count();
         if (opt_.split == SplitMethod::Sah &&
             (opt_.build == KdBuild::Fast || opt_.exactBelow > 0)) {
-            side_.assign(n, Side::Both);
-            std::vector<Ref> refs(n);
-            const auto makeRefs = [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t p = begin; p < end; ++p)
-                    refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
-            };
-            if (opt_.build == KdBuild::Fast && !Rec::kEnabled)
-                tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 4096),
-                                  [&](const auto& r) { makeRefs(r.begin(), r.end()); });
-            else
-                makeRefs(0, n);
-            return buildBinned(std::move(refs), box, 0, kNoId);
+            return runBinned(box);
         }
         ownBounds_.resize(n);
         for (std::uint32_t p = 0; p < n; ++p) ownBounds_[p] = prims_.bounds(p);
@@ -134,8 +125,9 @@ class KdBuilder {
     /// A primitive with its bounds clipped to the node (the binned levels), rounded outward to
     /// float: the binned build streams every reference through memory at every level, and half
     /// the bytes of double bounds make it faster. Outward, so the bounds still hold the primitive
-    /// and a side it lies wholly on is never mistaken.
-    struct Ref {
+    /// and a side it lies wholly on is never mistaken. 16-byte aligned: the binning loads the
+    /// edges four at a time.
+    struct alignas(16) Ref {
         Ref() = default;
         Ref(std::uint32_t p, const Box& b) : prim(p) {
             for (int a = 0; a < N; ++a) {
@@ -145,45 +137,46 @@ class KdBuilder {
         }
         float lo(int axis) const { return edge[axis]; }
         float hi(int axis) const { return edge[N + axis]; }
-        std::uint32_t prim = 0;
         std::array<float, 2 * N> edge{};  // lo[0..N), then hi[0..N)
+        std::uint32_t prim = 0;
 
+        // Branch-free: whether float rounding went the wrong way is a coin toss per edge,
+        // and a mispredicted branch for each of the 2N edges cost more than the rest of the Ref.
         static float roundDown(double x) {
             const auto f = static_cast<float>(x);
-            return f <= x ? f : nextToward(f, -1);
+            const auto bits = std::bit_cast<std::uint32_t>(f);
+            return std::bit_cast<float>(double(f) > x ? stepDown(bits) : bits);
         }
         static float roundUp(double x) {
             const auto f = static_cast<float>(x);
-            return f >= x ? f : nextToward(f, 1);
-        }
-        /// The neighbouring float of finite `f` below (dir -1) or above (+1) it: one step of
-        /// its bit pattern (std::nextafter is a library call, and this runs for every clip).
-        static float nextToward(float f, int dir) {
             const auto bits = std::bit_cast<std::uint32_t>(f);
-            if ((bits & 0x7fffffffu) == 0)  // +-0
-                return static_cast<float>(dir) * std::numeric_limits<float>::denorm_min();
-            const bool away = (f > 0) == (dir > 0);  // away from zero: one more in magnitude
-            return std::bit_cast<float>(away ? bits + 1 : bits - 1);
+            return std::bit_cast<float>(double(f) < x ? stepUp(bits) : bits);
+        }
+        /// The bit pattern of the neighbouring float of finite `bits` below or above it: one
+        /// step of the pattern (std::nextafter is a library call, and this runs for every clip).
+        static std::uint32_t stepDown(std::uint32_t bits) {
+            if (bits == 0) return 0x80000001u;        // +0 -> -denorm_min
+            return bits >> 31 ? bits + 1 : bits - 1;  // negative: one more in magnitude
+        }
+        static std::uint32_t stepUp(std::uint32_t bits) {
+            if ((bits & 0x7fffffffu) == 0) return 1u;  // +-0 -> +denorm_min
+            return bits >> 31 ? bits - 1 : bits + 1;
         }
     };
 
-    /// The binned build's counts: per axis, how many references start and end in each bin,
-    /// and the references' extent.
-    static constexpr int kMaxBins = 256;
+    /// A node's counts over B equal bins per axis: how many references start and end in each
+    /// bin, and the references' extent.
+    template <int B>
     struct Bins {
-        std::array<std::array<std::uint32_t, kMaxBins>, N> starts, ends;
+        std::array<std::array<std::uint32_t, B>, N> starts{}, ends{};
         std::array<float, N> minLo, maxHi;
-        void clear(int bins) {
-            for (int axis = 0; axis < N; ++axis) {
-                std::fill_n(starts[axis].begin(), bins, 0u);
-                std::fill_n(ends[axis].begin(), bins, 0u);
-                minLo[axis] = std::numeric_limits<float>::infinity();
-                maxHi[axis] = -std::numeric_limits<float>::infinity();
-            }
+        Bins() {
+            minLo.fill(std::numeric_limits<float>::infinity());
+            maxHi.fill(-std::numeric_limits<float>::infinity());
         }
-        void add(const Bins& o, int bins) {
+        void add(const Bins& o) {
             for (int axis = 0; axis < N; ++axis) {
-                for (int k = 0; k < bins; ++k) {
+                for (int k = 0; k < B; ++k) {
                     starts[axis][k] += o.starts[axis][k];
                     ends[axis][k] += o.ends[axis][k];
                 }
@@ -192,7 +185,76 @@ class KdBuilder {
             }
         }
     };
-    // Fast build: nodes above this many references are binned and partitioned by all cores,
+
+    /// Counts references into the bins of `box`: edge j of a reference falls in bin
+    /// (edge - lo) * scale, clamped to [0, B). In float, as the references are: rounding only
+    /// moves an edge into a neighbouring bin, which changes a candidate's estimated cost, never
+    /// where a primitive goes (the partition reads the references themselves).
+    template <int B>
+    class Binner {
+      public:
+        Binner(const Box& box, Bins<B>& bins) : bins_(bins) {
+            std::array<float, 8> lo{}, scale{};
+            for (int i = 0; i < 8; ++i) {
+                const int axis = edgeAt(i) % N;  // lane i reads edge edgeAt(i)
+                const double width = box.hi[axis] - box.lo[axis];
+                lo[i] = static_cast<float>(box.lo[axis]);
+                scale[i] = width > 0.0 ? static_cast<float>(B / width) : 0.0f;
+            }
+            for (int v = 0; v < kLoads; ++v) {
+                lo_[v] = _mm_loadu_ps(&lo[4 * v]);
+                scale_[v] = _mm_loadu_ps(&scale[4 * v]);
+                min_[v] = _mm_set1_ps(std::numeric_limits<float>::infinity());
+                max_[v] = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+            }
+        }
+        Binner(const Binner&) = delete;
+        Binner& operator=(const Binner&) = delete;
+        ~Binner() {
+            std::array<float, 8> mn, mx;
+            for (int v = 0; v < kLoads; ++v) {
+                _mm_storeu_ps(&mn[4 * v], min_[v]);
+                _mm_storeu_ps(&mx[4 * v], max_[v]);
+            }
+            for (int axis = 0; axis < N; ++axis) {
+                bins_.minLo[axis] = std::min(bins_.minLo[axis], mn[laneOf(axis)]);
+                bins_.maxHi[axis] = std::max(bins_.maxHi[axis], mx[laneOf(N + axis)]);
+            }
+        }
+        void add(const Ref& r) {
+            const __m128 zero = _mm_setzero_ps(), top = _mm_set1_ps(B - 0.5f);
+            alignas(16) std::array<std::int32_t, 8> bin;
+            for (int v = 0; v < kLoads; ++v) {
+                const __m128 e = _mm_loadu_ps(&r.edge[kLoadAt[v]]);
+                const __m128 x = _mm_mul_ps(_mm_sub_ps(e, lo_[v]), scale_[v]);
+                _mm_store_si128(reinterpret_cast<__m128i*>(&bin[4 * v]),
+                                _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top)));
+                min_[v] = _mm_min_ps(min_[v], e);
+                max_[v] = _mm_max_ps(max_[v], e);
+            }
+            for (int axis = 0; axis < N; ++axis) {
+                ++bins_.starts[axis][bin[laneOf(axis)]];
+                ++bins_.ends[axis][bin[laneOf(N + axis)]];
+            }
+        }
+
+      private:
+        // The 2N edges in SSE loads of four: 3D edges 0-3 and 2-5 (lanes 0-7), 2D edges 0-3.
+        static constexpr int kLoads = N == 3 ? 2 : 1;
+        static constexpr std::array<int, 2> kLoadAt{0, 2};
+        static constexpr int edgeAt(int lane) { return kLoadAt[lane / 4 % kLoads] + lane % 4; }
+        /// The lane that holds edge j: the first load for 3D's lo, the second for its hi.
+        static constexpr int laneOf(int j) { return N == 3 && j >= N ? j + 2 : j; }
+
+        Bins<B>& bins_;
+        std::array<__m128, kLoads> lo_, scale_, min_, max_;
+    };
+    // Bins per axis: the fast build's 32 (a node of 64 references or fewer reads them in
+    // pairs, as 16: there the bins' fixed cost dominates; measured: 11% fewer instructions, SAH
+    // cost +1%), the exact build's binned top levels (--bin-above) 256.
+    static constexpr int kFastBins = 32;
+    static constexpr int kExactBins = 256;
+    // Fast build: nodes above this many references are partitioned and binned by all cores,
     // in shares of kChunk references.
     static constexpr std::uint32_t kParallelNodeAbove = 65536;
     static constexpr std::size_t kChunk = 16384;
@@ -215,10 +277,51 @@ class KdBuilder {
         }
     }
 
-    /// Big nodes: the SAH over `bins` equal bins per axis (min-max binning: where each primitive
-    /// starts and ends), O(n) a node. Below opt_.exactBelow primitives, the exact sweep over
-    /// sorted events takes over (buildSah). Candidates are the bin boundaries.
-    void buildBinned(std::vector<Ref> refs, const Box& box, int depth, std::uint32_t parent) {
+    /// The binned build from the root: references made and binned (on all cores for the fast
+    /// build), then buildBinned.
+    void runBinned(const Box& box) {
+        const std::uint32_t n = prims_.count();
+        side_.assign(n, Side::Both);
+        std::vector<Ref> refs(n);
+        const auto makeRefs = [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t p = begin; p < end; ++p)
+                refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
+        };
+        if (opt_.build != KdBuild::Fast) {
+            makeRefs(0, n);
+            Bins<kExactBins> bins;
+            {
+                Binner<kExactBins> binner(box, bins);
+                for (const Ref& r : refs) binner.add(r);
+            }
+            return buildBinned(std::move(refs), bins, box, 0, kNoId);
+        }
+        const std::size_t chunks = (n + kChunk - 1) / kChunk;
+        std::vector<Bins<kFastBins>> part(chunks);
+        const auto share = [&](std::size_t c) {
+            const auto begin = static_cast<std::uint32_t>(c * kChunk);
+            const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(n, begin + kChunk));
+            makeRefs(begin, end);
+            Binner<kFastBins> binner(box, part[c]);
+            for (std::uint32_t p = begin; p < end; ++p) binner.add(refs[p]);
+        };
+        if constexpr (Rec::kEnabled) {
+            for (std::size_t c = 0; c < chunks; ++c) share(c);
+        } else {
+            tbb::parallel_for(std::size_t(0), chunks, share);
+        }
+        Bins<kFastBins> bins;
+        for (const auto& b : part) bins.add(b);
+        buildBinned(std::move(refs), bins, box, 0, kNoId);
+    }
+
+    /// Big nodes: the SAH over B equal bins per axis (min-max binning: where each primitive
+    /// starts and ends), O(n) a node; `bins` were counted when the parent partitioned its
+    /// references. Below opt_.exactBelow primitives, the exact sweep over sorted events takes
+    /// over (buildSah). Candidates are the bin boundaries.
+    template <int B>
+    void buildBinned(std::vector<Ref> refs, const Bins<B>& bins, const Box& box, int depth,
+                     std::uint32_t parent) {
         const auto n = static_cast<std::uint32_t>(refs.size());
         const bool fast = opt_.build == KdBuild::Fast;
         if (!fast && n <= static_cast<std::uint32_t>(opt_.exactBelow)) {
@@ -238,64 +341,10 @@ class KdBuilder {
         };
         if (leafByCount(id, n, depth, nodePrims)) return;
 
-        // Fast: 32 bins, 16 for nodes of 64 references or fewer (most nodes are small, and
-        // there the bins' fixed cost dominates; measured: 11% fewer instructions, SAH cost +1%).
-        const int kBins = !fast ? kMaxBins : n <= 64 ? 16 : 32;
         const double areaC = box.area();
         const double leafCost = opt_.cIsect * n;
         double bestCost = kInfinity, bestPos = 0.0;
         int bestAxis = -1;
-        std::array<double, N> scale{};
-        std::array<bool, N> usable{};
-        for (int axis = 0; axis < N; ++axis) {
-            usable[axis] = box.hi[axis] > box.lo[axis] && areaC > 0.0;
-            if (usable[axis]) scale[axis] = kBins / (box.hi[axis] - box.lo[axis]);
-        }
-        // Binned in float, as the references are: rounding only moves an edge into a
-        // neighbouring bin, which changes a candidate's estimated cost, never where a primitive
-        // goes (the partition below reads the references themselves).
-        std::array<float, 2 * N> binLo{}, binScale{};
-        for (int axis = 0; axis < N; ++axis) {
-            binLo[axis] = binLo[N + axis] = static_cast<float>(box.lo[axis]);
-            binScale[axis] = binScale[N + axis] = static_cast<float>(scale[axis]);
-        }
-        const auto binRange = [&](const Ref* first, const Ref* last, Bins& bins) {
-            bins.clear(kBins);
-            const auto maxBin = static_cast<float>(kBins) - 0.5f;
-            for (const Ref* r = first; r != last; ++r) {
-                std::array<int, 2 * N> bin;
-                for (int j = 0; j < 2 * N; ++j)
-                    bin[j] = static_cast<int>(
-                        std::min(std::max((r->edge[j] - binLo[j]) * binScale[j], 0.0f), maxBin));
-                for (int axis = 0; axis < N; ++axis) {
-                    ++bins.starts[axis][bin[axis]];
-                    ++bins.ends[axis][bin[N + axis]];
-                    bins.minLo[axis] = std::min(bins.minLo[axis], r->lo(axis));
-                    bins.maxHi[axis] = std::max(bins.maxHi[axis], r->hi(axis));
-                }
-            }
-        };
-        Bins bins;
-        const bool parallel = fast && !Rec::kEnabled && n > kParallelNodeAbove;
-        if (parallel) {
-            // A big node (the top few levels, before the subtrees keep every core busy): each
-            // core bins a share of the references, and the shares' counts are added up.
-            const std::size_t chunks = (n + kChunk - 1) / kChunk;
-            std::vector<Bins> part(chunks);
-            tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-                binRange(refs.data() + c * kChunk,
-                         refs.data() + std::min<std::size_t>(n, (c + 1) * kChunk), part[c]);
-            });
-            bins.clear(kBins);
-            for (const Bins& b : part) bins.add(b, kBins);
-        } else {
-            binRange(refs.data(), refs.data() + n, bins);
-        }
-        // The primitives' extent per axis: empty space is cut off at its edge, as the exact
-        // sweep does, never at a bin boundary (which would slice ever thinner slabs off a flat
-        // primitive lying in the node's face, down to the depth limit).
-        const auto& minLo = bins.minLo;
-        const auto& maxHi = bins.maxHi;
         const double twoOverAreaC = 2.0 / areaC;
         const auto consider = [&](int axis, double pos, std::uint32_t nl, std::uint32_t nr,
                                   double a, double b) {
@@ -311,13 +360,30 @@ class KdBuilder {
                 bestAxis = axis;
             }
         };
+        // A small fast node reads its bins in pairs (kFastBins).
+        const int stride = fast && n <= 64 ? 2 : 1;
+        const int kBins = B / stride;
         for (int axis = 0; axis < N; ++axis) {
-            if (!usable[axis]) continue;
             const double lo = box.lo[axis], hi = box.hi[axis];
+            if (!(hi > lo && areaC > 0.0)) continue;
             const auto [a, b] = areaTerms(box, axis);
             const double binWidth = (hi - lo) / kBins;
-            const auto& st = bins.starts[axis];
-            const auto& en = bins.ends[axis];
+            // Per bin of this node: the counted bins, or pairs of them for a small node.
+            std::array<std::uint32_t, B> merged[2];
+            const std::uint32_t* st = bins.starts[axis].data();
+            const std::uint32_t* en = bins.ends[axis].data();
+            if (stride == 2) {
+                for (int k = 0; k < kBins; ++k) {
+                    merged[0][k] = st[2 * k] + st[2 * k + 1];
+                    merged[1][k] = en[2 * k] + en[2 * k + 1];
+                }
+                st = merged[0].data();
+                en = merged[1].data();
+            }
+            // The primitives' extent: empty space is cut off at its edge, as the exact sweep
+            // does, never at a bin boundary (which would slice ever thinner slabs off a flat
+            // primitive lying in the node's face, down to the depth limit).
+            const double minLo = bins.minLo[axis], maxHi = bins.maxHi[axis];
             std::uint32_t nl = 0, nr = n;
             for (int k = 1; k < kBins; ++k) {
                 nl += st[k - 1];  // started in a bin below this boundary
@@ -325,50 +391,71 @@ class KdBuilder {
                 // Across an empty bin NL and NR stay the same and the cost is linear in the
                 // plane's position, so only the boundaries next to an occupied bin can be the
                 // cheapest: the others are skipped (most bins of a small node are empty).
-                if (st[k - 1] + en[k - 1] + st[k] + en[k] == 0) continue;
+                if ((st[k - 1] | en[k - 1] | st[k] | en[k]) == 0) continue;
                 const double pos = lo + binWidth * k;
                 // Planes that leave primitives on both sides, strictly inside their extent
                 // (the empty space beyond it is cut at its edge, below).
-                if (nl > 0 && nr > 0 && pos > minLo[axis] && pos < maxHi[axis])
-                    consider(axis, pos, nl, nr, a, b);
+                if (nl == 0 || nr == 0 || !(pos > minLo && pos < maxHi)) continue;
+                // sahCost inline (no side is empty, so no bonus): this runs ~50 times a node.
+                const double pl = ((pos - lo) * a + b) * twoOverAreaC;
+                const double pr = ((hi - pos) * a + b) * twoOverAreaC;
+                const double cost = opt_.cTrav + opt_.cIsect * (pl * nl + pr * nr);
+                if constexpr (Rec::kEnabled)
+                    rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr,
+                                        cost});
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestPos = pos;
+                    bestAxis = axis;
+                }
             }
-            // The empty space on either side, cut at the primitives' edge.
             const double minSlab = kMinEmptySlab * (hi - lo);
-            if (minLo[axis] - lo >= minSlab && minLo[axis] < hi)
-                consider(axis, minLo[axis], 0, n, a, b);
-            if (hi - maxHi[axis] >= minSlab && maxHi[axis] > lo)
-                consider(axis, maxHi[axis], n, 0, a, b);
+            if (minLo - lo >= minSlab && minLo < hi) consider(axis, minLo, 0, n, a, b);
+            if (hi - maxHi >= minSlab && maxHi > lo) consider(axis, maxHi, n, 0, a, b);
         }
         if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
         if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
 
+        // The partition counts each child's bins on the way, while the reference is at hand.
         const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
         const auto partitionRange = [&](const Ref* first, const Ref* last, std::vector<Ref>& left,
-                                        std::vector<Ref>& right) {
+                                        std::vector<Ref>& right, Bins<B>& binsL, Bins<B>& binsR) {
+            Binner<B> inL(boxL, binsL), inR(boxR, binsR);
+            const auto toLeft = [&](const Ref& r) {
+                left.push_back(r);
+                inL.add(r);
+            };
+            const auto toRight = [&](const Ref& r) {
+                right.push_back(r);
+                inR.add(r);
+            };
             for (const Ref* r = first; r != last; ++r) {
                 const double lo = r->lo(bestAxis), hi = r->hi(bestAxis);
                 if (hi < bestPos || (hi == bestPos && lo < bestPos) ||
                     (lo == hi && lo == bestPos)) {
-                    left.push_back(*r);  // wholly below (or flat in the plane: left, as the sweep)
+                    toLeft(*r);  // wholly below (or flat in the plane: left, as the sweep)
                 } else if (lo >= bestPos) {
-                    right.push_back(*r);
+                    toRight(*r);
                 } else {
                     // Straddles: clipped to each side ("perfect splits"), dropped where it misses.
                     const auto [l, rr] = clipToSides(r->prim, box, bestAxis, bestPos);
-                    if (!l.empty()) left.emplace_back(r->prim, l);
-                    if (!rr.empty()) right.emplace_back(r->prim, rr);
+                    if (!l.empty()) toLeft(Ref(r->prim, l));
+                    if (!rr.empty()) toRight(Ref(r->prim, rr));
                 }
             }
         };
         std::vector<Ref> left, right;
-        if (parallel) {
-            // Each core partitions a share; the shares are joined in order.
+        Bins<B> binsL, binsR;
+        if (fast && !Rec::kEnabled && n > kParallelNodeAbove) {
+            // A big node (the top few levels, before the subtrees keep every core busy): each
+            // core partitions a share; the shares are joined in order, their bins added up.
             const std::size_t chunks = (n + kChunk - 1) / kChunk;
             std::vector<std::vector<Ref>> partL(chunks), partR(chunks);
+            std::vector<Bins<B>> partBinsL(chunks), partBinsR(chunks);
             tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
                 partitionRange(refs.data() + c * kChunk,
                                refs.data() + std::min<std::size_t>(n, (c + 1) * kChunk), partL[c],
-                               partR[c]);
+                               partR[c], partBinsL[c], partBinsR[c]);
             });
             const auto join = [](std::vector<std::vector<Ref>>& parts, std::vector<Ref>& out) {
                 std::size_t total = 0;
@@ -381,10 +468,14 @@ class KdBuilder {
             };
             join(partL, left);
             join(partR, right);
+            for (std::size_t c = 0; c < chunks; ++c) {
+                binsL.add(partBinsL[c]);
+                binsR.add(partBinsR[c]);
+            }
         } else {
             left.reserve(n / 2 + n / 8);
             right.reserve(n / 2 + n / 8);
-            partitionRange(refs.data(), refs.data() + n, left, right);
+            partitionRange(refs.data(), refs.data() + n, left, right, binsL, binsR);
         }
         refs = {};
         split(id, bestAxis, bestPos, bestCost, leafCost);
@@ -398,10 +489,11 @@ class KdBuilder {
             tbb::task_group group;
             group.run([&] {
                 KdBuilder sub(*this, subNodes, subIds, subStats);
-                sub.buildBinned(std::move(right), boxR, depth + 1, id);
+                sub.buildBinned(std::move(right), binsR, boxR, depth + 1, id);
             });
             try {
-                progress_.child(fl, [&] { buildBinned(std::move(left), boxL, depth + 1, id); });
+                progress_.child(fl,
+                                [&] { buildBinned(std::move(left), binsL, boxL, depth + 1, id); });
             } catch (...) {
                 group.wait();  // the task uses this frame's locals
                 throw;
@@ -411,9 +503,9 @@ class KdBuilder {
             progress_.child(1 - fl, [&] { progress_.leafDone(); });
             return;
         }
-        progress_.child(fl, [&] { buildBinned(std::move(left), boxL, depth + 1, id); });
+        progress_.child(fl, [&] { buildBinned(std::move(left), binsL, boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { buildBinned(std::move(right), boxR, depth + 1, id); });
+        progress_.child(1 - fl, [&] { buildBinned(std::move(right), binsR, boxR, depth + 1, id); });
     }
 
     /// Appends a subtree built apart as node `parent`'s right child: its node and id indices

@@ -115,68 +115,86 @@ Vec3 Scene::normalAt(const Hit& hit, const Vec3& p) const {
 
 namespace {
 /// A triangle being clipped (Sutherland-Hodgman): a convex polygon of at most 9 vertices after
-/// six planes, in two buffers used in turn so a cut never copies the polygon back.
+/// six planes, in two buffers used in turn so a cut never copies the polygon back. Vertices are
+/// plain arrays: the clip indexes coordinates by axis, and glm's operator[] is a switch.
 class ClipPolygon {
+    using P = std::array<double, 3>;
+
   public:
     ClipPolygon(const Vec3& a, const Vec3& b, const Vec3& c) : n_(3) {
-        buf_[0][0] = a, buf_[0][1] = b, buf_[0][2] = c;
+        const Vec3* v[3] = {&a, &b, &c};
+        for (int i = 0; i < 3; ++i)
+            for (int axis = 0; axis < 3; ++axis) buf_[0][i][axis] = (*v[i])[axis];
+        updateBounds(buf_[0]);
     }
-    /// Keeps the part with p[axis] >= plane (above) or <= plane. A plane no vertex lies beyond
-    /// is skipped: in a node much larger than the triangle, most of the six are.
+    /// Keeps the part with p[axis] >= plane (above) or <= plane. A plane the polygon's bounds
+    /// lie inside is skipped: in a node much larger than the triangle, most of the six are.
     void cut(int axis, double plane, bool above) {
-        const auto inside = [&](const Vec3& p) {
-            return above ? p[axis] >= plane : p[axis] <= plane;
-        };
-        const auto& in = buf_[cur_];
-        std::size_t outside = 0;
-        for (std::size_t i = 0; i < n_; ++i) outside += !inside(in[i]);
-        if (outside == 0) return;
-        if (outside == n_) {
+        if (n_ == 0 || (above ? lo_[axis] >= plane : hi_[axis] <= plane)) return;
+        if (above ? hi_[axis] < plane : lo_[axis] > plane) {
             n_ = 0;
             return;
         }
+        const auto inside = [&](const P& p) { return above ? p[axis] >= plane : p[axis] <= plane; };
+        const auto& in = buf_[cur_];
         auto& out = buf_[1 - cur_];
         std::size_t m = 0;
         for (std::size_t i = 0; i < n_; ++i) {
-            const Vec3& p = in[i];
-            const Vec3& q = in[i + 1 == n_ ? 0 : i + 1];
+            const P& p = in[i];
+            const P& q = in[i + 1 == n_ ? 0 : i + 1];
             if (inside(p)) out[m++] = p;
             if (inside(p) != inside(q)) out[m++] = crossing(p, q, axis, plane);
         }
         n_ = m;
         cur_ = 1 - cur_;
+        updateBounds(out);
     }
     /// The bounds of the parts on each side of the plane axis = pos, each side widened by `pad`
     /// (one pass over the edges: only the bounds are needed, not the two polygons).
     std::pair<BoxN<3>, BoxN<3>> splitBounds(int axis, double pos, double pad) const {
         const double planeL = pos + pad, planeR = pos - pad;
         const auto& v = buf_[cur_];
-        BoxN<3> l, r;
+        P lLo, lHi, rLo, rHi;
+        lLo.fill(kInfinity), rLo.fill(kInfinity), lHi.fill(-kInfinity), rHi.fill(-kInfinity);
+        const auto extend = [](P& lo, P& hi, const P& p) {
+            for (int a = 0; a < 3; ++a)
+                lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+        };
         for (std::size_t i = 0; i < n_; ++i) {
-            const Vec3& p = v[i];
-            const Vec3& q = v[i + 1 == n_ ? 0 : i + 1];
-            if (p[axis] <= planeL) l.extend(p);
-            if (p[axis] >= planeR) r.extend(p);
-            if ((p[axis] <= planeL) != (q[axis] <= planeL)) l.extend(crossing(p, q, axis, planeL));
-            if ((p[axis] >= planeR) != (q[axis] >= planeR)) r.extend(crossing(p, q, axis, planeR));
+            const P& p = v[i];
+            const P& q = v[i + 1 == n_ ? 0 : i + 1];
+            if (p[axis] <= planeL) extend(lLo, lHi, p);
+            if (p[axis] >= planeR) extend(rLo, rHi, p);
+            if ((p[axis] <= planeL) != (q[axis] <= planeL))
+                extend(lLo, lHi, crossing(p, q, axis, planeL));
+            if ((p[axis] >= planeR) != (q[axis] >= planeR))
+                extend(rLo, rHi, crossing(p, q, axis, planeR));
         }
-        return {l, r};
+        return {box(lLo, lHi), box(rLo, rHi)};
     }
-    BoxN<3> bounds() const {
-        BoxN<3> b;
-        for (std::size_t i = 0; i < n_; ++i) b.extend(buf_[cur_][i]);
-        return b;
-    }
+    BoxN<3> bounds() const { return n_ == 0 ? BoxN<3>{} : box(lo_, hi_); }
 
   private:
     /// Where edge pq crosses the plane, exactly on it.
-    static Vec3 crossing(const Vec3& p, const Vec3& q, int axis, double plane) {
-        Vec3 x = p + (q - p) * ((plane - p[axis]) / (q[axis] - p[axis]));
+    static P crossing(const P& p, const P& q, int axis, double plane) {
+        const double t = (plane - p[axis]) / (q[axis] - p[axis]);
+        P x;
+        for (int a = 0; a < 3; ++a) x[a] = p[a] + (q[a] - p[a]) * t;
         x[axis] = plane;
         return x;
     }
+    static BoxN<3> box(const P& lo, const P& hi) {
+        return {Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
+    }
+    void updateBounds(const std::array<P, 10>& v) {
+        lo_.fill(kInfinity), hi_.fill(-kInfinity);
+        for (std::size_t i = 0; i < n_; ++i)
+            for (int a = 0; a < 3; ++a)
+                lo_[a] = std::min(lo_[a], v[i][a]), hi_[a] = std::max(hi_[a], v[i][a]);
+    }
 
-    std::array<std::array<Vec3, 10>, 2> buf_;
+    std::array<std::array<P, 10>, 2> buf_;
+    P lo_, hi_;  // the polygon's bounds
     int cur_ = 0;
     std::size_t n_;
 };
