@@ -6,16 +6,25 @@
 #include "raystep/scene2d.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include <immintrin.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
+#include <memory>
+#include <mutex>
+#include <new>
 
 namespace raystep {
 
@@ -95,7 +104,10 @@ class KdBuilder {
           ids_(ids),
           stats_(stats),
           primBounds_(parent.primBounds_),
-          progress_(noProgress_) {}
+          progress_(noProgress_),
+          stacks_(parent.stacks_) {}
+    KdBuilder(const KdBuilder&) = delete;
+    KdBuilder& operator=(const KdBuilder&) = delete;
 
     void run(const Box& box) {
         const std::uint32_t n = prims_.count();
@@ -137,20 +149,25 @@ class KdBuilder {
         }
         float lo(int axis) const { return edge[axis]; }
         float hi(int axis) const { return edge[N + axis]; }
-        std::array<float, 2 * N> edge{};  // lo[0..N), then hi[0..N)
-        std::uint32_t prim = 0;
+        // Left uninitialized by Ref(): RefStack allocates without writing.
+        std::array<float, 2 * N> edge;  // lo[0..N), then hi[0..N)
+        std::uint32_t prim;
 
         // Branch-free: whether float rounding went the wrong way is a coin toss per edge,
         // and a mispredicted branch for each of the 2N edges cost more than the rest of the Ref.
         static float roundDown(double x) {
             const auto f = static_cast<float>(x);
-            const auto bits = std::bit_cast<std::uint32_t>(f);
-            return std::bit_cast<float>(double(f) > x ? stepDown(bits) : bits);
+            return pick(double(f) > x, stepDown(std::bit_cast<std::uint32_t>(f)), f);
         }
         static float roundUp(double x) {
             const auto f = static_cast<float>(x);
-            const auto bits = std::bit_cast<std::uint32_t>(f);
-            return std::bit_cast<float>(double(f) < x ? stepUp(bits) : bits);
+            return pick(double(f) < x, stepUp(std::bit_cast<std::uint32_t>(f)), f);
+        }
+        /// `stepped` if `wrongWay`, else `f`, selected with a mask (the compiler branched).
+        static float pick(bool wrongWay, std::uint32_t stepped, float f) {
+            const std::uint32_t mask = 0u - static_cast<std::uint32_t>(wrongWay);
+            return std::bit_cast<float>((stepped & mask) |
+                                        (std::bit_cast<std::uint32_t>(f) & ~mask));
         }
         /// The bit pattern of the neighbouring float of finite `bits` below or above it: one
         /// step of the pattern (std::nextafter is a library call, and this runs for every clip).
@@ -163,6 +180,78 @@ class KdBuilder {
             return bits >> 31 ? bits - 1 : bits + 1;
         }
     };
+
+    /// One thread's references as a stack: a node's children are written above its own and
+    /// released when its subtree is built, so the build allocates a few times per thread, not
+    /// twice per node (malloc and fresh pages were a tenth of the fast build). In segments that
+    /// never move, so a subtree handed to another thread reads its references where they are.
+    /// Tasks stolen by a waiting thread run to completion above the waiting frame's references:
+    /// one stack per thread stays last in, first out.
+    class RefStack {
+      public:
+        struct Mark {
+            std::size_t segment, top;
+        };
+        Mark mark() const { return {segment_, top_}; }
+        void release(Mark m) { segment_ = m.segment, top_ = m.top; }
+        /// Room for `count` references, uninitialized.
+        Ref* push(std::size_t count) {
+            if (segment_ < segments_.size() && top_ + count <= segments_[segment_].capacity) {
+                Ref* at = segments_[segment_].refs.get() + top_;
+                top_ += count;
+                return at;
+            }
+            // The next segment: nothing above this one is in use, so a too small one is replaced.
+            const std::size_t next = segments_.empty() ? 0 : segment_ + 1;
+            if (next == segments_.size() || segments_[next].capacity < count) {
+                const std::size_t capacity =
+                    std::max({count, kMinSegment, 2 * (next ? segments_[next - 1].capacity : 0)});
+                segments_.resize(std::max(segments_.size(), next + 1));
+                segments_[next] = {allocate(capacity), capacity};
+            }
+            segment_ = next;
+            top_ = count;
+            return segments_[next].refs.get();
+        }
+
+      private:
+        static constexpr std::size_t kMinSegment = 1 << 16;
+        struct Free {
+            void operator()(Ref* p) const { std::free(p); }
+        };
+        using Refs = std::unique_ptr<Ref[], Free>;
+        struct Segment {
+            Refs refs;
+            std::size_t capacity = 0;
+        };
+        /// Whole 2 MB pages, offered to the kernel as huge pages: the build touches hundreds of
+        /// MB once, and faulting them in 4 KB at a time cost a sixth of the build on our VM.
+        static Refs allocate(std::size_t count) {
+            constexpr std::size_t kHugePage = std::size_t(2) << 20;
+            const std::size_t bytes = (count * sizeof(Ref) + kHugePage - 1) / kHugePage * kHugePage;
+            void* p = std::aligned_alloc(kHugePage, bytes);
+            if (!p) throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+            madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+            return Refs(static_cast<Ref*>(p));
+        }
+        std::vector<Segment> segments_;
+        std::size_t segment_ = 0, top_ = 0;
+    };
+    /// Releases what a frame pushed when it returns (or throws).
+    class StackFrame {
+      public:
+        explicit StackFrame(RefStack& stack) : stack_(stack), mark_(stack.mark()) {}
+        ~StackFrame() { stack_.release(mark_); }
+        StackFrame(const StackFrame&) = delete;
+        StackFrame& operator=(const StackFrame&) = delete;
+
+      private:
+        RefStack& stack_;
+        typename RefStack::Mark mark_;
+    };
+    using Stacks = tbb::enumerable_thread_specific<RefStack>;
 
     /// A node's counts over B equal bins per axis: how many references start and end in each
     /// bin, and the references' extent.
@@ -247,7 +336,7 @@ class KdBuilder {
         static constexpr int laneOf(int j) { return N == 3 && j >= N ? j + 2 : j; }
 
         Bins<B>& bins_;
-        std::array<__m128, kLoads> lo_, scale_, min_, max_;
+        __m128 lo_[kLoads], scale_[kLoads], min_[kLoads], max_[kLoads];
     };
     // Bins per axis: the fast build's 32 (a node of 64 references or fewer reads them in
     // pairs, as 16: there the bins' fixed cost dominates; measured: 11% fewer instructions, SAH
@@ -282,7 +371,9 @@ class KdBuilder {
     void runBinned(const Box& box) {
         const std::uint32_t n = prims_.count();
         side_.assign(n, Side::Both);
-        std::vector<Ref> refs(n);
+        RefStack& stack = stacks_->local();
+        const StackFrame frame(stack);
+        Ref* refs = stack.push(n);
         const auto makeRefs = [&](std::uint32_t begin, std::uint32_t end) {
             for (std::uint32_t p = begin; p < end; ++p)
                 refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
@@ -292,9 +383,9 @@ class KdBuilder {
             Bins<kExactBins> bins;
             {
                 Binner<kExactBins> binner(box, bins);
-                for (const Ref& r : refs) binner.add(r);
+                for (std::uint32_t p = 0; p < n; ++p) binner.add(refs[p]);
             }
-            return buildBinned(std::move(refs), bins, box, 0, kNoId);
+            return buildBinned(refs, n, bins, box, 0, kNoId);
         }
         const std::size_t chunks = (n + kChunk - 1) / kChunk;
         std::vector<Bins<kFastBins>> part(chunks);
@@ -312,24 +403,23 @@ class KdBuilder {
         }
         Bins<kFastBins> bins;
         for (const auto& b : part) bins.add(b);
-        buildBinned(std::move(refs), bins, box, 0, kNoId);
+        buildBinned(refs, n, bins, box, 0, kNoId);
     }
 
     /// Big nodes: the SAH over B equal bins per axis (min-max binning: where each primitive
-    /// starts and ends), O(n) a node; `bins` were counted when the parent partitioned its
-    /// references. Below opt_.exactBelow primitives, the exact sweep over sorted events takes
-    /// over (buildSah). Candidates are the bin boundaries.
+    /// starts and ends), O(n) a node, on the node's `n` references `refs`; `bins` were counted
+    /// when the parent partitioned them. Below opt_.exactBelow primitives, the exact sweep over
+    /// sorted events takes over (buildSah). Candidates are the bin boundaries.
     template <int B>
-    void buildBinned(std::vector<Ref> refs, const Bins<B>& bins, const Box& box, int depth,
-                     std::uint32_t parent) {
-        const auto n = static_cast<std::uint32_t>(refs.size());
+    void buildBinned(const Ref* refs, std::uint32_t n, const Bins<B>& bins, const Box& box,
+                     int depth, std::uint32_t parent) {
         const bool fast = opt_.build == KdBuild::Fast;
         if (!fast && n <= static_cast<std::uint32_t>(opt_.exactBelow)) {
             // The exact sweep wants exact bounds: each primitive clipped to the node again.
             std::vector<SplitEvent> events;
             events.reserve(std::size_t(2) * N * n);
-            for (const Ref& r : refs) addEvents(r.prim, prims_.clippedBounds(r.prim, box), events);
-            refs = {};
+            for (std::uint32_t k = 0; k < n; ++k)
+                addEvents(refs[k].prim, prims_.clippedBounds(refs[k].prim, box), events);
             std::sort(events.begin(), events.end());
             return buildSah(std::move(events), n, box, depth, parent);
         }
@@ -418,18 +508,18 @@ class KdBuilder {
 
         // The partition counts each child's bins on the way, while the reference is at hand.
         const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
-        const auto partitionRange = [&](const Ref* first, const Ref* last, std::vector<Ref>& left,
-                                        std::vector<Ref>& right, Bins<B>& binsL, Bins<B>& binsR) {
+        const auto partitionRange = [&](const Ref* begin, const Ref* end, auto&& putLeft,
+                                        auto&& putRight, Bins<B>& binsL, Bins<B>& binsR) {
             Binner<B> inL(boxL, binsL), inR(boxR, binsR);
             const auto toLeft = [&](const Ref& r) {
-                left.push_back(r);
+                putLeft(r);
                 inL.add(r);
             };
             const auto toRight = [&](const Ref& r) {
-                right.push_back(r);
+                putRight(r);
                 inR.add(r);
             };
-            for (const Ref* r = first; r != last; ++r) {
+            for (const Ref* r = begin; r != end; ++r) {
                 const double lo = r->lo(bestAxis), hi = r->hi(bestAxis);
                 if (hi < bestPos || (hi == bestPos && lo < bestPos) ||
                     (lo == hi && lo == bestPos)) {
@@ -444,56 +534,72 @@ class KdBuilder {
                 }
             }
         };
-        std::vector<Ref> left, right;
+        // The children's references go on top of this thread's stack.
+        RefStack& stack = stacks_->local();
+        const StackFrame frame(stack);
+        const Ref* left = nullptr;
+        const Ref* right = nullptr;
+        std::size_t nl = 0, nr = 0;
         Bins<B> binsL, binsR;
         if (fast && !Rec::kEnabled && n > kParallelNodeAbove) {
             // A big node (the top few levels, before the subtrees keep every core busy): each
-            // core partitions a share; the shares are joined in order, their bins added up.
+            // core partitions a share into the share's own room (kChunk on each side); the
+            // shares are gathered in order, their bins added up.
             const std::size_t chunks = (n + kChunk - 1) / kChunk;
-            std::vector<std::vector<Ref>> partL(chunks), partR(chunks);
+            Ref* room = stack.push(2 * kChunk * chunks);
+            std::vector<std::size_t> partL(chunks), partR(chunks);
             std::vector<Bins<B>> partBinsL(chunks), partBinsR(chunks);
             tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-                partitionRange(refs.data() + c * kChunk,
-                               refs.data() + std::min<std::size_t>(n, (c + 1) * kChunk), partL[c],
-                               partR[c], partBinsL[c], partBinsR[c]);
+                Ref* outL = room + 2 * kChunk * c;
+                Ref* outR = outL + kChunk;
+                std::size_t& cl = partL[c];
+                std::size_t& cr = partR[c];
+                partitionRange(
+                    refs + c * kChunk, refs + std::min<std::size_t>(n, (c + 1) * kChunk),
+                    [&](const Ref& r) { outL[cl++] = r; }, [&](const Ref& r) { outR[cr++] = r; },
+                    partBinsL[c], partBinsR[c]);
             });
-            const auto join = [](std::vector<std::vector<Ref>>& parts, std::vector<Ref>& out) {
-                std::size_t total = 0;
-                for (const auto& part : parts) total += part.size();
-                out.reserve(total);
-                for (auto& part : parts) {
-                    out.insert(out.end(), part.begin(), part.end());
-                    part = {};
-                }
-            };
-            join(partL, left);
-            join(partR, right);
             for (std::size_t c = 0; c < chunks; ++c) {
+                nl += partL[c];
+                nr += partR[c];
                 binsL.add(partBinsL[c]);
                 binsR.add(partBinsR[c]);
             }
+            Ref* outL = stack.push(nl + nr);
+            Ref* outR = outL + nl;
+            left = outL;
+            right = outR;
+            for (std::size_t c = 0; c < chunks; ++c) {
+                outL = std::copy_n(room + 2 * kChunk * c, partL[c], outL);
+                outR = std::copy_n(room + 2 * kChunk * c + kChunk, partR[c], outR);
+            }
         } else {
-            left.reserve(n / 2 + n / 8);
-            right.reserve(n / 2 + n / 8);
-            partitionRange(refs.data(), refs.data() + n, left, right, binsL, binsR);
+            // Each reference gives at most one on each side: room for n on each.
+            Ref* outL = stack.push(2 * std::size_t(n));
+            Ref* outR = outL + n;
+            left = outL;
+            right = outR;
+            partitionRange(
+                refs, refs + n, [&](const Ref& r) { outL[nl++] = r; },
+                [&](const Ref& r) { outR[nr++] = r; }, binsL, binsR);
         }
-        refs = {};
         split(id, bestAxis, bestPos, bestCost, leafCost);
-        const double fl = double(left.size()) / double(left.size() + right.size());
+        const double fl = double(nl) / double(nl + nr);
+        const auto nL = static_cast<std::uint32_t>(nl), nR = static_cast<std::uint32_t>(nr);
         constexpr std::size_t kParallelAbove = 4096;
-        if (fast && !Rec::kEnabled && right.size() > kParallelAbove) {
-            // The right subtree on another core, into its own arrays; spliced in after.
+        if (fast && !Rec::kEnabled && nr > kParallelAbove) {
+            // The right subtree on another core, into its own arrays; spliced in after. Its
+            // references stay where they are until this frame returns.
             std::vector<KdNode> subNodes;
             std::vector<std::uint32_t> subIds;
             TreeStats subStats;
             tbb::task_group group;
             group.run([&] {
                 KdBuilder sub(*this, subNodes, subIds, subStats);
-                sub.buildBinned(std::move(right), binsR, boxR, depth + 1, id);
+                sub.buildBinned(right, nR, binsR, boxR, depth + 1, id);
             });
             try {
-                progress_.child(fl,
-                                [&] { buildBinned(std::move(left), binsL, boxL, depth + 1, id); });
+                progress_.child(fl, [&] { buildBinned(left, nL, binsL, boxL, depth + 1, id); });
             } catch (...) {
                 group.wait();  // the task uses this frame's locals
                 throw;
@@ -503,9 +609,9 @@ class KdBuilder {
             progress_.child(1 - fl, [&] { progress_.leafDone(); });
             return;
         }
-        progress_.child(fl, [&] { buildBinned(std::move(left), binsL, boxL, depth + 1, id); });
+        progress_.child(fl, [&] { buildBinned(left, nL, binsL, boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { buildBinned(std::move(right), binsR, boxR, depth + 1, id); });
+        progress_.child(1 - fl, [&] { buildBinned(right, nR, binsR, boxR, depth + 1, id); });
     }
 
     /// Appends a subtree built apart as node `parent`'s right child: its node and id indices
@@ -798,6 +904,8 @@ class KdBuilder {
     std::vector<Side> side_;
     ProgressFn noProgress_;
     BuildProgress progress_;
+    // The binned build's references: a stack per thread, shared by the whole build.
+    std::shared_ptr<Stacks> stacks_ = std::make_shared<Stacks>();
 };
 
 /// The tree's SAH cost, node by node from the root box (no empty bonus: the expected cost).
