@@ -12,7 +12,7 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
-#include <immintrin.h>
+#include <immintrin.h>  // SSE2, which every x86-64 has: the binning (Binner)
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -25,7 +25,6 @@
 #include <cstdlib>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <new>
 
 namespace raystep {
@@ -227,7 +226,8 @@ class KdBuilder {
             std::size_t capacity = 0;
         };
         /// Whole 2 MB pages, offered to the kernel as huge pages: the build touches hundreds of
-        /// MB once, and faulting them in 4 KB at a time cost a sixth of the build on our VM.
+        /// MB once, and faulting them in 4 KB at a time cost a sixth of the build on our VM
+        /// (~3 microseconds a fault).
         static Refs allocate(std::size_t count) {
             constexpr std::size_t kHugePage = std::size_t(2) << 20;
             const std::size_t bytes = (count * sizeof(Ref) + kHugePage - 1) / kHugePage * kHugePage;
