@@ -106,7 +106,8 @@ class KdBuilder {
           stats_(stats),
           primBounds_(parent.primBounds_),
           progress_(noProgress_),
-          stacks_(parent.stacks_) {}
+          stacks_(parent.stacks_),
+          stack_(&stacks_->local()) {}
     KdBuilder(const KdBuilder&) = delete;
     KdBuilder& operator=(const KdBuilder&) = delete;
 
@@ -373,7 +374,7 @@ class KdBuilder {
     void runBinned(const Box& box) {
         const std::uint32_t n = prims_.count();
         side_.assign(n, Side::Both);
-        RefStack& stack = stacks_->local();
+        RefStack& stack = *stack_;
         const StackFrame frame(stack);
         Ref* refs = stack.push(n);
         const auto makeRefs = [&](std::uint32_t begin, std::uint32_t end) {
@@ -438,11 +439,9 @@ class KdBuilder {
         double bestCost = kInfinity, bestPos = 0.0;
         int bestAxis = -1;
         const double twoOverAreaC = 2.0 / areaC;
-        const auto consider = [&](int axis, double pos, std::uint32_t nl, std::uint32_t nr,
-                                  double a, double b) {
-            const double pl = ((pos - box.lo[axis]) * a + b) * twoOverAreaC;
-            const double pr = ((box.hi[axis] - pos) * a + b) * twoOverAreaC;
-            const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
+        // A candidate plane with its cost: recorded, and kept if the cheapest so far.
+        const auto offer = [&](int axis, double pos, std::uint32_t nl, std::uint32_t nr, double pl,
+                               double pr, double cost) {
             if constexpr (Rec::kEnabled)
                 rec_(
                     SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr, cost});
@@ -476,6 +475,11 @@ class KdBuilder {
             // does, never at a bin boundary (which would slice ever thinner slabs off a flat
             // primitive lying in the node's face, down to the depth limit).
             const double minLo = bins.minLo[axis], maxHi = bins.maxHi[axis];
+            // P(L|C) and P(R|C) of the plane at pos, from the areas in closed form.
+            const auto probabilities = [&](double pos) {
+                return std::pair{((pos - lo) * a + b) * twoOverAreaC,
+                                 ((hi - pos) * a + b) * twoOverAreaC};
+            };
             std::uint32_t nl = 0, nr = n;
             for (int k = 1; k < kBins; ++k) {
                 nl += st[k - 1];  // started in a bin below this boundary
@@ -489,21 +493,18 @@ class KdBuilder {
                 // (the empty space beyond it is cut at its edge, below).
                 if (nl == 0 || nr == 0 || !(pos > minLo && pos < maxHi)) continue;
                 // sahCost inline (no side is empty, so no bonus): this runs ~50 times a node.
-                const double pl = ((pos - lo) * a + b) * twoOverAreaC;
-                const double pr = ((hi - pos) * a + b) * twoOverAreaC;
-                const double cost = opt_.cTrav + opt_.cIsect * (pl * nl + pr * nr);
-                if constexpr (Rec::kEnabled)
-                    rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr,
-                                        cost});
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestPos = pos;
-                    bestAxis = axis;
-                }
+                const auto [pl, pr] = probabilities(pos);
+                offer(axis, pos, nl, nr, pl, pr, opt_.cTrav + opt_.cIsect * (pl * nl + pr * nr));
             }
+            // The empty space on either side, cut at the primitives' edge (with the bonus).
+            const auto emptySide = [&](double pos, std::uint32_t nl, std::uint32_t nr) {
+                const auto [pl, pr] = probabilities(pos);
+                offer(axis, pos, nl, nr, pl, pr,
+                      sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr));
+            };
             const double minSlab = kMinEmptySlab * (hi - lo);
-            if (minLo - lo >= minSlab && minLo < hi) consider(axis, minLo, 0, n, a, b);
-            if (hi - maxHi >= minSlab && maxHi > lo) consider(axis, maxHi, n, 0, a, b);
+            if (minLo - lo >= minSlab && minLo < hi) emptySide(minLo, 0, n);
+            if (hi - maxHi >= minSlab && maxHi > lo) emptySide(maxHi, n, 0);
         }
         if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
         if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
@@ -537,7 +538,7 @@ class KdBuilder {
             }
         };
         // The children's references go on top of this thread's stack.
-        RefStack& stack = stacks_->local();
+        RefStack& stack = *stack_;
         const StackFrame frame(stack);
         const Ref* left = nullptr;
         const Ref* right = nullptr;
@@ -908,6 +909,9 @@ class KdBuilder {
     BuildProgress progress_;
     // The binned build's references: a stack per thread, shared by the whole build.
     std::shared_ptr<Stacks> stacks_ = std::make_shared<Stacks>();
+    // This builder's thread's stack, looked up once: a builder runs on the thread that made it
+    // (a subtree's builder is made inside its task).
+    RefStack* stack_ = &stacks_->local();
 };
 
 /// The tree's SAH cost, node by node from the root box (no empty bonus: the expected cost). The
