@@ -369,42 +369,37 @@ class KdBuilder {
         }
     }
 
-    /// The binned build from the root: references made and binned (on all cores for the fast
-    /// build), then buildBinned.
+    /// The binned build from the root, on this thread's stack.
     void runBinned(const Box& box) {
         const std::uint32_t n = prims_.count();
         side_.assign(n, Side::Both);
-        RefStack& stack = *stack_;
-        const StackFrame frame(stack);
-        Ref* refs = stack.push(n);
-        const auto makeRefs = [&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t p = begin; p < end; ++p)
-                refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
-        };
-        if (opt_.build != KdBuild::Fast) {
-            makeRefs(0, n);
-            Bins<kExactBins> bins;
-            {
-                Binner<kExactBins> binner(box, bins);
-                for (std::uint32_t p = 0; p < n; ++p) binner.add(refs[p]);
-            }
-            return buildBinned(refs, n, bins, box, 0, kNoId);
-        }
+        const StackFrame frame(*stack_);
+        Ref* refs = stack_->push(n);
+        if (opt_.build == KdBuild::Fast)
+            startBinned<kFastBins>(refs, n, box, !Rec::kEnabled);
+        else
+            startBinned<kExactBins>(refs, n, box, false);
+    }
+    /// The root's references made and counted into B bins, in shares (on all cores if
+    /// `parallel`), then buildBinned.
+    template <int B>
+    void startBinned(Ref* refs, std::uint32_t n, const Box& box, bool parallel) {
         const std::size_t chunks = (n + kChunk - 1) / kChunk;
-        std::vector<Bins<kFastBins>> part(chunks);
+        std::vector<Bins<B>> part(chunks);
         const auto share = [&](std::size_t c) {
             const auto begin = static_cast<std::uint32_t>(c * kChunk);
             const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(n, begin + kChunk));
-            makeRefs(begin, end);
-            Binner<kFastBins> binner(box, part[c]);
-            for (std::uint32_t p = begin; p < end; ++p) binner.add(refs[p]);
+            Binner<B> binner(box, part[c]);
+            for (std::uint32_t p = begin; p < end; ++p) {
+                refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
+                binner.add(refs[p]);
+            }
         };
-        if constexpr (Rec::kEnabled) {
-            for (std::size_t c = 0; c < chunks; ++c) share(c);
-        } else {
+        if (parallel)
             tbb::parallel_for(std::size_t(0), chunks, share);
-        }
-        Bins<kFastBins> bins;
+        else
+            for (std::size_t c = 0; c < chunks; ++c) share(c);
+        Bins<B> bins;
         for (const auto& b : part) bins.add(b);
         buildBinned(refs, n, bins, box, 0, kNoId);
     }
