@@ -23,7 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
+#include <cstring>
 #include <memory>
 #include <new>
 
@@ -279,11 +279,15 @@ class KdBuilder {
     };
 
     /// Counts references into the bins of `box`: edge j of a reference falls in bin
-    /// (edge - lo) * scale, clamped to [0, B). In float, as the references are: rounding only
-    /// moves an edge into a neighbouring bin, which changes a candidate's estimated cost, never
-    /// where a primitive goes (the partition reads the references themselves).
-    template <int B>
+    /// (edge - lo) * scale, clamped to [0, Fine), of Fine equal bins, merged in runs of Fine / B
+    /// (a small node's 16 bins are the fast build's 32 in pairs, so both give the same tree).
+    /// In float, as the references are: rounding only moves an edge into a neighbouring bin,
+    /// which changes a candidate's estimated cost, never where a primitive goes (the partition
+    /// reads the references themselves).
+    template <int B, int Fine = B>
     class Binner {
+        static_assert(Fine % B == 0 && std::has_single_bit(unsigned(Fine / B)));
+
       public:
         Binner(const Box& box, Bins<B>& bins) : bins_(bins) {
             std::array<float, 8> lo{}, scale{};
@@ -291,7 +295,7 @@ class KdBuilder {
                 const int axis = edgeAt(i) % N;  // lane i reads edge edgeAt(i)
                 const double width = box.hi[axis] - box.lo[axis];
                 lo[i] = static_cast<float>(box.lo[axis]);
-                scale[i] = width > 0.0 ? static_cast<float>(B / width) : 0.0f;
+                scale[i] = width > 0.0 ? static_cast<float>(Fine / width) : 0.0f;
             }
             for (int v = 0; v < kLoads; ++v) {
                 lo_[v] = _mm_loadu_ps(&lo[4 * v]);
@@ -314,13 +318,15 @@ class KdBuilder {
             }
         }
         void add(const Ref& r) {
-            const __m128 zero = _mm_setzero_ps(), top = _mm_set1_ps(B - 0.5f);
+            const __m128 zero = _mm_setzero_ps(), top = _mm_set1_ps(Fine - 0.5f);
+            constexpr int kMerge = std::countr_zero(unsigned(Fine / B));
             alignas(16) std::array<std::int32_t, 8> bin;
             for (int v = 0; v < kLoads; ++v) {
                 const __m128 e = _mm_loadu_ps(&r.edge[kLoadAt[v]]);
                 const __m128 x = _mm_mul_ps(_mm_sub_ps(e, lo_[v]), scale_[v]);
-                _mm_store_si128(reinterpret_cast<__m128i*>(&bin[4 * v]),
-                                _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top)));
+                _mm_store_si128(
+                    reinterpret_cast<__m128i*>(&bin[4 * v]),
+                    _mm_srli_epi32(_mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top)), kMerge));
                 min_[v] = _mm_min_ps(min_[v], e);
                 max_[v] = _mm_max_ps(max_[v], e);
             }
@@ -341,11 +347,17 @@ class KdBuilder {
         Bins<B>& bins_;
         __m128 lo_[kLoads], scale_[kLoads], min_[kLoads], max_[kLoads];
     };
-    // Bins per axis: the fast build's 32 (a node of 64 references or fewer reads them in
-    // pairs, as 16: there the bins' fixed cost dominates; measured: 11% fewer instructions, SAH
-    // cost +1%), the exact build's binned top levels (--bin-above) 256.
+    // Bins per axis: the fast build's 32, and 16 (the 32 in pairs) in its nodes of at most
+    // kSmallNode references, where the bins' fixed cost dominates (measured: 11% fewer
+    // instructions, SAH cost +1%); the exact build's binned top levels (--bin-above) 256.
     static constexpr int kFastBins = 32;
+    static constexpr int kSmallBins = kFastBins / 2;
+    static constexpr std::uint32_t kSmallNode = 64;
     static constexpr int kExactBins = 256;
+    /// How finely a node of B bins counts its children: a small node's children are small too.
+    static constexpr int fineBins(int b) {
+        return b == kSmallBins ? kFastBins : b;
+    }
     // Fast build: nodes above this many references are partitioned and binned by all cores,
     // in shares of kChunk references.
     static constexpr std::uint32_t kParallelNodeAbove = 65536;
@@ -401,7 +413,29 @@ class KdBuilder {
             for (std::size_t c = 0; c < chunks; ++c) share(c);
         Bins<B> bins;
         for (const auto& b : part) bins.add(b);
-        buildBinned(refs, n, bins, box, 0, kNoId);
+        descend(refs, n, bins, box, 0, kNoId);
+    }
+
+    /// buildBinned, in 16 bins (the 32 counted, in pairs) once the fast build's node is small.
+    template <int B>
+    void descend(const Ref* refs, std::uint32_t n, const Bins<B>& bins, const Box& box, int depth,
+                 std::uint32_t parent) {
+        if constexpr (B == kFastBins) {
+            if (opt_.build == KdBuild::Fast && n <= kSmallNode) {
+                Bins<kSmallBins> pairs;
+                for (int axis = 0; axis < N; ++axis) {
+                    for (int k = 0; k < kSmallBins; ++k) {
+                        pairs.starts[axis][k] =
+                            bins.starts[axis][2 * k] + bins.starts[axis][2 * k + 1];
+                        pairs.ends[axis][k] = bins.ends[axis][2 * k] + bins.ends[axis][2 * k + 1];
+                    }
+                }
+                pairs.minLo = bins.minLo;
+                pairs.maxHi = bins.maxHi;
+                return buildBinned(refs, n, pairs, box, depth, parent);
+            }
+        }
+        buildBinned(refs, n, bins, box, depth, parent);
     }
 
     /// Big nodes: the SAH over B equal bins per axis (min-max binning: where each primitive
@@ -422,10 +456,8 @@ class KdBuilder {
             return buildSah(std::move(events), n, box, depth, parent);
         }
         const std::uint32_t id = openNode(box, depth, n, parent);
-        const auto nodePrims = [&] {
-            std::vector<std::uint32_t> prims(n);
-            for (std::uint32_t k = 0; k < n; ++k) prims[k] = refs[k].prim;
-            return prims;
+        const auto nodePrims = [&](std::vector<std::uint32_t>& out) {
+            for (std::uint32_t k = 0; k < n; ++k) out.push_back(refs[k].prim);
         };
         if (leafByCount(id, n, depth, nodePrims)) return;
 
@@ -446,26 +478,13 @@ class KdBuilder {
                 bestAxis = axis;
             }
         };
-        // A small fast node reads its bins in pairs (kFastBins).
-        const int stride = fast && n <= 64 ? 2 : 1;
-        const int kBins = B / stride;
         for (int axis = 0; axis < N; ++axis) {
             const double lo = box.lo[axis], hi = box.hi[axis];
             if (!(hi > lo && areaC > 0.0)) continue;
             const auto [a, b] = areaTerms(box, axis);
-            const double binWidth = (hi - lo) / kBins;
-            // Per bin of this node: the counted bins, or pairs of them for a small node.
-            std::array<std::uint32_t, B> merged[2];
+            const double binWidth = (hi - lo) / B;
             const std::uint32_t* st = bins.starts[axis].data();
             const std::uint32_t* en = bins.ends[axis].data();
-            if (stride == 2) {
-                for (int k = 0; k < kBins; ++k) {
-                    merged[0][k] = st[2 * k] + st[2 * k + 1];
-                    merged[1][k] = en[2 * k] + en[2 * k + 1];
-                }
-                st = merged[0].data();
-                en = merged[1].data();
-            }
             // The primitives' extent: empty space is cut off at its edge, as the exact sweep
             // does, never at a bin boundary (which would slice ever thinner slabs off a flat
             // primitive lying in the node's face, down to the depth limit).
@@ -476,7 +495,7 @@ class KdBuilder {
                                  ((hi - pos) * a + b) * twoOverAreaC};
             };
             std::uint32_t nl = 0, nr = n;
-            for (int k = 1; k < kBins; ++k) {
+            for (int k = 1; k < B; ++k) {
                 nl += st[k - 1];  // started in a bin below this boundary
                 nr -= en[k - 1];  // ended in a bin below it
                 // Across an empty bin NL and NR stay the same and the cost is linear in the
@@ -501,85 +520,107 @@ class KdBuilder {
             if (minLo - lo >= minSlab && minLo < hi) emptySide(minLo, 0, n);
             if (hi - maxHi >= minSlab && maxHi > lo) emptySide(maxHi, n, 0);
         }
-        if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
-        if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
+        if (bestAxis < 0) return makeLeaf(id, LeafReason::NoSplit, depth, nodePrims);
+        if (!(bestCost < leafCost)) return makeLeaf(id, LeafReason::SahCheaper, depth, nodePrims);
 
         // The partition counts each child's bins on the way, while the reference is at hand.
         const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
-        const auto partitionRange = [&](const Ref* begin, const Ref* end, auto&& putLeft,
-                                        auto&& putRight, Bins<B>& binsL, Bins<B>& binsR) {
-            Binner<B> inL(boxL, binsL), inR(boxR, binsR);
-            const auto toLeft = [&](const Ref& r) {
-                putLeft(r);
-                inL.add(r);
-            };
-            const auto toRight = [&](const Ref& r) {
-                putRight(r);
-                inR.add(r);
-            };
+        // Which side of the plane a reference lies on: wholly below (or flat in the plane: left,
+        // as the sweep), wholly above, or across it.
+        enum : int { kLeft, kRight, kAcross };
+        const auto sideOf = [&](const Ref& r) {
+            const double lo = r.lo(bestAxis), hi = r.hi(bestAxis);
+            if (hi < bestPos || (hi == bestPos && lo < bestPos) || (lo == hi && lo == bestPos))
+                return kLeft;
+            return lo >= bestPos ? kRight : kAcross;
+        };
+        // Partitions [begin, end) into outL and outR (room for one per reference on each side),
+        // counting each child's bins on the way, while the reference is at hand.
+        const auto partitionRange = [&](const Ref* begin, const Ref* end, Ref* outL, Ref* outR,
+                                        std::size_t& nlOut, std::size_t& nrOut, Bins<B>& binsL,
+                                        Bins<B>& binsR) {
+            Binner<B, fineBins(B)> inL(boxL, binsL), inR(boxR, binsR);
+            std::size_t nl = 0, nr = 0;
             for (const Ref* r = begin; r != end; ++r) {
-                const double lo = r->lo(bestAxis), hi = r->hi(bestAxis);
-                if (hi < bestPos || (hi == bestPos && lo < bestPos) ||
-                    (lo == hi && lo == bestPos)) {
-                    toLeft(*r);  // wholly below (or flat in the plane: left, as the sweep)
-                } else if (lo >= bestPos) {
-                    toRight(*r);
+                const int side = sideOf(*r);
+                if (side == kLeft) {
+                    outL[nl++] = *r;
+                    inL.add(*r);
+                } else if (side == kRight) {
+                    outR[nr++] = *r;
+                    inR.add(*r);
                 } else {
                     // Straddles: clipped to each side ("perfect splits"), dropped where it misses.
                     const auto [l, rr] = clipToSides(r->prim, box, bestAxis, bestPos);
-                    if (!l.empty()) toLeft(Ref(r->prim, l));
-                    if (!rr.empty()) toRight(Ref(r->prim, rr));
+                    if (!l.empty()) {
+                        outL[nl] = Ref(r->prim, l);
+                        inL.add(outL[nl++]);
+                    }
+                    if (!rr.empty()) {
+                        outR[nr] = Ref(r->prim, rr);
+                        inR.add(outR[nr++]);
+                    }
                 }
             }
+            nlOut = nl;
+            nrOut = nr;
         };
         // The children's references go on top of this thread's stack.
         RefStack& stack = *stack_;
         const StackFrame frame(stack);
-        const Ref* left = nullptr;
-        const Ref* right = nullptr;
+        Ref* left = nullptr;
+        Ref* right = nullptr;
         std::size_t nl = 0, nr = 0;
         Bins<B> binsL, binsR;
         if (fast && !Rec::kEnabled && n > kParallelNodeAbove) {
-            // A big node (the top few levels, before the subtrees keep every core busy): each
-            // core partitions a share into the share's own room (kChunk on each side); the
-            // shares are gathered in order, their bins added up.
+            // A big node (the top few levels, before the subtrees keep every core busy): the
+            // cores count each share's references on each side, then partition the shares
+            // straight into place, their bins added up after.
             const std::size_t chunks = (n + kChunk - 1) / kChunk;
-            Ref* room = stack.push(2 * kChunk * chunks);
+            const auto share = [&](std::size_t c) {
+                return std::pair{refs + c * kChunk,
+                                 refs + std::min<std::size_t>(n, (c + 1) * kChunk)};
+            };
+            // Where each share's references go: a straddling one counts on both sides.
+            std::vector<std::size_t> atL(chunks + 1), atR(chunks + 1);
+            tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+                std::size_t l = 0, r = 0;
+                for (auto [p, end] = share(c); p != end; ++p) {
+                    const int side = sideOf(*p);
+                    l += side != kRight;
+                    r += side != kLeft;
+                }
+                atL[c + 1] = l;
+                atR[c + 1] = r;
+            });
+            for (std::size_t c = 0; c < chunks; ++c) {
+                atL[c + 1] += atL[c];
+                atR[c + 1] += atR[c];
+            }
+            left = stack.push(atL[chunks] + atR[chunks]);
+            right = left + atL[chunks];
             std::vector<std::size_t> partL(chunks), partR(chunks);
             std::vector<Bins<B>> partBinsL(chunks), partBinsR(chunks);
             tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-                Ref* outL = room + 2 * kChunk * c;
-                Ref* outR = outL + kChunk;
-                std::size_t& cl = partL[c];
-                std::size_t& cr = partR[c];
-                partitionRange(
-                    refs + c * kChunk, refs + std::min<std::size_t>(n, (c + 1) * kChunk),
-                    [&](const Ref& r) { outL[cl++] = r; }, [&](const Ref& r) { outR[cr++] = r; },
-                    partBinsL[c], partBinsR[c]);
+                const auto [begin, end] = share(c);
+                partitionRange(begin, end, left + atL[c], right + atR[c], partL[c], partR[c],
+                               partBinsL[c], partBinsR[c]);
             });
+            // A straddling reference whose clipped part misses a side left a gap there (rare):
+            // the shares after it move down.
             for (std::size_t c = 0; c < chunks; ++c) {
+                if (nl != atL[c]) std::memmove(left + nl, left + atL[c], partL[c] * sizeof(Ref));
+                if (nr != atR[c]) std::memmove(right + nr, right + atR[c], partR[c] * sizeof(Ref));
                 nl += partL[c];
                 nr += partR[c];
                 binsL.add(partBinsL[c]);
                 binsR.add(partBinsR[c]);
             }
-            Ref* outL = stack.push(nl + nr);
-            Ref* outR = outL + nl;
-            left = outL;
-            right = outR;
-            for (std::size_t c = 0; c < chunks; ++c) {
-                outL = std::copy_n(room + 2 * kChunk * c, partL[c], outL);
-                outR = std::copy_n(room + 2 * kChunk * c + kChunk, partR[c], outR);
-            }
         } else {
             // Each reference gives at most one on each side: room for n on each.
-            Ref* outL = stack.push(2 * std::size_t(n));
-            Ref* outR = outL + n;
-            left = outL;
-            right = outR;
-            partitionRange(
-                refs, refs + n, [&](const Ref& r) { outL[nl++] = r; },
-                [&](const Ref& r) { outR[nr++] = r; }, binsL, binsR);
+            left = stack.push(2 * std::size_t(n));
+            right = left + n;
+            partitionRange(refs, refs + n, left, right, nl, nr, binsL, binsR);
         }
         split(id, bestAxis, bestPos, bestCost, leafCost);
         const double fl = double(nl) / double(nl + nr);
@@ -594,10 +635,10 @@ class KdBuilder {
             tbb::task_group group;
             group.run([&] {
                 KdBuilder sub(*this, subNodes, subIds, subStats);
-                sub.buildBinned(right, nR, binsR, boxR, depth + 1, id);
+                sub.descend(right, nR, binsR, boxR, depth + 1, id);
             });
             try {
-                progress_.child(fl, [&] { buildBinned(left, nL, binsL, boxL, depth + 1, id); });
+                progress_.child(fl, [&] { descend(left, nL, binsL, boxL, depth + 1, id); });
             } catch (...) {
                 group.wait();  // the task uses this frame's locals
                 throw;
@@ -607,9 +648,9 @@ class KdBuilder {
             progress_.child(1 - fl, [&] { progress_.leafDone(); });
             return;
         }
-        progress_.child(fl, [&] { buildBinned(left, nL, binsL, boxL, depth + 1, id); });
+        progress_.child(fl, [&] { descend(left, nL, binsL, boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { buildBinned(right, nR, binsR, boxR, depth + 1, id); });
+        progress_.child(1 - fl, [&] { descend(right, nR, binsR, boxR, depth + 1, id); });
     }
 
     /// Appends a subtree built apart as node `parent`'s right child: its node and id indices
@@ -654,32 +695,42 @@ class KdBuilder {
         return id;
     }
 
-    void makeLeaf(std::uint32_t id, std::vector<std::uint32_t> prims, LeafReason reason,
-                  int depth) {
-        std::sort(prims.begin(), prims.end());  // tested in id order, as brute force does
+    /// Makes node `id` a leaf of the primitives `append(ids_)` appends to the tree's ids: written
+    /// in place, not gathered into a vector first (a malloc per leaf, 2% of the fast build).
+    template <typename Append>
+    void makeLeaf(std::uint32_t id, LeafReason reason, int depth, Append&& append) {
+        const std::size_t at = ids_.size();
+        append(ids_);
+        std::sort(ids_.begin() + at, ids_.end());  // tested in id order, as brute force does
         KdNode& node = nodes_[id];
         node.axis = KdNode::kLeaf;
-        node.index = static_cast<std::uint32_t>(ids_.size());
-        node.count = static_cast<std::uint32_t>(prims.size());
-        ids_.insert(ids_.end(), prims.begin(), prims.end());
+        node.index = static_cast<std::uint32_t>(at);
+        node.count = static_cast<std::uint32_t>(ids_.size() - at);
         ++stats_.leaves;
-        stats_.emptyLeaves += prims.empty();
+        stats_.emptyLeaves += node.count == 0;
         ++stats_.leafReasons[static_cast<int>(reason)];
         if constexpr (Rec::kEnabled)
             rec_(LeafMade{id, reason, node.count, static_cast<std::uint32_t>(depth),
                           opt_.cIsect * node.count});
         progress_.leafDone();
     }
+    /// Appends all of `prims` (a leaf's primitives held in a vector).
+    static auto allOf(const std::vector<std::uint32_t>& prims) {
+        return [&prims](std::vector<std::uint32_t>& out) {
+            out.insert(out.end(), prims.begin(), prims.end());
+        };
+    }
 
-    /// Checks shared by every strategy; true if the node must be a leaf (and makes it).
-    bool leafByCount(std::uint32_t id, std::uint32_t n, int depth,
-                     const std::function<std::vector<std::uint32_t>()>& prims) {
+    /// Checks shared by every strategy; true if the node must be a leaf (and makes it of the
+    /// primitives `append` appends).
+    template <typename Append>
+    bool leafByCount(std::uint32_t id, std::uint32_t n, int depth, Append&& append) {
         if (n <= static_cast<std::uint32_t>(opt_.leafSize)) {
-            makeLeaf(id, prims(), LeafReason::FewPrimitives, depth);
+            makeLeaf(id, LeafReason::FewPrimitives, depth, append);
             return true;
         }
         if (depth >= maxDepth_) {
-            makeLeaf(id, prims(), LeafReason::MaxDepth, depth);
+            makeLeaf(id, LeafReason::MaxDepth, depth, append);
             return true;
         }
         return false;
@@ -702,12 +753,9 @@ class KdBuilder {
     void buildSah(std::vector<SplitEvent> events, std::uint32_t n, const Box& box, int depth,
                   std::uint32_t parent) {
         const std::uint32_t id = openNode(box, depth, n, parent);
-        const auto nodePrims = [&] {
-            std::vector<std::uint32_t> prims;
-            prims.reserve(n);
+        const auto nodePrims = [&](std::vector<std::uint32_t>& out) {
             for (const SplitEvent& e : events)
-                if (e.axis == 0 && e.type != EventType::End) prims.push_back(e.prim);
-            return prims;
+                if (e.axis == 0 && e.type != EventType::End) out.push_back(e.prim);
         };
         if (leafByCount(id, n, depth, nodePrims)) return;
 
@@ -764,8 +812,8 @@ class KdBuilder {
                 nl += starts + planars;
             }
         }
-        if (bestAxis < 0) return makeLeaf(id, nodePrims(), LeafReason::NoSplit, depth);
-        if (!(bestCost < leafCost)) return makeLeaf(id, nodePrims(), LeafReason::SahCheaper, depth);
+        if (bestAxis < 0) return makeLeaf(id, LeafReason::NoSplit, depth, nodePrims);
+        if (!(bestCost < leafCost)) return makeLeaf(id, LeafReason::SahCheaper, depth, nodePrims);
 
         // Which side each primitive goes to, read off its events on the chosen axis.
         for (const SplitEvent& e : events) side_[e.prim] = Side::Both;
@@ -841,7 +889,7 @@ class KdBuilder {
                      std::uint32_t parent) {
         const auto n = static_cast<std::uint32_t>(prims.size());
         const std::uint32_t id = openNode(box, depth, n, parent);
-        if (leafByCount(id, n, depth, [&] { return prims; })) return;
+        if (leafByCount(id, n, depth, allOf(prims))) return;
 
         const int axis = box.longestAxis();
         double pos;
@@ -855,7 +903,7 @@ class KdBuilder {
             pos = centres[n / 2];
         }
         if (!(pos > box.lo[axis] && pos < box.hi[axis]))
-            return makeLeaf(id, std::move(prims), LeafReason::NoSplit, depth);
+            return makeLeaf(id, LeafReason::NoSplit, depth, allOf(prims));
 
         // Each primitive goes to every side its clipped part reaches (one flat in the plane, both).
         const auto [boxL, boxR] = box.splitAt(axis, pos);
@@ -880,8 +928,7 @@ class KdBuilder {
         const double cost = sahCost(opt_.cTrav, opt_.cIsect, opt_.emptyBonus, pl, pr, nl, nr);
         if constexpr (Rec::kEnabled)
             rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nl, nr, pos, pl, pr, cost});
-        if (nl == n && nr == n)
-            return makeLeaf(id, std::move(prims), LeafReason::NoProgress, depth);
+        if (nl == n && nr == n) return makeLeaf(id, LeafReason::NoProgress, depth, allOf(prims));
         prims = {};
         split(id, axis, pos, cost, opt_.cIsect * n);
         const double fl = double(nl) / double(nl + nr);
