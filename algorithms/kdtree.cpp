@@ -60,6 +60,73 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // node's cost, and the sweep would spend a level of the depth limit on it at nearly every node.
 constexpr double kMinEmptySlab = 1e-6;
 constexpr int kMaxDepthCap = 60;  // the traversal stack holds one entry per level
+
+/// A subtree built on another thread, in arrays of its own. It is attached where its parent's
+/// right child goes and copied into the tree once, when the whole tree is built: splicing it
+/// into its parent's arrays at every level of nested tasks copied each node several times.
+struct KdPiece;
+struct KdAttached {
+    std::uint32_t parent;  // the node whose right child the piece is
+    std::uint32_t nodeAt;  // the node count when it was attached: it goes before that node
+    std::uint32_t idAt;    // the id count then
+    std::unique_ptr<KdPiece> piece;
+};
+struct KdPiece {
+    std::vector<KdNode> nodes;
+    std::vector<std::uint32_t> ids;
+    std::vector<KdAttached> attached;          // in the order they were attached
+    std::size_t totalNodes = 0, totalIds = 0;  // with everything attached (sizeUp)
+};
+
+void sizeUp(KdPiece& piece) {
+    piece.totalNodes = piece.nodes.size();
+    piece.totalIds = piece.ids.size();
+    for (KdAttached& a : piece.attached) {
+        sizeUp(*a.piece);
+        piece.totalNodes += a.piece->totalNodes;
+        piece.totalIds += a.piece->totalIds;
+    }
+}
+
+/// Copies `piece` and what is attached to it into the tree's arrays from nodeBase and idBase,
+/// in the order one thread would have made them: a node or id lands after every piece
+/// attached before it was made.
+void place(const KdPiece& piece, KdNode* nodes, std::uint32_t* ids, std::size_t nodeBase,
+           std::size_t idBase) {
+    const std::vector<KdAttached>& attached = piece.attached;
+    // shiftN[a], shiftI[a]: nodes and ids of the first a pieces attached.
+    std::vector<std::size_t> shiftN(attached.size() + 1), shiftI(attached.size() + 1);
+    for (std::size_t a = 0; a < attached.size(); ++a) {
+        shiftN[a + 1] = shiftN[a] + attached[a].piece->totalNodes;
+        shiftI[a + 1] = shiftI[a] + attached[a].piece->totalIds;
+    }
+    // How many pieces were attached before local node i (or id i) was made.
+    const auto before = [&](std::uint32_t i, std::uint32_t KdAttached::*at) {
+        return static_cast<std::size_t>(
+            std::partition_point(attached.begin(), attached.end(),
+                                 [&](const KdAttached& a) { return a.*at <= i; }) -
+            attached.begin());
+    };
+    std::size_t a = 0;
+    for (std::uint32_t i = 0; i < piece.nodes.size(); ++i) {
+        while (a < attached.size() && attached[a].nodeAt <= i) ++a;
+        KdNode node = piece.nodes[i];
+        node.index = static_cast<std::uint32_t>(
+            node.leaf() ? idBase + node.index + shiftI[a]
+                        : nodeBase + node.index + shiftN[before(node.index, &KdAttached::nodeAt)]);
+        nodes[nodeBase + i + shiftN[a]] = node;
+    }
+    for (std::uint32_t i = 0; i < piece.ids.size(); ++i)
+        ids[idBase + i + shiftI[before(i, &KdAttached::idAt)]] = piece.ids[i];
+    tbb::parallel_for(std::size_t(0), attached.size(), [&](std::size_t k) {
+        const KdAttached& at = attached[k];
+        const std::size_t where = nodeBase + at.nodeAt + shiftN[k];
+        const std::size_t parent =
+            nodeBase + at.parent + shiftN[before(at.parent, &KdAttached::nodeAt)];
+        nodes[parent].index = static_cast<std::uint32_t>(where);
+        place(*at.piece, nodes, ids, where, idBase + at.idAt + shiftI[k]);
+    });
+}
 }  // namespace
 
 std::optional<SplitMethod> parseSplitMethod(std::string_view s) {
@@ -82,27 +149,28 @@ class KdBuilder {
     static constexpr int N = Prims::N;
     using Box = BoxN<N>;
 
-    KdBuilder(const Prims& prims, const KdTreeOptions& opt, int maxDepth, Rec& rec,
-              std::vector<KdNode>& nodes, std::vector<std::uint32_t>& ids, TreeStats& stats)
+    KdBuilder(const Prims& prims, const KdTreeOptions& opt, int maxDepth, Rec& rec, KdPiece& piece,
+              TreeStats& stats)
         : prims_(prims),
           opt_(opt),
           maxDepth_(maxDepth),
           rec_(rec),
-          nodes_(nodes),
-          ids_(ids),
+          nodes_(piece.nodes),
+          ids_(piece.ids),
+          attached_(piece.attached),
           stats_(stats),
           progress_(opt.progress) {}
 
-    /// A builder for one subtree on another thread: its own nodes, ids and stats (spliced into
-    /// the parent's afterwards), the parent's primitive bounds, no progress reports.
-    KdBuilder(const KdBuilder& parent, std::vector<KdNode>& nodes, std::vector<std::uint32_t>& ids,
-              TreeStats& stats)
+    /// A builder for one subtree on another thread: its own piece and stats (attached to the
+    /// parent's afterwards), the parent's primitive bounds, no progress reports.
+    KdBuilder(const KdBuilder& parent, KdPiece& piece, TreeStats& stats)
         : prims_(parent.prims_),
           opt_(parent.opt_),
           maxDepth_(parent.maxDepth_),
           rec_(parent.rec_),
-          nodes_(nodes),
-          ids_(ids),
+          nodes_(piece.nodes),
+          ids_(piece.ids),
+          attached_(piece.attached),
           stats_(stats),
           primBounds_(parent.primBounds_),
           progress_(noProgress_),
@@ -627,14 +695,13 @@ class KdBuilder {
         const auto nL = static_cast<std::uint32_t>(nl), nR = static_cast<std::uint32_t>(nr);
         constexpr std::size_t kParallelAbove = 4096;
         if (fast && !Rec::kEnabled && nr > kParallelAbove) {
-            // The right subtree on another core, into its own arrays; spliced in after. Its
+            // The right subtree on another core, into a piece of its own, attached after. Its
             // references stay where they are until this frame returns.
-            std::vector<KdNode> subNodes;
-            std::vector<std::uint32_t> subIds;
+            auto piece = std::make_unique<KdPiece>();
             TreeStats subStats;
             tbb::task_group group;
             group.run([&] {
-                KdBuilder sub(*this, subNodes, subIds, subStats);
+                KdBuilder sub(*this, *piece, subStats);
                 sub.descend(right, nR, binsR, boxR, depth + 1, id);
             });
             try {
@@ -644,7 +711,7 @@ class KdBuilder {
                 throw;
             }
             group.wait();
-            splice(id, subNodes, subIds, subStats);
+            attach(id, std::move(piece), subStats);
             progress_.child(1 - fl, [&] { progress_.leafDone(); });
             return;
         }
@@ -653,18 +720,11 @@ class KdBuilder {
         progress_.child(1 - fl, [&] { descend(right, nR, binsR, boxR, depth + 1, id); });
     }
 
-    /// Appends a subtree built apart as node `parent`'s right child: its node and id indices
-    /// shift by where they land.
-    void splice(std::uint32_t parent, const std::vector<KdNode>& subNodes,
-                const std::vector<std::uint32_t>& subIds, const TreeStats& subStats) {
-        const auto nodeBase = static_cast<std::uint32_t>(nodes_.size());
-        const auto idBase = static_cast<std::uint32_t>(ids_.size());
-        nodes_[parent].index = nodeBase;
-        for (KdNode node : subNodes) {
-            node.index += node.leaf() ? idBase : nodeBase;
-            nodes_.push_back(node);
-        }
-        ids_.insert(ids_.end(), subIds.begin(), subIds.end());
+    /// A subtree built apart becomes node `parent`'s right child, where the next node would go
+    /// (place() copies it there once the tree is done).
+    void attach(std::uint32_t parent, std::unique_ptr<KdPiece> piece, const TreeStats& subStats) {
+        attached_.push_back({parent, static_cast<std::uint32_t>(nodes_.size()),
+                             static_cast<std::uint32_t>(ids_.size()), std::move(piece)});
         stats_.leaves += subStats.leaves;
         stats_.emptyLeaves += subStats.emptyLeaves;
         stats_.maxDepth = std::max(stats_.maxDepth, subStats.maxDepth);
@@ -943,6 +1003,7 @@ class KdBuilder {
     Rec& rec_;
     std::vector<KdNode>& nodes_;
     std::vector<std::uint32_t>& ids_;
+    std::vector<KdAttached>& attached_;
     TreeStats& stats_;
     std::vector<Box> ownBounds_;
     const std::vector<Box>* primBounds_ = nullptr;
@@ -1013,8 +1074,18 @@ void KdTree<Prims>::build(Rec& rec) {
             return a;
         });
     if (n == 0) bounds_ = BoxN<N>{VecN<N, double>(0.0), VecN<N, double>(0.0)};
-    KdBuilder<Prims, Rec> builder(prims_, options_, maxDepth_, rec, nodes_, primIds_, stats_);
+    KdPiece root;
+    KdBuilder<Prims, Rec> builder(prims_, options_, maxDepth_, rec, root, stats_);
     builder.run(bounds_);
+    if (root.attached.empty()) {
+        nodes_ = std::move(root.nodes);
+        primIds_ = std::move(root.ids);
+    } else {
+        sizeUp(root);
+        nodes_.resize(root.totalNodes);
+        primIds_.resize(root.totalIds);
+        place(root, nodes_.data(), primIds_.data(), 0, 0);
+    }
     stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
     stats_.references = primIds_.size();
     stats_.sahCost =
