@@ -3,6 +3,7 @@
 #include "raystep/fast_prims.h"
 #include "raystep/mailbox.h"
 #include "raystep/names.h"
+#include "raystep/round_outward.h"
 #include "raystep/scene2d.h"
 
 #include <tbb/blocked_range.h>
@@ -212,43 +213,15 @@ class KdBuilder {
     struct alignas(16) Ref {
         Ref() = default;
         Ref(std::uint32_t p, const Box& b) : prim(p) {
-            for (int a = 0; a < N; ++a) {
-                edge[a] = roundDown(b.lo[a]);
-                edge[N + a] = roundUp(b.hi[a]);
-            }
+            double bounds[2 * N];
+            for (int a = 0; a < N; ++a) bounds[a] = b.lo[a], bounds[N + a] = b.hi[a];
+            roundOutward<N>(bounds, edge.data());
         }
         float lo(int axis) const { return edge[axis]; }
         float hi(int axis) const { return edge[N + axis]; }
         // Left uninitialized by Ref(): RefStack allocates without writing.
         std::array<float, 2 * N> edge;  // lo[0..N), then hi[0..N)
         std::uint32_t prim;
-
-        // Branch-free: whether float rounding went the wrong way is a coin toss per edge,
-        // and a mispredicted branch for each of the 2N edges cost more than the rest of the Ref.
-        static float roundDown(double x) {
-            const auto f = static_cast<float>(x);
-            return pick(double(f) > x, stepDown(std::bit_cast<std::uint32_t>(f)), f);
-        }
-        static float roundUp(double x) {
-            const auto f = static_cast<float>(x);
-            return pick(double(f) < x, stepUp(std::bit_cast<std::uint32_t>(f)), f);
-        }
-        /// `stepped` if `wrongWay`, else `f`, selected with a mask (the compiler branched).
-        static float pick(bool wrongWay, std::uint32_t stepped, float f) {
-            const std::uint32_t mask = 0u - static_cast<std::uint32_t>(wrongWay);
-            return std::bit_cast<float>((stepped & mask) |
-                                        (std::bit_cast<std::uint32_t>(f) & ~mask));
-        }
-        /// The bit pattern of the neighbouring float of finite `bits` below or above it: one
-        /// step of the pattern (std::nextafter is a library call, and this runs for every clip).
-        static std::uint32_t stepDown(std::uint32_t bits) {
-            if (bits == 0) return 0x80000001u;        // +0 -> -denorm_min
-            return bits >> 31 ? bits + 1 : bits - 1;  // negative: one more in magnitude
-        }
-        static std::uint32_t stepUp(std::uint32_t bits) {
-            if ((bits & 0x7fffffffu) == 0) return 1u;  // +-0 -> +denorm_min
-            return bits >> 31 ? bits - 1 : bits + 1;
-        }
     };
 
     /// One thread's references as a stack: a node's children are written above its own and

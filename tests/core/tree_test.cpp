@@ -4,6 +4,7 @@
 #include "meshes.h"
 #include "raystep/accel.h"
 #include "raystep/rng.h"
+#include "raystep/round_outward.h"
 #include "raystep/scene2d.h"
 #include "raystep/scene_loader.h"
 #include "raystep/trace_io.h"
@@ -12,7 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <functional>
+#include <limits>
 
 namespace raystep {
 namespace {
@@ -35,6 +39,80 @@ double recomputeKdCost(const KdTree3& t, std::uint32_t id, Vec3 lo, Vec3 hi) {
     const double a = surface(lo, hi);
     return o.cTrav + surface(lo, midHi) / a * recomputeKdCost(t, id + 1, lo, midHi) +
            surface(midLo, hi) / a * recomputeKdCost(t, n.index, midLo, hi);
+}
+
+/// The float at or below (down) or at or above x, by std::nextafter: the reference for
+/// roundOutward, which steps bit patterns two at a time.
+float outwardByNextafter(double x, bool down) {
+    const auto f = static_cast<float>(x);
+    const float inf = std::numeric_limits<float>::infinity();
+    if (down && double(f) > x) return std::nextafter(f, -inf);
+    if (!down && double(f) < x) return std::nextafter(f, inf);
+    return f;
+}
+
+template <int N>
+void expectOutwardAt(double x, int slot) {
+    double in[2 * N];
+    for (int i = 0; i < 2 * N; ++i) in[i] = 0.5;  // the other edges: a float, kept
+    in[slot] = x;
+    float out[2 * N];
+    roundOutward<N>(in, out);
+    const float want = outwardByNextafter(x, slot < N);
+    // Bit patterns: -0 and +0 differ, and NaN is compared too.
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(out[slot]), std::bit_cast<std::uint32_t>(want))
+        << "x = " << x << " in slot " << slot << " of " << 2 * N << ": " << out[slot] << " against "
+        << want;
+    for (int i = 0; i < 2 * N; ++i)
+        if (i != slot) EXPECT_EQ(out[i], 0.5f);
+}
+
+TEST(RoundOutward, MatchesNextafterAtTheExtremes) {
+    const double fmax = std::numeric_limits<float>::max();
+    const double fmin = std::numeric_limits<float>::min();
+    const double dmin = std::numeric_limits<float>::denorm_min();
+    std::vector<double> xs = {0.0,
+                              -0.0,
+                              1.0,
+                              -2.5,
+                              1.0 + std::ldexp(1.0, -30),
+                              -(1.0 + std::ldexp(1.0, -30)),
+                              1e-50,
+                              -1e-50,
+                              dmin,
+                              -dmin,
+                              dmin / 3,
+                              -dmin / 3,
+                              dmin * 1.5,
+                              fmin,
+                              -fmin,
+                              fmin * (1 - 1e-9),
+                              fmax,
+                              -fmax,
+                              fmax * (1 + 1e-12),
+                              -fmax * (1 + 1e-12),
+                              1e39,
+                              -1e39,
+                              std::numeric_limits<double>::infinity(),
+                              -std::numeric_limits<double>::infinity(),
+                              0.1,
+                              -0.1,
+                              1.0 / 3.0};
+    Pcg32 rng(20261122, 7);
+    for (int k = 0; k < 4000; ++k) {
+        // Every exponent a float has and beyond, both signs, most not floats.
+        const double x =
+            std::ldexp(1.0 + rng.uniform(), static_cast<int>(rng.uniform() * 300) - 150);
+        xs.push_back(rng.uniform() < 0.5 ? x : -x);
+    }
+    for (const double x : xs) {
+        for (int slot = 0; slot < 6; ++slot) expectOutwardAt<3>(x, slot);
+        for (int slot = 0; slot < 4; ++slot) expectOutwardAt<2>(x, slot);
+    }
+    double nan[6] = {std::nan(""), 0, 0, 0, 0, 0};
+    float out[6];
+    roundOutward<3>(nan, out);
+    EXPECT_TRUE(std::isnan(out[0]));
 }
 
 TEST(KdTree, SahCostEqualsARecomputation) {
