@@ -331,12 +331,16 @@ class KdBuilder {
 
       public:
         Binner(const Box& box, Bins<B>& bins) : bins_(bins) {
+            std::array<float, N> axisLo, axisScale;  // one division per axis, not per lane
+            for (int axis = 0; axis < N; ++axis) {
+                const double width = box.hi[axis] - box.lo[axis];
+                axisLo[axis] = static_cast<float>(box.lo[axis]);
+                axisScale[axis] = width > 0.0 ? static_cast<float>(Fine / width) : 0.0f;
+            }
             std::array<float, 8> lo{}, scale{};
             for (int i = 0; i < 8; ++i) {
-                const int axis = edgeAt(i) % N;  // lane i reads edge edgeAt(i)
-                const double width = box.hi[axis] - box.lo[axis];
-                lo[i] = static_cast<float>(box.lo[axis]);
-                scale[i] = width > 0.0 ? static_cast<float>(Fine / width) : 0.0f;
+                lo[i] = axisLo[edgeAt(i) % N];  // lane i reads edge edgeAt(i)
+                scale[i] = axisScale[edgeAt(i) % N];
             }
             for (int v = 0; v < kLoads; ++v) {
                 lo_[v] = _mm_loadu_ps(&lo[4 * v]);
@@ -569,11 +573,12 @@ class KdBuilder {
         // Which side of the plane a reference lies on: wholly below (or flat in the plane: left,
         // as the sweep), wholly above, or across it.
         enum : int { kLeft, kRight, kAcross };
-        const auto sideOf = [&](const Ref& r) {
-            const double lo = r.lo(bestAxis), hi = r.hi(bestAxis);
-            if (hi < bestPos || (hi == bestPos && lo < bestPos) || (lo == hi && lo == bestPos))
-                return kLeft;
-            return lo >= bestPos ? kRight : kAcross;
+        const int axis = bestAxis;  // copies the loops keep in registers
+        const double pos = bestPos;
+        const auto sideOf = [axis, pos](const Ref& r) {
+            const double lo = r.lo(axis), hi = r.hi(axis);
+            if (hi < pos || (hi == pos && lo < pos) || (lo == hi && lo == pos)) return kLeft;
+            return lo >= pos ? kRight : kAcross;
         };
         // Partitions [begin, end) into outL and outR (room for one per reference on each side),
         // counting each child's bins on the way, while the reference is at hand.
