@@ -129,7 +129,9 @@ class ClipPolygon {
     }
     /// Keeps the part with p[axis] >= plane (above) or <= plane. A plane the polygon's bounds
     /// lie inside is skipped: in a node much larger than the triangle, most of the six are.
-    void cut(int axis, double plane, bool above) {
+    /// The axis and side are template arguments: p[axis] then needs no index arithmetic.
+    template <int axis, bool above>
+    void cut(double plane) {
         if (n_ == 0 || (above ? lo_[axis] >= plane : hi_[axis] <= plane)) return;
         if (above ? hi_[axis] < plane : lo_[axis] > plane) {
             n_ = 0;
@@ -139,19 +141,30 @@ class ClipPolygon {
         const auto& in = buf_[cur_];
         auto& out = buf_[1 - cur_];
         std::size_t m = 0;
+        P lo, hi;  // the bounds of what is kept, on the way
+        lo.fill(kInfinity), hi.fill(-kInfinity);
+        const auto keep = [&](const P& p) {
+            out[m++] = p;
+            for (int a = 0; a < 3; ++a)
+                lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+        };
+        bool pIn = inside(in[0]);
         for (std::size_t i = 0; i < n_; ++i) {
-            const P& p = in[i];
             const P& q = in[i + 1 == n_ ? 0 : i + 1];
-            if (inside(p)) out[m++] = p;
-            if (inside(p) != inside(q)) out[m++] = crossing(p, q, axis, plane);
+            const bool qIn = inside(q);
+            if (pIn) keep(in[i]);
+            if (pIn != qIn) keep(crossing<axis>(in[i], q, plane));
+            pIn = qIn;
         }
         n_ = m;
         cur_ = 1 - cur_;
-        updateBounds(out);
+        lo_ = lo;
+        hi_ = hi;
     }
     /// The bounds of the parts on each side of the plane axis = pos, each side widened by `pad`
     /// (one pass over the edges: only the bounds are needed, not the two polygons).
-    std::pair<BoxN<3>, BoxN<3>> splitBounds(int axis, double pos, double pad) const {
+    template <int axis>
+    std::pair<BoxN<3>, BoxN<3>> splitBounds(double pos, double pad) const {
         const double planeL = pos + pad, planeR = pos - pad;
         const auto& v = buf_[cur_];
         P lLo, lHi, rLo, rHi;
@@ -160,15 +173,17 @@ class ClipPolygon {
             for (int a = 0; a < 3; ++a)
                 lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
         };
+        bool pLeft = n_ > 0 && v[0][axis] <= planeL, pRight = n_ > 0 && v[0][axis] >= planeR;
         for (std::size_t i = 0; i < n_; ++i) {
             const P& p = v[i];
             const P& q = v[i + 1 == n_ ? 0 : i + 1];
-            if (p[axis] <= planeL) extend(lLo, lHi, p);
-            if (p[axis] >= planeR) extend(rLo, rHi, p);
-            if ((p[axis] <= planeL) != (q[axis] <= planeL))
-                extend(lLo, lHi, crossing(p, q, axis, planeL));
-            if ((p[axis] >= planeR) != (q[axis] >= planeR))
-                extend(rLo, rHi, crossing(p, q, axis, planeR));
+            const bool qLeft = q[axis] <= planeL, qRight = q[axis] >= planeR;
+            if (pLeft) extend(lLo, lHi, p);
+            if (pRight) extend(rLo, rHi, p);
+            if (pLeft != qLeft) extend(lLo, lHi, crossing<axis>(p, q, planeL));
+            if (pRight != qRight) extend(rLo, rHi, crossing<axis>(p, q, planeR));
+            pLeft = qLeft;
+            pRight = qRight;
         }
         return {box(lLo, lHi), box(rLo, rHi)};
     }
@@ -176,7 +191,8 @@ class ClipPolygon {
 
   private:
     /// Where edge pq crosses the plane, exactly on it.
-    static P crossing(const P& p, const P& q, int axis, double plane) {
+    template <int axis>
+    static P crossing(const P& p, const P& q, double plane) {
         const double t = (plane - p[axis]) / (q[axis] - p[axis]);
         P x;
         for (int a = 0; a < 3; ++a) x[a] = p[a] + (q[a] - p[a]) * t;
@@ -204,10 +220,12 @@ class ClipPolygon {
 ClipPolygon clipToBox(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
     const Vec3 pad = 1e-6 * glm::max(box.diagonal(), Vec3(0.0));
     ClipPolygon poly(a, b, c);
-    for (int axis = 0; axis < 3; ++axis) {
-        poly.cut(axis, box.lo[axis] - pad[axis], true);
-        poly.cut(axis, box.hi[axis] + pad[axis], false);
-    }
+    poly.cut<0, true>(box.lo[0] - pad[0]);
+    poly.cut<0, false>(box.hi[0] + pad[0]);
+    poly.cut<1, true>(box.lo[1] - pad[1]);
+    poly.cut<1, false>(box.hi[1] + pad[1]);
+    poly.cut<2, true>(box.lo[2] - pad[2]);
+    poly.cut<2, false>(box.hi[2] + pad[2]);
     return poly;
 }
 }  // namespace
@@ -219,7 +237,10 @@ BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const Bo
 std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c,
                                                 const BoxN<3>& box, int axis, double pos) {
     const double pad = 1e-6 * std::max(box.hi[axis] - box.lo[axis], 0.0);
-    auto [l, r] = clipToBox(a, b, c, box).splitBounds(axis, pos, pad);
+    const ClipPolygon poly = clipToBox(a, b, c, box);
+    auto [l, r] = axis == 0   ? poly.splitBounds<0>(pos, pad)
+                  : axis == 1 ? poly.splitBounds<1>(pos, pad)
+                              : poly.splitBounds<2>(pos, pad);
     const auto [boxL, boxR] = box.splitAt(axis, pos);
     return {l.clippedTo(boxL), r.clippedTo(boxR)};
 }
