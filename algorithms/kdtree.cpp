@@ -321,7 +321,7 @@ class KdBuilder {
 
     /// Counts references into the bins of `box`: edge j of a reference falls in bin
     /// (edge - lo) * scale, clamped to [0, Fine), of Fine equal bins, merged in runs of Fine / B
-    /// (a small node's 16 or 8 bins are the fast build's 32 in pairs or fours, as if merged).
+    /// (a small node's 16 bins are the fast build's 32 in pairs, so both give the same tree).
     /// In float, as the references are: rounding only moves an edge into a neighbouring bin,
     /// which changes a candidate's estimated cost, never where a primitive goes (the partition
     /// reads the references themselves).
@@ -392,20 +392,16 @@ class KdBuilder {
         Bins<B>& bins_;
         __m128 lo_[kLoads], scale_[kLoads], min_[kLoads], max_[kLoads];
     };
-    // Bins per axis: the fast build's 32, and fewer in its small nodes, where the bins' fixed
-    // cost dominates: 16 (the 32 in pairs) from 64 references down, 8 from 16 down (measured on
-    // the 66K knot: 11% and then 4% fewer instructions, SAH cost +1% and then +0.1%). The exact
-    // build's binned top levels (--bin-above): 256.
+    // Bins per axis: the fast build's 32, and 16 (the 32 in pairs) in its nodes of at most
+    // kSmallNode references, where the bins' fixed cost dominates (measured: 11% fewer
+    // instructions, SAH cost +1%); the exact build's binned top levels (--bin-above) 256.
     static constexpr int kFastBins = 32;
-    static constexpr int kMinBins = 8;
+    static constexpr int kSmallBins = kFastBins / 2;
+    static constexpr std::uint32_t kSmallNode = 64;
     static constexpr int kExactBins = 256;
-    /// The most references a fast node may have to be binned in half of b bins.
-    static constexpr std::uint32_t halveAt(int b) {
-        return b == kFastBins ? 64 : 16;
-    }
-    /// How finely a node of b bins counts its children: as 32, merged (children are smaller).
+    /// How finely a node of B bins counts its children: a small node's children are small too.
     static constexpr int fineBins(int b) {
-        return b >= kMinBins && b < kFastBins ? kFastBins : b;
+        return b == kSmallBins ? kFastBins : b;
     }
     // Fast build: nodes above this many references are partitioned and binned by all cores,
     // in shares of kChunk references.
@@ -465,15 +461,15 @@ class KdBuilder {
         descend(refs, n, bins, box, 0, kNoId);
     }
 
-    /// buildBinned, in half the bins (counted as pairs) while the fast build's node is small.
+    /// buildBinned, in 16 bins (the 32 counted, in pairs) once the fast build's node is small.
     template <int B>
     void descend(const Ref* refs, std::uint32_t n, const Bins<B>& bins, const Box& box, int depth,
                  std::uint32_t parent) {
-        if constexpr (B > kMinBins && B <= kFastBins) {
-            if (opt_.build == KdBuild::Fast && n <= halveAt(B)) {
-                Bins<B / 2> pairs;
+        if constexpr (B == kFastBins) {
+            if (opt_.build == KdBuild::Fast && n <= kSmallNode) {
+                Bins<kSmallBins> pairs;
                 for (int axis = 0; axis < N; ++axis) {
-                    for (int k = 0; k < B / 2; ++k) {
+                    for (int k = 0; k < kSmallBins; ++k) {
                         pairs.starts[axis][k] =
                             bins.starts[axis][2 * k] + bins.starts[axis][2 * k + 1];
                         pairs.ends[axis][k] = bins.ends[axis][2 * k] + bins.ends[axis][2 * k + 1];
@@ -481,7 +477,7 @@ class KdBuilder {
                 }
                 pairs.minLo = bins.minLo;
                 pairs.maxHi = bins.maxHi;
-                return descend(refs, n, pairs, box, depth, parent);
+                return buildBinned(refs, n, pairs, box, depth, parent);
             }
         }
         buildBinned(refs, n, bins, box, depth, parent);

@@ -45,7 +45,7 @@ void kdTreeBuild(benchmark::State& state, const KdTreeOptions& options) {
 void BM_KdTreeSahBuild(benchmark::State& state) {
     kdTreeBuild(state, KdTreeOptions{});
 }
-// The same with --kd-build fast: 8-32 bins at every node, perfect splits, all cores
+// The same with --kd-build fast: 16-32 bins at every node, perfect splits, all cores
 // (timed on the wall clock: UseRealTime below).
 void BM_KdTreeFastBuild(benchmark::State& state) {
     KdTreeOptions o;

@@ -22,7 +22,7 @@ for b in data["benchmarks"]:
 
 fig, ax = plt.subplots(figsize=(6.4, 4.2))
 labels = {"BM_KdTreeSahBuild": "kd-tree, SAH exact (sorted split events, Wald & Havran)",
-          "BM_KdTreeFastBuild": "kd-tree, SAH fast (8-32 bins, float references, 2 threads)",
+          "BM_KdTreeFastBuild": "kd-tree, SAH fast (16-32 bins, float references, 2 threads)",
           "BM_BvhSahBuild": "BVH, binned SAH"}
 for name, pts in series.items():
     pts.sort()

@@ -23,7 +23,7 @@ std::string_view name(SplitMethod m);
 
 /// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
 /// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over
-/// 8-32 bins per axis at every node (still perfect splits), float bounds rounded outward, big
+/// 16-32 bins per axis at every node (still perfect splits), float bounds rounded outward, big
 /// nodes and subtrees on all cores: a tree 3-23% dearer on the knot meshes (cheaper on the
 /// stadium: the greedy sweep is not optimal), built 11-13x faster from 262K triangles up
 /// (docs/performance.md).

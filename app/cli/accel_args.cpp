@@ -24,10 +24,9 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
     cmd->add_option("--bin-above", a.binAbove,
                     "kd-tree SAH: nodes of more primitives pick among 256 bins per axis "
                     "(default: the exact event sweep everywhere)");
-    cmd->add_option(
-           "--kd-build", a.kdBuild,
-           "kd-tree SAH build: exact (every split event, perfect splits) or fast (8-32 bins "
-           "per axis, all cores)")
+    cmd->add_option("--kd-build", a.kdBuild,
+                    "kd-tree SAH build: exact (every split event, perfect splits) or fast (32 bins "
+                    "per axis, all cores)")
         ->capture_default_str();
     cmd->add_option("--grid-lambda", a.gridLambda,
                     "Grid: about this many primitives a cell (Cleary-Wyvill rule)")

@@ -115,7 +115,7 @@ TEST_P(EveryScene, KdTreeFindsWhatBruteForceFinds) {
                                (mailbox ? "" : " without mailbox"));
         }
     }
-    // The other SAH builds: 256 bins above 64 primitives, and the fast build (8-32 bins at every
+    // The other SAH builds: 256 bins above 64 primitives, and the fast build (32 bins at every
     // node, subtrees on other threads for the stadium).
     AccelOptions binned, fast;
     binned.kdtree.exactBelow = 64;
