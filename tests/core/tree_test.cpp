@@ -63,8 +63,11 @@ void expectOutwardAt(double x, int slot) {
     EXPECT_EQ(std::bit_cast<std::uint32_t>(out[slot]), std::bit_cast<std::uint32_t>(want))
         << "x = " << x << " in slot " << slot << " of " << 2 * N << ": " << out[slot] << " against "
         << want;
-    for (int i = 0; i < 2 * N; ++i)
-        if (i != slot) EXPECT_EQ(out[i], 0.5f);
+    for (int i = 0; i < 2 * N; ++i) {
+        if (i != slot) {
+            EXPECT_EQ(out[i], 0.5f);
+        }
+    }
 }
 
 TEST(RoundOutward, MatchesNextafterAtTheExtremes) {
