@@ -21,10 +21,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <new>
 
@@ -627,14 +627,23 @@ class KdBuilder {
                 return std::pair{refs + c * kChunk,
                                  refs + std::min<std::size_t>(n, (c + 1) * kChunk)};
             };
-            // Where each share's references go: a straddling one counts on both sides.
+            // Where each share's references go. A straddling one is clipped here too, to count
+            // only the sides it reaches: few straddle at these levels (under 1%), and a gap left
+            // by one that misses a side would have moved every share after it.
             std::vector<std::size_t> atL(chunks + 1), atR(chunks + 1);
             tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
                 std::size_t l = 0, r = 0;
                 for (auto [p, end] = share(c); p != end; ++p) {
                     const int side = sideOf(*p);
-                    l += side != kRight;
-                    r += side != kLeft;
+                    if (side == kAcross) {
+                        const auto [partOnL, partOnR] =
+                            clipToSides(p->prim, box, bestAxis, bestPos);
+                        l += !partOnL.empty();
+                        r += !partOnR.empty();
+                    } else {
+                        l += side == kLeft;
+                        r += side == kRight;
+                    }
                 }
                 atL[c + 1] = l;
                 atR[c + 1] = r;
@@ -652,13 +661,10 @@ class KdBuilder {
                 partitionRange(begin, end, left + atL[c], right + atR[c], partL[c], partR[c],
                                partBinsL[c], partBinsR[c]);
             });
-            // A straddling reference whose clipped part misses a side left a gap there (rare):
-            // the shares after it move down.
+            nl = atL[chunks];
+            nr = atR[chunks];
             for (std::size_t c = 0; c < chunks; ++c) {
-                if (nl != atL[c]) std::memmove(left + nl, left + atL[c], partL[c] * sizeof(Ref));
-                if (nr != atR[c]) std::memmove(right + nr, right + atR[c], partR[c] * sizeof(Ref));
-                nl += partL[c];
-                nr += partR[c];
+                assert(partL[c] == atL[c + 1] - atL[c] && partR[c] == atR[c + 1] - atR[c]);
                 binsL.add(partBinsL[c]);
                 binsR.add(partBinsR[c]);
             }
