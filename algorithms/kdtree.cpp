@@ -407,6 +407,13 @@ class KdBuilder {
     // in shares of kChunk references.
     static constexpr std::uint32_t kParallelNodeAbove = 65536;
     static constexpr std::size_t kChunk = 16384;
+    /// How many shares n references make, and where share c begins and ends.
+    static std::size_t shareCount(std::size_t n) {
+        return (n + kChunk - 1) / kChunk;
+    }
+    static std::pair<std::size_t, std::size_t> shareRange(std::size_t c, std::size_t n) {
+        return {c * kChunk, std::min(n, (c + 1) * kChunk)};
+    }
 
     /// Area of `box` with its extent along `axis` replaced by `width`: the SAH's Area(L) and
     /// Area(R) in closed form, without building the child boxes.
@@ -441,13 +448,12 @@ class KdBuilder {
     /// `parallel`), then buildBinned.
     template <int B>
     void startBinned(Ref* refs, std::uint32_t n, const Box& box, bool parallel) {
-        const std::size_t chunks = (n + kChunk - 1) / kChunk;
+        const std::size_t chunks = shareCount(n);
         std::vector<Bins<B>> part(chunks);
         const auto share = [&](std::size_t c) {
-            const auto begin = static_cast<std::uint32_t>(c * kChunk);
-            const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(n, begin + kChunk));
+            const auto [begin, end] = shareRange(c, n);
             Binner<B> binner(box, part[c]);
-            for (std::uint32_t p = begin; p < end; ++p) {
+            for (auto p = static_cast<std::uint32_t>(begin); p < end; ++p) {
                 refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
                 binner.add(refs[p]);
             }
@@ -622,10 +628,10 @@ class KdBuilder {
             // A big node (the top few levels, before the subtrees keep every core busy): the
             // cores count each share's references on each side, then partition the shares
             // straight into place, their bins added up after.
-            const std::size_t chunks = (n + kChunk - 1) / kChunk;
+            const std::size_t chunks = shareCount(n);
             const auto share = [&](std::size_t c) {
-                return std::pair{refs + c * kChunk,
-                                 refs + std::min<std::size_t>(n, (c + 1) * kChunk)};
+                const auto [begin, end] = shareRange(c, n);
+                return std::pair{refs + begin, refs + end};
             };
             // Where each share's references go. A straddling one is clipped here too, to count
             // only the sides it reaches: few straddle at these levels (under 1%), and a gap left

@@ -119,21 +119,31 @@ namespace {
 /// plain arrays: the clip indexes coordinates by axis, and glm's operator[] is a switch.
 class ClipPolygon {
     using P = std::array<double, 3>;
+    /// Bounds of points, grown one at a time (the polygon's, and each side's in splitBounds).
+    struct Extent {
+        P lo{kInfinity, kInfinity, kInfinity}, hi{-kInfinity, -kInfinity, -kInfinity};
+        void add(const P& p) {
+            for (int a = 0; a < 3; ++a)
+                lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+        }
+        BoxN<3> box() const { return {Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
+    };
 
   public:
     ClipPolygon(const Vec3& a, const Vec3& b, const Vec3& c) : n_(3) {
         const Vec3* v[3] = {&a, &b, &c};
-        for (int i = 0; i < 3; ++i)
+        for (int i = 0; i < 3; ++i) {
             for (int axis = 0; axis < 3; ++axis) buf_[0][i][axis] = (*v[i])[axis];
-        updateBounds(buf_[0]);
+            extent_.add(buf_[0][i]);
+        }
     }
     /// Keeps the part with p[axis] >= plane (above) or <= plane. A plane the polygon's bounds
     /// lie inside is skipped: in a node much larger than the triangle, most of the six are.
     /// The axis and side are template arguments: p[axis] then needs no index arithmetic.
     template <int axis, bool above>
     void cut(double plane) {
-        if (n_ == 0 || (above ? lo_[axis] >= plane : hi_[axis] <= plane)) return;
-        if (above ? hi_[axis] < plane : lo_[axis] > plane) {
+        if (n_ == 0 || (above ? extent_.lo[axis] >= plane : extent_.hi[axis] <= plane)) return;
+        if (above ? extent_.hi[axis] < plane : extent_.lo[axis] > plane) {
             n_ = 0;
             return;
         }
@@ -141,12 +151,10 @@ class ClipPolygon {
         const auto& in = buf_[cur_];
         auto& out = buf_[1 - cur_];
         std::size_t m = 0;
-        P lo, hi;  // the bounds of what is kept, on the way
-        lo.fill(kInfinity), hi.fill(-kInfinity);
+        Extent kept;  // the bounds of what is kept, on the way
         const auto keep = [&](const P& p) {
             out[m++] = p;
-            for (int a = 0; a < 3; ++a)
-                lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+            kept.add(p);
         };
         bool pIn = inside(in[0]);
         for (std::size_t i = 0; i < n_; ++i) {
@@ -158,8 +166,7 @@ class ClipPolygon {
         }
         n_ = m;
         cur_ = 1 - cur_;
-        lo_ = lo;
-        hi_ = hi;
+        extent_ = kept;
     }
     /// The bounds of the parts on each side of the plane axis = pos, each side widened by `pad`
     /// (one pass over the edges: only the bounds are needed, not the two polygons).
@@ -167,27 +174,22 @@ class ClipPolygon {
     std::pair<BoxN<3>, BoxN<3>> splitBounds(double pos, double pad) const {
         const double planeL = pos + pad, planeR = pos - pad;
         const auto& v = buf_[cur_];
-        P lLo, lHi, rLo, rHi;
-        lLo.fill(kInfinity), rLo.fill(kInfinity), lHi.fill(-kInfinity), rHi.fill(-kInfinity);
-        const auto extend = [](P& lo, P& hi, const P& p) {
-            for (int a = 0; a < 3; ++a)
-                lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-        };
+        Extent l, r;
         bool pLeft = n_ > 0 && v[0][axis] <= planeL, pRight = n_ > 0 && v[0][axis] >= planeR;
         for (std::size_t i = 0; i < n_; ++i) {
             const P& p = v[i];
             const P& q = v[i + 1 == n_ ? 0 : i + 1];
             const bool qLeft = q[axis] <= planeL, qRight = q[axis] >= planeR;
-            if (pLeft) extend(lLo, lHi, p);
-            if (pRight) extend(rLo, rHi, p);
-            if (pLeft != qLeft) extend(lLo, lHi, crossing<axis>(p, q, planeL));
-            if (pRight != qRight) extend(rLo, rHi, crossing<axis>(p, q, planeR));
+            if (pLeft) l.add(p);
+            if (pRight) r.add(p);
+            if (pLeft != qLeft) l.add(crossing<axis>(p, q, planeL));
+            if (pRight != qRight) r.add(crossing<axis>(p, q, planeR));
             pLeft = qLeft;
             pRight = qRight;
         }
-        return {box(lLo, lHi), box(rLo, rHi)};
+        return {l.box(), r.box()};
     }
-    BoxN<3> bounds() const { return n_ == 0 ? BoxN<3>{} : box(lo_, hi_); }
+    BoxN<3> bounds() const { return n_ == 0 ? BoxN<3>{} : extent_.box(); }
 
   private:
     /// Where edge pq crosses the plane, exactly on it.
@@ -199,18 +201,9 @@ class ClipPolygon {
         x[axis] = plane;
         return x;
     }
-    static BoxN<3> box(const P& lo, const P& hi) {
-        return {Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
-    }
-    void updateBounds(const std::array<P, 10>& v) {
-        lo_.fill(kInfinity), hi_.fill(-kInfinity);
-        for (std::size_t i = 0; i < n_; ++i)
-            for (int a = 0; a < 3; ++a)
-                lo_[a] = std::min(lo_[a], v[i][a]), hi_[a] = std::max(hi_[a], v[i][a]);
-    }
 
     std::array<std::array<P, 10>, 2> buf_;
-    P lo_, hi_;  // the polygon's bounds
+    Extent extent_;  // the polygon's bounds
     int cur_ = 0;
     std::size_t n_;
 };
