@@ -516,6 +516,8 @@ class KdBuilder {
         const double leafCost = opt_.cIsect * n;
         double bestCost = kInfinity, bestPos = 0.0;
         int bestAxis = -1;
+        // Only the planes at the primitives' extent (emptySide) leave a side with none.
+        enum class Empty { None, Left, Right } bestEmpty = Empty::None;
         const double twoOverAreaC = 2.0 / areaC;
         // A candidate plane with its cost: recorded, and kept if the cheapest so far.
         const auto offer = [&](int axis, double pos, std::uint32_t nl, std::uint32_t nr, double pl,
@@ -527,6 +529,7 @@ class KdBuilder {
                 bestCost = cost;
                 bestPos = pos;
                 bestAxis = axis;
+                bestEmpty = nl == 0 ? Empty::Left : nr == 0 ? Empty::Right : Empty::None;
             }
         };
         for (int axis = 0; axis < N; ++axis) {
@@ -573,6 +576,10 @@ class KdBuilder {
         }
         if (bestAxis < 0) return makeLeaf(id, LeafReason::NoSplit, depth, nodePrims);
         if (!(bestCost < leafCost)) return makeLeaf(id, LeafReason::SahCheaper, depth, nodePrims);
+        if (bestEmpty != Empty::None && cutEmptySpace(refs, n, bins, box, depth, id, bestAxis,
+                                                      bestPos, bestEmpty == Empty::Left, bestCost,
+                                                      leafCost))
+            return;
 
         // The partition counts each child's bins on the way, while the reference is at hand.
         const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
@@ -708,6 +715,66 @@ class KdBuilder {
         progress_.child(fl, [&] { descend(left, nL, binsL, boxL, depth + 1, id); });
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
         progress_.child(1 - fl, [&] { descend(right, nR, binsR, boxR, depth + 1, id); });
+    }
+
+    /// A plane at the primitives' extent (bins.minLo on `axis` if `emptyLeft`, else bins.maxHi)
+    /// keeps every reference on one side, unclipped: that child reads them where they are, and its bins on
+    /// the other axes are the parent's (the same references over the same extent), so only `axis`
+    /// is counted again. Half the fast build's node visits are such cuts on a triangle mesh.
+    /// Returns false, having done nothing, if a flat reference lies in a plane at minLo: the
+    /// partition sends it left, so the left side is not empty.
+    template <int B>
+    bool cutEmptySpace(const Ref* refs, std::uint32_t n, const Bins<B>& bins, const Box& box,
+                       int depth, std::uint32_t id, int axis, double pos, bool emptyLeft,
+                       double cost, double leafCost) {
+        assert(pos == double(emptyLeft ? bins.minLo[axis] : bins.maxHi[axis]));
+        const auto [boxL, boxR] = box.splitAt(axis, pos);
+        const Box& kept = emptyLeft ? boxR : boxL;
+        // The cut axis in the kept box's bins, as Binner<B, fineBins(B)> counts them.
+        constexpr int kFine = fineBins(B);
+        constexpr int kMerge = std::countr_zero(unsigned(kFine / B));
+        const float lo = static_cast<float>(kept.lo[axis]);
+        const double width = kept.hi[axis] - kept.lo[axis];
+        const float scale = width > 0.0 ? static_cast<float>(kFine / width) : 0.0f;
+        const auto binOf = [lo, scale](float edge) {
+            constexpr float kTop = kFine - 0.5f;
+            float x = (edge - lo) * scale;
+            x = x > 0.0f ? x : 0.0f;  // _mm_max_ps(x, 0): 0 for NaN too
+            x = x < kTop ? x : kTop;  // _mm_min_ps(x, top)
+            return static_cast<int>(x) >> kMerge;
+        };
+        Bins<B> keptBins = bins;
+        auto& starts = keptBins.starts[axis];
+        auto& ends = keptBins.ends[axis];
+        starts.fill(0);
+        ends.fill(0);
+        const auto flatPos = static_cast<float>(pos);
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const float rlo = refs[k].lo(axis), rhi = refs[k].hi(axis);
+            if (emptyLeft && rlo == flatPos && rhi == flatPos) return false;
+            ++starts[binOf(rlo)];
+            ++ends[binOf(rhi)];
+        }
+#ifndef NDEBUG
+        Bins<B> check;
+        {
+            Binner<B, kFine> binner(kept, check);
+            for (std::uint32_t k = 0; k < n; ++k) binner.add(refs[k]);
+        }
+        assert(check.starts == keptBins.starts && check.ends == keptBins.ends);
+#endif
+        split(id, axis, pos, cost, leafCost);
+        const Bins<B> none;
+        if (emptyLeft) {
+            progress_.child(0.0, [&] { descend(refs, 0, none, boxL, depth + 1, id); });
+            nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
+            progress_.child(1.0, [&] { descend(refs, n, keptBins, boxR, depth + 1, id); });
+        } else {
+            progress_.child(1.0, [&] { descend(refs, n, keptBins, boxL, depth + 1, id); });
+            nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
+            progress_.child(0.0, [&] { descend(refs, 0, none, boxR, depth + 1, id); });
+        }
+        return true;
     }
 
     /// A subtree built apart becomes node `parent`'s right child, where the next node would go
