@@ -415,6 +415,36 @@ class KdBuilder {
         return {c * kChunk, std::min(n, (c + 1) * kChunk)};
     }
 
+    /// Calls visit(k), in order, for each bin boundary k in [1, B) next to an occupied bin (one a
+    /// reference starts or ends in): across an empty bin NL and NR stay the same and the cost is
+    /// linear in the plane's position, so only those can be the cheapest. Most bins of a small
+    /// node are empty, so the occupied ones are found four at a time, as bits of a mask.
+    template <int B, typename Visit>
+    static void forEachOccupiedBoundary(const std::uint32_t* starts, const std::uint32_t* ends,
+                                        Visit&& visit) {
+        static_assert(B % 4 == 0);
+        const auto load = [](const std::uint32_t* p) {
+            return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+        };
+        std::uint64_t carry = 0;  // the last bin of the previous 64 is occupied
+        for (int first = 0; first < B; first += 64) {
+            const int count = std::min(64, B - first);
+            std::uint64_t occupied = 0;
+            for (int j = 0; j < count; j += 4) {
+                const __m128i any = _mm_or_si128(load(starts + first + j), load(ends + first + j));
+                const int empty = _mm_movemask_ps(
+                    _mm_castsi128_ps(_mm_cmpeq_epi32(any, _mm_setzero_si128())));
+                occupied |= std::uint64_t(~empty & 0xF) << j;
+            }
+            // Boundary k lies between bins k - 1 and k.
+            std::uint64_t next = occupied | (occupied << 1) | carry;
+            carry = occupied >> 63;
+            if (first == 0) next &= ~std::uint64_t(1);                // boundary 0: the node's face
+            if (count < 64) next &= (std::uint64_t(1) << count) - 1;  // boundary B: the other face
+            for (; next != 0; next &= next - 1) visit(first + std::countr_zero(next));
+        }
+    }
+
     /// Area of `box` with its extent along `axis` replaced by `width`: the SAH's Area(L) and
     /// Area(R) in closed form, without building the child boxes.
     static double areaWithWidth(const Box& box, int axis, double width) {
@@ -549,21 +579,18 @@ class KdBuilder {
                                  ((hi - pos) * a + b) * twoOverAreaC};
             };
             std::uint32_t nl = 0, nr = n;
-            for (int k = 1; k < B; ++k) {
+            forEachOccupiedBoundary<B>(st, en, [&](int k) {
+                // The bins skipped since the last boundary were empty: only bin k - 1 counts.
                 nl += st[k - 1];  // started in a bin below this boundary
                 nr -= en[k - 1];  // ended in a bin below it
-                // Across an empty bin NL and NR stay the same and the cost is linear in the
-                // plane's position, so only the boundaries next to an occupied bin can be the
-                // cheapest: the others are skipped (most bins of a small node are empty).
-                if ((st[k - 1] | en[k - 1] | st[k] | en[k]) == 0) continue;
                 const double pos = lo + binWidth * k;
                 // Planes that leave primitives on both sides, strictly inside their extent
                 // (the empty space beyond it is cut at its edge, below).
-                if (nl == 0 || nr == 0 || !(pos > minLo && pos < maxHi)) continue;
+                if (nl == 0 || nr == 0 || !(pos > minLo && pos < maxHi)) return;
                 // sahCost inline (no side is empty, so no bonus): this runs ~50 times a node.
                 const auto [pl, pr] = probabilities(pos);
                 offer(axis, pos, nl, nr, pl, pr, opt_.cTrav + opt_.cIsect * (pl * nl + pr * nr));
-            }
+            });
             // The empty space on either side, cut at the primitives' edge (with the bonus).
             const auto emptySide = [&](double pos, std::uint32_t nl, std::uint32_t nr) {
                 const auto [pl, pr] = probabilities(pos);
