@@ -432,8 +432,8 @@ class KdBuilder {
             std::uint64_t occupied = 0;
             for (int j = 0; j < count; j += 4) {
                 const __m128i any = _mm_or_si128(load(starts + first + j), load(ends + first + j));
-                const int empty = _mm_movemask_ps(
-                    _mm_castsi128_ps(_mm_cmpeq_epi32(any, _mm_setzero_si128())));
+                const int empty =
+                    _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(any, _mm_setzero_si128())));
                 occupied |= std::uint64_t(~empty & 0xF) << j;
             }
             // Boundary k lies between bins k - 1 and k.
@@ -603,9 +603,9 @@ class KdBuilder {
         }
         if (bestAxis < 0) return makeLeaf(id, LeafReason::NoSplit, depth, nodePrims);
         if (!(bestCost < leafCost)) return makeLeaf(id, LeafReason::SahCheaper, depth, nodePrims);
-        if (bestEmpty != Empty::None && cutEmptySpace(refs, n, bins, box, depth, id, bestAxis,
-                                                      bestPos, bestEmpty == Empty::Left, bestCost,
-                                                      leafCost))
+        if (bestEmpty != Empty::None &&
+            cutEmptySpace(refs, n, bins, box, depth, id, bestAxis, bestPos,
+                          bestEmpty == Empty::Left, bestCost, leafCost))
             return;
 
         // The partition counts each child's bins on the way, while the reference is at hand.
@@ -621,35 +621,40 @@ class KdBuilder {
             return lo >= pos ? kRight : kAcross;
         };
         // Partitions [begin, end) into outL and outR (room for one per reference on each side),
-        // counting each child's bins on the way, while the reference is at hand.
-        const auto partitionRange = [&](const Ref* begin, const Ref* end, Ref* outL, Ref* outR,
-                                        std::size_t& nlOut, std::size_t& nrOut, Bins<B>& binsL,
-                                        Bins<B>& binsR) {
+        // counting each child's bins on the way, while the reference is at hand (unless
+        // `countBins` is false).
+        const auto partitionRange = [&](auto countBins, const Ref* begin, const Ref* end, Ref* outL,
+                                        Ref* outR, std::size_t& nlOut, std::size_t& nrOut,
+                                        Bins<B>& binsL, Bins<B>& binsR) {
             Binner<B, fineBins(B)> inL(boxL, binsL), inR(boxR, binsR);
             std::size_t nl = 0, nr = 0;
+            const auto put = [](const Ref& r, Ref* out, std::size_t& count, auto& binner) {
+                out[count++] = r;
+                if constexpr (decltype(countBins)::value) binner.add(r);
+            };
             for (const Ref* r = begin; r != end; ++r) {
                 const int side = sideOf(*r);
                 if (side == kLeft) {
-                    outL[nl++] = *r;
-                    inL.add(*r);
+                    put(*r, outL, nl, inL);
                 } else if (side == kRight) {
-                    outR[nr++] = *r;
-                    inR.add(*r);
+                    put(*r, outR, nr, inR);
                 } else {
                     // Straddles: clipped to each side ("perfect splits"), dropped where it misses.
                     const auto [l, rr] = clipToSides(r->prim, box, bestAxis, bestPos);
-                    if (!l.empty()) {
-                        outL[nl] = Ref(r->prim, l);
-                        inL.add(outL[nl++]);
-                    }
-                    if (!rr.empty()) {
-                        outR[nr] = Ref(r->prim, rr);
-                        inR.add(outR[nr++]);
-                    }
+                    if (!l.empty()) put(Ref(r->prim, l), outL, nl, inL);
+                    if (!rr.empty()) put(Ref(r->prim, rr), outR, nr, inR);
                 }
             }
             nlOut = nl;
             nrOut = nr;
+        };
+        // Children at the depth limit will be leaves, which need no bins (a twentieth of the
+        // node visits on a big mesh, whose leaves mostly end there).
+        const auto partition = [&](auto&&... args) {
+            if (depth + 1 >= maxDepth_)
+                partitionRange(std::false_type{}, args...);
+            else
+                partitionRange(std::true_type{}, args...);
         };
         // The children's references go on top of this thread's stack.
         RefStack& stack = *stack_;
@@ -698,8 +703,8 @@ class KdBuilder {
             std::vector<Bins<B>> partBinsL(chunks), partBinsR(chunks);
             tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
                 const auto [begin, end] = share(c);
-                partitionRange(begin, end, left + atL[c], right + atR[c], partL[c], partR[c],
-                               partBinsL[c], partBinsR[c]);
+                partition(begin, end, left + atL[c], right + atR[c], partL[c], partR[c],
+                          partBinsL[c], partBinsR[c]);
             });
             nl = atL[chunks];
             nr = atR[chunks];
@@ -712,7 +717,7 @@ class KdBuilder {
             // Each reference gives at most one on each side: room for n on each.
             left = stack.push(2 * std::size_t(n));
             right = left + n;
-            partitionRange(refs, refs + n, left, right, nl, nr, binsL, binsR);
+            partition(refs, refs + n, left, right, nl, nr, binsL, binsR);
         }
         split(id, bestAxis, bestPos, bestCost, leafCost);
         const double fl = double(nl) / double(nl + nr);
@@ -745,9 +750,9 @@ class KdBuilder {
     }
 
     /// A plane at the primitives' extent (bins.minLo on `axis` if `emptyLeft`, else bins.maxHi)
-    /// keeps every reference on one side, unclipped: that child reads them where they are, and its bins on
-    /// the other axes are the parent's (the same references over the same extent), so only `axis`
-    /// is counted again. Half the fast build's node visits are such cuts on a triangle mesh.
+    /// keeps every reference on one side, unclipped: that child reads them where they are, and its
+    /// bins on the other axes are the parent's (the same references over the same extent), so only
+    /// `axis` is counted again. Half the fast build's node visits are such cuts on a triangle mesh.
     /// Returns false, having done nothing, if a flat reference lies in a plane at minLo: the
     /// partition sends it left, so the left side is not empty.
     template <int B>
@@ -771,6 +776,7 @@ class KdBuilder {
             return static_cast<int>(x) >> kMerge;
         };
         Bins<B> keptBins = bins;
+        const bool countBins = depth + 1 < maxDepth_;  // else the child is a leaf: no bins needed
         auto& starts = keptBins.starts[axis];
         auto& ends = keptBins.ends[axis];
         starts.fill(0);
@@ -779,20 +785,26 @@ class KdBuilder {
         // in it lies flat in it (counted without a branch: there is rarely one).
         const auto plane = static_cast<float>(pos);
         std::uint32_t flat = 0;
-        for (std::uint32_t k = 0; k < n; ++k) {
-            const float rlo = refs[k].lo(axis), rhi = refs[k].hi(axis);
-            flat += rhi == plane;
-            ++starts[binOf(rlo)];
-            ++ends[binOf(rhi)];
+        if (countBins) {
+            for (std::uint32_t k = 0; k < n; ++k) {
+                const float rlo = refs[k].lo(axis), rhi = refs[k].hi(axis);
+                flat += rhi == plane;
+                ++starts[binOf(rlo)];
+                ++ends[binOf(rhi)];
+            }
+        } else if (emptyLeft) {
+            for (std::uint32_t k = 0; k < n; ++k) flat += refs[k].hi(axis) == plane;
         }
         if (emptyLeft && flat > 0) return false;
 #ifndef NDEBUG
-        Bins<B> check;
-        {
-            Binner<B, kFine> binner(kept, check);
-            for (std::uint32_t k = 0; k < n; ++k) binner.add(refs[k]);
+        if (countBins) {
+            Bins<B> check;
+            {
+                Binner<B, kFine> binner(kept, check);
+                for (std::uint32_t k = 0; k < n; ++k) binner.add(refs[k]);
+            }
+            assert(check.starts == keptBins.starts && check.ends == keptBins.ends);
         }
-        assert(check.starts == keptBins.starts && check.ends == keptBins.ends);
 #endif
         split(id, axis, pos, cost, leafCost);
         const Bins<B> none;
