@@ -227,15 +227,27 @@ BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const Bo
     return clipToBox(a, b, c, box).bounds().clippedTo(box);
 }
 
+namespace {
+/// The clipped polygon's bounds on each side of the plane axis = pos, each clipped to its side
+/// of `box`. With the axis a template argument the sides' boxes stay in registers (box.splitAt
+/// with a run-time axis sent them through memory, a stall a clip).
+template <int axis>
+std::pair<BoxN<3>, BoxN<3>> splitClipped(const ClipPolygon& poly, const BoxN<3>& box, double pos) {
+    const double pad = 1e-6 * std::max(box.hi[axis] - box.lo[axis], 0.0);
+    const auto [l, r] = poly.splitBounds<axis>(pos, pad);
+    BoxN<3> left = l.clippedTo(box), right = r.clippedTo(box);
+    left.hi[axis] = glm::min(l.hi[axis], pos);
+    right.lo[axis] = glm::max(r.lo[axis], pos);
+    return {left, right};
+}
+}  // namespace
+
 std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c,
                                                 const BoxN<3>& box, int axis, double pos) {
-    const double pad = 1e-6 * std::max(box.hi[axis] - box.lo[axis], 0.0);
     const ClipPolygon poly = clipToBox(a, b, c, box);
-    auto [l, r] = axis == 0   ? poly.splitBounds<0>(pos, pad)
-                  : axis == 1 ? poly.splitBounds<1>(pos, pad)
-                              : poly.splitBounds<2>(pos, pad);
-    const auto [boxL, boxR] = box.splitAt(axis, pos);
-    return {l.clippedTo(boxL), r.clippedTo(boxR)};
+    return axis == 0   ? splitClipped<0>(poly, box, pos)
+           : axis == 1 ? splitClipped<1>(poly, box, pos)
+                       : splitClipped<2>(poly, box, pos);
 }
 
 Scene transformScene(Scene s, double scale, const Vec3& shift) {
