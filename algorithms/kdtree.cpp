@@ -362,16 +362,20 @@ class KdBuilder {
                 bins_.maxHi[axis] = std::max(bins_.maxHi[axis], mx[laneOf(N + axis)]);
             }
         }
-        void add(const Ref& r) {
+        /// The bins of four edges, lane by lane: edge e of an axis starting at lo, with
+        /// Fine / width bins per unit (scale), falls in bin (e - lo) * scale, clamped.
+        static __m128i binsOf(__m128 e, __m128 lo, __m128 scale) {
             const __m128 zero = _mm_setzero_ps(), top = _mm_set1_ps(Fine - 0.5f);
             constexpr int kMerge = std::countr_zero(unsigned(Fine / B));
+            const __m128 x = _mm_mul_ps(_mm_sub_ps(e, lo), scale);
+            return _mm_srli_epi32(_mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top)), kMerge);
+        }
+        void add(const Ref& r) {
             alignas(16) std::array<std::int32_t, 8> bin;
             for (int v = 0; v < kLoads; ++v) {
                 const __m128 e = _mm_loadu_ps(&r.edge[kLoadAt[v]]);
-                const __m128 x = _mm_mul_ps(_mm_sub_ps(e, lo_[v]), scale_[v]);
-                _mm_store_si128(
-                    reinterpret_cast<__m128i*>(&bin[4 * v]),
-                    _mm_srli_epi32(_mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top)), kMerge));
+                _mm_store_si128(reinterpret_cast<__m128i*>(&bin[4 * v]),
+                                binsOf(e, lo_[v], scale_[v]));
                 min_[v] = _mm_min_ps(min_[v], e);
                 max_[v] = _mm_max_ps(max_[v], e);
             }
@@ -764,17 +768,9 @@ class KdBuilder {
         const Box& kept = emptyLeft ? boxR : boxL;
         // The cut axis in the kept box's bins, as Binner<B, fineBins(B)> counts them.
         constexpr int kFine = fineBins(B);
-        constexpr int kMerge = std::countr_zero(unsigned(kFine / B));
-        const float lo = static_cast<float>(kept.lo[axis]);
         const double width = kept.hi[axis] - kept.lo[axis];
-        const float scale = width > 0.0 ? static_cast<float>(kFine / width) : 0.0f;
-        const auto binOf = [lo, scale](float edge) {
-            constexpr float kTop = kFine - 0.5f;
-            float x = (edge - lo) * scale;
-            x = x > 0.0f ? x : 0.0f;  // _mm_max_ps(x, 0): 0 for NaN too
-            x = x < kTop ? x : kTop;  // _mm_min_ps(x, top)
-            return static_cast<int>(x) >> kMerge;
-        };
+        const __m128 lo = _mm_set1_ps(static_cast<float>(kept.lo[axis]));
+        const __m128 scale = _mm_set1_ps(width > 0.0 ? static_cast<float>(kFine / width) : 0.0f);
         Bins<B> keptBins = bins;
         const bool countBins = depth + 1 < maxDepth_;  // else the child is a leaf: no bins needed
         auto& starts = keptBins.starts[axis];
@@ -789,8 +785,10 @@ class KdBuilder {
             for (std::uint32_t k = 0; k < n; ++k) {
                 const float rlo = refs[k].lo(axis), rhi = refs[k].hi(axis);
                 flat += rhi == plane;
-                ++starts[binOf(rlo)];
-                ++ends[binOf(rhi)];
+                const __m128i bin =
+                    Binner<B, kFine>::binsOf(_mm_setr_ps(rlo, rhi, 0, 0), lo, scale);
+                ++starts[_mm_cvtsi128_si32(bin)];
+                ++ends[_mm_cvtsi128_si32(_mm_srli_si128(bin, 4))];
             }
         } else if (emptyLeft) {
             for (std::uint32_t k = 0; k < n; ++k) flat += refs[k].hi(axis) == plane;
