@@ -79,6 +79,21 @@ struct KdPiece {
     std::size_t totalNodes = 0, totalIds = 0;  // with everything attached (sizeUp)
 };
 
+/// v.resize(n) on fresh memory offered to the kernel as 2 MB pages: a million-triangle tree's
+/// 35 MB, faulted in 4 KB at a time, took ~20 ms.
+template <typename T>
+void resizeOnHugePages(std::vector<T>& v, std::size_t n) {
+    v.reserve(n);  // allocated, not yet touched
+#if defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+    const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
+    const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage;
+    const std::uintptr_t last = (begin + n * sizeof(T)) / kHugePage * kHugePage;
+    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#endif
+    v.resize(n);
+}
+
 void sizeUp(KdPiece& piece) {
     piece.totalNodes = piece.nodes.size();
     piece.totalIds = piece.ids.size();
@@ -1180,8 +1195,8 @@ void KdTree<Prims>::build(Rec& rec) {
         primIds_ = std::move(root.ids);
     } else {
         sizeUp(root);
-        nodes_.resize(root.totalNodes);
-        primIds_.resize(root.totalIds);
+        resizeOnHugePages(nodes_, root.totalNodes);
+        resizeOnHugePages(primIds_, root.totalIds);
         place(root, nodes_.data(), primIds_.data(), 0, 0);
     }
     stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
