@@ -10,7 +10,6 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
 #include <immintrin.h>  // SSE2, which every x86-64 has: the binning (Binner)
@@ -195,14 +194,20 @@ class KdBuilder {
     KdBuilder(const KdBuilder&) = delete;
     KdBuilder& operator=(const KdBuilder&) = delete;
 
-    void run(const Box& box) {
+    /// Builds the tree; returns the root's box, the primitives' bounds (found on the way).
+    Box run() {
         const std::uint32_t n = prims_.count();
         if (opt_.split == SplitMethod::Sah &&
             (opt_.build == KdBuild::Fast || opt_.exactBelow > 0)) {
-            return runBinned(box);
+            return runBinned();
         }
         ownBounds_.resize(n);
-        for (std::uint32_t p = 0; p < n; ++p) ownBounds_[p] = prims_.bounds(p);
+        Box box;
+        for (std::uint32_t p = 0; p < n; ++p) {
+            ownBounds_[p] = prims_.bounds(p);
+            box.extend(ownBounds_[p]);
+        }
+        box = rootBox(box, n);
         primBounds_ = &ownBounds_;
         if (opt_.split == SplitMethod::Sah) {
             side_.assign(n, Side::Both);
@@ -217,6 +222,7 @@ class KdBuilder {
             for (std::uint32_t p = 0; p < n; ++p) all[p] = p;
             buildSimple(std::move(all), box, 0, kNoId);
         }
+        return box;
     }
 
   private:
@@ -482,35 +488,56 @@ class KdBuilder {
         }
     }
 
-    /// The binned build from the root, on this thread's stack.
-    void runBinned(const Box& box) {
+    /// The root's box: the primitives' bounds `all`, or a point for none.
+    static Box rootBox(const Box& all, std::uint32_t n) {
+        return n > 0 ? all : Box{VecN<N, double>(0.0), VecN<N, double>(0.0)};
+    }
+    /// Runs share(c) for each share of n (on all cores if `parallel`).
+    template <typename Share>
+    static void forEachShare(std::uint32_t n, bool parallel, Share&& share) {
+        if (parallel)
+            tbb::parallel_for(std::size_t(0), shareCount(n), share);
+        else
+            for (std::size_t c = 0; c < shareCount(n); ++c) share(c);
+    }
+
+    /// The binned build from the root, on this thread's stack; returns the root's box. The
+    /// references and the root's box come from one pass over the primitives (a second, for the
+    /// box alone, read a million triangles' 80 MB again).
+    Box runBinned() {
         const std::uint32_t n = prims_.count();
         side_.assign(n, Side::Both);
         const StackFrame frame(*stack_);
         Ref* refs = stack_->push(n);
-        if (opt_.build == KdBuild::Fast)
-            startBinned<kFastBins>(refs, n, box, !Rec::kEnabled);
+        const bool fast = opt_.build == KdBuild::Fast;
+        const bool parallel = fast && !Rec::kEnabled;
+        std::vector<Box> part(shareCount(n));
+        forEachShare(n, parallel, [&](std::size_t c) {
+            const auto [begin, end] = shareRange(c, n);
+            for (auto p = static_cast<std::uint32_t>(begin); p < end; ++p) {
+                const Box b = prims_.bounds(p);
+                refs[p] = Ref(p, b);
+                part[c].extend(b);
+            }
+        });
+        Box all;
+        for (const Box& b : part) all.extend(b);
+        const Box box = rootBox(all, n);
+        if (fast)
+            startBinned<kFastBins>(refs, n, box, parallel);
         else
-            startBinned<kExactBins>(refs, n, box, false);
+            startBinned<kExactBins>(refs, n, box, parallel);
+        return box;
     }
-    /// The root's references made and counted into B bins, in shares (on all cores if
-    /// `parallel`), then buildBinned.
+    /// The root's references counted into B bins, in shares, then buildBinned.
     template <int B>
-    void startBinned(Ref* refs, std::uint32_t n, const Box& box, bool parallel) {
-        const std::size_t chunks = shareCount(n);
-        std::vector<Bins<B>> part(chunks);
-        const auto share = [&](std::size_t c) {
+    void startBinned(const Ref* refs, std::uint32_t n, const Box& box, bool parallel) {
+        std::vector<Bins<B>> part(shareCount(n));
+        forEachShare(n, parallel, [&](std::size_t c) {
             const auto [begin, end] = shareRange(c, n);
             Binner<B> binner(box, part[c]);
-            for (auto p = static_cast<std::uint32_t>(begin); p < end; ++p) {
-                refs[p] = Ref(p, prims_.bounds(p).clippedTo(box));
-                binner.add(refs[p]);
-            }
-        };
-        if (parallel)
-            tbb::parallel_for(std::size_t(0), chunks, share);
-        else
-            for (std::size_t c = 0; c < chunks; ++c) share(c);
+            for (std::size_t p = begin; p < end; ++p) binner.add(refs[p]);
+        });
         Bins<B> bins;
         for (const auto& b : part) bins.add(b);
         descend(refs, n, bins, box, 0, kNoId);
@@ -1175,21 +1202,9 @@ void KdTree<Prims>::build(Rec& rec) {
                     ? options_.maxDepth
                     : static_cast<int>(std::lround(8 + 1.3 * std::log2(std::max(n, 1u))));
     maxDepth_ = std::min(maxDepth_, kMaxDepthCap);
-    // On all cores: one core took 20 ms for a million triangles.
-    bounds_ = tbb::parallel_reduce(
-        tbb::blocked_range<std::uint32_t>(0, n, 16384), BoxN<N>{},
-        [&](const auto& range, BoxN<N> b) {
-            for (std::uint32_t p = range.begin(); p < range.end(); ++p) b.extend(prims_.bounds(p));
-            return b;
-        },
-        [](BoxN<N> a, const BoxN<N>& b) {
-            a.extend(b);
-            return a;
-        });
-    if (n == 0) bounds_ = BoxN<N>{VecN<N, double>(0.0), VecN<N, double>(0.0)};
     KdPiece root;
     KdBuilder<Prims, Rec> builder(prims_, options_, maxDepth_, rec, root, stats_);
-    builder.run(bounds_);
+    bounds_ = builder.run();
     if (root.attached.empty()) {
         nodes_ = std::move(root.nodes);
         primIds_ = std::move(root.ids);
