@@ -221,13 +221,7 @@ ClipPolygon clipToBox(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>
     poly.cut<2, false>(box.hi[2] + pad[2]);
     return poly;
 }
-}  // namespace
 
-BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
-    return clipToBox(a, b, c, box).bounds().clippedTo(box);
-}
-
-namespace {
 /// The clipped polygon's bounds on each side of the plane axis = pos, each clipped to its side
 /// of `box`. With the axis a template argument the sides' boxes stay in registers (box.splitAt
 /// with a run-time axis sent them through memory, a stall a clip).
@@ -241,6 +235,10 @@ std::pair<BoxN<3>, BoxN<3>> splitClipped(const ClipPolygon& poly, const BoxN<3>&
     return {left, right};
 }
 }  // namespace
+
+BoxN<3> clipTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c, const BoxN<3>& box) {
+    return clipToBox(a, b, c, box).bounds().clippedTo(box);
+}
 
 std::pair<BoxN<3>, BoxN<3>> splitTriangleBounds(const Vec3& a, const Vec3& b, const Vec3& c,
                                                 const BoxN<3>& box, int axis, double pos) {
