@@ -78,18 +78,26 @@ struct KdPiece {
     std::size_t totalNodes = 0, totalIds = 0;  // with everything attached (sizeUp)
 };
 
-/// v.resize(n) on fresh memory offered to the kernel as 2 MB pages: a million-triangle tree's
-/// 35 MB, faulted in 4 KB at a time, took ~20 ms.
+/// The kernel's huge page: the build's big arrays are offered to it in these, since faulting
+/// hundreds of MB in 4 KB at a time cost ~3 microseconds a fault on our VM.
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+
+/// Offers the whole huge pages inside [p, p + bytes), not yet touched, as huge pages.
+void offerHugePages([[maybe_unused]] void* p, [[maybe_unused]] std::size_t bytes) {
+#if defined(MADV_HUGEPAGE)
+    const auto begin = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage;
+    const std::uintptr_t last = (begin + bytes) / kHugePage * kHugePage;
+    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#endif
+}
+
+/// v.resize(n) on fresh memory offered as huge pages: a million-triangle tree's 35 MB, faulted
+/// in 4 KB at a time, took ~20 ms.
 template <typename T>
 void resizeOnHugePages(std::vector<T>& v, std::size_t n) {
     v.reserve(n);  // allocated, not yet touched
-#if defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
-    const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
-    const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage;
-    const std::uintptr_t last = (begin + n * sizeof(T)) / kHugePage * kHugePage;
-    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-#endif
+    offerHugePages(v.data(), n * sizeof(T));
     v.resize(n);
 }
 
@@ -292,13 +300,10 @@ class KdBuilder {
         /// MB once, and faulting them in 4 KB at a time cost a sixth of the build on our VM
         /// (~3 microseconds a fault).
         static Refs allocate(std::size_t count) {
-            constexpr std::size_t kHugePage = std::size_t(2) << 20;
             const std::size_t bytes = (count * sizeof(Ref) + kHugePage - 1) / kHugePage * kHugePage;
             void* p = std::aligned_alloc(kHugePage, bytes);
             if (!p) throw std::bad_alloc();
-#if defined(MADV_HUGEPAGE)
-            madvise(p, bytes, MADV_HUGEPAGE);
-#endif
+            offerHugePages(p, bytes);
             return Refs(static_cast<Ref*>(p));
         }
         std::vector<Segment> segments_;
@@ -425,17 +430,13 @@ class KdBuilder {
     static constexpr std::uint32_t kSmallNode = 64;
     static constexpr int kExactBins = 256;
     /// How finely a node of B bins counts its children: a small node's children are small too.
-    static constexpr int fineBins(int b) {
-        return b == kSmallBins ? kFastBins : b;
-    }
+    static constexpr int fineBins(int b) { return b == kSmallBins ? kFastBins : b; }
     // Fast build: nodes above this many references are partitioned and binned by all cores,
     // in shares of kChunk references.
     static constexpr std::uint32_t kParallelNodeAbove = 65536;
     static constexpr std::size_t kChunk = 16384;
     /// How many shares n references make, and where share c begins and ends.
-    static std::size_t shareCount(std::size_t n) {
-        return (n + kChunk - 1) / kChunk;
-    }
+    static std::size_t shareCount(std::size_t n) { return (n + kChunk - 1) / kChunk; }
     static std::pair<std::size_t, std::size_t> shareRange(std::size_t c, std::size_t n) {
         return {c * kChunk, std::min(n, (c + 1) * kChunk)};
     }
@@ -790,9 +791,9 @@ class KdBuilder {
             progress_.child(1 - fl, [&] { progress_.leafDone(); });
             return;
         }
-        progress_.child(fl, [&] { descend(left, nL, binsL, boxL, depth + 1, id); });
-        nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { descend(right, nR, binsR, boxR, depth + 1, id); });
+        children(
+            id, fl, [&] { descend(left, nL, binsL, boxL, depth + 1, id); },
+            [&] { descend(right, nR, binsR, boxR, depth + 1, id); });
     }
 
     /// A plane at the primitives' extent (bins.minLo on `axis` if `emptyLeft`, else bins.maxHi)
@@ -848,15 +849,15 @@ class KdBuilder {
 #endif
         split(id, axis, pos, cost, leafCost);
         const Bins<B> none;
-        if (emptyLeft) {
-            progress_.child(0.0, [&] { descend(refs, 0, none, boxL, depth + 1, id); });
-            nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-            progress_.child(1.0, [&] { descend(refs, n, keptBins, boxR, depth + 1, id); });
-        } else {
-            progress_.child(1.0, [&] { descend(refs, n, keptBins, boxL, depth + 1, id); });
-            nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-            progress_.child(0.0, [&] { descend(refs, 0, none, boxR, depth + 1, id); });
-        }
+        // The side cut off is an empty leaf; the other keeps every reference.
+        if (emptyLeft)
+            children(
+                id, 0.0, [&] { descend(refs, 0, none, boxL, depth + 1, id); },
+                [&] { descend(refs, n, keptBins, boxR, depth + 1, id); });
+        else
+            children(
+                id, 1.0, [&] { descend(refs, n, keptBins, boxL, depth + 1, id); },
+                [&] { descend(refs, 0, none, boxR, depth + 1, id); });
         return true;
     }
 
@@ -1071,9 +1072,18 @@ class KdBuilder {
 
         split(id, bestAxis, bestPos, bestCost, leafCost);
         const double fl = double(nl) / double(nl + nr);
-        progress_.child(fl, [&] { buildSah(std::move(mergedL), nl, boxL, depth + 1, id); });
+        children(
+            id, fl, [&] { buildSah(std::move(mergedL), nl, boxL, depth + 1, id); },
+            [&] { buildSah(std::move(mergedR), nr, boxR, depth + 1, id); });
+    }
+
+    /// Builds node `id`'s children in the tree's order, left next to it, then the right, whose
+    /// index the node records; `fl` is the left's share of the progress.
+    template <typename Left, typename Right>
+    void children(std::uint32_t id, double fl, Left&& left, Right&& right) {
+        progress_.child(fl, left);
         nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { buildSah(std::move(mergedR), nr, boxR, depth + 1, id); });
+        progress_.child(1 - fl, right);
     }
 
     void split(std::uint32_t id, int axis, double pos, double cost, double leafCost) {
@@ -1132,9 +1142,9 @@ class KdBuilder {
         prims = {};
         split(id, axis, pos, cost, opt_.cIsect * n);
         const double fl = double(nl) / double(nl + nr);
-        progress_.child(fl, [&] { buildSimple(std::move(left), boxL, depth + 1, id); });
-        nodes_[id].index = static_cast<std::uint32_t>(nodes_.size());
-        progress_.child(1 - fl, [&] { buildSimple(std::move(right), boxR, depth + 1, id); });
+        children(
+            id, fl, [&] { buildSimple(std::move(left), boxL, depth + 1, id); },
+            [&] { buildSimple(std::move(right), boxR, depth + 1, id); });
     }
 
     const Prims& prims_;
