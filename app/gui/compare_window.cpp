@@ -32,7 +32,7 @@ CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKi
 
 CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : QWidget(parent) {
     setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
-    const AccelKind kind = prepared[0].kind;
+    const AccelKind kind = prepared[0]->kind;
     auto* views = new QHBoxLayout;
     int longest = 0;
     for (int i = 0; i < 3; ++i) {

@@ -26,7 +26,7 @@ class CompareWindow : public QWidget {
     /// The three splits of `kind` (kdtree or bvh) loaded and built, on any thread (the main
     /// window builds them behind a progress dialog); `progress` sees the three builds as one.
     /// Throws SceneError, or BuildCancelled.
-    using Prepared = std::array<Session::Prepared, 3>;
+    using Prepared = std::array<SceneRef, 3>;
     static Prepared prepare(const std::string& scene, AccelKind kind,
                             const ProgressFn& progress = {});
     /// Shows them, each replaying the 2D scene's example ray or the 3D scene's `pixel`.

@@ -1,98 +1,135 @@
 #include "image_view.h"
 
-#include "raystep/image.h"
-#include "raystep/tracer.h"
-
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPushButton>
 #include <QWheelEvent>
 
 namespace raystep::gui {
 
 ImageView::ImageView(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
     setMinimumSize(240, 180);
-    connect(&session_, &Session::aboutToChangeScene, this, [this] { join(); });
+    renderButton_ = new QPushButton(tr("Render the image again"), this);
+    renderButton_->setObjectName("renderAgain");
+    renderButton_->hide();
+    connect(renderButton_, &QPushButton::clicked, this, &ImageView::renderRequested);
     connect(&session_, &Session::sceneChanged, this, [this] {
-        image_ = heat_ = QImage();
         marked_ = {-1, -1};
-        update();
+        if (!session_.scene3D()) clear();
     });
 }
 
-ImageView::~ImageView() {
-    cancel_ = true;
-    join();
+void ImageView::renderStarted(int width, int height) {
+    state_ = State::Rendering;
+    size_ = {width, height};
+    percent_ = 0;
+    image_ = heat_ = QImage();
+    why_.clear();
+    renderButton_->hide();
+    update();
 }
 
-void ImageView::join() {
-    cancel_ = true;
-    if (worker_.joinable()) worker_.join();
-    cancel_ = false;
+void ImageView::renderProgress(int percent) {
+    if (state_ != State::Rendering || percent == percent_) return;
+    percent_ = percent;
+    update();
 }
 
-void ImageView::startRender(int width, int height) {
-    join();
-    const Scene* scene = session_.scene3D();
-    const Accelerator* accel = session_.accel3D();
-    if (!scene || !accel) return;
-    done_ = false;
-    worker_ = std::thread([this, scene, accel, width, height] {
-        RenderOptions opt;
-        opt.width = width;
-        opt.height = height;
-        opt.trace.bounces = scene->settings.bounces;
-        const RenderResult r = raystep::render(*scene, *accel, opt, [this](double f) {
-            emit progress(static_cast<int>(f * 100));
-            return !cancel_.load();
-        });
-        QImage img(width, height, QImage::Format_RGB888);
-        const auto rgb = toSrgb8(r.image);
-        for (int y = 0; y < height; ++y)
-            std::memcpy(img.scanLine(y), rgb.data() + std::size_t(y) * width * 3, width * 3);
-        QImage heat(width, height, QImage::Format_RGB888);
-        const auto h = heatmapRgb8(r.costPerPixel, width, height);
-        for (int y = 0; y < height; ++y)
-            std::memcpy(heat.scanLine(y), h.data() + std::size_t(y) * width * 3, width * 3);
-        const bool cancelled = r.cancelled;
-        const double ms = r.renderMs;
-        // Hand the images to the GUI thread.
-        QMetaObject::invokeMethod(this, [this, img, heat, cancelled, ms] {
-            if (!cancelled) {
-                image_ = img;
-                heat_ = heat;
-            }
-            done_ = true;
-            update();
-            emit finished(cancelled, ms);
-        });
-    });
+void ImageView::renderFinished(const QImage& image, const QImage& heat, double) {
+    state_ = State::Done;
+    image_ = image;
+    heat_ = heat;
+    size_ = image.size();
+    renderButton_->hide();
+    update();
+}
+
+void ImageView::renderCancelled() {
+    state_ = State::Cancelled;
+    renderButton_->show();
+    placeButton();
+    update();
+}
+
+void ImageView::renderFailed(const QString& why) {
+    state_ = State::Failed;
+    why_ = why;
+    renderButton_->show();
+    placeButton();
+    update();
+}
+
+void ImageView::clear(const QString& why) {
+    state_ = State::NoScene;
+    why_ = why;
+    image_ = heat_ = QImage();
+    size_ = {};
+    marked_ = {-1, -1};
+    renderButton_->hide();
+    update();
+}
+
+QString ImageView::message() const {
+    switch (state_) {
+        case State::NoScene:
+            return why_.isEmpty() ? tr("The image view shows 3D scenes.") : why_;
+        case State::Rendering:
+            return tr("Rendering... %1%\nClick a pixel to trace it meanwhile.").arg(percent_);
+        case State::Done:
+            return heatmap_ ? tr("Primitive tests per pixel (dark: few, bright: many)")
+                            : tr("Ray tracing (raystep): click a pixel to trace it");
+        case State::Cancelled:
+            return tr("Render cancelled. Pixels can still be clicked and traced.");
+        case State::Failed:
+            return tr("The render failed: %1").arg(why_);
+    }
+    return {};
 }
 
 QRectF ImageView::imageRect() const {
-    if (image_.isNull()) return {};
+    if (size_.isEmpty()) return {};
     const double s =
-        zoom_ * std::min(double(width()) / image_.width(), double(height()) / image_.height());
-    const QSizeF size(image_.width() * s, image_.height() * s);
+        zoom_ * std::min(double(width()) / size_.width(), double(height()) / size_.height());
+    const QSizeF size(size_.width() * s, size_.height() * s);
     return {QPointF((width() - size.width()) / 2, (height() - size.height()) / 2), size};
+}
+
+void ImageView::placeButton() {
+    const QSize hint = renderButton_->sizeHint();
+    renderButton_->setGeometry((width() - hint.width()) / 2, height() / 2 + 30, hint.width(),
+                               hint.height());
+}
+
+void ImageView::resizeEvent(QResizeEvent*) {
+    placeButton();
 }
 
 void ImageView::paintEvent(QPaintEvent*) {
     QPainter g(this);
     g.fillRect(rect(), QColor(40, 40, 44));
-    if (image_.isNull()) {
-        g.setPen(Qt::white);
-        g.drawText(rect(), Qt::AlignCenter,
-                   session_.scene3D() ? tr("Rendering...") : tr("The image view shows 3D scenes."));
-        return;
-    }
     const QRectF r = imageRect();
-    g.drawImage(r, heatmap_ ? heat_ : image_);
-    g.setPen(QColor(230, 230, 230));
-    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-               heatmap_ ? tr("Primitive tests per pixel (dark: few, bright: many)")
-                        : tr("Ray tracing (raystep): click a pixel to trace it"));
-    if (marked_.x() >= 0) {
-        const double s = r.width() / image_.width();
+    if (state_ == State::Done && !image_.isNull()) {
+        g.drawImage(r, heatmap_ ? heat_ : image_);
+        g.setPen(QColor(230, 230, 230));
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, message());
+    } else {
+        // The image's frame, where a click still picks a pixel, and what is happening.
+        if (!r.isEmpty()) {
+            g.setPen(QPen(QColor(110, 110, 118), 1, Qt::DashLine));
+            g.drawRect(r);
+        }
+        g.setPen(state_ == State::Failed ? QColor(255, 150, 130) : QColor(235, 235, 235));
+        g.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap,
+                   message());
+        if (state_ == State::Rendering && !r.isEmpty()) {
+            const QRectF bar(r.x() + r.width() * 0.2, r.center().y() + 34, r.width() * 0.6, 6);
+            g.fillRect(bar, QColor(70, 70, 78));
+            g.fillRect(QRectF(bar.topLeft(), QSizeF(bar.width() * percent_ / 100.0, bar.height())),
+                       QColor(90, 160, 230));
+        }
+    }
+    if (marked_.x() >= 0 && !r.isEmpty()) {
+        const double s = r.width() / size_.width();
         g.setPen(QPen(QColor(255, 80, 60), 2));
         g.drawRect(QRectF(r.x() + marked_.x() * s - 3, r.y() + marked_.y() * s - 3, s + 6, s + 6));
     }
@@ -100,9 +137,13 @@ void ImageView::paintEvent(QPaintEvent*) {
 
 void ImageView::mousePressEvent(QMouseEvent* e) {
     const QRectF r = imageRect();
-    if (image_.isNull() || !r.contains(e->position())) return;
-    const int x = static_cast<int>((e->position().x() - r.x()) / r.width() * image_.width());
-    const int y = static_cast<int>((e->position().y() - r.y()) / r.height() * image_.height());
+    if (!session_.scene3D() || r.isEmpty() || !r.contains(e->position())) return;
+    const int x = std::clamp(
+        static_cast<int>((e->position().x() - r.x()) / r.width() * size_.width()), 0,
+        size_.width() - 1);
+    const int y = std::clamp(
+        static_cast<int>((e->position().y() - r.y()) / r.height() * size_.height()), 0,
+        size_.height() - 1);
     marked_ = {x, y};
     update();
     emit pixelClicked(x, y);

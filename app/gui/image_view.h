@@ -1,55 +1,70 @@
 #pragma once
-// The rendered image beside the replay: rendered off the GUI thread (progress and cancel in the
-// window's status bar); clicking a pixel traces it with recording on and replays it; a heat map
-// of primitive tests per pixel can be laid over it; the wheel zooms.
+// The rendered image beside the replay. The window renders it in the background (TaskRunner)
+// and hands it over; meanwhile, and after a cancelled or failed render, the view keeps the
+// image's frame so that a pixel can still be clicked (traced with recording on and replayed),
+// says what happened and offers to render again. A heat map of primitive tests per pixel can be
+// laid over it; the wheel zooms.
 #include "session.h"
 
 #include <QImage>
 #include <QWidget>
 
-#include <atomic>
-#include <thread>
+class QPushButton;
 
 namespace raystep::gui {
 
 class ImageView : public QWidget {
     Q_OBJECT
   public:
+    enum class State { NoScene, Rendering, Done, Cancelled, Failed };
+
     explicit ImageView(Session& session, QWidget* parent = nullptr);
-    ~ImageView() override;
     QSize sizeHint() const override { return {480, 360}; }
 
-    /// Renders the session's 3D scene at width x height in the background.
-    void startRender(int width, int height);
-    void cancelRender() { cancel_ = true; }
-    bool rendering() const { return worker_.joinable() && !done_; }
+    /// A render of a width x height image has started (the frame a click maps pixels in).
+    void renderStarted(int width, int height);
+    void renderProgress(int percent);
+    void renderFinished(const QImage& image, const QImage& heat, double ms);
+    void renderCancelled();
+    void renderFailed(const QString& why);
+    /// No 3D scene to show (`why` says what happened, e.g. a scene that could not be opened).
+    void clear(const QString& why = {});
+
+    State state() const { return state_; }
+    /// What the view says over its frame (tests read it).
+    QString message() const;
     void setHeatmap(bool on) {
         heatmap_ = on;
         update();
     }
     const QImage& image() const { return image_; }
+    QPushButton* renderButton() const { return renderButton_; }
 
   signals:
-    void progress(int percent);
-    void finished(bool cancelled, double ms);
     void pixelClicked(int x, int y);
+    /// The user asked for the image again (after a cancel or a failure).
+    void renderRequested();
 
   protected:
     void paintEvent(QPaintEvent*) override;
     void mousePressEvent(QMouseEvent*) override;
     void wheelEvent(QWheelEvent*) override;
+    void resizeEvent(QResizeEvent*) override;
 
   private:
     QRectF imageRect() const;
-    void join();
+    void placeButton();
 
     Session& session_;
+    State state_ = State::NoScene;
+    QString why_;
+    int percent_ = 0;
+    QSize size_;  // the image's size in pixels, known from the render's start
     QImage image_, heat_;
     bool heatmap_ = false;
     double zoom_ = 1.0;
     QPoint marked_{-1, -1};
-    std::thread worker_;
-    std::atomic<bool> cancel_{false}, done_{true};
+    QPushButton* renderButton_ = nullptr;
 };
 
 }  // namespace raystep::gui

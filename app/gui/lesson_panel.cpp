@@ -36,6 +36,23 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_->setOpenExternalLinks(true);
     layout->addWidget(text_, 1);
 
+    // Shown while the replay is not the lesson's trace: the exercises still grade against it.
+    noteRow_ = new QWidget;
+    noteRow_->setObjectName("replayNote");
+    noteRow_->setStyleSheet(QStringLiteral("#replayNote { background: #fff4d6; }"));
+    auto* nr = new QHBoxLayout(noteRow_);
+    nr->setContentsMargins(6, 4, 6, 4);
+    note_ = new QLabel;
+    note_->setWordWrap(true);
+    note_->setStyleSheet(QStringLiteral("color: #5a4300"));
+    auto* back = new QPushButton(tr("Back to the lesson's trace"));
+    back->setObjectName("backToLesson");
+    nr->addWidget(note_, 1);
+    nr->addWidget(back);
+    connect(back, &QPushButton::clicked, this, &LessonPanel::lessonTraceRequested);
+    noteRow_->hide();
+    layout->addWidget(noteRow_);
+
     stepRow_ = new QWidget;
     auto* sr = new QHBoxLayout(stepRow_);
     sr->setContentsMargins(0, 0, 0, 0);
@@ -118,6 +135,7 @@ void LessonPanel::setLessons(const std::vector<Lesson>& lessons) {
 void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
+    noteRow_->hide();
     freeText_ = markdown;
     text_->setMarkdown(markdown);
     stepRow_->hide();
@@ -127,9 +145,10 @@ void LessonPanel::showText(const QString& markdown) {
     picker_->setCurrentIndex(0);
 }
 
-void LessonPanel::showLesson(const Lesson& lesson, const EventLog* log, LessonProgress* progress) {
+void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress) {
     lesson_ = lesson;
-    log_ = log;
+    log_ = std::move(log);
+    noteRow_->hide();
     hasLesson_ = true;
     ownProgress_ = {};
     progress_ = progress ? progress : &ownProgress_;
@@ -142,6 +161,21 @@ void LessonPanel::showLesson(const Lesson& lesson, const EventLog* log, LessonPr
     exercise_ = 0;
     refreshText();
     refreshExercise();
+}
+
+void LessonPanel::setReplayNote(const QString& what) {
+    if (!hasLesson_ || what.isEmpty()) {
+        noteRow_->hide();
+        return;
+    }
+    note_->setText(tr("The replay shows %1, not this lesson's trace. The steps and the "
+                      "exercises are about the lesson's trace.")
+                       .arg(what));
+    noteRow_->show();
+}
+
+QString LessonPanel::replayNote() const {
+    return noteRow_->isHidden() ? QString() : note_->text();
 }
 
 void LessonPanel::setLecturerMode(bool on) {

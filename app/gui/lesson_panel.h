@@ -2,6 +2,8 @@
 // The lesson panel: the lesson's text, its steps (each puts the replay somewhere) and its
 // exercises, checked against the recorded trace by the core (raystep/lesson.h). The main window
 // opens lessons and moves the replay; the panel asks for it through signals.
+#include "session.h"
+
 #include "raystep/lesson.h"
 
 #include <QWidget>
@@ -26,10 +28,17 @@ class LessonPanel : public QWidget {
     void setLanguage(Language lang) { lang_ = lang; }
     /// The lessons the picker offers.
     void setLessons(const std::vector<Lesson>& lessons);
-    /// Shows a lesson whose trace is `log` (owned by the session; must outlive the lesson). The
+    /// Shows a lesson whose trace is `log`: the panel keeps its share of it, and checks every
+    /// answer against it whatever the replay shows meanwhile (a clicked pixel, a build). The
     /// panel records answers into `progress` (the window's, which it saves on `answered`); null
     /// keeps them in the panel only.
-    void showLesson(const Lesson& lesson, const EventLog* log, LessonProgress* progress);
+    void showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress);
+    /// The lesson's trace (null when no lesson is open).
+    const LogRef& lessonLog() const { return log_; }
+    /// The replay shows something else than the lesson's trace (`what`, e.g. "pixel (3, 4)"):
+    /// say so and offer the way back; an empty `what` hides the note.
+    void setReplayNote(const QString& what);
+    QString replayNote() const;
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
     void showText(const QString& markdown);
     bool hasLesson() const { return hasLesson_; }
@@ -53,6 +62,8 @@ class LessonPanel : public QWidget {
 
   signals:
     void lessonRequested(const QString& id);
+    /// "Back to the lesson's trace".
+    void lessonTraceRequested();
     void stepShown(int index);
     void exerciseShown(int index);
     /// An answer was checked and recorded in the progress: the main window saves it.
@@ -68,7 +79,7 @@ class LessonPanel : public QWidget {
 
     Language lang_ = Language::En;
     Lesson lesson_;
-    const EventLog* log_ = nullptr;
+    LogRef log_;
     bool hasLesson_ = false;
     bool lecturer_ = false;
     int step_ = 0;
@@ -82,6 +93,8 @@ class LessonPanel : public QWidget {
 
     QComboBox* picker_ = nullptr;
     QTextBrowser* text_ = nullptr;
+    QWidget* noteRow_ = nullptr;
+    QLabel* note_ = nullptr;
     QWidget* stepRow_ = nullptr;
     QLabel* stepLabel_ = nullptr;
     QPushButton* prevStep_ = nullptr;

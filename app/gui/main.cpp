@@ -84,51 +84,74 @@ int main(int argc, char** argv) {
     raystep::gui::MainWindow window;
     window.setLanguage(lang == "it" ? raystep::Language::It : raystep::Language::En);
     window.setLecturerMode(parser.isSet(lecturerOpt));
+    // Slides are made at one size; otherwise the user's own size, or one that fits the screen.
+    if (!shot.isEmpty())
+        window.resize(1500, 900);
+    else if (!window.geometryRestored())
+        window.resize(window.fitToScreen(QSize(1500, 900)));
+    window.show();
+
+    // Opening runs in the background; what the options ask for follows once it is done.
+    const bool quiet = !shot.isEmpty();
+    QString opening;
     if (parser.isSet(sceneOpt)) {
-        if (!window.openScene(parser.value(sceneOpt), *kind, /*quiet=*/!shot.isEmpty()) &&
-            !shot.isEmpty())  // from a script: one line; interactively the dialog has said it
-            return fail("--scene " + parser.value(sceneOpt) + ": cannot be opened");
+        opening = "--scene " + parser.value(sceneOpt);
+        window.openScene(parser.value(sceneOpt), *kind, quiet);
     } else {
         const QString lesson =
             parser.isSet(lessonOpt) ? parser.value(lessonOpt) : QStringLiteral("1");
-        if (!window.openLesson(lesson, /*quiet=*/!shot.isEmpty()) && !shot.isEmpty()) {
-            try {
-                raystep::loadLesson(lesson.toStdString());
-            } catch (const raystep::LessonError& e) {
-                return fail(QString::fromUtf8(e.what()));
-            }
-            return fail("--lesson " + lesson + ": cannot be opened");
-        }
+        opening = "--lesson " + lesson;
+        window.openLesson(lesson, quiet);
     }
-    if (replay == "build") window.session().recordBuild();
-    if (step) {
-        if (*step > window.session().size())
-            return fail(QStringLiteral("--step %1: the replay has %2 events")
-                            .arg(*step)
-                            .arg(window.session().size()));
-        window.session().setCursor(*step);
-    }
-    window.resize(1500, 900);
-    window.show();
     QWidget* shown = &window;
-    if (parser.isSet(compareOpt)) {
-        shown = window.openCompare();
-        if (!shown) return fail("--compare: compare mode could not be opened");
-    }
-    if (shot.isEmpty()) return app.exec();
-
-    // Slides and tests: let every view paint (and a 3D render finish), then save the window.
-    QTimer::singleShot(200, &window, [&] {
-        window.waitForRender();
+    // From a script a failure is one line and exit 2; interactively the dialog has said it.
+    const auto scriptFails = [&](const QString& message) {
+        if (shot.isEmpty()) return false;
+        fail(message);
+        QApplication::exit(2);
+        return true;
+    };
+    const auto screenshot = [&] {
+        if (shot.isEmpty()) return;
         const QImage image = shown->grab().toImage();
         if (!image.save(shot, "PNG")) {
-            fail("--screenshot " + shot + ": cannot write the file");
-            QApplication::exit(2);
+            scriptFails("--screenshot " + shot + ": cannot write the file");
             return;
         }
         std::printf("wrote %s (%dx%d): %s\n", shot.toUtf8().constData(), image.width(),
                     image.height(), shown->windowTitle().toUtf8().constData());
         QApplication::exit(0);
+    };
+    const auto afterReplay = [&] {
+        if (step) {
+            if (*step > window.session().size()) {
+                scriptFails(QStringLiteral("--step %1: the replay has %2 events")
+                                .arg(*step)
+                                .arg(window.session().size()));
+                return;
+            }
+            window.session().setCursor(*step);
+        }
+        if (parser.isSet(compareOpt)) window.openCompare();
+        window.whenIdle([&] {
+            if (parser.isSet(compareOpt)) {
+                if (!window.compareWindow()) {
+                    scriptFails("--compare: compare mode could not be opened");
+                    return;
+                }
+                shown = window.compareWindow();
+            }
+            // Let every view paint before the picture is taken.
+            QTimer::singleShot(200, &window, screenshot);
+        });
+    };
+    window.whenIdle([&] {
+        if (!window.lastOpenOk().value_or(false)) {
+            scriptFails(opening + ": " + window.lastOpenError());
+            return;
+        }
+        if (replay == "build") window.replayBuild();
+        window.whenIdle(afterReplay);
     });
     return app.exec();
 }

@@ -9,6 +9,7 @@
 #include "raystep/image.h"
 #include "raystep/scene_loader.h"
 #include "raystep/trace_io.h"
+#include "raystep/tracer.h"
 
 #include <QAbstractListModel>
 #include <QAction>
@@ -17,6 +18,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -25,9 +27,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScreen>
 #include <QSettings>
 #include <QSlider>
 #include <QSortFilterProxyModel>
@@ -41,11 +43,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include <atomic>
-#include <chrono>
+#include <cstring>
 #include <exception>
-#include <fstream>
-#include <thread>
 
 namespace raystep::gui {
 
@@ -105,11 +104,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         }
     }
     QSettings settings;
-    restoreGeometry(settings.value("window/geometry").toByteArray());
+    geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Before any member or child goes: no worker may still read what they own.
+    runner_.shutdown();
+}
 
 void MainWindow::buildUi() {
     setWindowTitle(tr("raystep"));
@@ -206,23 +208,29 @@ void MainWindow::buildUi() {
     listDock->setWidget(listPanel);
     addDockWidget(Qt::RightDockWidgetArea, listDock);
 
-    // Long work in the status bar: progress and cancel.
+    // Background work in the status bar: what runs, how far, and Cancel.
+    taskLabel_ = new QLabel;
     progress_ = new QProgressBar;
     progress_->setMaximumWidth(200);
     progress_->hide();
     cancel_ = new QPushButton(tr("Cancel"));
+    cancel_->setObjectName("cancelTask");
     cancel_->hide();
+    statusBar()->addPermanentWidget(taskLabel_);
     statusBar()->addPermanentWidget(progress_);
     statusBar()->addPermanentWidget(cancel_);
-    connect(cancel_, &QPushButton::clicked, imageView_, &ImageView::cancelRender);
-    connect(imageView_, &ImageView::progress, progress_, &QProgressBar::setValue);
-    connect(imageView_, &ImageView::finished, this, [this](bool cancelled, double ms) {
-        progress_->hide();
-        cancel_->hide();
-        statusBar()->showMessage(
-            cancelled ? tr("Render cancelled")
-                      : tr("Rendered in %1 ms; click a pixel to trace it").arg(ms, 0, 'f', 0));
-    });
+    connect(cancel_, &QPushButton::clicked, this, [this] { runner_.cancelAll(); });
+    connect(&runner_, &TaskRunner::progressChanged, this,
+            [this](const QString& label, int percent) {
+                const bool running = !label.isEmpty();
+                taskLabel_->setText(label);
+                progress_->setVisible(running);
+                cancel_->setVisible(running);
+                progress_->setValue(percent);
+                if (runner_.busy(TaskKind::Render))
+                    imageView_->renderProgress(runner_.percent(TaskKind::Render));
+            });
+    connect(imageView_, &ImageView::renderRequested, this, [this] { renderImage(); });
     connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
         session_.tracePixel(x, y, kImageWidth, kImageHeight);
         session_.setCursor(session_.size());
@@ -242,7 +250,9 @@ void MainWindow::buildUi() {
     connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
     connect(&session_, &Session::logChanged, this, [this] {
         updateTimeline();
-        if (session_.showingBuild())
+        if (lesson_->hasLesson()) {
+            lesson_->setReplayNote(replayDescription());
+        } else if (session_.showingBuild()) {
             lesson_->showText(
                 tr("## Building the %1\n\nEach node is split by a plane. Step through the "
                    "**candidate** planes (dashed): the chart under the scene draws the cost of "
@@ -253,13 +263,19 @@ void MainWindow::buildUi() {
                    "next "
                    "choice with the *split chosen* kind and **N**.")
                     .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+        }
     });
 
     // The lesson panel asks; the window moves the replay, opens lessons, saves progress.
     connect(lesson_, &LessonPanel::lessonRequested, this,
             [this](const QString& id) { openLesson(id); });
     connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
+    connect(lesson_, &LessonPanel::lessonTraceRequested, this, [this] {
+        showLessonTrace();
+        applyStep(lesson_->step());
+    });
     connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
+        showLessonTrace();
         const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
         if (at) session_.setCursor(*at);
     });
@@ -292,9 +308,13 @@ void MainWindow::buildUi() {
                       [this] { jumpToNextOfKind(); });
     replay->addSeparator();
     replay->addAction(tr("Replay the &build (candidates, splits, leaves)"), QKeySequence(Qt::Key_B),
-                      this, [this] { session_.recordBuild(); });
+                      this, [this] { replayBuild(); });
     replay->addAction(tr("Replay the &example ray"), QKeySequence(Qt::Key_R), this, [this] {
-        if (session_.is2D()) session_.traceExampleRay();
+        if (session_.is2D())
+            session_.traceExampleRay();
+        else
+            statusBar()->showMessage(tr("R replays the example ray of a 2D scene; in 3D, click "
+                                        "a pixel of the image."));
     });
     replay->addAction(tr("&First event"), QKeySequence(Qt::Key_Home), this,
                       [this] { session_.setCursor(0); });
@@ -315,142 +335,288 @@ void MainWindow::buildUi() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C), this,
                     [this] { openCompare(); });
+    view->addAction(tr("Render the &image again"), this, [this] { renderImage(); });
     QAction* heat = view->addAction(tr("&Heat map of primitive tests"));
     heat->setCheckable(true);
     connect(heat, &QAction::toggled, imageView_, &ImageView::setHeatmap);
     view->addAction(tr("&Reset 3D camera"), this, [this] { view3D_->resetCamera(); });
 }
 
-bool MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
+void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
                            const AccelOptions& base, bool renderImage) {
-    // Load and build off the GUI thread: a big mesh's tree takes seconds.
-    std::optional<Session::Prepared> prepared;
-    const std::exception_ptr error =
-        runWithProgress(tr("Loading %1 and building its %2...")
-                            .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
-                        [&](const ProgressFn& progress) {
-                            AccelOptions options = base;
-                            options.kdtree.progress = options.bvh.progress = progress;
-                            prepared = Session::prepare(nameOrPath.toStdString(), kind, options);
-                        });
-    if (error) {
-        QString message;
-        try {
-            std::rethrow_exception(error);
-        } catch (const BuildCancelled&) {
-            statusBar()->showMessage(tr("Opening %1 cancelled").arg(nameOrPath));
-            return false;
-        } catch (const std::exception& e) {
-            message = QString::fromUtf8(e.what());
-        }
-        if (!quiet) QMessageBox::warning(this, tr("Cannot open the scene"), message);
-        return false;
-    }
-    session_.adopt(std::move(*prepared));
+    lastOpenOk_.reset();
+    const bool started = runner_.start<SceneRef>(
+        TaskKind::Scene,
+        tr("Loading %1 and building its %2...")
+            .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
+        [path = nameOrPath.toStdString(), kind, base](const ProgressFn& progress) {
+            AccelOptions options = base;
+            options.kdtree.progress = options.bvh.progress = progress;
+            return Session::prepare(path, kind, options);
+        },
+        [this, nameOrPath, quiet, renderImage](SceneRef&& scene, const TaskOutcome& outcome) {
+            if (outcome.superseded) return;  // a newer open is under way
+            if (!outcome.ok()) return openFailed(nameOrPath, outcome, quiet);
+            showScene(std::move(scene), renderImage);
+            if (session_.is2D()) {
+                lesson_->showText(
+                    tr("## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and "
+                       "**Left**, play with **Space**, jump to the next event of a kind with "
+                       "**N**. The inspector shows X, Y, tMax and tDelta as on the board; the list "
+                       "shows every event.")
+                        .arg(QString::fromStdString(session_.name()),
+                             QString::fromStdString(session_.scene2D()->description)));
+            } else {
+                lesson_->showText(
+                    tr("## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is "
+                       "recorded and replayed in the 3D view, the inspector and the event list.")
+                        .arg(QString::fromStdString(session_.name()),
+                             QString::fromStdString(session_.scene3D()->description)));
+            }
+            // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
+            view2D_->setVisible(session_.is2D());
+            view3D_->setVisible(!session_.is2D());
+            imageView_->setVisible(!session_.is2D());
+            view3D_->parentWidget()->setVisible(!session_.is2D());
+            setWindowTitle(tr("raystep - %1").arg(nameOrPath));
+            finishOpen(true, {});
+        });
+    if (!started) finishOpen(false, tr("the window is closing"));
+}
+
+void MainWindow::showScene(SceneRef scene, bool renderImage) {
+    ++generation_;
+    // What ran for the old scene is of no use now (and holds its own share of it meanwhile).
+    runner_.cancel(TaskKind::Render);
+    runner_.cancel(TaskKind::Build);
+    runner_.cancel(TaskKind::Sweep);
+    session_.adopt(std::move(scene));
     if (session_.is2D()) {
         session_.traceExampleRay();
-        lesson_->showText(
-            tr("## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and **Left**, "
-               "play with **Space**, jump to the next event of a kind with **N**. The inspector "
-               "shows X, Y, tMax and tDelta as on the board; the list shows every event.")
-                .arg(QString::fromStdString(session_.name()),
-                     QString::fromStdString(session_.scene2D()->description)));
+        imageView_->clear();
     } else {
-        lesson_->showText(
-            tr("## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is recorded "
-               "and replayed in the 3D view, the inspector and the event list.")
-                .arg(QString::fromStdString(session_.name()),
-                     QString::fromStdString(session_.scene3D()->description)));
-        if (renderImage) {
-            progress_->setValue(0);
-            progress_->show();
-            cancel_->show();
-            statusBar()->showMessage(tr("Rendering %1...").arg(nameOrPath));
-            imageView_->startRender(kImageWidth, kImageHeight);
-        }
+        if (renderImage)
+            this->renderImage();
+        else
+            imageView_->clear(tr("This view shows no rendered image."));
         // A first ray to replay before any click: the image's centre.
         session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
-    // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
-    view2D_->setVisible(session_.is2D());
-    view3D_->setVisible(!session_.is2D());
-    imageView_->setVisible(!session_.is2D());
-    view3D_->parentWidget()->setVisible(!session_.is2D());
-    setWindowTitle(tr("raystep - %1").arg(nameOrPath));
     updateTimeline();
-    return true;
 }
 
-std::exception_ptr MainWindow::runWithProgress(const QString& label,
-                                               const std::function<void(const ProgressFn&)>& work) {
-    // The events processed while waiting may ask for more long work (a lesson picked before the
-    // dialog shows): refuse it rather than run two at once.
-    if (busy_) return std::make_exception_ptr(BuildCancelled());
-    busy_ = true;
-    std::atomic<bool> cancel{false}, done{false};
-    std::atomic<int> percent{0};
-    const ProgressFn progress = [&](double f) {
-        percent = static_cast<int>(f * 100);
-        return !cancel.load();
-    };
-    std::exception_ptr error;
-    std::thread worker([&] {
-        try {
-            work(progress);
-        } catch (...) {
-            error = std::current_exception();
-        }
-        done = true;
-    });
-    {
-        QProgressDialog dialog(label, tr("Cancel"), 0, 100, this);
-        dialog.setWindowModality(Qt::WindowModal);
-        dialog.setMinimumDuration(400);
-        while (!done) {
-            dialog.setValue(percent);
-            if (dialog.wasCanceled()) cancel = true;
-            QApplication::processEvents(QEventLoop::AllEvents, 20);
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
+void MainWindow::openFailed(const QString& what, const TaskOutcome& outcome, bool quiet) {
+    if (outcome.cancelled) {
+        statusBar()->showMessage(tr("Opening %1 cancelled").arg(what));
+        finishOpen(false, tr("cancelled"));
+        return;
     }
-    worker.join();
-    busy_ = false;
-    return error;
+    QString message;
+    try {
+        std::rethrow_exception(outcome.error);
+    } catch (const std::exception& e) {
+        message = QString::fromUtf8(e.what());
+    } catch (...) {
+        message = tr("unknown error");
+    }
+    if (!session_.hasScene()) {
+        // Nothing was open before (a bad scene at start-up): say so where the user looks.
+        lesson_->showText(tr("## Nothing is open\n\n%1 could not be opened:\n\n    %2\n\n"
+                             "Pick a lesson above, or open a scene with *File > Open scene*.")
+                              .arg(what, message));
+        imageView_->clear(tr("No scene is open."));
+        setWindowTitle(tr("raystep"));
+    }
+    if (!quiet) warn(tr("Cannot open %1").arg(what), message);
+    statusBar()->showMessage(tr("Cannot open %1").arg(what));
+    finishOpen(false, message);
 }
 
-bool MainWindow::openLesson(const QString& idOrPath, bool quiet) {
+void MainWindow::finishOpen(bool ok, const QString& error) {
+    lastOpenOk_ = ok;
+    lastOpenError_ = error;
+    emit opened(ok, error);
+}
+
+void MainWindow::warn(const QString& title, const QString& text) {
+    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();  // window-modal, without a nested event loop
+}
+
+void MainWindow::renderImage() {
+    const Scene* scene = session_.scene3D();
+    if (!scene) return;
+    struct Rendered {
+        QImage image, heat;
+        double ms = 0.0;
+    };
+    imageView_->renderStarted(kImageWidth, kImageHeight);
+    const std::uint64_t generation = generation_;
+    runner_.start<Rendered>(
+        TaskKind::Render, tr("Rendering %1...").arg(QString::fromStdString(session_.name())),
+        [ref = session_.sceneRef()](const ProgressFn& progress) {
+            const Scene& s = std::get<Scene>(ref->scene);
+            RenderOptions opt;
+            opt.width = kImageWidth;
+            opt.height = kImageHeight;
+            // What the scene asks for, as the command line renders it (only the size is ours).
+            opt.spp = s.settings.spp;
+            opt.trace.bounces = s.settings.bounces;
+            opt.trace.diffuseSamples = s.settings.diffuseSamples;
+            const RenderResult r = raystep::render(s, *ref->accel3D, opt, progress);
+            if (r.cancelled) throw BuildCancelled();
+            Rendered out;
+            out.image = QImage(opt.width, opt.height, QImage::Format_RGB888);
+            const auto rgb = toSrgb8(r.image);
+            for (int y = 0; y < opt.height; ++y)
+                std::memcpy(out.image.scanLine(y), rgb.data() + std::size_t(y) * opt.width * 3,
+                            opt.width * 3);
+            out.heat = QImage(opt.width, opt.height, QImage::Format_RGB888);
+            const auto h = heatmapRgb8(r.costPerPixel, opt.width, opt.height);
+            for (int y = 0; y < opt.height; ++y)
+                std::memcpy(out.heat.scanLine(y), h.data() + std::size_t(y) * opt.width * 3,
+                            opt.width * 3);
+            out.ms = r.renderMs;
+            return out;
+        },
+        [this, generation](Rendered&& r, const TaskOutcome& outcome) {
+            if (outcome.superseded || generation != generation_) return;
+            if (outcome.cancelled) {
+                imageView_->renderCancelled();
+                statusBar()->showMessage(tr("Render cancelled"));
+            } else if (outcome.error) {
+                QString why;
+                try {
+                    std::rethrow_exception(outcome.error);
+                } catch (const std::exception& e) {
+                    why = QString::fromUtf8(e.what());
+                } catch (...) {
+                    why = tr("unknown error");
+                }
+                imageView_->renderFailed(why);
+                statusBar()->showMessage(tr("Render failed: %1").arg(why));
+            } else {
+                imageView_->renderFinished(r.image, r.heat, r.ms);
+                statusBar()->showMessage(
+                    tr("Rendered in %1 ms; click a pixel to trace it").arg(r.ms, 0, 'f', 0));
+            }
+        });
+}
+
+void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
+    lastOpenOk_.reset();
     Lesson lesson;
     try {
         lesson = loadLesson(idOrPath.toStdString());
     } catch (const LessonError& e) {
-        if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
-        return false;
+        if (!quiet) warn(tr("Cannot open the lesson"), QString::fromUtf8(e.what()));
+        finishOpen(false, QString::fromUtf8(e.what()));
+        return;
     }
-    const auto shows = [&](LessonView v) {
-        return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
+    struct Opened {
+        SceneRef scene;
+        LogRef trace;
     };
-    if (!openScene(QString::fromStdString(lessonScenePath(lesson)), lesson.accel, quiet,
-                   lesson.options, shows(LessonView::Image)))
-        return false;
-    try {
-        session_.adoptLog(recordLessonTrace(lesson, session_.sceneVariant(), session_.accel3D(),
-                                            session_.accel2D()),
-                          lesson.trace.kind == LessonTrace::Kind::Build);
-    } catch (const LessonError& e) {
-        if (!quiet) QMessageBox::warning(this, tr("Cannot open the lesson"), e.what());
-        return false;
+    const QString title = QString::fromStdString(lesson.title.in(lang_));
+    const bool started = runner_.start<Opened>(
+        TaskKind::Scene, tr("Opening lesson %1: %2...").arg(lesson.number).arg(title),
+        [lesson](const ProgressFn& progress) {
+            AccelOptions options = lesson.options;
+            options.kdtree.progress = options.bvh.progress = progress;
+            Opened o;
+            o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
+            o.trace = recordLessonTrace(lesson, o.scene->scene,
+                                        o.scene->accel3D ? &*o.scene->accel3D : nullptr,
+                                        o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+            return o;
+        },
+        [this, lesson, quiet, title](Opened&& o, const TaskOutcome& outcome) {
+            if (outcome.superseded) return;
+            if (!outcome.ok()) {
+                openFailed(tr("lesson %1").arg(lesson.number), outcome, quiet);
+                if (lesson_->hasLesson()) lesson_->showLesson(lesson_->lesson(),
+                                                              lesson_->lessonLog(), nullptr);
+                return;
+            }
+            const auto shows = [&](LessonView v) {
+                return std::find(lesson.views.begin(), lesson.views.end(), v) !=
+                       lesson.views.end();
+            };
+            showScene(std::move(o.scene), shows(LessonView::Image));
+            session_.showLog(o.trace, lesson.trace.kind == LessonTrace::Kind::Build
+                                          ? LogKind::Build
+                                          : LogKind::Lesson);
+            view2D_->setVisible(shows(LessonView::View2D));
+            view3D_->setVisible(shows(LessonView::View3D));
+            imageView_->setVisible(shows(LessonView::Image));
+            view3D_->parentWidget()->setVisible(shows(LessonView::View3D) ||
+                                                shows(LessonView::Image));
+            // The panel records answers into this lesson's progress (std::map entries do not
+            // move) and grades them against its own share of the trace.
+            lesson_->showLesson(lesson, o.trace, &studentProgress_.lessons[lesson.id]);
+            setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
+            applyStep(lesson_->step());
+            finishOpen(true, {});
+        });
+    if (!started) finishOpen(false, tr("the window is closing"));
+}
+
+void MainWindow::showLessonTrace() {
+    if (!lesson_->hasLesson() || !lesson_->lessonLog()) return;
+    if (session_.logRef() == lesson_->lessonLog()) return;
+    session_.showLog(lesson_->lessonLog(), lesson_->lesson().trace.kind == LessonTrace::Kind::Build
+                                               ? LogKind::Build
+                                               : LogKind::Lesson);
+}
+
+QString MainWindow::replayDescription() const {
+    if (!lesson_->hasLesson() || session_.logRef() == lesson_->lessonLog()) return {};
+    switch (session_.logKind()) {
+        case LogKind::Pixel:
+            for (auto it = session_.log().events().rbegin(); it != session_.log().events().rend();
+                 ++it)
+                if (const auto* p = std::get_if<PixelResult>(&*it))
+                    return tr("the ray tree of pixel (%1, %2)").arg(p->x).arg(p->y);
+            return tr("a pixel's ray tree");
+        case LogKind::ExampleRay:
+            return tr("the scene's example ray");
+        case LogKind::Build:
+            return tr("the construction of the %1")
+                .arg(QString::fromUtf8(accelKindName(session_.kind()).data()));
+        default:
+            return tr("another trace");
     }
-    view2D_->setVisible(shows(LessonView::View2D));
-    view3D_->setVisible(shows(LessonView::View3D));
-    imageView_->setVisible(shows(LessonView::Image));
-    view3D_->parentWidget()->setVisible(shows(LessonView::View3D) || shows(LessonView::Image));
-    // The panel records answers into this lesson's progress (std::map entries do not move).
-    lesson_->showLesson(lesson, &session_.log(), &studentProgress_.lessons[lesson.id]);
-    setWindowTitle(tr("raystep - lesson %1: %2")
-                       .arg(lesson.number)
-                       .arg(QString::fromStdString(lesson.title.in(lang_))));
-    applyStep(lesson_->step());
-    return true;
+}
+
+void MainWindow::replayBuild() {
+    if (!session_.hasScene()) {
+        statusBar()->showMessage(tr("No scene is open."));
+        return;
+    }
+    if (!Session::hasBuild(session_.kind())) {
+        statusBar()->showMessage(
+            tr("A %1 has no construction to replay: B replays how a kd-tree or a BVH is built.")
+                .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+        return;
+    }
+    const std::uint64_t generation = generation_;
+    runner_.start<LogRef>(
+        TaskKind::Build,
+        tr("Recording the construction of the %1...")
+            .arg(QString::fromUtf8(accelKindName(session_.kind()).data())),
+        [ref = session_.sceneRef()](const ProgressFn& progress) {
+            return Session::recordBuild(ref, progress);
+        },
+        [this, generation](LogRef&& log, const TaskOutcome& outcome) {
+            if (outcome.superseded || generation != generation_) return;
+            if (!outcome.ok()) {
+                statusBar()->showMessage(outcome.cancelled ? tr("Build replay cancelled")
+                                                           : tr("Cannot record the build"));
+                return;
+            }
+            session_.showLog(std::move(log), LogKind::Build);
+        });
 }
 
 void MainWindow::applyStep(int index) {
@@ -458,6 +624,7 @@ void MainWindow::applyStep(int index) {
         session_.setCursor(session_.size());
         return;
     }
+    showLessonTrace();
     const LessonStep& step = lesson_->lesson().steps[index];
     if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
     filterEdit_->setText(QString::fromStdString(step.filter));
@@ -490,15 +657,28 @@ void MainWindow::exportProgressReport() {
 }
 
 void MainWindow::runSweep() {
-    if (!lesson_->hasLesson() || !lesson_->lesson().sweep) return;
-    std::vector<GridSweepRow> rows;
+    if (!lesson_->hasLesson() || !lesson_->lesson().sweep || !session_.hasScene()) return;
     const GridSweepSpec spec = *lesson_->lesson().sweep;
-    const std::exception_ptr error = runWithProgress(
+    const std::uint64_t generation = generation_;
+    const LogRef lessonLog = lesson_->lessonLog();
+    runner_.start<std::vector<GridSweepRow>>(
+        TaskKind::Sweep,
         tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
-        [&](const ProgressFn& progress) {
-            rows = runGridSweep(session_.sceneVariant(), spec, progress);
+        [ref = session_.sceneRef(), spec](const ProgressFn& progress) {
+            return runGridSweep(ref->scene, spec, progress);
+        },
+        [this, generation, lessonLog](std::vector<GridSweepRow>&& rows,
+                                      const TaskOutcome& outcome) {
+            // Only for the lesson that asked.
+            if (outcome.superseded || generation != generation_ ||
+                lesson_->lessonLog() != lessonLog)
+                return;
+            if (outcome.ok())
+                lesson_->showSweep(rows);
+            else
+                statusBar()->showMessage(outcome.cancelled ? tr("Sweep cancelled")
+                                                           : tr("The sweep failed"));
         });
-    if (!error) lesson_->showSweep(rows);
 }
 
 void MainWindow::setLanguage(Language lang) {
@@ -522,7 +702,11 @@ void MainWindow::setLecturerMode(bool on) {
     lecturerAction_->setChecked(on);
 }
 
-CompareWindow* MainWindow::openCompare() {
+void MainWindow::openCompare() {
+    if (!session_.hasScene()) {
+        statusBar()->showMessage(tr("No scene is open: nothing to compare."));
+        return;
+    }
     const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
     // 3D: the pixel being replayed (clicked, or a lesson's, in the lesson's image size), else
     // the image's centre.
@@ -538,32 +722,66 @@ CompareWindow* MainWindow::openCompare() {
                 pixel.height = lesson_->lesson().trace.height;
             }
         }
-    // Three trees of a big mesh take seconds: built off the GUI thread, with Cancel.
-    CompareWindow::Prepared prepared;
-    const std::exception_ptr error = runWithProgress(
-        tr("Building the midpoint, median and SAH trees..."), [&](const ProgressFn& progress) {
-            prepared = CompareWindow::prepare(session_.name(), kind, progress);
+    // Three trees of a big mesh take seconds: built in the background, with Cancel.
+    const std::uint64_t generation = generation_;
+    runner_.start<CompareWindow::Prepared>(
+        TaskKind::Compare, tr("Building the midpoint, median and SAH trees..."),
+        [name = session_.name(), kind](const ProgressFn& progress) {
+            return CompareWindow::prepare(name, kind, progress);
+        },
+        [this, generation, pixel](CompareWindow::Prepared&& prepared,
+                                  const TaskOutcome& outcome) {
+            if (outcome.superseded || generation != generation_) return;
+            if (outcome.cancelled) {
+                statusBar()->showMessage(tr("Compare cancelled"));
+                return;
+            }
+            if (outcome.error) {
+                try {
+                    std::rethrow_exception(outcome.error);
+                } catch (const std::exception& e) {
+                    warn(tr("Compare"), QString::fromUtf8(e.what()));
+                } catch (...) {
+                }
+                return;
+            }
+            // A window of its own that closes with this one.
+            if (compare_) compare_->close();
+            auto* compare = new CompareWindow(std::move(prepared), pixel, this);
+            compare->setWindowFlag(Qt::Window);
+            compare->setAttribute(Qt::WA_DeleteOnClose);
+            compare->resize(fitToScreen(QSize(1400, 800)));
+            compare->show();
+            compare_ = compare;
         });
-    if (error) {
-        try {
-            std::rethrow_exception(error);
-        } catch (const BuildCancelled&) {
-            statusBar()->showMessage(tr("Compare cancelled"));
-        } catch (const std::exception& e) {
-            QMessageBox::warning(this, tr("Compare"), QString::fromUtf8(e.what()));
-        }
-        return nullptr;
-    }
-    auto* compare = new CompareWindow(std::move(prepared), pixel);
-    compare->setAttribute(Qt::WA_DeleteOnClose);
-    compare->resize(1400, 800);
-    compare->show();
-    return compare;
 }
 
-void MainWindow::waitForRender() {
-    while (imageView_->rendering()) QApplication::processEvents(QEventLoop::AllEvents, 20);
+QSize MainWindow::fitToScreen(QSize wanted) const {
+    const QScreen* s = screen();
+    if (!s) return wanted;
+    const QSize room = s->availableGeometry().size() - QSize(40, 60);  // frame and title bar
+    return wanted.boundedTo(room.expandedTo(QSize(640, 480)));
+}
+
+void MainWindow::whenIdle(std::function<void()> f) {
+    if (!runner_.busy()) {
+        QTimer::singleShot(0, this, std::move(f));
+        return;
+    }
+    auto once = std::make_shared<QMetaObject::Connection>();
+    *once = connect(&runner_, &TaskRunner::idle, this, [once, f = std::move(f)] {
+        QObject::disconnect(*once);
+        f();
+    });
+}
+
+bool MainWindow::waitUntilIdle(int timeoutMs) {
+    QElapsedTimer clock;
+    clock.start();
+    while (runner_.busy() && clock.elapsed() < timeoutMs)
+        QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
     QApplication::processEvents();
+    return !runner_.busy();
 }
 
 QString MainWindow::inspectorText() const {
@@ -641,7 +859,9 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
-    imageView_->cancelRender();
+    // Stop and join every worker now, and start none after: the window is going away.
+    runner_.shutdown();
+    if (compare_) compare_->close();
     e->accept();
 }
 

@@ -9,33 +9,54 @@
 
 namespace raystep::gui {
 
-Session::Prepared Session::prepare(const std::string& nameOrPath, AccelKind kind,
-                                   const AccelOptions& options) {
-    Prepared p;
-    p.scene = std::make_unique<std::variant<Scene, Scene2D>>(loadAnyScene(nameOrPath));
-    p.name = nameOrPath;
-    p.kind = kind;
-    p.options = options;
-    if (const auto* s2 = std::get_if<Scene2D>(p.scene.get()))
-        p.accel2D = buildAccelerator2D(*s2, kind, options);
+namespace {
+/// The structure of a scene built in place (it points into the scene, which must not move).
+void buildIn(LoadedScene& l, const AccelOptions& options) {
+    if (const auto* s2 = std::get_if<Scene2D>(&l.scene))
+        l.accel2D = buildAccelerator2D(*s2, l.kind, options);
     else
-        p.accel3D = buildAccelerator(std::get<Scene>(*p.scene), kind, {}, options);
+        l.accel3D = buildAccelerator(std::get<Scene>(l.scene), l.kind, {}, options);
     // The progress callback belonged to this build only.
-    p.options.kdtree.progress = p.options.bvh.progress = nullptr;
-    return p;
+    l.options.kdtree.progress = l.options.bvh.progress = nullptr;
+}
+}  // namespace
+
+SceneRef Session::prepare(const std::string& nameOrPath, AccelKind kind,
+                          const AccelOptions& options) {
+    auto l = std::make_shared<LoadedScene>();
+    l->scene = loadAnyScene(nameOrPath);
+    l->name = nameOrPath;
+    l->kind = kind;
+    l->options = options;
+    buildIn(*l, options);
+    return l;
 }
 
-void Session::adopt(Prepared p) {
+SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& options) {
+    auto l = std::make_shared<LoadedScene>();
+    l->name = scene.name;
+    l->scene = std::move(scene);
+    l->kind = kind;
+    l->options = options;
+    buildIn(*l, options);
+    return l;
+}
+
+LogRef Session::recordBuild(const SceneRef& scene, const ProgressFn& progress) {
+    auto log = std::make_shared<EventLog>();
+    AccelOptions options = scene->options;
+    options.kdtree.progress = options.bvh.progress = progress;
+    if (const Scene2D* s2 = std::get_if<Scene2D>(&scene->scene))
+        buildAccelerator2D(*s2, scene->kind, options, log.get());
+    else
+        buildAccelerator(std::get<Scene>(scene->scene), scene->kind, {}, options, *log);
+    return log;
+}
+
+void Session::adopt(SceneRef scene) {
     emit aboutToChangeScene();
-    accel2D_.reset();
-    accel3D_.reset();
-    scene_ = std::move(p.scene);
-    accel2D_ = std::move(p.accel2D);
-    accel3D_ = std::move(p.accel3D);
-    name_ = std::move(p.name);
-    kind_ = p.kind;
-    options_ = std::move(p.options);
-    setLog(std::make_unique<EventLog>());
+    scene_ = std::move(scene);
+    showLog(std::make_shared<const EventLog>(), LogKind::None);
     emit sceneChanged();
 }
 
@@ -44,59 +65,43 @@ void Session::load(const std::string& nameOrPath, AccelKind kind, const AccelOpt
 }
 
 void Session::load(Scene2D scene, AccelKind kind, const AccelOptions& options) {
-    Prepared p;
-    p.name = scene.name;
-    p.scene = std::make_unique<std::variant<Scene, Scene2D>>(std::move(scene));
-    p.kind = kind;
-    p.options = options;
-    p.accel2D = buildAccelerator2D(std::get<Scene2D>(*p.scene), kind, options);
-    adopt(std::move(p));
+    adopt(prepare(std::move(scene), kind, options));
 }
 
 void Session::traceExampleRay() {
     const Scene2D* s = scene2D();
     if (!s || !s->exampleRay) return;
-    auto log = std::make_unique<EventLog>();
-    traceRay2D(*accel2D_, *s->exampleRay, *log);
-    setLog(std::move(log));
+    auto log = std::make_shared<EventLog>();
+    traceRay2D(*accel2D(), *s->exampleRay, *log);
+    showLog(std::move(log), LogKind::ExampleRay);
 }
 
 void Session::recordBuild() {
-    auto log = std::make_unique<EventLog>();
-    if (const Scene2D* s2 = scene2D())
-        buildAccelerator2D(*s2, kind_, options_, log.get());
-    else
-        buildAccelerator(*scene3D(), kind_, {}, options_, *log);
-    adoptLog(std::move(log), true);
-}
-
-void Session::adoptLog(std::unique_ptr<EventLog> log, bool isBuild) {
-    setLog(std::move(log));
-    if (isBuild) {
-        showingBuild_ = true;
-        emit logChanged();
-    }
+    if (!scene_ || !hasBuild(scene_->kind)) return;
+    showLog(recordBuild(scene_), LogKind::Build);
 }
 
 BuildSummary Session::summary() const {
-    return accel2D_ ? summarize(*accel2D_) : summarize(*accel3D_);
+    if (!scene_) return {};
+    return scene_->accel2D ? summarize(*scene_->accel2D) : summarize(*scene_->accel3D);
 }
 
 void Session::tracePixel(int x, int y, int width, int height) {
     const Scene* s = scene3D();
     if (!s) return;
-    auto log = std::make_unique<EventLog>();
-    tracePixelEvents(*s, *accel3D_, x, y, width, height, *log);
-    setLog(std::move(log));
+    auto log = std::make_shared<EventLog>();
+    tracePixelEvents(*s, *accel3D(), x, y, width, height, *log);
+    showLog(std::move(log), LogKind::Pixel);
 }
 
-void Session::setLog(std::unique_ptr<EventLog> log) {
-    showingBuild_ = false;
-    replay_.reset();  // it points into the old log
+void Session::showLog(LogRef log, LogKind kind) {
+    // The new replay is made before the old one goes: the old log stays alive until then.
+    auto replay = std::make_unique<Replay>(*log);
+    replay->seek(0);
+    replay_ = std::move(replay);
     log_ = std::move(log);
-    replay_ = std::make_unique<Replay>(*log_);
+    logKind_ = kind;
     cursor_ = 0;
-    replay_->seek(0);
     emit logChanged();
     emit cursorChanged(cursor_);
 }

@@ -16,53 +16,85 @@
 
 namespace raystep::gui {
 
+/// A scene loaded and its structure built: immutable once made, and shared by the session, the
+/// views and every worker that reads it, so none of them can outlive it. The structure points
+/// into the scene, so neither is ever moved or copied.
+struct LoadedScene {
+    LoadedScene() = default;
+    LoadedScene(const LoadedScene&) = delete;
+    LoadedScene& operator=(const LoadedScene&) = delete;
+
+    std::variant<Scene, Scene2D> scene;
+    std::optional<Accelerator> accel3D;
+    std::optional<Accelerator2D> accel2D;
+    std::string name;
+    AccelKind kind = AccelKind::Grid;
+    AccelOptions options;
+
+    bool is2D() const { return std::holds_alternative<Scene2D>(scene); }
+};
+using SceneRef = std::shared_ptr<const LoadedScene>;
+/// A recorded log, shared by whoever replays or grades it (the session, the lesson panel).
+using LogRef = std::shared_ptr<const EventLog>;
+
+/// What the replayed log is, for the window to say.
+enum class LogKind { None, ExampleRay, Pixel, Build, Lesson };
+
 class Session : public QObject {
     Q_OBJECT
   public:
-    /// A scene loaded and its structure built, ready to be shown. The scene lives on the heap so
-    /// the structure's pointers to it survive the move into the session.
-    struct Prepared {
-        std::unique_ptr<std::variant<Scene, Scene2D>> scene;
-        std::optional<Accelerator> accel3D;
-        std::optional<Accelerator2D> accel2D;
-        std::string name;
-        AccelKind kind = AccelKind::Grid;
-        AccelOptions options;
-    };
-    /// Loads and builds; safe on any thread (the window runs it off the GUI thread with a
-    /// progress dialog). Throws SceneError, or BuildCancelled when the options' progress says stop.
-    static Prepared prepare(const std::string& nameOrPath, AccelKind kind,
+    /// Loads and builds; safe on any thread (the window runs it on a worker). Throws SceneError,
+    /// or BuildCancelled when the options' progress says stop.
+    static SceneRef prepare(const std::string& nameOrPath, AccelKind kind,
                             const AccelOptions& options = {});
-    /// Shows a prepared scene (GUI thread).
-    void adopt(Prepared prepared);
+    /// The same for a 2D scene made in code (benchmarks, tests).
+    static SceneRef prepare(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
+    /// Records the construction of the scene's structure (kd-tree or BVH; 2D or 3D); any thread.
+    /// Throws BuildCancelled when `progress` says stop.
+    static LogRef recordBuild(const SceneRef& scene, const ProgressFn& progress = {});
+    /// Whether the structure has a construction to replay (a grid or brute force has none).
+    static bool hasBuild(AccelKind kind) { return kind == AccelKind::KdTree || kind == AccelKind::Bvh; }
+
+    /// Shows a prepared scene (GUI thread), with an empty log.
+    void adopt(SceneRef scene);
     /// prepare + adopt, on this thread.
     void load(const std::string& nameOrPath, AccelKind kind, const AccelOptions& options = {});
-    /// A 2D scene made in code (benchmarks, tests), with its structure.
     void load(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
     /// 3D: records pixel (x, y) of a `width` x `height` image; 2D: the scene's example ray.
     void tracePixel(int x, int y, int width, int height);
     void traceExampleRay();
-    /// Records the structure's construction (kd-tree or BVH; 2D or 3D) and replays that instead.
+    /// recordBuild on this thread, then replays it.
     void recordBuild();
-    /// Replays a log recorded elsewhere (a lesson's trace); `isBuild` when it is a build.
-    void adoptLog(std::unique_ptr<EventLog> log, bool isBuild);
-    const std::variant<Scene, Scene2D>& sceneVariant() const { return *scene_; }
-    /// True while the log is a build (candidates, splits, leaves), not a ray.
-    bool showingBuild() const { return showingBuild_; }
+    /// Replays a log recorded elsewhere (a lesson's trace, a build made by a worker).
+    void showLog(LogRef log, LogKind kind);
 
-    bool is2D() const { return std::holds_alternative<Scene2D>(*scene_); }
-    const Scene* scene3D() const { return std::get_if<Scene>(scene_.get()); }
-    const Scene2D* scene2D() const { return std::get_if<Scene2D>(scene_.get()); }
-    const Accelerator2D* accel2D() const { return accel2D_ ? &*accel2D_ : nullptr; }
-    const Accelerator* accel3D() const { return accel3D_ ? &*accel3D_ : nullptr; }
-    AccelKind kind() const { return kind_; }
-    const AccelOptions& options() const { return options_; }
+    const SceneRef& sceneRef() const { return scene_; }
+    const std::variant<Scene, Scene2D>& sceneVariant() const { return scene_->scene; }
+    /// True while the log is a build (candidates, splits, leaves), not a ray.
+    bool showingBuild() const { return logKind_ == LogKind::Build; }
+    LogKind logKind() const { return logKind_; }
+
+    bool hasScene() const { return scene_ != nullptr; }
+    bool is2D() const { return scene_ && scene_->is2D(); }
+    const Scene* scene3D() const { return scene_ ? std::get_if<Scene>(&scene_->scene) : nullptr; }
+    const Scene2D* scene2D() const {
+        return scene_ ? std::get_if<Scene2D>(&scene_->scene) : nullptr;
+    }
+    const Accelerator2D* accel2D() const {
+        return scene_ && scene_->accel2D ? &*scene_->accel2D : nullptr;
+    }
+    const Accelerator* accel3D() const {
+        return scene_ && scene_->accel3D ? &*scene_->accel3D : nullptr;
+    }
+    AccelKind kind() const { return scene_ ? scene_->kind : AccelKind::Grid; }
+    AccelOptions options() const { return scene_ ? scene_->options : AccelOptions{}; }
     /// What the structure's build made.
     BuildSummary summary() const;
-    const std::string& name() const { return name_; }
+    std::string name() const { return scene_ ? scene_->name : std::string(); }
 
     const EventLog& log() const { return *log_; }
-    std::size_t size() const { return replay_ ? replay_->size() : 0; }
+    const LogRef& logRef() const { return log_; }
+    std::size_t size() const { return replay_->size(); }
     std::size_t cursor() const { return cursor_; }
     const ReplayState& state() const { return replay_->state(); }
     const Replay& replay() const { return *replay_; }
@@ -72,25 +104,17 @@ class Session : public QObject {
     void setCursor(std::size_t cursor);
 
   signals:
-    void aboutToChangeScene();  // views stop work that reads the old scene
+    void aboutToChangeScene();
     void sceneChanged();
     void logChanged();
     void cursorChanged(std::size_t cursor);
 
   private:
-    void setLog(std::unique_ptr<EventLog> log);
-
-    std::unique_ptr<std::variant<Scene, Scene2D>> scene_ =
-        std::make_unique<std::variant<Scene, Scene2D>>();
-    std::string name_;
-    AccelKind kind_ = AccelKind::Grid;
-    AccelOptions options_;
-    std::optional<Accelerator> accel3D_;
-    std::optional<Accelerator2D> accel2D_;
-    std::unique_ptr<EventLog> log_ = std::make_unique<EventLog>();
-    std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);
+    SceneRef scene_;
+    LogRef log_ = std::make_shared<const EventLog>();
+    LogKind logKind_ = LogKind::None;
+    std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);  // over *log_
     std::size_t cursor_ = 0;
-    bool showingBuild_ = false;
 };
 
 /// One line describing event `i` of the log, for the event list.

@@ -14,7 +14,10 @@
 #include <QFile>
 #include <QImage>
 #include <QMouseEvent>
+#include <QComboBox>
 #include <QPushButton>
+#include <QStatusBar>
+#include <QTextBrowser>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
@@ -43,6 +46,21 @@ QImage grab(QWidget* w) {
     return w->grab().toImage();
 }
 
+/// Opens a scene and waits for it (the window opens in the background); true if it opened.
+bool open(MainWindow& w, const QString& scene, AccelKind kind, bool render = true) {
+    w.openScene(scene, kind, /*quiet=*/true, {}, render);
+    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
+}
+bool openLesson(MainWindow& w, const QString& lesson) {
+    w.openLesson(lesson, /*quiet=*/true);
+    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
+}
+CompareWindow* compare(MainWindow& w) {
+    w.openCompare();
+    EXPECT_TRUE(w.waitUntilIdle());
+    return w.compareWindow();
+}
+
 /// The cursor just after the k-th (from 0) event of a kind.
 std::size_t afterNth(const Session& s, std::size_t kind, int k) {
     std::size_t at = 0;
@@ -54,7 +72,7 @@ TEST(App, SteppingTheSlidesDdaShowsTheBoardsValues) {
     MainWindow w;
     w.resize(1400, 860);
     w.show();
-    ASSERT_TRUE(w.openScene("lecture-grid", AccelKind::Grid, true));
+    ASSERT_TRUE(open(w, "lecture-grid", AccelKind::Grid));
     Session& s = w.session();
     ASSERT_GT(s.size(), 10u);
     // By hand: origin (0.4, 0.4), direction (1, 0.75), cells of 1: tMax (0.6, 0.8) in cell
@@ -84,8 +102,8 @@ TEST(App, ClickingAPixelRecordsAndReplaysIt) {
     MainWindow w;
     w.resize(1400, 860);
     w.show();
-    ASSERT_TRUE(w.openScene("default", AccelKind::KdTree, true));
-    w.waitForRender();
+    ASSERT_TRUE(open(w, "default", AccelKind::KdTree));
+    ASSERT_TRUE(w.waitUntilIdle());
     ImageView* image = w.imageView();
     ASSERT_FALSE(image->image().isNull());
     EXPECT_GT(colours(image->image()), 100u);  // a rendered picture, not a blank
@@ -112,7 +130,7 @@ TEST(App, ReplayingASahBuildShowsCandidatesAndTheChoice) {
     MainWindow w;
     w.resize(1400, 860);
     w.show();
-    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
+    ASSERT_TRUE(open(w, "lecture-kdtree", AccelKind::KdTree));
     Session& s = w.session();
     s.recordBuild();
     ASSERT_TRUE(s.showingBuild());
@@ -136,8 +154,8 @@ TEST(App, ReplayingASahBuildShowsCandidatesAndTheChoice) {
 
 TEST(App, CompareModeShowsThreeTrees) {
     MainWindow w;
-    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
-    CompareWindow* c = w.openCompare();
+    ASSERT_TRUE(open(w, "lecture-kdtree", AccelKind::KdTree));
+    CompareWindow* c = compare(w);
     ASSERT_NE(c, nullptr);
     QApplication::processEvents();
     // Three trees of the same scene, built differently, each replaying the same example ray.
@@ -168,7 +186,7 @@ TEST(App, The3DViewShowsABuildsPlanes) {
     MainWindow w;
     w.resize(1400, 860);
     w.show();
-    ASSERT_TRUE(w.openScene("default", AccelKind::KdTree, true, {}, /*renderImage=*/false));
+    ASSERT_TRUE(open(w, "default", AccelKind::KdTree, /*render=*/false));
     Session& s = w.session();
     s.recordBuild();
     s.setCursor(afterNth(s, variantIndex<BuildNode>(), 0));
@@ -198,9 +216,9 @@ TEST(App, CompareModeIn3DReplaysTheClickedPixel) {
     MainWindow w;
     w.resize(1400, 860);
     w.show();
-    ASSERT_TRUE(w.openScene("whitted", AccelKind::KdTree, true, {}, /*renderImage=*/false));
+    ASSERT_TRUE(open(w, "whitted", AccelKind::KdTree, /*render=*/false));
     w.session().tracePixel(150, 100, 320, 240);
-    CompareWindow* c = w.openCompare();
+    CompareWindow* c = compare(w);
     ASSERT_NE(c, nullptr);
     c->resize(1400, 800);
     c->show();
@@ -225,8 +243,8 @@ TEST(App, CompareModeIn3DReplaysTheClickedPixel) {
 
 TEST(App, BadScenesAreRefusedAndTheCurrentOneKept) {
     MainWindow w;
-    ASSERT_TRUE(w.openScene("lecture-kdtree", AccelKind::KdTree, true));
-    EXPECT_FALSE(w.openScene("no-such-scene", AccelKind::Grid, true));
+    ASSERT_TRUE(open(w, "lecture-kdtree", AccelKind::KdTree));
+    EXPECT_FALSE(open(w, "no-such-scene", AccelKind::Grid));
     EXPECT_EQ(w.session().name(), "lecture-kdtree");
     EXPECT_GT(w.session().size(), 0u);
 }
@@ -239,7 +257,7 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
     MainWindow w;
     w.resize(1500, 900);
     w.show();
-    ASSERT_TRUE(w.openLesson("grid-2d-dda", true));
+    ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
     LessonPanel* p = w.lessonPanel();
     ASSERT_TRUE(p->hasLesson());
     EXPECT_TRUE(w.view2D()->isVisible());
@@ -280,7 +298,7 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
 
     // Reopened, the lesson comes back at the step it was left on.
     MainWindow again;
-    ASSERT_TRUE(again.openLesson("6", true));
+    ASSERT_TRUE(openLesson(again, "6"));
     EXPECT_EQ(again.lessonPanel()->step(), 2);
 }
 
@@ -288,7 +306,7 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
     MainWindow w;
     w.resize(1500, 900);
     w.show();
-    ASSERT_TRUE(w.openLesson("building-kdtree", true));
+    ASSERT_TRUE(openLesson(w, "building-kdtree"));
     LessonPanel* p = w.lessonPanel();
     EXPECT_TRUE(w.session().showingBuild());
     p->selectExercise(0);
@@ -302,7 +320,7 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
     w.setLecturerMode(true);
     p->selectExercise(1);
     EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
-    EXPECT_FALSE(w.openLesson("no-such-lesson", true));
+    EXPECT_FALSE(openLesson(w, "no-such-lesson"));
     EXPECT_EQ(p->lesson().id, "building-kdtree");  // the open lesson is kept
 }
 
@@ -313,13 +331,14 @@ TEST(App, TheVoxelSizeLessonsSweepFillsItsTable) {
     MainWindow w;
     w.resize(1500, 900);
     w.show();
-    ASSERT_TRUE(w.openLesson("voxel-size", true));
+    ASSERT_TRUE(openLesson(w, "voxel-size"));
     QPushButton* run = nullptr;
     for (QPushButton* b : w.lessonPanel()->findChildren<QPushButton*>())
         if (b->text() == "Run the sweep") run = b;
     ASSERT_NE(run, nullptr);
     ASSERT_TRUE(run->isVisible());
     run->click();
+    ASSERT_TRUE(w.waitUntilIdle());
     QTableWidget* table = w.lessonPanel()->findChild<QTableWidget*>();
     ASSERT_NE(table, nullptr);
     ASSERT_EQ(table->rowCount(),
@@ -339,12 +358,12 @@ TEST(App, The3DDdaLessonShowsTheThirdAxis) {
     MainWindow w;
     w.resize(1500, 900);
     w.show();
-    ASSERT_TRUE(w.openLesson("dda-3d", true));
+    ASSERT_TRUE(openLesson(w, "dda-3d"));
     w.lessonPanel()->goToStep(1);  // after the second voxel
     const QString text = w.inspectorText();
     for (const char* part : {"   Z = ", "tMaxZ = ", "tDeltaZ = ", "stepZ = ", "t_enter = 0"})
         EXPECT_TRUE(text.contains(part)) << part << "\n" << text.toStdString();
-    w.imageView()->cancelRender();
+    w.tasks().cancel(TaskKind::Render);
 }
 
 TEST(App, EveryLessonOpensAndEveryStepShows) {
@@ -353,14 +372,223 @@ TEST(App, EveryLessonOpensAndEveryStepShows) {
     w.show();
     for (const Lesson& l : builtinLessons()) {
         SCOPED_TRACE(l.id);
-        ASSERT_TRUE(w.openLesson(QString::fromStdString(l.id), true));
+        ASSERT_TRUE(openLesson(w, QString::fromStdString(l.id)));
         for (std::size_t i = 0; i < l.steps.size(); ++i) {
             w.lessonPanel()->goToStep(static_cast<int>(i));
             EXPECT_EQ(w.session().cursor(), *resolvePosition(l.steps[i].at, w.session().log()));
         }
         EXPECT_GT(colours(grab(&w)), 50u);
     }
-    w.imageView()->cancelRender();  // the last lesson's image is not needed
+    w.tasks().cancel(TaskKind::Render);  // the last lesson's image is not needed
+}
+
+// --- Issue 15: nothing a user does crashes the app or grades against the wrong trace. ---
+
+/// What a student types for an exercise's right answer (the reference is read from a trace the
+/// core records on its own, not from the window's).
+QString typedAnswer(const Exercise& ex, const Answer& ref) {
+    if (ex.kind == ExerciseKind::PickSplit)
+        return QStringLiteral("%1=%2")
+            .arg(QChar("xyz"[int(ref.numbers[0])]))
+            .arg(ref.numbers[1], 0, 'g', 17);
+    return QString::fromStdString(formatAnswer(ex, ref));
+}
+
+/// A real left click at a widget point.
+void click(QWidget* w, QPoint at) {
+    QTest::mouseClick(w, Qt::LeftButton, Qt::NoModifier, at);
+}
+
+// Every lesson with exercises: replay something else first, as a student does (click a pixel of
+// the image; R, the example ray; B, the build), then answer every exercise right. The answers
+// are graded against the lesson's own trace, whatever the replay shows, and the panel says what
+// the replay shows and leads back to the lesson's trace.
+TEST(AppLifetimes, AnswersAfterAPixelClickROrBAreGradedAgainstTheLessonsTrace) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    int rounds[3] = {0, 0, 0};  // pixel clicks, R, B: each path taken in some lesson
+    for (const Lesson& l : builtinLessons()) {
+        if (l.exercises.empty()) continue;
+        SCOPED_TRACE(l.id);
+        ASSERT_TRUE(openLesson(w, QString::fromStdString(l.id)));
+        LessonPanel* p = w.lessonPanel();
+        const LessonRun run = runLesson(p->lesson());
+        const LogRef lessonLog = p->lessonLog();
+        ASSERT_EQ(w.session().logRef(), lessonLog);
+        // Something else in the replay: the lesson's trace is no longer the session's.
+        const auto interactions = [&](int i) {
+            if (i == 0 && !w.session().is2D() && w.imageView()->isVisible()) {
+                QApplication::processEvents();
+                ImageView* image = w.imageView();
+                click(image, QPoint(image->width() / 3, image->height() / 2));
+                return w.session().logKind() == LogKind::Pixel;
+            }
+            if (i == 1 && w.session().is2D()) {
+                QTest::keyClick(&w, Qt::Key_R);
+                return w.session().logKind() == LogKind::ExampleRay;
+            }
+            if (i == 2 && Session::hasBuild(w.session().kind())) {
+                const bool lessonIsBuild = p->lesson().trace.kind == LessonTrace::Kind::Build;
+                QTest::keyClick(&w, Qt::Key_B);
+                EXPECT_TRUE(w.waitUntilIdle());
+                return !lessonIsBuild && w.session().logKind() == LogKind::Build;
+            }
+            return false;
+        };
+        for (int i = 0; i < 3; ++i) {
+            if (!interactions(i)) continue;
+            SCOPED_TRACE(i);
+            ++rounds[i];
+            EXPECT_NE(w.session().logRef(), lessonLog);
+            EXPECT_FALSE(p->replayNote().isEmpty());  // the panel says the replay is elsewhere
+            for (std::size_t e = 0; e < l.exercises.size(); ++e) {
+                const Exercise& ex = p->lesson().exercises[e];
+                // Reading the exercise's position puts the lesson's trace back in the replay.
+                p->selectExercise(static_cast<int>(e));
+                EXPECT_EQ(w.session().logRef(), lessonLog);
+                interactions(i);
+                const Answer ref = referenceAnswer(ex, *run.log, p->lesson().file);
+                EXPECT_TRUE(p->submit(typedAnswer(ex, ref)))
+                    << ex.id << ": " << p->feedback().toStdString();
+            }
+            // "Back to the lesson's trace".
+            auto* back = p->findChild<QPushButton*>("backToLesson");
+            ASSERT_NE(back, nullptr);
+            if (w.session().logRef() != lessonLog) {
+                ASSERT_TRUE(back->isVisible());
+                click(back, back->rect().center());
+            }
+            EXPECT_EQ(w.session().logRef(), lessonLog);
+            EXPECT_TRUE(p->replayNote().isEmpty());
+        }
+    }
+    EXPECT_GE(rounds[0], 4);  // lessons 1, 2, 3, 4, 5, 9, 12 show the image
+    EXPECT_GE(rounds[1], 3);  // 6, 8, 10, 11, 13 are 2D
+    EXPECT_GE(rounds[2], 1);  // a tree whose build is not the lesson's trace
+    w.close();
+}
+
+// A scene whose render takes minutes (the stadium, brute force): Ctrl+Q while it renders stops
+// and joins the render thread before the window's scene and structure are destroyed.
+TEST(AppLifetimes, QuittingDuringALongRenderJoinsEveryWorker) {
+    for (int round = 0; round < 2; ++round) {
+        auto w = std::make_unique<MainWindow>();
+        w->resize(1500, 900);
+        w->show();
+        w->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(w.get()));
+        w->openScene("stadium", AccelKind::BruteForce, true);
+        ASSERT_TRUE(QTest::qWaitFor([&] { return w->lastOpenOk().has_value(); }, 60000));
+        ASSERT_TRUE(*w->lastOpenOk());
+        ASSERT_TRUE(w->tasks().busy(TaskKind::Render));
+        QTest::qWait(round * 300);  // at once, and once well under way
+        const std::weak_ptr<const LoadedScene> scene = w->session().sceneRef();
+        QTest::keyClick(w.get(), Qt::Key_Q, Qt::ControlModifier);
+        EXPECT_FALSE(w->isVisible());
+        EXPECT_TRUE(w->tasks().isShutDown());
+        EXPECT_EQ(w->tasks().threads(), 0u);  // joined, not detached
+        // Nothing starts after close.
+        w->renderImage();
+        w->openLesson("6", true);
+        EXPECT_FALSE(w->tasks().busy());
+        w.reset();
+        EXPECT_TRUE(scene.expired());  // no worker kept a share of it
+    }
+}
+
+// Lessons picked in quick succession from the picker (real key presses), then Ctrl+Q at once:
+// every superseded open is cancelled and joined, and nothing runs after close. Without the
+// quit, the last lesson picked is the one shown and no "cancelled" is reported.
+TEST(AppLifetimes, SwitchingLessonsQuicklyThenQuittingIsClean) {
+    for (bool quit : {true, false}) {
+        SCOPED_TRACE(quit);
+        auto w = std::make_unique<MainWindow>();
+        w->resize(1500, 900);
+        w->show();
+        w->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(w.get()));
+        QComboBox* picker = w->lessonPanel()->findChild<QComboBox*>("lessonPicker");
+        ASSERT_NE(picker, nullptr);
+        picker->setFocus();
+        QApplication::processEvents();
+        for (int i = 0; i < 13; ++i) {
+            QTest::keyClick(picker, Qt::Key_Down);
+            QTest::qWait(30);
+        }
+        if (quit) {
+            QTest::keyClick(w.get(), Qt::Key_Q, Qt::ControlModifier);
+            EXPECT_EQ(w->tasks().threads(), 0u);
+            w.reset();
+            continue;
+        }
+        ASSERT_TRUE(w->waitUntilIdle());
+        ASSERT_TRUE(w->lastOpenOk().value_or(false)) << w->lastOpenError().toStdString();
+        EXPECT_EQ(w->lessonPanel()->lesson().number, 13);
+        EXPECT_EQ(w->session().logRef(), w->lessonPanel()->lessonLog());
+        EXPECT_FALSE(w->statusBar()->currentMessage().contains("cancelled"))
+            << w->statusBar()->currentMessage().toStdString();
+    }
+}
+
+// Cancel during a render: the image view says the render was cancelled (not "Rendering..."),
+// pixels can still be clicked and traced, and "Render the image again" starts it again.
+TEST(AppLifetimes, ACancelledRenderSaysSoAndOffersToRenderAgain) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    w.openScene("stadium", AccelKind::BruteForce, true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return w.lastOpenOk().has_value(); }, 60000));
+    ImageView* image = w.imageView();
+    ASSERT_EQ(image->state(), ImageView::State::Rendering);
+    auto* cancel = w.findChild<QPushButton*>("cancelTask");
+    ASSERT_NE(cancel, nullptr);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return cancel->isVisible(); }, 5000));
+    click(cancel, cancel->rect().center());
+    ASSERT_TRUE(w.waitUntilIdle(60000));
+    EXPECT_EQ(image->state(), ImageView::State::Cancelled);
+    EXPECT_TRUE(image->message().contains("cancelled")) << image->message().toStdString();
+    EXPECT_FALSE(image->message().contains("Rendering"));
+    EXPECT_TRUE(w.statusBar()->currentMessage().contains("cancelled"));
+    // A pixel is still traced and replayed.
+    const LogRef before = w.session().logRef();
+    click(image, QPoint(image->width() / 2, image->height() / 2));
+    EXPECT_NE(w.session().logRef(), before);
+    EXPECT_EQ(w.session().logKind(), LogKind::Pixel);
+    EXPECT_GT(w.session().size(), 5u);
+    // Rendering again, offered on the view.
+    QPushButton* again = image->renderButton();
+    ASSERT_TRUE(again->isVisible());
+    click(again, again->rect().center());
+    EXPECT_EQ(image->state(), ImageView::State::Rendering);
+    EXPECT_TRUE(w.tasks().busy(TaskKind::Render));
+    w.close();
+}
+
+// A scene that cannot be opened, with nothing open before (a bad --scene at start-up): the
+// window says why and where to go, not "Rendering..." forever.
+TEST(AppLifetimes, ABadSceneWithNothingOpenSaysSo) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    EXPECT_FALSE(open(w, "no-such-scene", AccelKind::Grid));
+    EXPECT_FALSE(w.lastOpenError().isEmpty());
+    EXPECT_FALSE(w.session().hasScene());
+    EXPECT_EQ(w.imageView()->state(), ImageView::State::NoScene);
+    EXPECT_FALSE(w.imageView()->message().contains("Rendering"));
+    auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+    ASSERT_NE(text, nullptr);
+    EXPECT_TRUE(text->toPlainText().contains("could not be opened"))
+        << text->toPlainText().toStdString();
+    // Every key a user may press there is harmless.
+    for (Qt::Key k : {Qt::Key_B, Qt::Key_R, Qt::Key_N, Qt::Key_C, Qt::Key_End, Qt::Key_Right})
+        QTest::keyClick(&w, k);
+    EXPECT_TRUE(w.waitUntilIdle());
+    EXPECT_FALSE(w.session().hasScene());
 }
 
 int run(const std::string& args) {
