@@ -40,15 +40,15 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     noteRow_ = new QWidget;
     noteRow_->setObjectName("replayNote");
     noteRow_->setStyleSheet(QStringLiteral("#replayNote { background: #fff4d6; }"));
-    auto* nr = new QHBoxLayout(noteRow_);
+    auto* nr = new QVBoxLayout(noteRow_);
     nr->setContentsMargins(6, 4, 6, 4);
     note_ = new QLabel;
     note_->setWordWrap(true);
     note_->setStyleSheet(QStringLiteral("color: #5a4300"));
     auto* back = new QPushButton(tr("Back to the lesson's trace"));
     back->setObjectName("backToLesson");
-    nr->addWidget(note_, 1);
-    nr->addWidget(back);
+    nr->addWidget(note_);
+    nr->addWidget(back, 0, Qt::AlignRight);
     connect(back, &QPushButton::clicked, this, &LessonPanel::lessonTraceRequested);
     noteRow_->hide();
     layout->addWidget(noteRow_);
@@ -132,6 +132,10 @@ void LessonPanel::setLessons(const std::vector<Lesson>& lessons) {
         picker_->addItem(QStringLiteral("%1. %2").arg(l.number).arg(q(l.title.in(lang_))), q(l.id));
 }
 
+void LessonPanel::syncPicker() {
+    picker_->setCurrentIndex(hasLesson_ ? std::max(0, picker_->findData(q(lesson_.id))) : 0);
+}
+
 void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
@@ -168,8 +172,8 @@ void LessonPanel::setReplayNote(const QString& what) {
         noteRow_->hide();
         return;
     }
-    note_->setText(tr("The replay shows %1, not this lesson's trace. The steps and the "
-                      "exercises are about the lesson's trace.")
+    note_->setText(tr("The replay shows %1. The steps and exercises are about the lesson's "
+                      "own trace.")
                        .arg(what));
     noteRow_->show();
 }

@@ -39,6 +39,8 @@ class LessonPanel : public QWidget {
     /// say so and offer the way back; an empty `what` hides the note.
     void setReplayNote(const QString& what);
     QString replayNote() const;
+    /// The picker shows the open lesson again (after a pick that could not be opened).
+    void syncPicker();
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
     void showText(const QString& markdown);
     bool hasLesson() const { return hasLesson_; }

@@ -535,8 +535,7 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             if (outcome.superseded) return;
             if (!outcome.ok()) {
                 openFailed(tr("lesson %1").arg(lesson.number), outcome, quiet);
-                if (lesson_->hasLesson()) lesson_->showLesson(lesson_->lesson(),
-                                                              lesson_->lessonLog(), nullptr);
+                lesson_->syncPicker();  // back to what is shown
                 return;
             }
             const auto shows = [&](LessonView v) {
@@ -754,6 +753,10 @@ void MainWindow::openCompare() {
             compare->show();
             compare_ = compare;
         });
+}
+
+CompareWindow* MainWindow::compareWindow() const {
+    return compare_.data();
 }
 
 QSize MainWindow::fitToScreen(QSize wanted) const {

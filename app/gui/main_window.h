@@ -64,7 +64,7 @@ class MainWindow : public QMainWindow {
     /// Opens compare mode (midpoint, median, SAH) once its three trees are built.
     void openCompare();
     /// The compare window last opened, while it is open.
-    CompareWindow* compareWindow() const { return compare_; }
+    CompareWindow* compareWindow() const;
 
     /// Runs `f` on the GUI thread once no background work is left (at once if none is).
     void whenIdle(std::function<void()> f);
