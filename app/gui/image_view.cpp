@@ -138,12 +138,12 @@ void ImageView::paintEvent(QPaintEvent*) {
 void ImageView::mousePressEvent(QMouseEvent* e) {
     const QRectF r = imageRect();
     if (!session_.scene3D() || r.isEmpty() || !r.contains(e->position())) return;
-    const int x = std::clamp(
-        static_cast<int>((e->position().x() - r.x()) / r.width() * size_.width()), 0,
-        size_.width() - 1);
-    const int y = std::clamp(
-        static_cast<int>((e->position().y() - r.y()) / r.height() * size_.height()), 0,
-        size_.height() - 1);
+    const int x =
+        std::clamp(static_cast<int>((e->position().x() - r.x()) / r.width() * size_.width()), 0,
+                   size_.width() - 1);
+    const int y =
+        std::clamp(static_cast<int>((e->position().y() - r.y()) / r.height() * size_.height()), 0,
+                   size_.height() - 1);
     marked_ = {x, y};
     update();
     emit pixelClicked(x, y);

@@ -313,8 +313,9 @@ void MainWindow::buildUi() {
         if (session_.is2D())
             session_.traceExampleRay();
         else
-            statusBar()->showMessage(tr("R replays the example ray of a 2D scene; in 3D, click "
-                                        "a pixel of the image."));
+            statusBar()->showMessage(
+                tr("R replays the example ray of a 2D scene; in 3D, click "
+                   "a pixel of the image."));
     });
     replay->addAction(tr("&First event"), QKeySequence(Qt::Key_Home), this,
                       [this] { session_.setCursor(0); });
@@ -539,8 +540,7 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
                 return;
             }
             const auto shows = [&](LessonView v) {
-                return std::find(lesson.views.begin(), lesson.views.end(), v) !=
-                       lesson.views.end();
+                return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
             };
             showScene(std::move(o.scene), shows(LessonView::Image));
             session_.showLog(o.trace, lesson.trace.kind == LessonTrace::Kind::Build
@@ -728,8 +728,7 @@ void MainWindow::openCompare() {
         [name = session_.name(), kind](const ProgressFn& progress) {
             return CompareWindow::prepare(name, kind, progress);
         },
-        [this, generation, pixel](CompareWindow::Prepared&& prepared,
-                                  const TaskOutcome& outcome) {
+        [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
             if (outcome.cancelled) {
                 statusBar()->showMessage(tr("Compare cancelled"));

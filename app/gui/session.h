@@ -53,7 +53,9 @@ class Session : public QObject {
     /// Throws BuildCancelled when `progress` says stop.
     static LogRef recordBuild(const SceneRef& scene, const ProgressFn& progress = {});
     /// Whether the structure has a construction to replay (a grid or brute force has none).
-    static bool hasBuild(AccelKind kind) { return kind == AccelKind::KdTree || kind == AccelKind::Bvh; }
+    static bool hasBuild(AccelKind kind) {
+        return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
+    }
 
     /// Shows a prepared scene (GUI thread), with an empty log.
     void adopt(SceneRef scene);

@@ -29,8 +29,8 @@ enum class TaskKind { Scene, Render, Build, Compare, Sweep };
 
 /// How a task ended, as its `done` sees it.
 struct TaskOutcome {
-    bool cancelled = false;   // Cancel pressed, superseded, or the work threw BuildCancelled
-    bool superseded = false;  // a newer task of the same kind replaced it: nobody waits for it
+    bool cancelled = false;    // Cancel pressed, superseded, or the work threw BuildCancelled
+    bool superseded = false;   // a newer task of the same kind replaced it: nobody waits for it
     std::exception_ptr error;  // what the work threw, BuildCancelled aside
     bool ok() const { return !cancelled && !error; }
 };
@@ -98,8 +98,7 @@ class TaskRunner : public QObject {
         std::thread thread;
     };
 
-    bool launch(TaskKind kind, const QString& label,
-                std::function<void(const ProgressFn&)> work,
+    bool launch(TaskKind kind, const QString& label, std::function<void(const ProgressFn&)> work,
                 std::function<void(const TaskOutcome&)> finish);
     /// The GUI thread's side: join finished workers, call their `done`, report progress.
     void poll();

@@ -8,19 +8,21 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include "raystep/scene_loader.h"
+
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QFile>
 #include <QImage>
 #include <QMouseEvent>
-#include <QComboBox>
 #include <QPushButton>
-#include <QStatusBar>
-#include <QTextBrowser>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTest>
+#include <QTextBrowser>
 
 #include <sys/wait.h>
 
@@ -28,6 +30,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <thread>
 
 namespace raystep::gui {
 namespace {
@@ -380,6 +383,78 @@ TEST(App, EveryLessonOpensAndEveryStepShows) {
         EXPECT_GT(colours(grab(&w)), 50u);
     }
     w.tasks().cancel(TaskKind::Render);  // the last lesson's image is not needed
+}
+
+// The runner on its own: results reach `done` on the GUI thread, errors and cancels are told
+// apart, a newer task of a kind supersedes the older, and shutdown joins every thread at once
+// and calls no `done` after it.
+TEST(TaskRunner, HandsOverCancelsSupersedesAndJoins) {
+    TaskRunner runner;
+    const auto guiThread = std::this_thread::get_id();
+    int value = 0;
+    bool onGuiThread = false;
+    ASSERT_TRUE(runner.start<int>(
+        TaskKind::Render, "answer", [](const ProgressFn&) { return 42; },
+        [&](int&& v, const TaskOutcome& o) {
+            EXPECT_TRUE(o.ok());
+            value = v;
+            onGuiThread = std::this_thread::get_id() == guiThread;
+        }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !runner.busy(); }, 10000));
+    EXPECT_EQ(value, 42);
+    EXPECT_TRUE(onGuiThread);
+
+    // An error is an error; BuildCancelled thrown by the work is a cancel.
+    std::optional<TaskOutcome> failed, stopped;
+    runner.start<int>(
+        TaskKind::Scene, "fails",
+        [](const ProgressFn&) -> int { throw SceneError("bad.json", 3, "camera", "bad"); },
+        [&](int&&, const TaskOutcome& o) { failed = o; });
+    runner.start<int>(
+        TaskKind::Build, "stops", [](const ProgressFn&) -> int { throw BuildCancelled(); },
+        [&](int&&, const TaskOutcome& o) { stopped = o; });
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !runner.busy(); }, 10000));
+    ASSERT_TRUE(failed && stopped);
+    EXPECT_TRUE(failed->error && !failed->cancelled);
+    EXPECT_TRUE(stopped->cancelled && !stopped->error);
+
+    // Work that runs until told to stop: a second task of its kind supersedes it.
+    const auto untilStopped = [](const ProgressFn& progress) {
+        while (progress(0.5)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return 1;
+    };
+    std::vector<std::string> ended;
+    runner.start<int>(TaskKind::Sweep, "first", untilStopped, [&](int&&, const TaskOutcome& o) {
+        ended.push_back(o.superseded ? "first superseded" : "first");
+    });
+    runner.start<int>(
+        TaskKind::Sweep, "second", [](const ProgressFn&) { return 2; },
+        [&](int&&, const TaskOutcome& o) {
+            ended.push_back(o.ok() ? "second ok" : "second not ok");
+        });
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !runner.busy(); }, 10000));
+    std::sort(ended.begin(), ended.end());
+    EXPECT_EQ(ended, (std::vector<std::string>{"first superseded", "second ok"}));
+
+    // Shutdown: every thread joined before it returns, no `done` after, nothing new starts.
+    bool called = false;
+    auto alive = std::make_shared<int>(7);
+    const std::weak_ptr<int> watch = alive;
+    for (TaskKind k : {TaskKind::Render, TaskKind::Compare})
+        runner.start<int>(
+            k, "long",
+            [alive, untilStopped](const ProgressFn& p) { return untilStopped(p) + *alive; },
+            [&](int&&, const TaskOutcome&) { called = true; });
+    alive.reset();
+    EXPECT_EQ(runner.threads(), 2u);
+    runner.shutdown();
+    EXPECT_EQ(runner.threads(), 0u);
+    EXPECT_TRUE(watch.expired());  // what the work held went with it
+    EXPECT_FALSE(runner.start<int>(
+        TaskKind::Render, "late", [](const ProgressFn&) { return 0; },
+        [&](int&&, const TaskOutcome&) { called = true; }));
+    QTest::qWait(100);
+    EXPECT_FALSE(called);
 }
 
 // --- Issue 15: nothing a user does crashes the app or grades against the wrong trace. ---
