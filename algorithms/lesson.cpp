@@ -1249,4 +1249,20 @@ std::vector<GridSweepRow> runGridSweep(const std::variant<Scene, Scene2D>& scene
     return rows;
 }
 
+void mergeProgress(Progress& into, const Progress& saved) {
+    for (const auto& [id, theirs] : saved.lessons) {
+        const auto [it, added] = into.lessons.try_emplace(id, theirs);
+        if (added) continue;
+        for (const auto& [ex, rec] : theirs.exercises) {
+            const auto [mine, fresh] = it->second.exercises.try_emplace(ex, rec);
+            if (fresh) continue;
+            if (rec.attempts > mine->second.attempts) {
+                mine->second.attempts = rec.attempts;
+                mine->second.answer = rec.answer;
+            }
+            mine->second.correct = mine->second.correct || rec.correct;
+        }
+    }
+}
+
 }  // namespace raystep

@@ -230,6 +230,11 @@ struct Progress {
 };
 Progress parseProgress(std::string_view text, const std::string& fileName);
 std::string progressToJson(const Progress& p);
+/// Folds progress saved by another run (another window of the app, open at the same time) into
+/// `into`, so that saving `into` loses neither's answers: an exercise right in either is right,
+/// its attempts are the larger count (with that run's answer), lessons and exercises only one
+/// knows are kept, and `into`'s own steps win. Records already in `into` do not move.
+void mergeProgress(Progress& into, const Progress& saved);
 /// A report for a course: per lesson, exercises done, right, attempts (Markdown).
 std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang);
 

@@ -24,6 +24,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListView>
+#include <QLockFile>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -634,8 +635,22 @@ void MainWindow::applyStep(int index) {
 }
 
 void MainWindow::saveProgress() {
-    // QSaveFile writes beside and renames: a crash never leaves half a progress file.
+    // Another window of the app may have saved since: fold its answers in under a lock, then
+    // write beside and rename (QSaveFile), so neither a crash nor a second window loses work.
     QDir().mkpath(QFileInfo(progressPath_).absolutePath());
+    QLockFile lock(progressPath_ + ".lock");
+    if (!lock.tryLock(2000)) {
+        statusBar()->showMessage(tr("Cannot save the progress: %1 is locked").arg(progressPath_));
+        return;
+    }
+    if (QFile in(progressPath_); in.open(QIODevice::ReadOnly)) {
+        try {
+            mergeProgress(studentProgress_,
+                          parseProgress(in.readAll().toStdString(), progressPath_.toStdString()));
+        } catch (const LessonError&) {
+            // Unreadable now (it was read at start): replaced by what this window knows.
+        }
+    }
     QSaveFile f(progressPath_);
     if (!f.open(QIODevice::WriteOnly) ||
         f.write(QByteArray::fromStdString(progressToJson(studentProgress_))) < 0 || !f.commit())

@@ -276,6 +276,38 @@ TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
                  LessonError);
 }
 
+// Two windows of the app answer different exercises and each saves: what the other saved is
+// folded in, so neither loses an answer.
+TEST(Lessons, MergingProgressKeepsEveryAnswer) {
+    Progress a, b;
+    a.lessons["grid-2d-dda"].step = 2;
+    a.lessons["grid-2d-dda"].exercises["next-cell"] = {false, 1, "3,1"};
+    a.lessons["grid-2d-dda"].exercises["tdelta-y"] = {true, 2, "1.333"};
+    b.lessons["grid-2d-dda"].step = 0;
+    b.lessons["grid-2d-dda"].exercises["next-cell"] = {true, 3, "2,2"};
+    b.lessons["grid-2d-dda"].exercises["tmax-x"] = {false, 1, "0.6"};
+    b.lessons["mailboxing"].exercises["skips"] = {true, 1, "5"};
+    const LessonProgress::ExerciseRecord* kept = &a.lessons["grid-2d-dda"].exercises["tdelta-y"];
+    mergeProgress(a, b);
+    const auto& dda = a.lessons.at("grid-2d-dda");
+    EXPECT_EQ(dda.step, 2);  // this window's own step
+    ASSERT_EQ(dda.exercises.size(), 3u);
+    EXPECT_TRUE(dda.exercises.at("next-cell").correct);
+    EXPECT_EQ(dda.exercises.at("next-cell").attempts, 3);
+    EXPECT_EQ(dda.exercises.at("next-cell").answer, "2,2");
+    EXPECT_TRUE(dda.exercises.at("tdelta-y").correct);
+    EXPECT_EQ(dda.exercises.at("tdelta-y").attempts, 2);
+    EXPECT_EQ(dda.exercises.at("tmax-x").answer, "0.6");
+    EXPECT_TRUE(a.lessons.at("mailboxing").exercises.at("skips").correct);
+    EXPECT_EQ(&dda.exercises.at("tdelta-y"), kept);  // the panel's pointers stay valid
+    // A right answer is never undone by a run that got it wrong more often.
+    Progress c;
+    c.lessons["grid-2d-dda"].exercises["tdelta-y"] = {false, 5, "2"};
+    mergeProgress(a, c);
+    EXPECT_TRUE(a.lessons.at("grid-2d-dda").exercises.at("tdelta-y").correct);
+    EXPECT_EQ(a.lessons.at("grid-2d-dda").exercises.at("tdelta-y").attempts, 5);
+}
+
 TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
     Progress p;
     p.lessons["grid-2d-dda"].step = 2;

@@ -666,6 +666,29 @@ TEST(AppLifetimes, ABadSceneWithNothingOpenSaysSo) {
     EXPECT_FALSE(w.session().hasScene());
 }
 
+// Two windows of the app open at once (a student's two sessions): each saves its answers, and
+// neither loses the other's.
+TEST(AppLifetimes, TwoWindowsSavingProgressLoseNoAnswer) {
+    QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                  "/progress.json");
+    MainWindow a, b;
+    ASSERT_TRUE(openLesson(a, "6"));
+    ASSERT_TRUE(openLesson(b, "6"));
+    a.lessonPanel()->selectExercise(0);
+    EXPECT_TRUE(a.lessonPanel()->submit("1.33333"));  // tDeltaY = 1 / 0.75
+    b.lessonPanel()->selectExercise(2);
+    EXPECT_FALSE(b.lessonPanel()->submit("3,1"));  // the next cell is (2, 2)
+    a.lessonPanel()->goToStep(1);                  // a saves again after b
+    QFile f(a.progressPath());
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const Progress saved = parseProgress(f.readAll().toStdString(), "progress.json");
+    const auto& ex = saved.lessons.at("grid-2d-dda").exercises;
+    ASSERT_TRUE(ex.count("tdelta-y") && ex.count("next-cell"));
+    EXPECT_TRUE(ex.at("tdelta-y").correct);
+    EXPECT_EQ(ex.at("next-cell").answer, "3,1");
+    EXPECT_EQ(saved.lessons.at("grid-2d-dda").step, 1);
+}
+
 int run(const std::string& args) {
     const int status = std::system((std::string("'" RAYSTEP_APP "' ") + args).c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
