@@ -201,8 +201,9 @@ void writeFilesAtomic(const std::vector<FileToWrite>& files) {
         for (std::size_t j = 0; j < i; ++j) {
             std::error_code undo;
             if (!staged[j].backup.empty()) {
+                // Restored, or if not, the old file is left beside the new one, not deleted.
                 fs::rename(staged[j].backup, staged[j].target, undo);
-                if (!undo) staged[j].backup.clear();
+                staged[j].backup.clear();
             } else if (!staged[j].existed) {
                 fs::remove(staged[j].target, undo);
             }
