@@ -2,6 +2,7 @@
 
 #include "common.h"
 
+#include <climits>
 #include <cmath>
 #include <sstream>
 
@@ -12,18 +13,25 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
         ->capture_default_str();
     cmd->add_option("--split", a.split, "kd-tree / BVH split: midpoint, median or sah")
         ->capture_default_str();
-    cmd->add_option("--c-trav", a.cTrav, "Tree SAH: cost of a traversal step (default 1)");
-    cmd->add_option("--c-isect", a.cIsect, "Tree SAH: cost of a primitive test (default 5)");
+    cmd->add_option("--c-trav", a.cTrav, "Tree SAH: cost of a traversal step (default 1)")
+        ->check(finiteNumber());
+    cmd->add_option("--c-isect", a.cIsect, "Tree SAH: cost of a primitive test (default 5)")
+        ->check(finiteNumber());
     cmd->add_option("--empty-bonus", a.emptyBonus,
-                    "kd-tree SAH: discount for a split with an empty side, 0..1 (default 0.5)");
+                    "kd-tree SAH: discount for a split with an empty side, 0..1 (default 0.5)")
+        ->check(finiteNumber());
     cmd->add_option("--max-depth", a.maxDepth,
-                    "kd-tree: depth limit (default round(8 + 1.3 log2 N))");
+                    "kd-tree: depth limit (default round(8 + 1.3 log2 N))")
+        ->transform(wholeNumber(1, 60));
     cmd->add_option("--leaf-size", a.leafSize,
-                    "Trees: this many primitives or fewer make a leaf (kd: SAH 1, else 4; BVH 4)");
-    cmd->add_option("--buckets", a.buckets, "BVH SAH: bins along the axis (default 12)");
+                    "Trees: this many primitives or fewer make a leaf (kd: SAH 1, else 4; BVH 4)")
+        ->transform(wholeNumber(1, 1000000));
+    cmd->add_option("--buckets", a.buckets, "BVH SAH: bins along the axis (default 12)")
+        ->transform(wholeNumber(2, 256));
     cmd->add_option("--bin-above", a.binAbove,
                     "kd-tree SAH: nodes of more primitives pick among 256 bins per axis "
-                    "(default: the exact event sweep everywhere)");
+                    "(default: the exact event sweep everywhere)")
+        ->transform(wholeNumber(1, INT_MAX));
     cmd->add_option("--kd-build", a.kdBuild,
                     "kd-tree SAH build: exact (every split event, perfect splits) or fast (32 bins "
                     "per axis, all cores)")

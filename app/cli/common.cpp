@@ -38,13 +38,57 @@ bool hasExtension(const std::string& path, const std::string& ext) {
     return e == ext;
 }
 
-std::optional<std::string> checkWritable(const std::string& option, const std::string& path) {
-    namespace fs = std::filesystem;
-    const fs::path parent = fs::path(path).parent_path();
-    if (!parent.empty() && !fs::is_directory(parent))
-        return option + " " + path + ": folder '" + parent.string() + "' does not exist";
-    if (fs::is_directory(path)) return option + " " + path + ": is a folder";
+std::optional<std::string> checkOutputs(
+    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths) {
+    for (std::size_t i = 0; i < optionsAndPaths.size(); ++i) {
+        const auto& [option, path] = optionsAndPaths[i];
+        if (path.empty()) continue;
+        if (const std::string why = writeProblem(path); !why.empty())
+            return option + " " + path + ": " + why;
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto& [otherOption, otherPath] = optionsAndPaths[j];
+            if (!otherPath.empty() && sameFile(otherPath, path))
+                return option + " " + path + ": the same file as " + otherOption;
+        }
+    }
     return std::nullopt;
+}
+
+std::optional<std::string> writeOutputs(const std::vector<FileToWrite>& files) {
+    try {
+        writeFilesAtomic(files);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return std::nullopt;
+}
+
+CLI::Validator wholeNumber(std::uint64_t lo, std::uint64_t hi) {
+    const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+    return CLI::Validator(
+        [lo, hi, range](std::string& text) -> std::string {
+            const char* first = text.data();
+            const char* last = text.data() + text.size();
+            if (first != last && *first == '+') ++first;  // as parseNumbers takes it
+            std::uint64_t value = 0;
+            const auto [ptr, ec] = std::from_chars(first, last, value);  // no sign, base 10
+            if (first == last || ec != std::errc() || ptr != last || value < lo || value > hi)
+                return "'" + text + "' is not a whole number from " + range;
+            // CLI11 reads "010" as octal 8 and "0x10" as hex: hand it plain decimal digits.
+            text = std::to_string(value);
+            return {};
+        },
+        "INT in [" + range + "]");
+}
+
+CLI::Validator finiteNumber() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const auto v = parseNumbers(text);
+            if (!v || v->size() != 1) return "'" + text + "' is not a finite number";
+            return {};
+        },
+        "NUMBER");
 }
 
 std::optional<int> parseInt(const std::string& text, int lo, int hi) {

@@ -1,7 +1,14 @@
 #pragma once
-// What every raystep-cli command shares: the one-line error and strict number parsing.
+// What every raystep-cli command shares: the one-line error, strict number parsing, and the
+// output files (checked before the work, written all or none after it).
+#include "raystep/image.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raystep::cli {
@@ -17,8 +24,20 @@ std::optional<std::vector<double>> parseNumbers(const std::string& text, char se
 /// True if `path` ends in `ext` (".png"), in any case.
 bool hasExtension(const std::string& path, const std::string& ext);
 
-/// Checks that a file can be created at `path` before any long work is done; the problem if not.
-std::optional<std::string> checkWritable(const std::string& option, const std::string& path);
+/// Checks, before any long work, that every output (option, path) can be written and that no two
+/// options name the same file; skips empty paths. The one-line problem if not.
+std::optional<std::string> checkOutputs(
+    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths);
+
+/// Writes a command's output files all or none (writeFilesAtomic); the one-line problem if not.
+std::optional<std::string> writeOutputs(const std::vector<FileToWrite>& files);
+
+/// CLI11 check for a whole-number option: decimal digits only (no hex, octal, exponent or blank),
+/// range-checked in 64 bits before CLI11 converts it, so no value wraps or saturates.
+CLI::Validator wholeNumber(std::uint64_t lo, std::uint64_t hi);
+
+/// CLI11 check for a real-number option: finite (no nan, inf or overflow to inf).
+CLI::Validator finiteNumber();
 
 /// Whole number from text, within [lo, hi]; nullopt otherwise.
 std::optional<int> parseInt(const std::string& text, int lo, int hi);

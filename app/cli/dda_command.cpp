@@ -49,8 +49,11 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
         return v;
     };
     if (a.json) {
-        nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-        for (bool more = dda.valid(); more; more = dda.next()) {
+        // Streamed a step at a time (a long walk would not fit in memory as one JSON value), in
+        // the layout dump(2) gives {"steps": [...]}.
+        std::printf("{\n  \"steps\": [");
+        bool first = true;
+        for (bool more = dda.valid(); more && !std::ferror(stdout); more = dda.next()) {
             nlohmann::ordered_json s;
             s["cell"] = std::vector<int>(&dda.cell()[0], &dda.cell()[0] + N);
             const std::vector<int> taken = axes(dda.axesTaken());
@@ -69,9 +72,14 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
             s["tDelta"] = tDelta;
             s["t_enter"] = double(dda.tEnter());
             s["t_exit"] = double(dda.tExit());
-            steps.push_back(s);
+            std::string text = s.dump(2);
+            for (std::size_t at = text.find('\n'); at != std::string::npos;
+                 at = text.find('\n', at + 1))
+                text.insert(at + 1, "    ");
+            std::printf("%s\n    %s", first ? "" : ",", text.c_str());
+            first = false;
         }
-        std::cout << nlohmann::ordered_json{{"steps", steps}}.dump(2) << "\n";
+        std::printf(first ? "]\n}\n" : "\n  ]\n}\n");
         return 0;
     }
     const auto num = [](T v) {
@@ -94,7 +102,7 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
     for (int i = 0; i < N; ++i) std::printf(" %11s%c", "tMax", kAxisNames[i]);
     std::printf("  %10s %10s  next step\n", "t enter", "t exit");
     int row = 0;
-    for (bool more = true; more;) {
+    for (bool more = true; more && !std::ferror(stdout);) {
         std::printf(" %4d", row++);
         for (int i = 0; i < N; ++i) std::printf(" %5d", dda.cell()[i]);
         const VecN<N, T> tMax = dda.tMax();
@@ -136,9 +144,12 @@ int runDda(const DdaArgs& a) {
     if (!hi) return fail("--max " + a.max + ": expected " + dims + " (as many as --grid)");
     if (!o) return fail("--origin " + a.origin + ": expected " + dims + " (as many as --grid)");
     if (!d) return fail("--dir " + a.dir + ": expected " + dims + " (as many as --grid)");
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
         if (!((*hi)[i] > (*lo)[i]))
             return fail("--max " + a.max + ": must be greater than --min on every axis");
+        if (!std::isfinite((*hi)[i] - (*lo)[i]))
+            return fail("--max " + a.max + ": the grid's size from --min overflows a double");
+    }
     bool zero = true;
     for (double x : *d) zero = zero && x == 0.0;
     if (zero) return fail("--dir " + a.dir + ": the direction must not be zero");
@@ -151,6 +162,11 @@ int runDda(const DdaArgs& a) {
                 if (!std::isfinite(float(x)))
                     return fail("--precision float: " + std::to_string(x) +
                                 " is too large for float");
+        for (std::size_t i = 0; i < n; ++i)
+            if (!std::isfinite(float((*hi)[i]) - float((*lo)[i])))
+                return fail(
+                    "--precision float: the grid's size from --min to --max overflows "
+                    "a float");
         return n == 2 ? walk<2, float>(a, *res, *lo, *hi, *o, *d)
                       : walk<3, float>(a, *res, *lo, *hi, *o, *d);
     }

@@ -17,8 +17,10 @@
 
 #include <tbb/info.h>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -63,12 +65,9 @@ int runRender(const RenderArgs& a) {
         return fail("-o " + output + ": the image is written as PNG; name it *.png");
     if (!a.heatmap.empty() && !cli::hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
-    for (const auto& [opt, path] : {std::pair<std::string, std::string>{"-o", output},
-                                    {"--stats", a.stats},
-                                    {"--heatmap", a.heatmap}}) {
-        if (path.empty()) continue;
-        if (auto problem = cli::checkWritable(opt, path)) return fail(*problem);
-    }
+    if (auto problem =
+            cli::checkOutputs({{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}}))
+        return fail(*problem);
     cli::AccelChoice choice;
     if (auto problem = cli::resolveAccel(a.accel, choice)) return fail(*problem);
     const auto offset = parseRayOffset(a.rayOffset);
@@ -105,57 +104,61 @@ int runRender(const RenderArgs& a) {
         render(scene, *accel, opt, [&bar](double f) { return bar.update(f); });
     bar.finish();
 
-    try {
-        writePng(output, toSrgb8(result.image), opt.width, opt.height);
-        if (!a.heatmap.empty())
-            writePng(a.heatmap, heatmapRgb8(result.costPerPixel, opt.width, opt.height), opt.width,
-                     opt.height);
-        if (!a.stats.empty()) {
-            const RayCounters& c = result.counters;
-            nlohmann::ordered_json j;
-            j["scene"] = scene.name;
-            j["width"] = opt.width;
-            j["height"] = opt.height;
-            j["spp"] = opt.spp;
-            j["bounces"] = opt.trace.bounces;
-            j["diffuse_samples"] = opt.trace.diffuseSamples;
-            j["accel"] = cli::describeAccel(choice);
-            j["precision"] = a.accel.precision;
-            j["ray_offset"] = a.rayOffset;
-            j["triangle_method"] = a.accel.triangleMethod;
-            j["sphere_method"] = a.accel.sphereMethod;
-            if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
-                const auto& res = grid->spec().res;
-                j["grid"] = {{"cells", {res.x, res.y, res.z}},
-                             {"references", grid->references()},
-                             {"empty_cells", grid->emptyCells()},
-                             {"mailbox", a.accel.mailbox}};
-            }
-            if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
-                const BuildSummary b = summarize(*accel);
-                j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
-                             {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},
-                             {"sah_cost", b.stats.sahCost},   {"build_ms", b.stats.buildMs}};
-            }
-            j["threads"] = opt.threads;
-            j["seed"] = opt.seed;
-            j["primitives"] = {{"spheres", scene.spheres.size()},
-                               {"triangles", scene.triangles.size()}};
-            for (int k = 0; k < kRayKindCount; ++k)
-                j["rays"][std::string(kRayKindNames[k])] = c.rays[k];
-            j["rays"]["total"] = c.totalRays();
-            j["primitive_tests"] = c.traversal.primitiveTests;
-            j["node_visits"] = c.traversal.nodeVisits;
-            j["mailbox_skips"] = c.traversal.mailboxSkips;
-            j["max_primitive_tests_per_pixel"] =
-                *std::max_element(result.costPerPixel.begin(), result.costPerPixel.end());
-            j["render_ms"] = result.renderMs;
-            j["mrays_per_s"] = c.totalRays() / (result.renderMs * 1e3);
-            writeFileAtomic(a.stats, j.dump(2) + "\n");
-        }
-    } catch (const std::exception& e) {
-        return fail(e.what());
+    // The image, the heat map and the stats are written all or none, once all are ready.
+    std::vector<FileToWrite> files;
+    const std::string png = encodePng(output, toSrgb8(result.image), opt.width, opt.height);
+    files.push_back({output, png});
+    std::string heatmapPng, statsJson;
+    if (!a.heatmap.empty()) {
+        heatmapPng = encodePng(a.heatmap, heatmapRgb8(result.costPerPixel, opt.width, opt.height),
+                               opt.width, opt.height);
+        files.push_back({a.heatmap, heatmapPng});
     }
+    if (!a.stats.empty()) {
+        const RayCounters& c = result.counters;
+        nlohmann::ordered_json j;
+        j["scene"] = scene.name;
+        j["width"] = opt.width;
+        j["height"] = opt.height;
+        j["spp"] = opt.spp;
+        j["bounces"] = opt.trace.bounces;
+        j["diffuse_samples"] = opt.trace.diffuseSamples;
+        j["accel"] = cli::describeAccel(choice);
+        j["precision"] = a.accel.precision;
+        j["ray_offset"] = a.rayOffset;
+        j["triangle_method"] = a.accel.triangleMethod;
+        j["sphere_method"] = a.accel.sphereMethod;
+        if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
+            const auto& res = grid->spec().res;
+            j["grid"] = {{"cells", {res.x, res.y, res.z}},
+                         {"references", grid->references()},
+                         {"empty_cells", grid->emptyCells()},
+                         {"mailbox", a.accel.mailbox}};
+        }
+        if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+            const BuildSummary b = summarize(*accel);
+            j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
+                         {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},
+                         {"sah_cost", b.stats.sahCost},   {"build_ms", b.stats.buildMs}};
+        }
+        j["threads"] = opt.threads;
+        j["seed"] = opt.seed;
+        j["primitives"] = {{"spheres", scene.spheres.size()},
+                           {"triangles", scene.triangles.size()}};
+        for (int k = 0; k < kRayKindCount; ++k)
+            j["rays"][std::string(kRayKindNames[k])] = c.rays[k];
+        j["rays"]["total"] = c.totalRays();
+        j["primitive_tests"] = c.traversal.primitiveTests;
+        j["node_visits"] = c.traversal.nodeVisits;
+        j["mailbox_skips"] = c.traversal.mailboxSkips;
+        j["max_primitive_tests_per_pixel"] =
+            *std::max_element(result.costPerPixel.begin(), result.costPerPixel.end());
+        j["render_ms"] = result.renderMs;
+        j["mrays_per_s"] = c.totalRays() / (result.renderMs * 1e3);
+        statsJson = j.dump(2) + "\n";
+        files.push_back({a.stats, statsJson});
+    }
+    if (auto problem = cli::writeOutputs(files)) return fail(*problem);
     std::printf("wrote %s (%dx%d, %d spp, %llu rays, %.0f ms)\n", output.c_str(), opt.width,
                 opt.height, opt.spp, static_cast<unsigned long long>(result.counters.totalRays()),
                 result.renderMs);
@@ -180,24 +183,27 @@ int main(int argc, char** argv) {
     render->add_option("scene", r.scene, "Built-in scene name or scene file (default: default)");
     render->add_option("-o,--output", r.output, "Output PNG (default: <scene>.png)");
     render->add_option("--width", r.width, "Image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
+        ->transform(cli::wholeNumber(1, kMaxImageSide));
     render->add_option("--height", r.height, "Image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
+        ->transform(cli::wholeNumber(1, kMaxImageSide));
     render->add_option("--bounces", r.bounces, "Depth of secondary rays (0 = primary rays only)")
-        ->check(CLI::Range(0, 64));
-    render->add_option("--spp", r.spp, "Jittered samples per pixel")->check(CLI::Range(1, 4096));
+        ->transform(cli::wholeNumber(0, 64));
+    render->add_option("--spp", r.spp, "Jittered samples per pixel")
+        ->transform(cli::wholeNumber(1, 4096));
     render
         ->add_option("--diffuse-samples", r.diffuseSamples,
                      "Random diffuse bounce rays at the first diffuse hit (0 = none)")
-        ->check(CLI::Range(0, 1024));
+        ->transform(cli::wholeNumber(0, 1024));
     cli::addAccelOptions(render, r.accel);
     render
         ->add_option("--ray-offset", r.rayOffset,
                      "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
         ->capture_default_str();
     render->add_option("--threads", r.threads, "Threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
-    render->add_option("--seed", r.seed, "Seed of the random numbers")->capture_default_str();
+        ->transform(cli::wholeNumber(1, 1024));
+    render->add_option("--seed", r.seed, "Seed of the random numbers")
+        ->transform(cli::wholeNumber(0, UINT64_MAX))
+        ->capture_default_str();
     render->add_option("--stats", r.stats, "Write ray counts and timings as JSON");
     render->add_option("--heatmap", r.heatmap, "Write primitive tests per pixel as a PNG heat map");
 
@@ -232,13 +238,35 @@ int main(int argc, char** argv) {
         return fail(e.what());
     }
 
-    if (app.got_subcommand("scenes")) return listScenes();
-    if (app.got_subcommand("intersect")) return cli::runIntersect(intersectArgs);
-    if (app.got_subcommand("dda")) return cli::runDda(ddaArgs);
-    if (app.got_subcommand("build")) return cli::runBuild(buildArgs);
-    if (app.got_subcommand("trace")) return cli::runTrace(traceArgs);
-    if (app.got_subcommand("compare")) return cli::runCompare(compareArgs);
-    if (app.got_subcommand("lesson"))
-        return cli::runLesson(app.get_subcommand("lesson"), lessonArgs);
-    return runRender(r);
+    int code = 0;
+    // Whatever a command did not catch (a path the file system refuses, memory) is still bad
+    // input: one line and exit 2, never an abort.
+    try {
+        if (app.got_subcommand("scenes"))
+            code = listScenes();
+        else if (app.got_subcommand("intersect"))
+            code = cli::runIntersect(intersectArgs);
+        else if (app.got_subcommand("dda"))
+            code = cli::runDda(ddaArgs);
+        else if (app.got_subcommand("build"))
+            code = cli::runBuild(buildArgs);
+        else if (app.got_subcommand("trace"))
+            code = cli::runTrace(traceArgs);
+        else if (app.got_subcommand("compare"))
+            code = cli::runCompare(compareArgs);
+        else if (app.got_subcommand("lesson"))
+            code = cli::runLesson(app.get_subcommand("lesson"), lessonArgs);
+        else
+            code = runRender(r);
+    } catch (const std::filesystem::filesystem_error& e) {
+        return fail(e.path1().string() + ": " + e.code().message());
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    // Output redirected to a full disk or a closed file is a failed write too.
+    errno = 0;
+    if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && code == 0)
+        return fail(std::string("standard output: cannot write: ") +
+                    (errno ? std::strerror(errno) : "write error"));
+    return code;
 }

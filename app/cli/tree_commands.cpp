@@ -54,7 +54,7 @@ nlohmann::ordered_json statsJson(const BuildSummary& b) {
 
 void addCapOption(CLI::App* cmd, std::size_t& cap) {
     cmd->add_option("--max-events", cap, "Stop recording after this many events")
-        ->check(CLI::Range(std::size_t(1), std::size_t(100'000'000)))
+        ->transform(wholeNumber(1, 100'000'000))
         ->capture_default_str();
 }
 
@@ -74,8 +74,7 @@ void addBuildCommand(CLI::App& app, BuildArgs& a) {
 int runBuild(const BuildArgs& a) {
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (!a.events.empty())
-        if (auto problem = checkWritable("--events", a.events)) return fail(*problem);
+    if (auto problem = checkOutputs({{"--events", a.events}})) return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
         any = loadAnyScene(a.scene);
@@ -104,7 +103,8 @@ int runBuild(const BuildArgs& a) {
         info.what = "build";
         info.scene = scene.name;
         info.accel = summary.description;
-        writeFileAtomic(a.events, traceToJson(log, info));
+        if (auto problem = writeOutputs({{a.events, traceToJson(log, info)}}))
+            return fail(*problem);
         if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
     }
     if (a.json) {
@@ -146,14 +146,17 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
                     "2D scenes: the ray OX,OY,DX,DY (default: the scene's example ray)");
     cmd->add_option("-o,--output", a.output, "Trace file to write (JSON)")->required();
     cmd->add_option("--width", a.width, "Image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
+        ->transform(wholeNumber(1, kMaxImageSide));
     cmd->add_option("--height", a.height, "Image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
-    cmd->add_option("--bounces", a.bounces, "Depth of secondary rays")->check(CLI::Range(0, 64));
-    cmd->add_option("--spp", a.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
+        ->transform(wholeNumber(1, kMaxImageSide));
+    cmd->add_option("--bounces", a.bounces, "Depth of secondary rays")
+        ->transform(wholeNumber(0, 64));
+    cmd->add_option("--spp", a.spp, "Samples per pixel")->transform(wholeNumber(1, 4096));
     cmd->add_option("--diffuse-samples", a.diffuseSamples, "Diffuse bounce rays")
-        ->check(CLI::Range(0, 1024));
-    cmd->add_option("--seed", a.seed, "Seed of the random numbers")->capture_default_str();
+        ->transform(wholeNumber(0, 1024));
+    cmd->add_option("--seed", a.seed, "Seed of the random numbers")
+        ->transform(wholeNumber(0, UINT64_MAX))
+        ->capture_default_str();
     addAccelOptions(cmd, a.accel);
     addCapOption(cmd, a.maxEvents);
 }
@@ -180,7 +183,7 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
     info.what = "ray";
     info.scene = scene.name;
     info.accel = summarize(accel).description;
-    writeFileAtomic(a.output, traceToJson(log, info));
+    if (auto problem = writeOutputs({{a.output, traceToJson(log, info)}})) return fail(*problem);
     if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
     if (hit)
         std::printf("ray (%g, %g) + t (%g, %g): hits primitive %u at t = %.17g\n", ray.origin.x,
@@ -200,7 +203,7 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
 int runTrace(const TraceArgs& a) {
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (auto problem = checkWritable("-o", a.output)) return fail(*problem);
+    if (auto problem = checkOutputs({{"-o", a.output}})) return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
         any = loadAnyScene(a.scene);
@@ -221,10 +224,11 @@ int runTrace(const TraceArgs& a) {
     opt.trace.bounces = a.bounces.value_or(scene->settings.bounces);
     opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene->settings.diffuseSamples);
     opt.seed = a.seed;
-    const int x = static_cast<int>((*xy)[0]), y = static_cast<int>((*xy)[1]);
-    if (x >= opt.width || y >= opt.height)
+    // Compared as doubles: a cast of 2^31 or more to int is undefined (it wrapped to -2^31).
+    if ((*xy)[0] >= opt.width || (*xy)[1] >= opt.height)
         return fail("--pixel " + a.pixel + ": outside the " + std::to_string(opt.width) + "x" +
                     std::to_string(opt.height) + " image");
+    const int x = static_cast<int>((*xy)[0]), y = static_cast<int>((*xy)[1]);
 
     const Accelerator accel = buildAccelerator(*scene, choice.kind, choice.kernels, choice.options);
     const Tracer tracer(*scene, accel, opt.trace);
@@ -239,7 +243,7 @@ int runTrace(const TraceArgs& a) {
     info.pixelY = y;
     info.width = opt.width;
     info.height = opt.height;
-    writeFileAtomic(a.output, traceToJson(log, info));
+    if (auto problem = writeOutputs({{a.output, traceToJson(log, info)}})) return fail(*problem);
     if (log.truncated()) std::cerr << "raystep-cli: warning: " << capMessage(log) << "\n";
     std::printf("pixel (%d, %d) of %dx%d: colour (%.4f, %.4f, %.4f)\n", x, y, opt.width, opt.height,
                 c.x, c.y, c.z);
@@ -264,15 +268,15 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
     a.accel.accel = "kdtree";
     addAccelOptions(cmd, a.accel);
     cmd->add_option("--width", a.width, "Image width of the rays traced")
-        ->check(CLI::Range(1, kMaxImageSide))
+        ->transform(wholeNumber(1, kMaxImageSide))
         ->capture_default_str();
     cmd->add_option("--height", a.height, "Image height of the rays traced")
-        ->check(CLI::Range(1, kMaxImageSide))
+        ->transform(wholeNumber(1, kMaxImageSide))
         ->capture_default_str();
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (default: the scene's)")
-        ->check(CLI::Range(0, 64));
+        ->transform(wholeNumber(0, 64));
     cmd->add_option("--threads", a.threads, "Threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
+        ->transform(wholeNumber(1, 1024));
     cmd->add_flag("--json", a.json, "Print the table as JSON");
 }
 

@@ -4,7 +4,11 @@
 #include <stb/stb_image.h>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -26,6 +30,7 @@ class Cli : public ::testing::Test {
     fs::path dir = fs::temp_directory_path() /
                    ("raystep-cli-" + std::to_string(::getpid()) + "-" +
                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::string runAs;  // a prefix such as "runuser -u nobody -- "
     void SetUp() override { fs::create_directories(dir); }
     void TearDown() override { fs::remove_all(dir); }
 
@@ -35,9 +40,10 @@ class Cli : public ::testing::Test {
         s << in.rdbuf();
         return s.str();
     }
-    CliRun run(const std::string& args) {
-        const std::string cmd = std::string("cd '") + dir.string() + "' && '" RAYSTEP_CLI "' " +
-                                args + " > out.txt 2> err.txt < /dev/null";
+    CliRun run(const std::string& args, const std::string& stdoutTo = "out.txt") {
+        const std::string cmd = std::string("cd '") + dir.string() + "' && " + runAs + "'" +
+                                RAYSTEP_CLI "' " + args + " > " + stdoutTo +
+                                " 2> err.txt < /dev/null";
         const int status = std::system(cmd.c_str());
         CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
                  slurp(dir / "err.txt")};
@@ -68,6 +74,42 @@ class Cli : public ::testing::Test {
     }
     void write(const std::string& name, const std::string& text) {
         std::ofstream(dir / name) << text;
+    }
+    /// The folder's entries, names and contents (symlinks and FIFOs by kind, not followed).
+    std::map<std::string, std::string> listing() {
+        std::map<std::string, std::string> files;
+        for (const auto& e : fs::directory_iterator(dir)) {
+            const std::string name = e.path().filename().string();
+            if (e.is_symlink())
+                files[name] = "symlink to " + fs::read_symlink(e.path()).string();
+            else if (e.is_fifo())
+                files[name] = "fifo";
+            else if (e.is_directory())
+                files[name] = "folder";
+            else
+                files[name] = slurp(e.path());
+        }
+        return files;
+    }
+    /// Runs the CLI directly, its output thrown away; the exit code and peak memory in KB.
+    static std::pair<int, long> runMeasured(std::vector<std::string> args) {
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            const int null = ::open("/dev/null", O_WRONLY);
+            ::dup2(null, STDOUT_FILENO);
+            ::dup2(null, STDERR_FILENO);
+            // Under AddressSanitizer freed memory is held back (256 MB) unless told otherwise.
+            ::setenv("ASAN_OPTIONS", "quarantine_size_mb=0:detect_leaks=0", 1);
+            std::vector<char*> argv{const_cast<char*>(RAYSTEP_CLI)};
+            for (std::string& a : args) argv.push_back(a.data());
+            argv.push_back(nullptr);
+            ::execv(RAYSTEP_CLI, argv.data());
+            ::_exit(127);
+        }
+        int status = 0;
+        rusage usage{};
+        ::wait4(pid, &status, 0, &usage);
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, usage.ru_maxrss};
     }
 };
 
@@ -426,6 +468,189 @@ TEST_F(Cli, DdaTableAndMiss) {
     r = run("dda --grid 3,3 --min 0,0 --max 3,3 --origin -1,5 --dir 1,0 --json");
     ASSERT_EQ(r.code, 0);
     EXPECT_TRUE(nlohmann::json::parse(r.out)["steps"].empty());
+}
+
+// Robustness review, class 1: a path the file system refuses to look up (a symlink loop, a name
+// over 255 bytes) aborted with an uncaught filesystem_error (exit 134), as an output or an input.
+TEST_F(Cli, PathsTheFileSystemRefusesGetOneLine) {
+    fs::create_symlink("loop", dir / "loop");  // a link to itself: every lookup through it fails
+    const std::string longName(256, 'a');      // one byte over the 255 a name may have
+    const std::string loop = "Too many levels of symbolic links";
+    const std::string tooLong = "File name too long";
+    expectBadInputKeepFiles("render --width 8 --height 6 -o loop/x.png", "-o loop/x.png: " + loop);
+    expectBadInputKeepFiles("render --width 8 --height 6 --stats loop/s.json",
+                            "--stats loop/s.json: " + loop);
+    expectBadInputKeepFiles("render --width 8 --height 6 --heatmap loop/h.png",
+                            "--heatmap loop/h.png: " + loop);
+    expectBadInputKeepFiles("trace --pixel 0,0 -o loop/t.json", "-o loop/t.json: " + loop);
+    expectBadInputKeepFiles("build --events loop/e.json", "--events loop/e.json: " + loop);
+    expectBadInputKeepFiles("render -o " + longName + ".png", tooLong);
+    expectBadInputKeepFiles("render -o " + longName + "/x.png", tooLong);
+    expectBadInputKeepFiles("trace --pixel 0,0 -o " + longName + ".json", tooLong);
+    // Inputs: whichever part reports it, the path is named on one line.
+    expectBadInputKeepFiles("render loop/scene.json -o x.png", "loop/scene.json");
+    expectBadInputKeepFiles("build " + longName + ".json", longName);
+    expectBadInputKeepFiles("trace loop/scene.json -o t.json", "loop/scene.json");
+    expectBadInputKeepFiles("compare loop/scene.json", "loop/scene.json");
+    expectBadInputKeepFiles("lesson validate loop/lesson.json", "loop/lesson.json");
+    expectBadInputKeepFiles("lesson check 6 --answers loop/a.json", "loop/a.json");
+    // A folder that cannot be searched, and one that cannot be written: root passes both checks,
+    // so as root the CLI runs as nobody (runuser, util-linux).
+    fs::create_directory(dir / "locked");
+    fs::create_directory(dir / "readonly");
+    fs::permissions(dir / "locked", fs::perms::none);
+    fs::permissions(dir / "readonly", fs::perms::owner_read | fs::perms::owner_exec |
+                                          fs::perms::others_read | fs::perms::others_exec);
+    if (::geteuid() == 0) runAs = "runuser -u nobody -- ";
+    const std::string denied = "Permission denied";
+    expectBadInputKeepFiles("render --width 8 --height 6 -o locked/x.png",
+                            "-o locked/x.png: " + denied);
+    expectBadInputKeepFiles("trace --pixel 0,0 -o locked/t.json", "-o locked/t.json: " + denied);
+    expectBadInputKeepFiles("build --events locked/e.json", "--events locked/e.json: " + denied);
+    expectBadInputKeepFiles("build locked/scene.json", "locked/scene.json");
+    expectBadInputKeepFiles("lesson show locked/lesson.json", "locked/lesson.json");
+    expectBadInputKeepFiles("render --width 8 --height 6 -o readonly/x.png",
+                            "-o readonly/x.png: folder 'readonly' is not writable");
+    runAs.clear();
+    fs::permissions(dir / "locked", fs::perms::owner_all);  // so that TearDown can remove it
+}
+
+// Class 2: a write that fails after the checks (here /proc, where no file can be created) aborted
+// trace and build (exit 134); a device or FIFO as the output was replaced by a regular file.
+TEST_F(Cli, FailedWritesGetOneLine) {
+    expectBadInput("trace --pixel 0,0 -o /proc/t.json", "/proc/t.json: cannot write");
+    expectBadInput("trace lecture-grid --accel grid -o /proc/g.json", "/proc/g.json: cannot write");
+    expectBadInput("build --events /proc/e.json", "/proc/e.json: cannot write");
+    expectBadInput("render --width 8 --height 6 -o /proc/x.png", "/proc/x.png: cannot write");
+    ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+    write("t.json", "old trace");
+    expectBadInputKeepFiles("trace --pixel 0,0 -o pipe", "-o pipe: is not a regular file");
+    expectBadInputKeepFiles("build --events pipe", "--events pipe: is not a regular file");
+    expectBadInputKeepFiles("render --stats pipe", "--stats pipe: is not a regular file");
+    expectBadInputKeepFiles("trace --pixel 0,0 -o t.json/x.json", "'t.json' is not a folder");
+    EXPECT_TRUE(fs::is_fifo(dir / "pipe"));
+    EXPECT_EQ(slurp(dir / "t.json"), "old trace");
+    // Standard output on a full disk is a failed write too.
+    for (const std::string args :
+         {"scenes", "lesson list", "build default --json", "compare default --width 8 --height 6",
+          "dda --grid 4,3 --min 0,0 --max 4,3 --origin 0.5,0.25 --dir 1,0.6 --json",
+          "intersect --ray 0,0,0:0,0,1 --sphere 0,0,5:1"}) {
+        const CliRun r = run(args, "/dev/full");
+        EXPECT_EQ(r.code, 2) << args;
+        EXPECT_EQ(r.err,
+                  "raystep-cli: error: standard output: cannot write: No space left on "
+                  "device\n")
+            << args;
+    }
+}
+
+// Class 3: render replaced the image, then failed on the stats or the heat map (exit 2). Now all
+// the files a command writes are written or none is, and no temporary is left behind.
+TEST_F(Cli, RenderWritesAllFilesOrNone) {
+    write("w.png", "old image");
+    write("h.png", "old heat map");
+    write("s.json", "old stats");
+    const auto before = listing();
+    for (const std::string outputs :
+         {"-o w.png --heatmap h.png --stats /proc/s.json", "-o w.png --heatmap /proc/h.png",
+          "-o /proc/w.png --heatmap h.png --stats s.json", "-o w.png --heatmap h.png --stats pipe",
+          "-o w.png --heatmap ./w.png", "-o w.png --heatmap h.png --stats h.png"}) {
+        if (outputs.find("pipe") != std::string::npos) {
+            ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+        }
+        const CliRun r = run("render --width 8 --height 6 " + outputs);
+        EXPECT_EQ(r.code, 2) << outputs;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        fs::remove(dir / "pipe");
+        EXPECT_EQ(listing(), before) << outputs;  // byte for byte, and nothing else
+    }
+    expectBadInputKeepFiles("render -o w.png --heatmap ./w.png",
+                            "--heatmap ./w.png: the same file as -o");
+    // Success writes all three; an output that is a symlink is written through, the link stays.
+    int w = 0, h = 0, n = 0;
+    fs::create_symlink("w.png", dir / "link.png");
+    fs::create_symlink("new.png", dir / "dangling.png");
+    const CliRun r =
+        run("render --width 8 --height 6 -o link.png --heatmap dangling.png --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::is_symlink(dir / "link.png"));
+    EXPECT_TRUE(fs::is_symlink(dir / "dangling.png"));
+    EXPECT_TRUE(stbi_info((dir / "new.png").c_str(), &w, &h, &n));
+    EXPECT_TRUE(stbi_info((dir / "w.png").c_str(), &w, &h, &n));
+    EXPECT_EQ(w, 8);
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "s.json"))["width"], 8);
+    EXPECT_EQ(listing().size(), 6u);  // w, h, s, the two links, new.png: no temporary left
+}
+
+// Class 5: --pixel 2^31 was cast to int before the range check (it wrapped to -2^31); every
+// whole-number option is now range-checked in 64 bits before it is converted, in decimal.
+TEST_F(Cli, NumericOptionsAreCheckedBeforeConversion) {
+    for (const std::string pixel : {"2147483648,0", "0,2147483648", "4294967296,5", "0,1e300"})
+        expectBadInput("trace --pixel " + pixel + " -o t.json", "outside the 640x480 image");
+    const std::vector<std::string> treeOptions = {"--max-depth", "--leaf-size", "--buckets",
+                                                  "--bin-above"};
+    const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+        {"render", {"--width", "--height", "--bounces", "--spp", "--diffuse-samples", "--threads"}},
+        {"trace --pixel 0,0 -o t.json",
+         {"--width", "--height", "--bounces", "--spp", "--diffuse-samples", "--max-events"}},
+        {"build", {"--max-events"}},
+        {"compare", {"--width", "--height", "--bounces", "--threads"}}};
+    for (const auto& [command, own] : commands) {
+        std::vector<std::string> options = own;
+        options.insert(options.end(), treeOptions.begin(), treeOptions.end());
+        for (const std::string& option : options)
+            for (const std::string value : {"-1", "''", "' 7'", "0x10", "1e3", "1.5", "nan", "inf",
+                                            "2147483648", "18446744073709551617"})
+                expectBadInput(command + " " + option + " " + value, option + ": '");
+    }
+    for (const std::string option : {"--c-trav", "--c-isect", "--empty-bonus"})
+        for (const std::string value : {"nan", "inf", "-inf", "1e999", "''", "0x1"})
+            expectBadInput("build " + option + " " + value, option);
+    // CLI11 read a leading 0 as octal: 010 was 8.
+    const CliRun r = run("render --width 010 --height 6 -o x.png --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "s.json"))["width"], 10);
+    fs::remove(dir / "x.png");
+    fs::remove(dir / "s.json");
+    // The grid's size overflowing a double (1e308 - -1e308) is refused, not walked as infinite.
+    expectBadInput("dda --grid 3,3 --min -1e308,0 --max 1e308,3 --origin 0,1 --dir 1,0",
+                   "--max 1e308,3: the grid's size from --min overflows");
+    expectBadInput(
+        "dda --grid 3,3 --min -3e38,0 --max 3e38,3 --origin 0,1 --dir 1,0 "
+        "--precision float",
+        "overflows a float");
+}
+
+// Class 6: --seed -1 wrapped to 2^64 - 1, a too-large seed saturated, an empty one was 0.
+TEST_F(Cli, SeedIsCheckedAsTheOtherOptions) {
+    for (const std::string command : {"render", "trace --pixel 0,0 -o t.json"})
+        for (const std::string value :
+             {"-1", "''", "18446744073709551616", "99999999999999999999999", "0x10", "1.5", "nan"})
+            expectBadInput(command + " --seed " + value, "--seed: '");
+    const CliRun r =
+        run("render --width 4 --height 4 -o x.png --stats s.json --seed 18446744073709551615");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "s.json"))["seed"].get<std::uint64_t>(),
+              18446744073709551615ull);
+}
+
+// Class 15: dda --json built the whole walk in memory first (about 1.7 KB a step; this walk of
+// about 170,000 steps peaked at 267 MB). Streamed, it stays small, and the table likewise.
+TEST_F(Cli, DdaStreamsLongWalksInBoundedMemory) {
+    const std::vector<std::string> walk = {"dda",       "--grid", "100000,100000", "--min",
+                                           "0,0",       "--max",  "1,1",           "--origin",
+                                           "5e-6,3e-6", "--dir",  "1,0.7"};
+    for (const bool json : {true, false}) {
+        std::vector<std::string> args = walk;
+        if (json) args.push_back("--json");
+        const auto [code, peakKb] = runMeasured(args);
+        EXPECT_EQ(code, 0) << json;
+        EXPECT_LT(peakKb, 64 * 1024) << json;
+    }
+    // The stream is the same JSON: by hand, 4 x 3 cells from (0.5, 0.25) along (1, 0.6) visit 6.
+    const CliRun r = run("dda --grid 4,3 --min 0,0 --max 4,3 --origin 0.5,0.25 --dir 1,0.6 --json");
+    ASSERT_EQ(r.code, 0);
+    EXPECT_EQ(nlohmann::json::parse(r.out)["steps"].size(), 6u);
 }
 
 TEST_F(Cli, DdaBadInput) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -71,6 +73,24 @@ TEST_F(ImageFiles, AtomicWriteReplacesWholeFile) {
     std::ifstream in(path);
     std::string text((std::istreambuf_iterator<char>(in)), {});
     EXPECT_EQ(text, "second");
+}
+
+// A set of files is written all or none: one that cannot be written leaves the others as they were,
+// and no temporary behind; a FIFO is refused, not replaced by a regular file.
+TEST_F(ImageFiles, FileSetIsWrittenAllOrNone) {
+    const std::string a = (dir / "a.txt").string(), fifo = (dir / "pipe").string();
+    writeFileAtomic(a, "old");
+    EXPECT_THROW(writeFilesAtomic({{a, "new"}, {(dir / "missing" / "b.txt").string(), "b"}}),
+                 std::runtime_error);
+    EXPECT_THROW(writeFilesAtomic({{a, "new"}, {"/proc/b.txt", "b"}}), std::runtime_error);
+    EXPECT_THROW(writeFilesAtomic({{a, "new"}, {(dir / "." / "a.txt").string(), "b"}}),
+                 std::runtime_error);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_THROW(writeFileAtomic(fifo, "x"), std::runtime_error);
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    std::ifstream in(a);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), {}), "old");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 2);  // a.txt, pipe
 }
 
 }  // namespace
