@@ -14,4 +14,28 @@ args=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 -max_total_tim
       -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -artifact_prefix="$out/"
       -print_final_stats=1)
 [ -f "$here/dict/$target.dict" ] && args+=(-dict="$here/dict/$target.dict")
-"$build/tests/fuzz/fuzz_$target" "${args[@]}" "$@" "$out/corpus" 2>&1 | tee "$out/log.txt"
+"$build/tests/fuzz/fuzz_$target" "${args[@]}" "$@" "$out/corpus" > >(tee "$out/log.txt") 2>&1 &
+fuzzer=$!
+
+# libFuzzer's timeout handler allocates; when the alarm comes inside ASan's allocator the worker
+# deadlocks (0% CPU, forever). A worker whose CPU time stands still for 30 s is ended, so the
+# session goes on; each such end is counted in OUT_DIR/hung.txt.
+declare -A last still
+while kill -0 "$fuzzer" 2>/dev/null; do
+  sleep 10
+  kids=$(pgrep -d, -P "$fuzzer" || echo 0)
+  for pid in $(pgrep -P "$kids" || true) ${kids//,/ }; do
+    # Only a worker, and not while it waits for its symbolizer (a child of its own).
+    [ "$(cat "/proc/$pid/comm" 2>/dev/null)" = "fuzz_$target" ] || continue
+    pgrep -P "$pid" >/dev/null && continue
+    cpu=$(awk '{print $14 + $15}' "/proc/$pid/stat" 2>/dev/null || echo "")
+    [ -n "$cpu" ] || continue
+    if [ "${last[$pid]:-}" = "$cpu" ]; then still[$pid]=$(( ${still[$pid]:-0} + 1 )); else still[$pid]=0; fi
+    last[$pid]=$cpu
+    if [ "${still[$pid]}" -ge 3 ]; then
+      echo "$(date +%T) worker $pid stood still for 30 s: ended" >> "$out/hung.txt"
+      kill -9 "$pid" 2>/dev/null || true
+    fi
+  done
+done
+wait "$fuzzer"
