@@ -612,7 +612,9 @@ class KdBuilder {
         for (int axis = 0; axis < N; ++axis) {
             const double lo = box.lo[axis], hi = box.hi[axis];
             if (!(hi > lo && areaC > 0.0)) continue;
-            const auto [a, b] = areaTerms(box, axis);
+            // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+            const auto terms = areaTerms(box, axis);
+            const double a = terms.first, b = terms.second;
             const double binWidth = (hi - lo) / B;
             const std::uint32_t* st = bins.starts[axis].data();
             const std::uint32_t* en = bins.ends[axis].data();
@@ -656,7 +658,10 @@ class KdBuilder {
             return;
 
         // The partition counts each child's bins on the way, while the reference is at hand.
-        const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
+        // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+        const auto halves = box.splitAt(bestAxis, bestPos);
+        const Box& boxL = halves.first;
+        const Box& boxR = halves.second;
         // Which side of the plane a reference lies on: wholly below (or flat in the plane: left,
         // as the sweep), wholly above, or across it.
         enum : int { kLeft, kRight, kAcross };
@@ -807,7 +812,10 @@ class KdBuilder {
                        int depth, std::uint32_t id, int axis, double pos, bool emptyLeft,
                        double cost, double leafCost) {
         assert(pos == double(emptyLeft ? bins.minLo[axis] : bins.maxHi[axis]));
-        const auto [boxL, boxR] = box.splitAt(axis, pos);
+        // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+        const auto halves = box.splitAt(axis, pos);
+        const Box& boxL = halves.first;
+        const Box& boxR = halves.second;
         const Box& kept = emptyLeft ? boxR : boxL;
         // The cut axis in the kept box's bins, as Binner<B, fineBins(B)> counts them.
         constexpr int kFine = fineBins(B);
@@ -1031,7 +1039,10 @@ class KdBuilder {
                     side_[e.prim] = Side::Right;
             }
         }
-        const auto [boxL, boxR] = box.splitAt(bestAxis, bestPos);
+        // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+        const auto halves = box.splitAt(bestAxis, bestPos);
+        const Box& boxL = halves.first;
+        const Box& boxR = halves.second;
         std::vector<SplitEvent> left, right, bothL, bothR;
         std::uint32_t nl = 0, nr = 0;
         for (const SplitEvent& e : events) {
@@ -1116,7 +1127,10 @@ class KdBuilder {
             return makeLeaf(id, LeafReason::NoSplit, depth, allOf(prims));
 
         // Each primitive goes to every side its clipped part reaches (one flat in the plane, both).
-        const auto [boxL, boxR] = box.splitAt(axis, pos);
+        // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+        const auto halves = box.splitAt(axis, pos);
+        const Box& boxL = halves.first;
+        const Box& boxR = halves.second;
         std::vector<std::uint32_t> left, right;
         for (std::uint32_t p : prims) {
             const Box& b = (*primBounds_)[p];
@@ -1175,7 +1189,10 @@ double treeSahCost(const std::vector<KdNode>& nodes, std::uint32_t id, const Box
                    const KdTreeOptions& opt, int parallelLevels = 0) {
     const KdNode& node = nodes[id];
     if (node.leaf()) return opt.cIsect * node.count;
-    const auto [l, r] = box.splitAt(node.axis, node.split);
+    // Not a structured binding: clang 14 cannot capture one in the lambdas below.
+    const auto halves = box.splitAt(node.axis, node.split);
+    const BoxN<N>& l = halves.first;
+    const BoxN<N>& r = halves.second;
     double costL = 0.0, costR = 0.0;
     if (parallelLevels > 0) {
         tbb::parallel_invoke(

@@ -14,6 +14,11 @@ RAYSTEP_GUI_PACKAGES=(
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev
 )
+# test.sh's second build: clang 14 with its sanitizer and libFuzzer runtimes, and llvm-14 for
+# llvm-symbolizer (readable stacks in sanitizer reports).
+RAYSTEP_SANITIZER_PACKAGES=(
+  clang-14 libclang-rt-14-dev llvm-14
+)
 
 # ensure_packages PKG...: install those that are not installed yet (apt-get, as root or through sudo).
 ensure_packages() {
