@@ -187,6 +187,10 @@ int firstTooDeep(std::string_view s, int maxDepth) {
 
 }  // namespace
 
+int JsonLineMap::tooDeepLine(std::string_view text, int maxDepth) {
+    return firstTooDeep(text, maxDepth);
+}
+
 JsonLineMap::JsonLineMap(std::string_view text, int maxDepth) {
     tooDeepLine_ = firstTooDeep(text, maxDepth);
     // Ids are 32-bit: a text of 4 GB or more gets no map (every line falls back to 1).

@@ -1075,7 +1075,10 @@ AnswerSheet readAnswerSheet(std::string_view text, const std::string& fileName) 
     else
         r.fail("lesson", "expected the lesson's id or number, got " + Reader::typeName(lesson));
     sheet.lessonLine = r.lines().lineOf("lesson");
-    ifPresent(root, "", "student", [&](const json& v, const std::string& p) { r.string(v, p); });
+    ifPresent(root, "", "student", [&](const json& v, const std::string& p) {
+        if (!v.is_string() && !v.is_number())
+            r.fail(p, "expected the student's name or number, got " + Reader::typeName(v));
+    });
     r.requireObject(root["answers"], "answers");
     for (const auto& [id, v] : root["answers"].items()) {
         const std::string p = JsonLineMap::child("answers", id);

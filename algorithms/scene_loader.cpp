@@ -172,6 +172,9 @@ std::vector<std::string_view> objFields(std::string_view rest) {
 }
 
 constexpr std::size_t kMaxFaceVertices = 256;  // tinyobjloader's ear clipping is cubic in it
+// "f 1 2 3" is 8 bytes of file and over 200 of memory (tinyobjloader's face and indices, the
+// triangle): 10M such lines took 2.3 GB and 10 s to load; 256 MB of them would take 7 GB.
+constexpr std::uint64_t kMaxObjTriangles = 10'000'000;
 
 /// Calls `f(lineNumber, statement)` for each line of OBJ text as tinyobjloader reads lines
 /// (tiny_obj_loader.h, LoadObj: a line ends at LF, CR or CRLF; blanks and tabs before the
@@ -212,6 +215,7 @@ std::string checkedObj(std::string_view text, std::vector<int>& vertexLines) {
     std::string out;
     out.reserve(text.size());
     std::uint64_t vertices = 0;  // so far: a negative index counts back from here
+    std::uint64_t triangles = 0;
     forEachObjLine(text, [&](int lineNo, std::string_view line) {
         if (isStatement(line, 'v')) {
             const auto fields = objFields(line.substr(2));
@@ -235,6 +239,10 @@ std::string checkedObj(std::string_view text, std::vector<int>& vertexLines) {
         if (fields.size() > kMaxFaceVertices)
             throw ObjProblem{lineNo, "a face has at most " + std::to_string(kMaxFaceVertices) +
                                          " vertices, this one " + std::to_string(fields.size())};
+        triangles += fields.size() - 2;
+        if (triangles > kMaxObjTriangles)
+            throw ObjProblem{lineNo, "more than " + std::to_string(kMaxObjTriangles) +
+                                         " triangles, the most raystep reads from one OBJ file"};
         out += 'f';
         for (const std::string_view f : fields) {
             // i, i/j, i//k or i/j/k: only the vertex index i is used.
@@ -584,7 +592,7 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
 
 bool isScene2DText(std::string_view text) {
     // Nesting past the cap is not looked at (the 3D loader then names the problem).
-    if (JsonLineMap(text).tooDeepLine()) return false;
+    if (JsonLineMap::tooDeepLine(text)) return false;
     try {
         const json root = json::parse(text.begin(), text.end(), nullptr, true, true);
         return root.is_object() && root.contains("dimensions") && root["dimensions"] == 2;

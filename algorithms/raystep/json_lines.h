@@ -32,6 +32,8 @@ class JsonLineMap {
 
     /// Line of the first bracket past the depth cap, 0 when the text nests within it.
     int tooDeepLine() const { return tooDeepLine_; }
+    /// The same check alone, without building the map.
+    static int tooDeepLine(std::string_view text, int maxDepth = kMaxJsonDepth);
 
     static std::string child(const std::string& path, const std::string& key) {
         return path.empty() ? key : path + "." + key;

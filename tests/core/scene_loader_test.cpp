@@ -649,6 +649,12 @@ TEST(SceneLoaderHostile, ObjLinesAreCheckedAsTinyobjloaderReadsThem) {
     polygon += "f";
     for (int i = 4; i <= 303; ++i) polygon += " " + std::to_string(i);
     EXPECT_TRUE(contains(objError(polygon + "\n"), "line 304: a face has at most 256 vertices"));
+    // 254 triangles a face: the 39,371st face passes 10M.
+    std::string face = "f";
+    for (int i = 0; i < 256; ++i) face += i % 2 ? " 2" : " 1";
+    std::string many = tri;
+    for (int i = 0; i < 39371; ++i) many += face + "\n";
+    EXPECT_TRUE(contains(objError(many), "line 39374: more than 10000000 triangles"));
 
     // What tinyobjloader reads and the check must let through: forward and relative indices,
     // v/vt/vn, a vertex colour, a trailing comment, groups and other statements.
