@@ -433,6 +433,11 @@ TEST(LessonsHostile, AnswerSheetMessages) {
     std::string what =
         lessonErrorOf([] { loadAnswerSheet("{\"lesson\": 6.5, \"answers\": {}}", "a.json"); });
     EXPECT_TRUE(contains(what, "a.json:1: key 'lesson': ")) << what;
+    EXPECT_NO_THROW(
+        loadAnswerSheet("{\"lesson\": 6, \"student\": 12345, \"answers\": {}}", "a.json"));
+    what = lessonErrorOf(
+        [] { loadAnswerSheet("{\"lesson\": 6,\n\"student\": {}, \"answers\": {}}", "a.json"); });
+    EXPECT_TRUE(contains(what, "a.json:2: key 'student': ")) << what;
     try {
         gradeAnswers(l, *run.log,
                      loadAnswerSheet("{\"answers\": {},\n \"lesson\": \"mailboxing\"}", "a.json"),
