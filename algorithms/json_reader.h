@@ -1,18 +1,27 @@
 #pragma once
-// Reading a file (scene or lesson) so that every error names the file, the line and the key:
+// Reading a file (scene, lesson, answers, progress, trace) so that every error names the file,
+// the line and the key: one function that opens files, the JSON parse behind a depth cap, and
 // typed accessors over nlohmann::json that throw the loader's own error type. Internal to the core.
+#include "raystep/file_error.h"
 #include "raystep/json_lines.h"
 #include "raystep/math.h"
 
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -20,13 +29,84 @@ namespace raystep::detail {
 
 using nlohmann::json;
 
-/// A whole file's bytes, or nullopt when it cannot be read (missing, a folder).
-inline std::optional<std::string> readWholeFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path)) return std::nullopt;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+/// The most a JSON file (scene, lesson, answers, progress) may hold: the built-in ones are under
+/// 64 KB, and nlohmann's tree of a hostile 8 MB stays within a few hundred MB.
+constexpr std::size_t kMaxJsonFileBytes = std::size_t(8) << 20;
+/// The most an OBJ mesh may hold (the stadium's knot is 1.6 MB; 256 MB is about 10M triangles).
+constexpr std::size_t kMaxObjFileBytes = std::size_t(256) << 20;
+
+/// Why a file could not be read, in words for a message: "no such file", "it is a folder", ...
+class ReadFailure : public std::runtime_error {
+  public:
+    ReadFailure(const std::string& why, bool missing)
+        : std::runtime_error(why), missing_(missing) {}
+    bool missing() const { return missing_; }  // nothing there (as opposed to unreadable)
+
+  private:
+    bool missing_;
+};
+
+[[noreturn]] inline void throwReadFailure(int error) {
+    switch (error) {
+        case ENOENT:
+            throw ReadFailure("no such file", true);
+        case ENOTDIR:
+            throw ReadFailure("no such file (a part of its path is not a folder)", true);
+        case EACCES:
+            throw ReadFailure("permission denied", false);
+        case ELOOP:
+            throw ReadFailure("too many levels of symbolic links (a loop?)", false);
+        case ENAMETOOLONG:
+            throw ReadFailure("the name is too long", false);
+        default: {
+            std::string why = std::strerror(error);
+            if (!why.empty()) why[0] = static_cast<char>(std::tolower(why[0]));
+            throw ReadFailure(why, false);
+        }
+    }
+}
+
+inline void requireRegular(const struct stat& st, std::size_t maxBytes) {
+    if (S_ISDIR(st.st_mode)) throw ReadFailure("it is a folder", false);
+    if (!S_ISREG(st.st_mode))
+        throw ReadFailure("not a regular file (a device, a FIFO or a socket)", false);
+    if (static_cast<std::uintmax_t>(st.st_size) > maxBytes)
+        throw ReadFailure("larger than " + std::to_string(maxBytes >> 20) +
+                              " MB, the most raystep reads of such a file",
+                          false);
+}
+
+/// The bytes of a regular file of at most `maxBytes`; throws ReadFailure. The one way the core
+/// opens a file: a folder, FIFO, device or socket is refused from stat() before it is opened,
+/// and once more from fstat() of what was opened (O_NONBLOCK: opening cannot wait for a writer);
+/// reading stops past `maxBytes`, should the file grow meanwhile.
+inline std::string readRegularFile(const std::string& path, std::size_t maxBytes) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) throwReadFailure(errno);
+    requireRegular(st, maxBytes);
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) throwReadFailure(errno);
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    if (::fstat(fd, &st) != 0) throwReadFailure(errno);
+    requireRegular(st, maxBytes);
+    std::string text;
+    text.reserve(static_cast<std::size_t>(st.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throwReadFailure(errno);
+        if (n == 0) break;
+        if (text.size() + static_cast<std::size_t>(n) > maxBytes)
+            throw ReadFailure("larger than " + std::to_string(maxBytes >> 20) +
+                                  " MB, the most raystep reads of such a file",
+                              false);
+        text.append(buffer, static_cast<std::size_t>(n));
+    }
+    return text;
 }
 
 inline std::string joinNames(std::initializer_list<const char*> names) {
@@ -39,7 +119,8 @@ inline std::string joinNames(std::initializer_list<const char*> names) {
 template <typename Error>
 class JsonReader {
   public:
-    JsonReader(std::string file, std::string_view text) : file_(std::move(file)), lines_(text) {}
+    JsonReader(std::string file, JsonLineMap lines)
+        : file_(std::move(file)), lines_(std::move(lines)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& message) const {
         throw Error(file_, lines_.lineOf(path), path, message);
@@ -137,14 +218,28 @@ inline void ifPresent(const json& obj, const std::string& path, const char* key,
     if (auto it = obj.find(key); it != obj.end()) f(*it, JsonLineMap::child(path, key));
 }
 
-/// Parses JSON with comments; a syntax error or an out-of-range number becomes one Error naming
-/// the line. Duplicate keys are an error too (JSON would keep the last silently).
-template <typename Error>
-json parseJsonFile(std::string_view text, const std::string& fileName) {
-    json root;
+/// A parsed file: the tree, and where each of its keys stands.
+template <typename Json>
+struct ParsedJson {
+    Json root;
+    JsonLineMap lines;
+};
+
+/// Parses JSON (with comments unless `comments` is false); a syntax error, an out-of-range
+/// number, nesting past kMaxJsonDepth or a key given twice becomes one Error naming the line.
+/// The depth is checked before nlohmann sees the text: its copies and comparisons recurse.
+template <typename Error, typename Json = json>
+ParsedJson<Json> parseJsonFile(std::string_view text, const std::string& fileName,
+                               bool comments = true) {
+    JsonLineMap lines(text);
+    if (const int line = lines.tooDeepLine())
+        throw Error(
+            fileName, line, "",
+            "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels of [ ] and { }");
+    Json root;
     try {
-        root = json::parse(text.begin(), text.end(), nullptr, true, /*ignore_comments=*/true);
-    } catch (const json::out_of_range& e) {
+        root = Json::parse(text.begin(), text.end(), nullptr, true, /*ignore_comments=*/comments);
+    } catch (const nlohmann::json::out_of_range& e) {
         // A number too large for a double ("1e999"): nlohmann names the token, not the place.
         std::string what = e.what();
         const auto q0 = what.find('\'');
@@ -156,23 +251,45 @@ json parseJsonFile(std::string_view text, const std::string& fileName) {
                 ? 1
                 : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
         throw Error(fileName, line, "",
-                    "number '" + token + "' is out of range: values must be finite");
-    } catch (const json::parse_error& e) {
-        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
+                    "number '" + printable(token, 24) + "' is out of range: values must be finite");
+    } catch (const nlohmann::json::parse_error& e) {
+        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...
+        // last read: 'TOKEN'; expected ...": the token may be a whole unterminated string.
         std::string what = e.what();
         const auto at = what.find("parse error");
         what = at == std::string::npos ? what : what.substr(at);
+        const std::string lastRead = "last read: '";
+        if (const auto from = what.find(lastRead); from != std::string::npos) {
+            const auto start = from + lastRead.size();
+            auto end = what.rfind("'; ");
+            if (end == std::string::npos || end < start) end = what.rfind('\'');
+            if (end != std::string::npos && end >= start)
+                what.replace(start, end - start,
+                             printable(std::string_view(what).substr(start, end - start), 40));
+        }
         // Line of the failing byte, counted here so the message starts like every other one.
         int line = 1;
         for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) line += text[i] == '\n';
         throw Error(fileName, line, "", "malformed JSON: " + what);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(fileName, 1, "", std::string("malformed JSON: ") + e.what());
     }
-    const JsonLineMap lines(text);
     if (!lines.duplicates().empty()) {
         const auto& [path, line] = lines.duplicates().front();
         throw Error(fileName, line, path, "key given twice");
     }
-    return root;
+    return {std::move(root), std::move(lines)};
+}
+
+/// Runs a reader: an nlohmann exception that got past its checks (a bug) still ends as one
+/// Error naming the file, never as another exception type.
+template <typename Error, typename F>
+auto guarded(const std::string& fileName, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(fileName, 0, "", std::string("cannot read the file: ") + e.what());
+    }
 }
 
 }  // namespace raystep::detail

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -357,9 +356,11 @@ const Exercise* Lesson::exercise(std::string_view exerciseId) const {
     return nullptr;
 }
 
-Lesson loadLessonText(std::string_view text, const std::string& fileName) {
-    const json root = detail::parseJsonFile<LessonError>(text, fileName);
-    const Reader r(fileName, text);
+namespace {
+Lesson readLesson(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     r.requireObject(root, "");
     r.checkKeys(root, "",
                 {"format", "version", "id", "number", "title", "text", "scene", "setup", "views",
@@ -436,11 +437,27 @@ Lesson loadLessonText(std::string_view text, const std::string& fileName) {
     return l;
 }
 
+/// A file's text, or a LessonError "PATH: cannot read the WHAT: why".
+std::string readLessonFile(const std::string& path, const std::string& what) {
+    try {
+        return detail::readRegularFile(path, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        throw LessonError(path, 0, "", "cannot read the " + what + ": " + f.what());
+    }
+}
+}  // namespace
+
+Lesson loadLessonText(std::string_view text, const std::string& fileName) {
+    return detail::guarded<LessonError>(fileName, [&] { return readLesson(text, fileName); });
+}
+
 std::vector<Lesson> builtinLessons() {
     std::vector<Lesson> lessons;
     for (const std::string& f : embeddedFileNames())
-        if (f.starts_with(kLessonPrefix) && f.ends_with(".json"))
+        if (f.starts_with(kLessonPrefix) && f.ends_with(".json")) {
             lessons.push_back(loadLessonText(*embeddedFile(f), f));
+            lessons.back().builtin = true;
+        }
     std::sort(lessons.begin(), lessons.end(),
               [](const Lesson& a, const Lesson& b) { return a.number < b.number; });
     return lessons;
@@ -449,7 +466,13 @@ std::vector<Lesson> builtinLessons() {
 Lesson loadLesson(const std::string& idOrPath) {
     for (Lesson& l : builtinLessons())
         if (l.id == idOrPath || std::to_string(l.number) == idOrPath) return std::move(l);
-    if (!std::filesystem::exists(idOrPath)) {
+    std::string text;
+    try {
+        text = detail::readRegularFile(idOrPath, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        if (!f.missing())
+            throw LessonError(idOrPath, 0, "",
+                              std::string("cannot read the lesson file: ") + f.what());
         std::string ids;
         for (const Lesson& l : builtinLessons())
             ids += (ids.empty() ? "" : ", ") + std::to_string(l.number) + " " + l.id;
@@ -458,16 +481,14 @@ Lesson loadLesson(const std::string& idOrPath) {
                           "(built-in: " +
                               ids + ")");
     }
-    const auto text = detail::readWholeFile(idOrPath);
-    if (!text) throw LessonError(idOrPath, 0, "", "cannot read the lesson file");
-    return loadLessonText(*text, idOrPath);
+    return loadLessonText(text, idOrPath);
 }
 
 // ---- running a lesson ----
 
 std::string lessonScenePath(const Lesson& lesson) {
-    if (embeddedFile(lesson.scene + ".json") || lesson.file.starts_with(kLessonPrefix))
-        return lesson.scene;
+    // Where the lesson came from decides, not its path's text (a lecturer's lessons/my.json).
+    if (lesson.builtin || embeddedFile(lesson.scene + ".json")) return lesson.scene;
     // A scene file next to the lesson file.
     const std::filesystem::path p(lesson.scene);
     if (p.is_absolute()) return lesson.scene;
@@ -494,15 +515,15 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
             break;
         case LessonTrace::Kind::ExampleRay:
         case LessonTrace::Kind::Ray2D: {
-            if (!s2) fail("a 2D ray needs a 2D scene; " + lesson.scene + " is 3D");
+            if (!s2) fail("a 2D ray needs a 2D scene; " + printable(lesson.scene) + " is 3D");
             if (t.kind == LessonTrace::Kind::ExampleRay && !s2->exampleRay)
-                fail("the scene " + lesson.scene + " has no example ray");
+                fail("the scene " + printable(lesson.scene) + " has no example ray");
             traceRay2D(*accel2D, t.kind == LessonTrace::Kind::Ray2D ? t.ray : *s2->exampleRay,
                        *log);
             break;
         }
         case LessonTrace::Kind::Pixel:
-            if (!s3) fail("a pixel needs a 3D scene; " + lesson.scene + " is 2D");
+            if (!s3) fail("a pixel needs a 3D scene; " + printable(lesson.scene) + " is 2D");
             tracePixelEvents(*s3, *accel3D, t.x, t.y, t.width, t.height, *log);
             break;
     }
@@ -1035,15 +1056,29 @@ void validateLesson(const Lesson& lesson) {
 
 // ---- answer sheets ----
 
-AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName) {
-    const json root = detail::parseJsonFile<LessonError>(text, fileName);
-    const Reader r(fileName, text);
+namespace {
+AnswerSheet readAnswerSheet(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     r.requireObject(root, "");
     r.checkKeys(root, "", {"lesson", "student", "answers"});
     if (!root.contains("lesson") || !root.contains("answers"))
         r.fail("", "an answers file holds {\"lesson\": ID, \"answers\": {EXERCISE: ANSWER}}");
     AnswerSheet sheet;
-    sheet.lesson = r.string(root["lesson"], "lesson");
+    // The id or the number (docs/lesson-format.md, "Answers files").
+    const json& lesson = root["lesson"];
+    if (lesson.is_number())
+        sheet.lesson = std::to_string(r.integer(lesson, "lesson", 1, 999));
+    else if (lesson.is_string())
+        sheet.lesson = lesson.get<std::string>();
+    else
+        r.fail("lesson", "expected the lesson's id or number, got " + Reader::typeName(lesson));
+    sheet.lessonLine = r.lines().lineOf("lesson");
+    ifPresent(root, "", "student", [&](const json& v, const std::string& p) {
+        if (!v.is_string() && !v.is_number())
+            r.fail(p, "expected the student's name or number, got " + Reader::typeName(v));
+    });
     r.requireObject(root["answers"], "answers");
     for (const auto& [id, v] : root["answers"].items()) {
         const std::string p = JsonLineMap::child("answers", id);
@@ -1072,13 +1107,22 @@ AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName) 
     }
     return sheet;
 }
+}  // namespace
+
+AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName) {
+    return detail::guarded<LessonError>(fileName, [&] { return readAnswerSheet(text, fileName); });
+}
+
+AnswerSheet loadAnswerSheetFile(const std::string& path) {
+    return loadAnswerSheet(readLessonFile(path, "answers file"), path);
+}
 
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile) {
     if (sheet.lesson != lesson.id && sheet.lesson != std::to_string(lesson.number))
-        throw LessonError(
-            sheetFile, 0, "lesson",
-            "the answers are for lesson '" + sheet.lesson + "', not '" + lesson.id + "'");
+        throw LessonError(sheetFile, sheet.lessonLine, "lesson",
+                          "the answers are for lesson '" + printable(sheet.lesson) + "', not '" +
+                              lesson.id + "'");
     for (const auto& [id, text] : sheet.answers)
         if (!lesson.exercise(id))
             throw LessonError(sheetFile, sheet.lines.at(id), "answers." + id,
@@ -1108,9 +1152,11 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
 
 // ---- progress ----
 
-Progress parseProgress(std::string_view text, const std::string& fileName) {
-    const json root = detail::parseJsonFile<LessonError>(text, fileName);
-    const Reader r(fileName, text);
+namespace {
+Progress readProgress(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     r.requireObject(root, "");
     r.checkKeys(root, "", {"format", "version", "lessons"});
     if (root.value("format", json()) != "raystep-progress")
@@ -1148,6 +1194,22 @@ Progress parseProgress(std::string_view text, const std::string& fileName) {
         }
     });
     return p;
+}
+}  // namespace
+
+Progress parseProgress(std::string_view text, const std::string& fileName) {
+    return detail::guarded<LessonError>(fileName, [&] { return readProgress(text, fileName); });
+}
+
+std::optional<Progress> loadProgressFile(const std::string& path) {
+    std::string text;
+    try {
+        text = detail::readRegularFile(path, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        if (f.missing()) return std::nullopt;
+        throw LessonError(path, 0, "", std::string("cannot read the progress file: ") + f.what());
+    }
+    return parseProgress(text, path);
 }
 
 std::string progressToJson(const Progress& p) {

@@ -8,20 +8,21 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace raystep {
 
 using detail::ifPresent;
 using detail::joinNames;
-using detail::readWholeFile;
 using nlohmann::json;
 using Reader = detail::JsonReader<SceneError>;
 
 namespace {
+
+constexpr double kMaxCameraLength = 1e150, kMinCameraLength = 1e-150;
 
 void readCamera(const Reader& r, const json& j, const std::string& path, Camera& cam) {
     r.requireObject(j, path);
@@ -35,15 +36,32 @@ void readCamera(const Reader& r, const json& j, const std::string& path, Camera&
         if (cam.fovDeg >= 180.0) r.fail(p, "field of view must be below 180 degrees");
     });
     // Relative to the camera's own coordinates, so a scene at 1e-9 or 1e9 passes alike.
+    const std::string lookAtPath = JsonLineMap::child(path, "look_at");
+    const std::string upPath = JsonLineMap::child(path, "up");
     const Vec3 forward = cam.lookAt - cam.eye;
+    const double distance = maxAbsComponent(forward);  // infinity when the difference overflows
     const double scale = std::max(maxAbsComponent(cam.eye), maxAbsComponent(cam.lookAt));
-    if (!(glm::length(forward) > 1e-12 * scale) || !isFinite(glm::normalize(forward)))
-        r.fail(JsonLineMap::child(path, "look_at"),
-               "the camera has no direction: look_at equals eye");
+    if (!(distance > 1e-12 * scale))
+        r.fail(lookAtPath, "the camera has no direction: look_at equals eye");
+    // The camera normalises look_at - eye and forward x up (camera.cpp): their squared lengths
+    // must stay inside double's range, so both lengths are kept within 1e-150 to 1e150.
+    if (!(distance <= kMaxCameraLength))
+        r.fail(lookAtPath, "look_at is too far from eye (" +
+                               (std::isfinite(distance) ? Reader::fmt(distance)
+                                                        : std::string("past the largest double")) +
+                               " apart along an axis; at most 1e150: the camera squares it)");
+    if (distance < kMinCameraLength)
+        r.fail(lookAtPath, "look_at is too close to eye (" + Reader::fmt(distance) +
+                               " apart; at least 1e-150: the camera squares it)");
+    const double upLength = maxAbsComponent(cam.up);
+    if (upLength != 0.0 && (upLength > kMaxCameraLength || upLength < kMinCameraLength))
+        r.fail(upPath,
+               "the length of up must be within 1e-150 to 1e150 (the camera squares it), "
+               "got a component of " +
+                   Reader::fmt(upLength));
     const Vec3 side = glm::cross(glm::normalize(forward), cam.up);
     if (!(glm::length(side) > 1e-9 * glm::length(cam.up)))
-        r.fail(JsonLineMap::child(path, "up"),
-               "up must not be zero nor parallel to the view direction");
+        r.fail(upPath, "up must not be zero nor parallel to the view direction");
 }
 
 void readRender(const Reader& r, const json& j, const std::string& path, RenderSettings& s) {
@@ -101,23 +119,167 @@ struct MeshTransform {
     Vec3 translate{0.0};
 };
 
-/// tinyobjloader reads "nan", "inf", "1e999" or "abc" in a vertex without complaint (as 0 or
-/// infinity): find the first such coordinate, with its line, before handing the text over.
-std::optional<std::pair<int, std::string>> findBadObjVertex(const std::string& text) {
-    std::istringstream in(text);
-    std::string line;
-    for (int lineNo = 1; std::getline(in, line); ++lineNo) {
-        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
-        std::istringstream fields(line.substr(2));
-        std::string token;
-        for (int k = 0; k < 3 && fields >> token; ++k) {
-            char* end = nullptr;
-            const double v = std::strtod(token.c_str(), &end);
-            if (end != token.c_str() + token.size() || !std::isfinite(v))
-                return std::make_pair(lineNo, token);
-        }
+/// A problem in an OBJ file, at its line (tinyobjloader's count: lines end at LF, CR or CRLF).
+struct ObjProblem {
+    int line;
+    std::string message;
+};
+
+/// A whole number as tinyobjloader's parseTriple reads one with atoi: [+-]digits.
+bool isObjInteger(std::string_view s) {
+    if (!s.empty() && (s[0] == '+' || s[0] == '-')) s.remove_prefix(1);
+    return !s.empty() &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// A number in the grammar tinyobjloader's tryParseDouble reads ([+-] digits [. digits] [e[+-]
+/// digits], or [+-] . digits ...), taken whole, so strtod and tinyobjloader agree on what it is
+/// (tinyobjloader would read "0x10" as 0 and "nan" or "abc" as 0).
+bool isObjNumber(std::string_view s) {
+    std::size_t i = 0;
+    const auto digits = [&] {
+        const std::size_t from = i;
+        while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+        return i > from;
+    };
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    bool mantissa = digits();
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        mantissa = digits() || mantissa;
     }
-    return std::nullopt;
+    if (!mantissa) return false;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+        if (!digits()) return false;
+    }
+    return i == s.size();
+}
+
+/// The blank- or tab-separated fields of a statement, up to a '#' comment.
+std::vector<std::string_view> objFields(std::string_view rest) {
+    std::vector<std::string_view> fields;
+    std::size_t i = 0;
+    while (i < rest.size()) {
+        while (i < rest.size() && (rest[i] == ' ' || rest[i] == '\t')) ++i;
+        if (i >= rest.size() || rest[i] == '#') break;
+        const std::size_t from = i;
+        while (i < rest.size() && rest[i] != ' ' && rest[i] != '\t') ++i;
+        fields.push_back(rest.substr(from, i - from));
+    }
+    return fields;
+}
+
+constexpr std::size_t kMaxFaceVertices = 256;  // tinyobjloader's ear clipping is cubic in it
+// "f 1 2 3" is 8 bytes of file and over 200 of memory (tinyobjloader's face and indices, the
+// triangle): 10M such lines took 2.3 GB and 10 s to load; 256 MB of them would take 7 GB.
+constexpr std::uint64_t kMaxObjTriangles = 10'000'000;
+
+/// Calls `f(lineNumber, statement)` for each line of OBJ text as tinyobjloader reads lines
+/// (tiny_obj_loader.h, LoadObj: a line ends at LF, CR or CRLF; blanks and tabs before the
+/// statement are skipped). A NUL byte (where tinyobjloader would stop reading the line) is an
+/// ObjProblem.
+template <typename F>
+void forEachObjLine(std::string_view text, F&& f) {
+    int lineNo = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        ++lineNo;
+        std::size_t end = pos;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        if (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ++pos;
+        if (line.find('\0') != std::string_view::npos)
+            throw ObjProblem{lineNo, "a NUL byte: not a text file"};
+        while (!line.empty() && (line[0] == ' ' || line[0] == '\t')) line.remove_prefix(1);
+        f(lineNo, line);
+    }
+}
+
+/// "v" or "f" (a statement tinyobjloader reads as a vertex or a face: a blank or tab after it).
+bool isStatement(std::string_view line, char keyword) {
+    return line.size() >= 2 && line[0] == keyword && (line[1] == ' ' || line[1] == '\t');
+}
+
+/// Checks every vertex and face of OBJ text, throwing ObjProblem with the line, and returns the
+/// text tinyobjloader is then given: only "v x y z" and "f i j k ..." lines, with the same
+/// number tokens (so the same values) and absolute 1-based indices. What raystep does not use
+/// (normals, texture coordinates, groups, materials, tags, lines, points) is left out, so none of
+/// it can cost memory or time. `vertexLines` gets each vertex's OBJ line.
+std::string checkedObj(std::string_view text, std::vector<int>& vertexLines) {
+    // Forward references are legal (tinyobjloader checks indices against the final count).
+    std::uint64_t total = 0;
+    forEachObjLine(text, [&](int, std::string_view line) { total += isStatement(line, 'v'); });
+    std::string out;
+    out.reserve(text.size());
+    std::uint64_t vertices = 0;  // so far: a negative index counts back from here
+    std::uint64_t triangles = 0;
+    forEachObjLine(text, [&](int lineNo, std::string_view line) {
+        if (isStatement(line, 'v')) {
+            const auto fields = objFields(line.substr(2));
+            if (fields.size() < 3)
+                throw ObjProblem{lineNo, "a vertex needs 3 coordinates, 'v x y z'"};
+            for (const std::string_view f : fields) {
+                const std::string token(f);
+                if (!isObjNumber(f) || !std::isfinite(std::strtod(token.c_str(), nullptr)))
+                    throw ObjProblem{lineNo, "vertex coordinate '" + printable(f, 24) +
+                                                 "' is not a finite number"};
+            }
+            out += "v ";
+            for (int k = 0; k < 3; ++k) out.append(fields[k]).append(k < 2 ? " " : "\n");
+            vertexLines.push_back(lineNo);
+            ++vertices;
+            return;
+        }
+        if (!isStatement(line, 'f')) return;
+        const auto fields = objFields(line.substr(2));
+        if (fields.size() < 3) throw ObjProblem{lineNo, "a face needs at least 3 vertices"};
+        if (fields.size() > kMaxFaceVertices)
+            throw ObjProblem{lineNo, "a face has at most " + std::to_string(kMaxFaceVertices) +
+                                         " vertices, this one " + std::to_string(fields.size())};
+        triangles += fields.size() - 2;
+        if (triangles > kMaxObjTriangles)
+            throw ObjProblem{lineNo, "more than " + std::to_string(kMaxObjTriangles) +
+                                         " triangles, the most raystep reads from one OBJ file"};
+        out += 'f';
+        for (const std::string_view f : fields) {
+            // i, i/j, i//k or i/j/k: only the vertex index i is used.
+            const std::size_t slash = f.find('/');
+            const std::string_view v = f.substr(0, slash);
+            bool ok = isObjInteger(v);
+            if (ok && slash != std::string_view::npos) {
+                const std::string_view rest = f.substr(slash + 1);
+                const std::size_t slash2 = rest.find('/');
+                const std::string_view vt = rest.substr(0, slash2);
+                ok = (vt.empty() ? slash2 != std::string_view::npos : isObjInteger(vt)) &&
+                     (slash2 == std::string_view::npos || isObjInteger(rest.substr(slash2 + 1)));
+            }
+            if (!ok)
+                throw ObjProblem{lineNo, "face vertex '" + printable(f, 24) +
+                                             "' is not an index (i, i/j, i//k or i/j/k)"};
+            std::int64_t index = 0;
+            const auto [ptr, ec] =
+                std::from_chars(v.data() + (v[0] == '+'), v.data() + v.size(), index);
+            const bool negative = ec == std::errc() && index < 0;
+            // Past 2^31 tinyobjloader's atoi would wrap; no such index is ever in range here.
+            if (ec != std::errc() || index == 0 ||
+                (negative ? static_cast<std::uint64_t>(-(index + 1)) + 1 > vertices
+                          : static_cast<std::uint64_t>(index) > total))
+                throw ObjProblem{
+                    lineNo, "vertex index " + printable(v, 24) + " is out of range (" +
+                                std::to_string(negative ? vertices : total) +
+                                (negative                          ? " vertices before this line)"
+                                 : index == 0 && ec == std::errc() ? " vertices; OBJ counts from 1)"
+                                                                   : " vertices)")};
+            out += ' ';
+            out +=
+                std::to_string(negative ? static_cast<std::int64_t>(vertices) + index + 1 : index);
+        }
+        out += '\n';
+    });
+    return out;
 }
 
 void readMesh(const Reader& r, const json& j, const std::string& path, std::uint32_t material,
@@ -125,6 +287,7 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
     const std::string filePath = JsonLineMap::child(path, "file");
     if (!j.contains("file")) r.fail(filePath, "a mesh needs the OBJ file to load");
     const std::string file = r.string(j["file"], filePath);
+    const std::string quoted = "OBJ file '" + printable(file) + "'";
     MeshTransform xf;
     ifPresent(j, path, "scale", [&](const json& v, const std::string& p) {
         xf.scale = v.is_number() ? Vec3(r.number(v, p)) : r.vec3(v, p);
@@ -134,26 +297,53 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
     ifPresent(j, path, "translate",
               [&](const json& v, const std::string& p) { xf.translate = r.vec3(v, p); });
 
-    const std::optional<std::string> text = resolver(file);
-    if (!text) r.fail(filePath, "cannot open OBJ file '" + file + "'");
-    if (auto bad = findBadObjVertex(*text))
-        r.fail(filePath, "OBJ file '" + file + "' line " + std::to_string(bad->first) +
-                             ": vertex coordinate '" + bad->second + "' is not a finite number");
+    std::optional<std::string> text;
+    try {
+        text = resolver(file);
+    } catch (const detail::ReadFailure& f) {
+        r.fail(filePath, "cannot read " + quoted + ": " + f.what());
+    }
+    if (!text) r.fail(filePath, "cannot read " + quoted + ": no such file");
+    std::vector<int> vertexLines;
+    std::string checked;
+    try {
+        checked = checkedObj(*text, vertexLines);
+    } catch (const ObjProblem& p) {
+        r.fail(filePath, quoted + " line " + std::to_string(p.line) + ": " + p.message);
+    }
+    text.reset();  // the checked copy is all tinyobjloader needs
     tinyobj::ObjReader obj;
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    if (!obj.ParseFromString(*text, "", config)) {
+    if (!obj.ParseFromString(checked, "", config)) {
         std::string err = obj.Error();
         while (!err.empty() && err.back() == '\n') err.pop_back();
-        r.fail(filePath, "cannot read OBJ file '" + file + "': " + err);
+        r.fail(filePath, "cannot read " + quoted + ": " + printable(err, 200));
     }
     const auto& verts = obj.GetAttrib().vertices;
-    const auto vertexCount = static_cast<int>(verts.size() / 3);
+    if (verts.size() != 3 * vertexLines.size())
+        r.fail(filePath, "cannot read " + quoted + ": tinyobjloader read " +
+                             std::to_string(verts.size() / 3) + " vertices, not " +
+                             std::to_string(vertexLines.size()));
+    // tinyobjloader reads a mantissa digit by digit: a long one overflows to infinity where
+    // strtod, in the check above, does not.
+    for (std::size_t k = 0; k < verts.size(); ++k)
+        if (!std::isfinite(verts[k])) {
+            const int line = vertexLines[k / 3];
+            std::size_t at = 0;
+            for (std::size_t v = 0; v < k / 3; ++v) at = checked.find('\n', at) + 1;
+            const auto fields = objFields(
+                std::string_view(checked).substr(at + 2, checked.find('\n', at) - at - 2));
+            r.fail(filePath, quoted + " line " + std::to_string(line) + ": vertex coordinate '" +
+                                 printable(fields[k % 3], 24) +
+                                 "' overflows to infinity as tinyobjloader reads it");
+        }
+    const auto vertexCount = verts.size() / 3;
     const auto vertex = [&](int index) {
-        // tinyobjloader only warns about indices past the end; they must not be read.
-        if (index < 0 || index >= vertexCount)
-            r.fail(filePath, "OBJ file '" + file + "' has a face with a vertex index out of range");
+        // Checked above; kept so that a tinyobjloader surprise is an error, not a read past.
+        if (index < 0 || static_cast<std::size_t>(index) >= vertexCount)
+            r.fail(filePath, quoted + " has a face with a vertex index out of range");
         const Vec3 v(verts[3 * index], verts[3 * index + 1], verts[3 * index + 2]);
         return v * xf.scale + xf.translate;
     };
@@ -164,7 +354,7 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
             Triangle t{vertex(idx[f].vertex_index), vertex(idx[f + 1].vertex_index),
                        vertex(idx[f + 2].vertex_index), material};
             if (!isFinite(t.a) || !isFinite(t.b) || !isFinite(t.c))
-                r.fail(filePath, "OBJ file '" + file + "': the scale makes a vertex overflow");
+                r.fail(filePath, quoted + ": the scale makes a vertex overflow");
             // Zero-area triangles have no normal and no surface: they are left out (and counted).
             if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0) {
                 ++scene.droppedDegenerateTriangles;
@@ -174,7 +364,7 @@ void readMesh(const Reader& r, const json& j, const std::string& path, std::uint
             ++added;
         }
     }
-    if (added == 0) r.fail(filePath, "OBJ file '" + file + "' has no triangles");
+    if (added == 0) r.fail(filePath, quoted + " has no triangles");
 }
 
 void readObject(const Reader& r, const json& j, const std::string& path,
@@ -190,7 +380,8 @@ void readObject(const Reader& r, const json& j, const std::string& path,
     ifPresent(j, path, "material", [&](const json& v, const std::string& p) {
         const std::string name = r.string(v, p);
         const auto it = materialIds.find(name);
-        if (it == materialIds.end()) r.fail(p, "no material named '" + name + "' in 'materials'");
+        if (it == materialIds.end())
+            r.fail(p, "no material named '" + printable(name) + "' in 'materials'");
         material = it->second;
     });
 
@@ -219,16 +410,15 @@ void readObject(const Reader& r, const json& j, const std::string& path,
         r.checkKeys(j, path, {"type", "material", "file", "scale", "translate"});
         readMesh(r, j, path, material, resolver, scene);
     } else {
-        r.fail(typePath, "unknown object type '" + type + "' (expected sphere, triangle or mesh)");
+        r.fail(typePath,
+               "unknown object type '" + printable(type) + "' (expected sphere, triangle or mesh)");
     }
 }
 
-}  // namespace
-
-Scene loadSceneText(std::string_view text, const std::string& fileName,
-                    const FileResolver& resolver) {
-    const json root = detail::parseJsonFile<SceneError>(text, fileName);
-    const Reader r(fileName, text);
+Scene readScene(std::string_view text, const std::string& fileName, const FileResolver& resolver) {
+    auto parsed = detail::parseJsonFile<SceneError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     if (!root.is_object()) r.fail("", "a scene file holds one JSON object {...}");
     if (root.contains("dimensions") && root["dimensions"] == 2)
         r.fail("dimensions",
@@ -295,27 +485,17 @@ Scene loadSceneText(std::string_view text, const std::string& fileName,
     return scene;
 }
 
-namespace {
 Vec2 readVec2(const Reader& r, const json& j, const std::string& path) {
     if (!j.is_array() || j.size() != 2)
         r.fail(path, "expected an array of 2 numbers [x, y], got " + Reader::typeName(j));
     return Vec2(r.number(j[0], JsonLineMap::element(path, 0)),
                 r.number(j[1], JsonLineMap::element(path, 1)));
 }
-}  // namespace
 
-bool isScene2DText(std::string_view text) {
-    try {
-        const json root = json::parse(text.begin(), text.end(), nullptr, true, true);
-        return root.is_object() && root.contains("dimensions") && root["dimensions"] == 2;
-    } catch (const json::exception&) {
-        return false;
-    }
-}
-
-Scene2D loadScene2DText(std::string_view text, const std::string& fileName) {
-    const json root = detail::parseJsonFile<SceneError>(text, fileName);
-    const Reader r(fileName, text);
+Scene2D readScene2D(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<SceneError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     r.requireObject(root, "");
     r.checkKeys(root, "", {"dimensions", "description", "grid", "ray", "circles", "segments"});
     if (!root.contains("dimensions") || root["dimensions"] != 2)
@@ -371,12 +551,62 @@ Scene2D loadScene2DText(std::string_view text, const std::string& fileName) {
     return scene;
 }
 
+/// A scene file's text; the message for a missing one lists the built-in scenes when `orBuiltin`
+/// (the name could have been either).
+std::string readSceneFile(const std::string& path, bool orBuiltin) {
+    try {
+        return detail::readRegularFile(path, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        if (f.missing() && orBuiltin) {
+            std::string names;
+            for (const auto& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+            for (const auto& n : builtinScene2DNames()) names += ", " + n + " (2D)";
+            throw SceneError(
+                path, 0, "",
+                "no such scene file, and no built-in scene of that name (built-in: " + names + ")");
+        }
+        throw SceneError(path, 0, "", std::string("cannot read the scene file: ") + f.what());
+    }
+}
+
+/// Meshes beside the scene file; a file that is there but cannot be read throws ReadFailure.
+FileResolver filesBeside(const std::string& scenePath) {
+    const std::filesystem::path folder = std::filesystem::path(scenePath).parent_path();
+    return [folder](const std::string& rel) -> std::optional<std::string> {
+        try {
+            return detail::readRegularFile((folder / rel).string(), detail::kMaxObjFileBytes);
+        } catch (const detail::ReadFailure& f) {
+            if (f.missing()) return std::nullopt;
+            throw;
+        }
+    };
+}
+
+}  // namespace
+
+Scene loadSceneText(std::string_view text, const std::string& fileName,
+                    const FileResolver& resolver) {
+    return detail::guarded<SceneError>(fileName,
+                                       [&] { return readScene(text, fileName, resolver); });
+}
+
+bool isScene2DText(std::string_view text) {
+    // Nesting past the cap is not looked at (the 3D loader then names the problem).
+    if (JsonLineMap::tooDeepLine(text)) return false;
+    try {
+        const json root = json::parse(text.begin(), text.end(), nullptr, true, true);
+        return root.is_object() && root.contains("dimensions") && root["dimensions"] == 2;
+    } catch (const json::exception&) {
+        return false;
+    }
+}
+
+Scene2D loadScene2DText(std::string_view text, const std::string& fileName) {
+    return detail::guarded<SceneError>(fileName, [&] { return readScene2D(text, fileName); });
+}
+
 Scene loadSceneFile(const std::string& path) {
-    const auto text = readWholeFile(path);
-    if (!text) throw SceneError(path, 0, "", "cannot open the scene file");
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    return loadSceneText(*text, path,
-                         [folder](const std::string& rel) { return readWholeFile(folder / rel); });
+    return loadSceneText(readSceneFile(path, false), path, filesBeside(path));
 }
 
 namespace {
@@ -415,24 +645,14 @@ std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath) {
         s.name = nameOrPath;
         return s;
     }
-    if (std::filesystem::exists(nameOrPath)) {
-        const auto text = readWholeFile(nameOrPath);
-        if (text && isScene2DText(*text)) return loadScene2DText(*text, nameOrPath);
-    }
-    return loadScene(nameOrPath);
+    const std::string text = readSceneFile(nameOrPath, true);
+    if (isScene2DText(text)) return loadScene2DText(text, nameOrPath);
+    return loadSceneText(text, nameOrPath, filesBeside(nameOrPath));
 }
 
 Scene loadScene(const std::string& nameOrPath) {
     if (embeddedFile(nameOrPath + ".json")) return loadBuiltinScene(nameOrPath);
-    if (!std::filesystem::exists(nameOrPath)) {
-        std::string names;
-        for (const auto& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
-        for (const auto& n : builtinScene2DNames()) names += ", " + n + " (2D)";
-        throw SceneError(
-            nameOrPath, 0, "",
-            "no such scene file, and no built-in scene of that name (built-in: " + names + ")");
-    }
-    return loadSceneFile(nameOrPath);
+    return loadSceneText(readSceneFile(nameOrPath, true), nameOrPath, filesBeside(nameOrPath));
 }
 
 }  // namespace raystep

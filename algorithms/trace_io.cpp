@@ -1,10 +1,12 @@
 #include "raystep/trace_io.h"
 
+#include "json_reader.h"
 #include "raystep/json_lines.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace raystep {
@@ -129,14 +131,17 @@ struct Writer {
 
 class Reader {
   public:
-    Reader(const std::string& file, std::string_view text) : file_(file), lines_(text) {}
+    Reader(const std::string& file, JsonLineMap lines) : file_(file), lines_(std::move(lines)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-        throw TraceError(file_ + ":" + std::to_string(lines_.lineOf(path)) + ": " +
-                         (path.empty() ? "" : "key '" + path + "': ") + message);
+        throw TraceError(file_, lines_.lineOf(path), path, message);
+    }
+    void requireObject(const ordered_json& j, const std::string& path) const {
+        if (!j.is_object()) fail(path, "expected an object");
     }
     const ordered_json& at(const ordered_json& obj, const std::string& path,
                            const char* key) const {
+        requireObject(obj, path);
         const auto it = obj.find(key);
         if (it == obj.end()) fail(JsonLineMap::child(path, key), "missing");
         return *it;
@@ -154,6 +159,11 @@ class Reader {
         if (!j.is_number_integer())
             fail(path, "expected a whole number from " + std::to_string(lo) + " to " +
                            std::to_string(hi));
+        // An unsigned value past int64's range would wrap in get<std::int64_t>().
+        if (j.is_number_unsigned() &&
+            j.get<std::uint64_t>() >
+                static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            fail(path, "must be from " + std::to_string(lo) + " to " + std::to_string(hi));
         const auto v = j.get<std::int64_t>();
         if (v < lo || v > hi)
             fail(path, "must be from " + std::to_string(lo) + " to " + std::to_string(hi));
@@ -162,6 +172,10 @@ class Reader {
     std::uint32_t idValue(const ordered_json& j, const std::string& path) const {
         if (j.is_null()) return kNoId;
         return static_cast<std::uint32_t>(integer(j, path, 0, kNoId - 1));
+    }
+    std::string string(const ordered_json& j, const std::string& path) const {
+        if (!j.is_string()) fail(path, "expected a string");
+        return j.get<std::string>();
     }
     template <typename E, std::size_t N>
     E enumValue(const std::array<std::string_view, N>& names, const ordered_json& j,
@@ -172,6 +186,21 @@ class Reader {
         std::string all;
         for (auto n : names) all += (all.empty() ? "" : ", ") + std::string(n);
         fail(path, "expected one of: " + all);
+    }
+    /// An id that must index a table of `size` (kNoId allowed when `noneAllowed`).
+    void checkId(std::uint32_t id, std::size_t size, bool noneAllowed, const std::string& path,
+                 const char* what, const char* table) const {
+        if (id == kNoId && noneAllowed) return;
+        if (id == kNoId || id >= size)
+            fail(path, std::string(what) + " " +
+                           (id == kNoId ? std::string("null") : std::to_string(id)) +
+                           " is not in '" + table + "' (" + std::to_string(size) + " " + table +
+                           ")");
+    }
+    void checkRange(std::int64_t v, std::int64_t lo, std::int64_t hi,
+                    const std::string& path) const {
+        if (v < lo || v > hi)
+            fail(path, "must be from " + std::to_string(lo) + " to " + std::to_string(hi));
     }
 
   private:
@@ -229,7 +258,8 @@ Event readEvent(const Reader& r, const std::string& type, const ordered_json& j,
     if constexpr (I == std::variant_size_v<Event>) {
         std::string all;
         for (auto n : kEventNames) all += (all.empty() ? "" : ", ") + std::string(n);
-        r.fail(JsonLineMap::child(path, "type"), "unknown event type '" + type + "' (" + all + ")");
+        r.fail(JsonLineMap::child(path, "type"),
+               "unknown event type '" + printable(type) + "' (" + all + ")");
     } else {
         if (type != kEventNames[I]) return readEvent<I + 1>(r, type, j, path);
         std::variant_alternative_t<I, Event> e{};
@@ -298,17 +328,45 @@ std::string traceToJson(const EventLog& log, const TraceInfo& info) {
     return out + "\n}\n";
 }
 
-EventLog traceFromJson(std::string_view text, const std::string& fileName, TraceInfo* info) {
-    ordered_json root;
-    try {
-        root = ordered_json::parse(text.begin(), text.end());
-    } catch (const nlohmann::json::exception& e) {
-        std::string what = e.what();
-        const auto at = what.find("parse error");
-        throw TraceError(fileName +
-                         ": malformed JSON: " + (at == std::string::npos ? what : what.substr(at)));
-    }
-    const Reader r(fileName, text);
+namespace {
+
+/// Every id and small field of an event in range: replays and the app index tables and arrays
+/// with them. Node ids are checked when the file has a node table (a build's); a pixel's trace
+/// names the nodes of a structure it does not hold.
+void checkEvent(const Reader& r, const Event& e, const EventLog& log, std::size_t nodes,
+                const std::string& p) {
+    const auto child = [&](const char* key) { return JsonLineMap::child(p, key); };
+    std::visit(
+        [&](const auto& ev) {
+            using E = std::decay_t<decltype(ev)>;
+            if constexpr (requires { ev.ray; })
+                r.checkId(ev.ray, log.rays().size(), true, child("ray"), "ray", "rays");
+            if constexpr (std::is_same_v<E, RayBegin>)
+                r.checkId(ev.parent, log.rays().size(), true, child("parent"), "ray", "rays");
+            constexpr bool build = std::is_same_v<E, BuildNode> ||
+                                   std::is_same_v<E, SplitCandidate> ||
+                                   std::is_same_v<E, SplitChosen> || std::is_same_v<E, LeafMade>;
+            if constexpr (requires { ev.node; })
+                if (build || nodes > 0)
+                    r.checkId(ev.node, nodes, false, child("node"), "node", "nodes");
+            if constexpr (std::is_same_v<E, BuildNode>)
+                r.checkId(ev.parent, nodes, true, child("parent"), "node", "nodes");
+            if constexpr (requires { ev.axis; }) r.checkRange(ev.axis, 0, 2, child("axis"));
+            if constexpr (std::is_same_v<E, DdaCell>) r.checkRange(ev.axes, 0, 7, child("axes"));
+            if constexpr (std::is_same_v<E, DdaSetup>) {
+                r.checkRange(ev.dims, 2, 3, child("dims"));
+                for (std::size_t k = 0; k < ev.step.size(); ++k)
+                    r.checkRange(ev.step[k], -1, 1, JsonLineMap::element(child("step"), k));
+            }
+        },
+        e);
+}
+
+EventLog readTrace(std::string_view text, const std::string& fileName, TraceInfo* info) {
+    auto parsed = detail::parseJsonFile<TraceError, ordered_json>(text, fileName,
+                                                                  /*comments=*/false);
+    const ordered_json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
     if (!root.is_object()) r.fail("", "a trace file holds one JSON object");
     const ordered_json& format = r.at(root, "", "format");
     if (format != "raystep-trace") r.fail("format", "expected \"raystep-trace\"");
@@ -317,22 +375,27 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
         r.fail("version", "this raystep reads trace version " +
                               std::to_string(kTraceFormatVersion) + ", the file is version " +
                               std::to_string(version));
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
     std::size_t cap = std::numeric_limits<std::size_t>::max();
-    if (root.contains("cap") && root["cap"].is_number_unsigned())
-        cap = root["cap"].get<std::size_t>();
+    if (root.contains("cap"))
+        cap = static_cast<std::size_t>(r.integer(root["cap"], "cap", 0, kMax));
     EventLog log(cap);
-    if (info) {
-        if (root.contains("scene") && root["scene"].is_string()) info->scene = root["scene"];
-        if (root.contains("accel") && root["accel"].is_string()) info->accel = root["accel"];
-        if (root.contains("what") && root["what"].is_string()) info->what = root["what"];
-        if (root.contains("pixel")) {
-            info->pixelX = static_cast<int>(r.integer(root["pixel"][0], "pixel[0]", 0, 1 << 20));
-            info->pixelY = static_cast<int>(r.integer(root["pixel"][1], "pixel[1]", 0, 1 << 20));
-        }
-    }
+    TraceInfo read;
+    for (const auto& [key, field] :
+         {std::pair{"scene", &read.scene}, {"accel", &read.accel}, {"what", &read.what}})
+        if (root.contains(key)) *field = r.string(root[key], key);
+    // [A, B], two whole numbers from lo to 2^20.
+    const auto pair = [&](const char* key, const char* form, std::int64_t lo, int& a, int& b) {
+        if (!root.contains(key)) return;
+        const ordered_json& v = root[key];
+        if (!v.is_array() || v.size() != 2) r.fail(key, std::string("expected ") + form);
+        a = static_cast<int>(r.integer(v[0], JsonLineMap::element(key, 0), lo, 1 << 20));
+        b = static_cast<int>(r.integer(v[1], JsonLineMap::element(key, 1), lo, 1 << 20));
+    };
+    pair("pixel", "[X, Y]", 0, read.pixelX, read.pixelY);
+    pair("image", "[W, H]", 1, read.width, read.height);
     if (root.contains("dropped"))
-        log.setDropped(static_cast<std::size_t>(
-            r.integer(root["dropped"], "dropped", 0, std::numeric_limits<std::int64_t>::max())));
+        log.setDropped(static_cast<std::size_t>(r.integer(root["dropped"], "dropped", 0, kMax)));
 
     const auto vec3 = [&](const ordered_json& j, const std::string& p) {
         if (!j.is_array() || j.size() != 3) r.fail(p, "expected [x, y, z]");
@@ -345,13 +408,14 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const std::string p = JsonLineMap::element("rays", i);
         const ordered_json& j = rays[i];
-        if (!j.is_object()) r.fail(p, "expected an object");
+        r.requireObject(j, p);
         RayRecord rec{};
         rec.kind =
             r.enumValue<RayKind>(kRayKindNames, r.at(j, p, "kind"), JsonLineMap::child(p, "kind"));
         rec.depth = static_cast<std::uint8_t>(
             r.integer(r.at(j, p, "depth"), JsonLineMap::child(p, "depth"), 0, 255));
         rec.parent = r.idValue(r.at(j, p, "parent"), JsonLineMap::child(p, "parent"));
+        r.checkId(rec.parent, rays.size(), true, JsonLineMap::child(p, "parent"), "ray", "rays");
         rec.origin = vec3(r.at(j, p, "origin"), JsonLineMap::child(p, "origin"));
         rec.dir = vec3(r.at(j, p, "dir"), JsonLineMap::child(p, "dir"));
         rec.tMin = r.number(r.at(j, p, "t_min"), JsonLineMap::child(p, "t_min"));
@@ -360,9 +424,11 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
             r.fail(p, "a ray's origin and direction must be finite");
         log.addRay(rec);
     }
+    std::size_t nodeCount = 0;
     if (root.contains("nodes")) {
         const ordered_json& nodes = root["nodes"];
         if (!nodes.is_array()) r.fail("nodes", "expected an array");
+        nodeCount = nodes.size();
         for (std::size_t i = 0; i < nodes.size(); ++i) {
             const std::string p = JsonLineMap::element("nodes", i);
             const Vec3 lo = vec3(r.at(nodes[i], p, "lo"), JsonLineMap::child(p, "lo"));
@@ -375,23 +441,21 @@ EventLog traceFromJson(std::string_view text, const std::string& fileName, Trace
     for (std::size_t i = 0; i < events.size(); ++i) {
         const std::string p = JsonLineMap::element("events", i);
         const ordered_json& j = events[i];
-        if (!j.is_object()) r.fail(p, "expected an object");
         const ordered_json& type = r.at(j, p, "type");
         if (!type.is_string()) r.fail(JsonLineMap::child(p, "type"), "expected a string");
         const Event e = readEvent(r, type.get<std::string>(), j, p);
         // Ids must point into the tables, so a replay never reads past them.
-        std::visit(
-            [&](const auto& ev) {
-                if constexpr (requires { ev.ray; })
-                    if (ev.ray != kNoId && ev.ray >= log.rays().size())
-                        r.fail(JsonLineMap::child(p, "ray"),
-                               "ray " + std::to_string(ev.ray) + " is not in 'rays' (" +
-                                   std::to_string(log.rays().size()) + " rays)");
-            },
-            e);
+        checkEvent(r, e, log, nodeCount, p);
         log.append(e);  // past the cap too: the file is what was recorded
     }
+    if (info) *info = read;
     return log;
+}
+
+}  // namespace
+
+EventLog traceFromJson(std::string_view text, const std::string& fileName, TraceInfo* info) {
+    return detail::guarded<TraceError>(fileName, [&] { return readTrace(text, fileName, info); });
 }
 
 }  // namespace raystep

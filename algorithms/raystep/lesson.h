@@ -129,7 +129,8 @@ struct Lesson {
     std::optional<GridSweepSpec> sweep;
     std::vector<LessonStep> steps;
     std::vector<Exercise> exercises;
-    std::string file;  // where it was read from (messages)
+    std::string file;      // where it was read from (messages)
+    bool builtin = false;  // embedded in raystep (its scene is a built-in name)
 
     const Exercise* exercise(std::string_view exerciseId) const;
 };
@@ -196,11 +197,14 @@ void validateLesson(const Lesson& lesson);
 /// A course's answers file: {"lesson": ID, "answers": {exercise id: answer}} where an answer is a
 /// number, an array of numbers (a cell), a string as typed in the app, or true/false (hit/miss).
 struct AnswerSheet {
-    std::string lesson;
+    std::string lesson;  // the id, or the number as text
+    int lessonLine = 0;
     std::map<std::string, std::string> answers;  // as text, for parseAnswer
     std::map<std::string, int> lines;
 };
 AnswerSheet loadAnswerSheet(std::string_view text, const std::string& fileName);
+/// Reads the answers file at `path` (a regular file of at most 8 MB) and parses it.
+AnswerSheet loadAnswerSheetFile(const std::string& path);
 
 /// Grades a sheet: per exercise, correct or not and why; the score is the number right.
 struct Grade {
@@ -229,6 +233,9 @@ struct Progress {
     std::map<std::string, LessonProgress> lessons;  // by lesson id
 };
 Progress parseProgress(std::string_view text, const std::string& fileName);
+/// Reads the progress file at `path`: nullopt when there is none yet; LessonError when it cannot
+/// be read (a folder, a special file, over 8 MB) or parsed.
+std::optional<Progress> loadProgressFile(const std::string& path);
 std::string progressToJson(const Progress& p);
 /// Folds progress saved by another run (another window of the app, open at the same time) into
 /// `into`, so that saving `into` loses neither's answers: an exercise right in either is right,

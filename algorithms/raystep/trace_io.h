@@ -3,8 +3,8 @@
 // and students' own scripts. Reading checks every field and names the file, line and key of the
 // first problem.
 #include "raystep/events.h"
+#include "raystep/file_error.h"
 
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -21,9 +21,10 @@ struct TraceInfo {
     int width = 0, height = 0;
 };
 
-class TraceError : public std::runtime_error {
+/// A trace file that cannot be read: file, line, key and why ("file:line: key 'k': message").
+class TraceError : public FileError {
   public:
-    using std::runtime_error::runtime_error;
+    using FileError::FileError;
 };
 
 /// The whole log as trace-file JSON text.

@@ -9,9 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace raystep::cli {
 
@@ -74,11 +72,7 @@ int key(const Lesson& l) {
 }
 
 int check(const Lesson& l, const std::string& answersPath, Language lang, bool json) {
-    std::ifstream in(answersPath, std::ios::binary);
-    if (!in) return fail(answersPath + ": cannot open the answers file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    const AnswerSheet sheet = loadAnswerSheet(text.str(), answersPath);
+    const AnswerSheet sheet = loadAnswerSheetFile(answersPath);
     const LessonRun run = runLesson(l);
     const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath);
     if (json) {

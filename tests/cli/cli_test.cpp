@@ -744,4 +744,83 @@ TEST_F(Cli, LessonBadInput) {
     expectBadInputKeepFiles("lesson check 6 --answers missing.json", "missing.json");
     expectBadInputKeepFiles("lesson show 6 --lang fr", "--lang fr: expected en or it");
 }
+// ---- The readers on hostile files (robustness review, issue 15) ----
+
+class CliReaders : public Cli {
+  protected:
+    /// As run(), but the command is ended after 60 s: a reader blocked on a FIFO fails the test
+    /// instead of hanging it.
+    CliRun runBounded(const std::string& args) {
+        const std::string cmd = std::string("cd '") + dir.string() +
+                                "' && timeout 60 '" RAYSTEP_CLI "' " + args +
+                                " > out.txt 2> err.txt < /dev/null";
+        const int status = std::system(cmd.c_str());
+        CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
+                 slurp(dir / "err.txt")};
+        fs::remove(dir / "out.txt");
+        fs::remove(dir / "err.txt");
+        return r;
+    }
+    /// Exit code 2, one "raystep-cli: error:" line containing `expected`, no new file.
+    void expectOneLine(const std::string& args, const std::string& expected) {
+        std::size_t before = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++before;
+        const CliRun r = runBounded(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+        std::size_t after = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++after;
+        EXPECT_EQ(after, before) << args;
+    }
+};
+
+TEST_F(CliReaders, AnswersFileThatIsAFolderOrMissing) {
+    fs::create_directories(dir / "answers");
+    expectOneLine("lesson check 6 --answers answers",
+                  "answers: cannot read the answers file: it is a folder");
+    expectOneLine("lesson check 6 --answers none.json",
+                  "none.json: cannot read the answers file: no such file");
+}
+
+TEST_F(CliReaders, ALessonNumberInTheAnswersFile) {
+    write("a.json", "{\"lesson\": 6, \"answers\": {\"next-cell\": [2, 2]}}");
+    const CliRun r = run("lesson check 6 --answers a.json --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["score"], 1);
+}
+
+TEST_F(CliReaders, SymlinkLoopsAndOverlongNames) {
+    fs::create_symlink("b.json", dir / "a.json");
+    fs::create_symlink("a.json", dir / "b.json");
+    for (const char* args : {"render a.json -o x.png", "lesson validate a.json",
+                             "lesson check 6 --answers a.json", "trace a.json -o t.json"})
+        expectOneLine(args, "a.json: cannot read the ");
+    const std::string longName(300, 'x');
+    expectOneLine("render " + longName + "/s.json -o x.png", "the name is too long");
+}
+
+TEST_F(CliReaders, SpecialFilesAreRefusedWithoutReading) {
+    ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);
+    for (const std::string file : {"fifo.json", "/dev/zero", "/dev/urandom"}) {
+        expectOneLine("render " + file + " -o x.png", "not a regular file");
+        expectOneLine("lesson validate " + file, "not a regular file");
+        expectOneLine("lesson check 6 --answers " + file, "not a regular file");
+    }
+    write("mesh.json", "{\"objects\": [\n{\"type\": \"mesh\", \"file\": \"fifo.json\"}]}");
+    expectOneLine("render mesh.json -o x.png",
+                  "mesh.json:2: key 'objects[0].file': cannot read OBJ file 'fifo.json': not a "
+                  "regular file");
+}
+
+TEST_F(CliReaders, DeepNestingAndControlCharactersStayOneLine) {
+    write("deep.json",
+          "{\"objects\":\n" + std::string(200000, '[') + std::string(200000, ']') + "}");
+    expectOneLine("render deep.json -o x.png", "deep.json:2: nested deeper than 64 levels");
+    write("bad\nname.json", "{\"objects\": [{\"type\": \"cu\\nbe\\u0000x\"}]}");
+    expectOneLine("render 'bad\nname.json' -o x.png",
+                  "bad\\nname.json:1: key 'objects[0].type': unknown object type 'cu\\nbe\\x00x'");
+}
+
 }  // namespace

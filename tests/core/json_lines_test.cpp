@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+#include <string>
+
 namespace raystep {
 namespace {
 
@@ -39,6 +42,57 @@ TEST(JsonLineMap, FindsDuplicateKeys) {
     ASSERT_EQ(map.duplicates().size(), 1u);
     EXPECT_EQ(map.duplicates()[0].first, "b.c");
     EXPECT_EQ(map.duplicates()[0].second, 3);
+}
+
+// Keys are compared and found decoded, as nlohmann gives them: "\u0061" is "a".
+TEST(JsonLineMap, KeysAreDecoded) {
+    const JsonLineMap dup("{\"a\": 1,\n \"\\u0061\": 2}");
+    ASSERT_EQ(dup.duplicates().size(), 1u);
+    EXPECT_EQ(dup.duplicates()[0].first, "a");
+    EXPECT_EQ(dup.duplicates()[0].second, 2);
+    // A surrogate pair is one character (U+1F600, UTF-8 F0 9F 98 80); escapes of quotes and
+    // backslashes; keys holding '.' and '[' are still found.
+    const JsonLineMap map(
+        "{\"\\ud83d\\ude00\": 1,\n \"q\\\"b\\\\\": {\n \"x\": 2},\n \"a.b\": {\"c[1]\": [\n 5]},\n"
+        " \"a\": {\"b\": 3}}");
+    EXPECT_TRUE(map.duplicates().empty());
+    EXPECT_EQ(map.lineOf("\xf0\x9f\x98\x80"), 1);
+    EXPECT_EQ(map.lineOf("q\"b\\.x"), 3);
+    EXPECT_EQ(map.lineOf("a.b.c[1][0]"), 5);
+    // "a.b" is both the key "a.b" and "b" in "a": the shorter key first.
+    EXPECT_EQ(map.lineOf("a.b"), 6);
+}
+
+// The depth cap: the line of the first bracket past it, brackets in strings and comments not
+// counted; at the cap the map is built as usual.
+TEST(JsonLineMap, DepthIsCappedBeforeAnythingIsBuilt) {
+    const std::string deep =
+        std::string(kMaxJsonDepth + 1, '[') + "\n" + std::string(kMaxJsonDepth + 1, ']');
+    EXPECT_EQ(JsonLineMap("{\"a\":\n" + deep + "}").tooDeepLine(), 2);
+    EXPECT_EQ(JsonLineMap("\n\n" + std::string(1'000'000, '[')).tooDeepLine(), 3);
+    const std::string atCap = std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']');
+    const JsonLineMap ok("/* [[[[ */ \"[[[[\", // [[[[\n" + atCap);
+    EXPECT_EQ(ok.tooDeepLine(), 0);
+    const JsonLineMap nested(atCap);
+    EXPECT_EQ(nested.tooDeepLine(), 0);
+    std::string path;
+    for (int i = 1; i < kMaxJsonDepth; ++i) path += "[0]";
+    EXPECT_EQ(nested.lineOf(path), 1);
+}
+
+// On any bytes the scan ends, and lineOf answers: the fuzzers will feed it worse.
+TEST(JsonLineMap, AnyBytesAreSafe) {
+    std::mt19937 rng(7);
+    const std::string alphabet = "{}[]\",:/*\\\n\r\t u0aA1.e-x";
+    for (int n = 0; n < 20000; ++n) {
+        std::string text(rng() % 40, ' ');
+        for (char& c : text) c = alphabet[rng() % alphabet.size()];
+        const JsonLineMap map(text);
+        EXPECT_GE(map.lineOf("a.b[0]"), 1);
+        EXPECT_GE(map.lineOf("[0].x"), 1);
+        EXPECT_LE(map.lineOf("[1]"),
+                  1 + static_cast<int>(std::count(text.begin(), text.end(), '\n')));
+    }
 }
 
 }  // namespace

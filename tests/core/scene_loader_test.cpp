@@ -4,8 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <future>
+#include <memory>
+#include <thread>
 
 namespace raystep {
 namespace {
@@ -291,7 +301,7 @@ INSTANTIATE_TEST_SUITE_P(
             "{\"render\": {\"spp\": 2.5}, \"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}", 1,
             "render.spp", "whole number"},
         BadCase{"MissingObj", "{\"objects\": [\n{\"type\": \"mesh\",\n\"file\": \"missing.obj\"}]}",
-                3, "objects[0].file", "cannot open OBJ file 'missing.obj'"},
+                3, "objects[0].file", "cannot read OBJ file 'missing.obj': no such file"},
         BadCase{"EmptyObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"empty.obj\"}]}", 1,
                 "objects[0].file", "no triangles"},
         BadCase{"NanInObj", "{\"objects\": [{\"type\": \"mesh\", \"file\": \"nan.obj\"}]}", 1,
@@ -390,6 +400,342 @@ TEST(Scene2DLoader, BadFilesNameLineAndKey) {
         2, "grid[0]", "between 1 and 512");
     expectError("{\"dimensions\": 2}", 1, "segments", "the scene is empty");
     expectError("{\"dimensions\": 2,\n\"spheres\": []}", 2, "spheres", "unknown key");
+}
+
+}  // namespace
+}  // namespace raystep
+
+// ---- Hostile input (robustness review, issue 15): every failure is one SceneError line ----
+
+namespace raystep {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder under /tmp, removed with everything in it at the end of the test.
+struct TempDir {
+    fs::path path = fs::temp_directory_path() /
+                    ("raystep-hostile-" + std::to_string(::getpid()) + "-" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    TempDir() { fs::create_directories(path); }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+/// What `f` throws, run on a thread: "" for no exception, "timed out" when it is still blocked
+/// after 10 s (a writer then opens and closes `fifo` so the thread ends instead of hanging the
+/// test), the message of a FileError, else "other exception: ...".
+std::string errorOf(const std::function<void()>& f, const fs::path& fifo = {}) {
+    auto result = std::make_shared<std::promise<std::string>>();
+    std::future<std::string> future = result->get_future();
+    std::thread([result, f] {
+        try {
+            f();
+            result->set_value("");
+        } catch (const FileError& e) {
+            result->set_value(e.what());
+        } catch (const std::exception& e) {
+            result->set_value(std::string("other exception: ") + e.what());
+        }
+    }).detach();
+    if (future.wait_for(std::chrono::seconds(10)) == std::future_status::ready) return future.get();
+    if (!fifo.empty())
+        if (const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK); fd >= 0) ::close(fd);
+    future.wait();
+    return "timed out";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+// Class 4: a deeply nested value is refused at the cap, before any recursive code sees it, with
+// the line of the first bracket past it; exactly 64 levels still parse.
+TEST(SceneLoaderHostile, DeepNestingIsRefusedAtTheCap) {
+    const auto scene = [](int levels) {
+        // The root object is level 1, so `levels - 1` arrays under it.
+        return "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1}],\n\"description\": " +
+               std::string(levels - 1, '[') + std::string(levels - 1, ']') + "}";
+    };
+    for (const int levels : {65, 1000, 1'000'000}) {
+        try {
+            load(scene(levels));
+            ADD_FAILURE() << levels << " levels loaded";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.line(), 2) << e.what();
+            EXPECT_TRUE(contains(e.what(), "nested deeper than 64 levels")) << e.what();
+        }
+        try {
+            loadScene2DText("{\"dimensions\": 2,\n\"grid\": " + std::string(levels, '[') +
+                                std::string(levels, ']') + "}",
+                            "flat.json");
+            ADD_FAILURE() << levels << " levels loaded";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.line(), 2) << e.what();
+            EXPECT_TRUE(contains(e.what(), "nested deeper than 64 levels")) << e.what();
+        }
+        EXPECT_FALSE(isScene2DText("{\"dimensions\": 2, \"x\": " + std::string(levels, '[') +
+                                   std::string(levels, ']') + "}"));
+    }
+    // 64 levels: past the depth check, the description is refused for its type.
+    try {
+        load(scene(64));
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.key(), "description");
+        EXPECT_TRUE(contains(e.what(), "expected a string")) << e.what();
+    }
+    // Brackets in strings and comments do not count; a comment that ends at a CR (as nlohmann
+    // ends it) does not hide the brackets after it.
+    EXPECT_NO_THROW(load("{\"description\": \"" + std::string(100, '[') + "\", // " +
+                         std::string(100, '[') + "\n \"objects\": [{\"type\": \"sphere\", " +
+                         "\"radius\": 1}]}"));
+    try {
+        load("{// comment\r\"description\": " + std::string(100, '[') + std::string(100, ']') +
+             "}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_TRUE(contains(e.what(), "nested deeper than 64 levels")) << e.what();
+    }
+}
+
+// Class 11: nlohmann compares decoded keys, so must the duplicate check.
+TEST(SceneLoaderHostile, ADuplicateKeySpelledWithAnEscapeIsFound) {
+    for (const char* spelling : {"r\\u0061dius", "\\u0072adius", "\\u0072\\u0061\\u0064ius"}) {
+        try {
+            load(std::string("{\"objects\": [{\"type\": \"sphere\", \"radius\": 1,\n\"") +
+                 spelling + "\": 2}]}");
+            ADD_FAILURE() << spelling;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.line(), 2) << e.what();
+            EXPECT_EQ(e.key(), "objects[0].radius") << e.what();
+            EXPECT_TRUE(contains(e.what(), "given twice")) << e.what();
+        }
+    }
+    // Keys that differ once decoded are not duplicates, and keep their lines.
+    EXPECT_NO_THROW(
+        load("{\"materials\": {\"a\\\"b\": {}, \"a\\\\b\": {},\n\"a.b\": {}},\n"
+             "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}"));
+    try {
+        load(
+            "{\"materials\": {\"a\\\"b\": {},\n \"\\u00e8\": {\"kd\": 2}},\n"
+            "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.line(), 2) << e.what();
+        EXPECT_EQ(e.key(), "materials.\xc3\xa8.kd") << e.what();
+    }
+}
+
+// Class 12: text from the file (and the file's name) is quoted escaped and shortened, so the
+// message stays one line and a NUL does not cut it.
+TEST(SceneLoaderHostile, QuotedTextIsEscapedAndShortened) {
+    try {
+        loadSceneText("{\"objects\": [{\"type\": \"cu\\nbe\\u0000tail\\u001b[31m\\r\"}]}",
+                      "odd\nname\x01.json", kNoFiles);
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find_first_of(std::string("\n\r\x1b\x01\0", 5)), std::string::npos) << what;
+        EXPECT_TRUE(contains(what, "odd\\nname\\x01.json:1: ")) << what;
+        EXPECT_TRUE(contains(what, "unknown object type 'cu\\nbe\\x00tail\\x1b[31m\\r'")) << what;
+        EXPECT_EQ(e.file(), "odd\nname\x01.json");  // the accessor keeps the name as given
+    }
+    // A long value is cut, with its length; UTF-8 text passes as it is.
+    try {
+        load("{\"objects\": [{\"type\": \"" + std::string(5000, 'x') + "\"}]}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_LT(std::string(e.what()).size(), 300u) << e.what();
+        EXPECT_TRUE(contains(e.what(), "... (5000 bytes)")) << e.what();
+    }
+    try {
+        load("{\"objects\": [{\"type\": \"cub\xc3\xa8\"}]}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_TRUE(contains(e.what(), "'cub\xc3\xa8'")) << e.what();
+    }
+    // A 400-digit number is out of range: the message quotes its start, not all of it.
+    try {
+        load("{\"objects\": [{\"type\": \"sphere\",\n\"radius\": 1" + std::string(400, '0') +
+             "}]}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.line(), 2) << e.what();
+        EXPECT_LT(std::string(e.what()).size(), 200u) << e.what();
+        EXPECT_TRUE(contains(e.what(), "out of range")) << e.what();
+    }
+}
+
+// Class 18: a camera too far from what it looks at is refused for that, not for its up vector.
+TEST(SceneLoaderHostile, ACameraOutOfTheArithmeticsRangeNamesTheRealProblem) {
+    for (const char* eye : {"[0, 0, 1.34e154]", "[0, 0, 1e300]", "[-1e308, 0, 0]"}) {
+        try {
+            load(std::string("{\"camera\": {\"eye\": ") + eye +
+                 ",\n\"look_at\": [1e308, 0, 0]},\n"
+                 "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}");
+            ADD_FAILURE() << eye;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.key(), "camera.look_at") << e.what();
+            EXPECT_TRUE(contains(e.what(), "too far")) << e.what();
+        }
+    }
+    try {
+        load(
+            "{\"camera\": {\"up\": [0, 1e200, 0]},\n"
+            "\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}");
+        ADD_FAILURE();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.key(), "camera.up") << e.what();
+        EXPECT_TRUE(contains(e.what(), "length")) << e.what();
+    }
+    // Far but within range: loads, and the camera's rays are unit vectors.
+    const Scene s = load(
+        "{\"camera\": {\"eye\": [0, 0, 1e140], \"look_at\": [0, 0, 0]},"
+        "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e139}]}");
+    EXPECT_NEAR(s.camera.generateRay(1, 1, 4, 4).dir.z, -1.0, 0.1);
+}
+
+/// Loads a scene of one mesh whose OBJ text is `obj`; returns the error ("" if none).
+std::string objError(const std::string& obj, std::size_t* triangles = nullptr) {
+    const FileResolver resolver = [&](const std::string&) { return std::optional(obj); };
+    try {
+        const Scene s =
+            load("{\"objects\": [{\"type\": \"mesh\", \"file\": \"m.obj\"}]}", resolver);
+        if (triangles) *triangles = s.triangles.size();
+        return "";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.key(), "objects[0].file");
+        return e.what();
+    }
+}
+
+// Class 9: the OBJ check reads lines as tinyobjloader does (leading blanks and tabs; LF, CRLF and
+// CR-only line ends) and names the OBJ line of a bad vertex or face index.
+TEST(SceneLoaderHostile, ObjLinesAreCheckedAsTinyobjloaderReadsThem) {
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"v 0 0 0\n  v 1 0 nan\nv 0 1 0\nf 1 2 3\n",
+         "OBJ file 'm.obj' line 2: vertex coordinate 'nan' is not a finite number"},
+        {"v 0 0 0\n\tv\t1\tabc\t0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 'abc'"},
+        {"v 0 0 0\rv 1 0 0\rv 0 1 inf\rf 1 2 3\r", "line 3: vertex coordinate 'inf'"},
+        {"v 0 0 0\r\nv 1 0 0\r\nv 0 1 0x1p3\r\nf 1 2 3\r\n", "line 3: vertex coordinate '0x1p3'"},
+        {"v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", "line 2: a vertex needs 3 coordinates"},
+        {"v 0 0 0\nv \nv 0 1 0\nf 1 2 3\n", "line 2: a vertex needs 3 coordinates"},
+        // tinyobjloader reads the mantissa digit by digit: past 1e308 it is infinity, whatever
+        // the exponent says.
+        {"v 0 0 0\nv 1" + std::string(400, '0') + "e-300 0 0\nv 0 1 0\nf 1 2 3\n",
+         "line 2: vertex coordinate '1000"},
+        {tri + "f 1 2 4294967297\n",
+         "line 4: vertex index 4294967297 is out of range (3 vertices)"},
+        {tri + " f 1/1/1 2/2/2 7/7/7\n", "line 4: vertex index 7 is out of range (3 vertices)"},
+        {tri + "f -1 -2 -4\n", "line 4: vertex index -4 is out of range (3 vertices"},
+        {tri + "f 1 2 0\n", "line 4: vertex index 0 is out of range"},
+        {tri + "f 1 2 x\n", "line 4: face vertex 'x' is not an index"},
+        {tri + "f 1 2 3/1/1/1\n", "line 4: face vertex '3/1/1/1' is not an index"},
+        {tri + "f 1 2\n", "line 4: a face needs at least 3 vertices"},
+        {tri + "f 1 2 3\nf 1 2 4\n", "line 5: vertex index 4 is out of range (3 vertices)"},
+        {std::string("v 0 0 0\nv 1 0 0\nv 0 1\0 0\nf 1 2 3\n", 33), "line 3: a NUL byte"},
+    };
+    for (const auto& [obj, message] : cases) {
+        const std::string what = objError(obj);
+        EXPECT_TRUE(contains(what, message)) << what << "\nfor: " << obj;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_LT(what.size(), 300u) << what;
+    }
+    std::string polygon = tri;
+    for (int i = 0; i < 300; ++i)
+        polygon += "v " + std::to_string(std::cos(i * 0.02)) + " " +
+                   std::to_string(std::sin(i * 0.02)) + " 0\n";
+    polygon += "f";
+    for (int i = 4; i <= 303; ++i) polygon += " " + std::to_string(i);
+    EXPECT_TRUE(contains(objError(polygon + "\n"), "line 304: a face has at most 256 vertices"));
+    // 254 triangles a face: the 39,371st face passes 10M.
+    std::string face = "f";
+    for (int i = 0; i < 256; ++i) face += i % 2 ? " 2" : " 1";
+    std::string many = tri;
+    for (int i = 0; i < 39371; ++i) many += face + "\n";
+    EXPECT_TRUE(contains(objError(many), "line 39374: more than 10000000 triangles"));
+
+    // What tinyobjloader reads and the check must let through: forward and relative indices,
+    // v/vt/vn, a vertex colour, a trailing comment, groups and other statements.
+    for (const std::string& obj : std::vector<std::string>{
+             "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n", tri + "f -3 -2 -1\n",
+             tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n", tri + "f 1//1 2//1 3//1\n",
+             "v 0 0 0 1 0 0\nv 1 0 0 # corner\nv +0 .1e1 -0.\no thing\ng a b\ns off\n"
+             "usemtl x\nmtllib none.mtl\nl 1 2\np 1\nt tag 1/0/0 7\nf\t1 2 3 \n"}) {
+        std::size_t triangles = 0;
+        EXPECT_EQ(objError(obj, &triangles), "") << obj;
+        EXPECT_EQ(triangles, 1u) << obj;
+    }
+}
+
+// Class 1: paths the file system refuses to resolve are one SceneError each, not an abort.
+TEST(SceneLoaderHostile, UnresolvablePathsAreSceneErrors) {
+    const TempDir dir;
+    fs::create_symlink(dir.path / "b", dir.path / "a");
+    fs::create_symlink(dir.path / "a", dir.path / "b");
+    const std::string loop = (dir.path / "a").string();
+    const std::string longName = (dir.path / std::string(300, 'x')).string() + "/scene.json";
+    const std::string underFile = (dir.path / "file.json").string() + "/scene.json";
+    std::ofstream(dir.path / "file.json") << kMinimal;
+    for (const std::string& path : {loop, longName, underFile}) {
+        SCOPED_TRACE(path);
+        for (const auto& f : std::vector<std::function<void()>>{[&] { loadScene(path); },
+                                                                [&] { loadSceneFile(path); },
+                                                                [&] { loadAnyScene(path); }}) {
+            const std::string what = errorOf(f);
+            EXPECT_FALSE(contains(what, "other exception")) << what;
+            EXPECT_FALSE(what.empty());
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+    }
+    EXPECT_TRUE(contains(errorOf([&] { loadScene(loop); }), "symbolic links"));
+    EXPECT_TRUE(contains(errorOf([&] { loadScene(longName); }), "too long"));
+    // A mesh behind such a path names the scene's key and the mesh.
+    std::ofstream(dir.path / "scene.json")
+        << "{\"objects\": [\n{\"type\": \"mesh\", \"file\": \"a\"}]}";
+    const std::string what = errorOf([&] { loadSceneFile((dir.path / "scene.json").string()); });
+    EXPECT_TRUE(contains(what, "scene.json:2: key 'objects[0].file': cannot read OBJ file 'a'"))
+        << what;
+}
+
+// Class 13: special files are refused before they are read (no hang, no unbounded memory), and
+// a file over the cap is refused by its size.
+TEST(SceneLoaderHostile, OnlyRegularFilesOfBoundedSizeAreRead) {
+    const TempDir dir;
+    const fs::path fifo = dir.path / "fifo.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const std::string& path : {std::string("/dev/zero"), std::string("/dev/urandom"),
+                                    fifo.string(), dir.path.string()}) {
+        SCOPED_TRACE(path);
+        for (const auto& f : std::vector<std::function<void()>>{[&] { loadScene(path); },
+                                                                [&] { loadSceneFile(path); },
+                                                                [&] { loadAnyScene(path); }}) {
+            const std::string what = errorOf(f, fifo);
+            EXPECT_TRUE(contains(what, path + ": cannot read the scene file: ")) << what;
+            EXPECT_TRUE(
+                contains(what, path == dir.path.string() ? "a folder" : "not a regular file"))
+                << what;
+        }
+        // The same file as a mesh.
+        std::ofstream(dir.path / "mesh.json")
+            << "{\"objects\": [\n{\"type\": \"mesh\", \"file\": \"" + path + "\"}]}";
+        const std::string what =
+            errorOf([&] { loadSceneFile((dir.path / "mesh.json").string()); }, fifo);
+        EXPECT_TRUE(contains(what, "mesh.json:2: key 'objects[0].file': cannot read OBJ file"))
+            << what;
+    }
+    // Sparse files over the caps: refused by their size, nothing is read.
+    std::ofstream(dir.path / "big.json").close();
+    fs::resize_file(dir.path / "big.json", (8u << 20) + 1);
+    std::string what = errorOf([&] { loadScene((dir.path / "big.json").string()); });
+    EXPECT_TRUE(contains(what, "big.json: cannot read the scene file: larger than 8 MB")) << what;
+    std::ofstream(dir.path / "big.obj").close();
+    fs::resize_file(dir.path / "big.obj", (256u << 20) + 1);
+    std::ofstream(dir.path / "mesh.json")
+        << "{\"objects\": [\n{\"type\": \"mesh\", \"file\": \"big.obj\"}]}";
+    what = errorOf([&] { loadSceneFile((dir.path / "mesh.json").string()); });
+    EXPECT_TRUE(contains(what, "cannot read OBJ file 'big.obj': larger than 256 MB")) << what;
 }
 
 }  // namespace

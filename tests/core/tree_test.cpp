@@ -579,7 +579,7 @@ TEST(Events, BadTraceFilesNameTheLineAndKey) {
         }
     };
     const std::string head = "{\"format\": \"raystep-trace\", \"version\": 1,\n\"rays\": [],\n";
-    expectError("{", "t.json: malformed JSON");
+    expectError("{", "t.json:1: malformed JSON");
     expectError("[]", "t.json:1: a trace file holds one JSON object");
     expectError("{\"format\": \"x\"}", "key 'format'");
     expectError("{\"format\": \"raystep-trace\", \"version\": 7}", "version 7");
@@ -596,7 +596,7 @@ TEST(Events, BadTraceFilesNameTheLineAndKey) {
     expectError(
         "{\"format\": \"raystep-trace\", \"version\": 1,\n\"rays\": [{\"kind\": \"primary\","
         " \"depth\": 0, \"parent\": null,\n \"origin\": [0, 0, 1e999]}]}",
-        "malformed JSON");
+        "t.json:3: number '1e999' is out of range");
 }
 
 TEST(Events, ReplayRebuildsTheSameTraversal) {
