@@ -231,6 +231,12 @@ struct ParsedJson {
 template <typename Error, typename Json = json>
 ParsedJson<Json> parseJsonFile(std::string_view text, const std::string& fileName,
                                bool comments = true) {
+    // nlohmann stops reading at a NUL byte and accepts what came before: refuse it here (JSON
+    // allows none outside a string, and none raw inside one).
+    if (const auto nul = text.find('\0'); nul != std::string_view::npos)
+        throw Error(fileName,
+                    1 + static_cast<int>(std::count(text.begin(), text.begin() + nul, '\n')), "",
+                    "a NUL byte: a JSON file is text");
     JsonLineMap lines(text);
     if (const int line = lines.tooDeepLine())
         throw Error(
