@@ -92,17 +92,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // The student's progress: one JSON file under the user's data folder, replaced atomically.
     progressPath_ =
         QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
-    if (QFile f(progressPath_); f.open(QIODevice::ReadOnly)) {
-        try {
-            studentProgress_ =
-                parseProgress(f.readAll().toStdString(), progressPath_.toStdString());
-        } catch (const LessonError& e) {
-            // Keep the unreadable file aside rather than overwrite it at the next answer.
-            f.close();
-            QFile::rename(progressPath_, progressPath_ + ".unreadable");
-            statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
-                                         .arg(progressPath_ + ".unreadable", e.what()));
-        }
+    try {
+        if (auto saved = loadProgressFile(progressPath_.toStdString()))
+            studentProgress_ = std::move(*saved);
+    } catch (const LessonError& e) {
+        // Keep the unreadable file aside rather than overwrite it at the next answer.
+        QFile::rename(progressPath_, progressPath_ + ".unreadable");
+        statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
+                                     .arg(progressPath_ + ".unreadable", e.what()));
     }
     QSettings settings;
     geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
@@ -643,13 +640,11 @@ void MainWindow::saveProgress() {
         statusBar()->showMessage(tr("Cannot save the progress: %1 is locked").arg(progressPath_));
         return;
     }
-    if (QFile in(progressPath_); in.open(QIODevice::ReadOnly)) {
-        try {
-            mergeProgress(studentProgress_,
-                          parseProgress(in.readAll().toStdString(), progressPath_.toStdString()));
-        } catch (const LessonError&) {
-            // Unreadable now (it was read at start): replaced by what this window knows.
-        }
+    try {
+        if (const auto saved = loadProgressFile(progressPath_.toStdString()))
+            mergeProgress(studentProgress_, *saved);
+    } catch (const LessonError&) {
+        // Unreadable now (it was read at start): replaced by what this window knows.
     }
     QSaveFile f(progressPath_);
     if (!f.open(QIODevice::WriteOnly) ||
