@@ -1,5 +1,7 @@
 #include "common.h"
 
+#include "raystep/file_error.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -9,7 +11,8 @@
 namespace raystep::cli {
 
 int fail(const std::string& message) {
-    std::cerr << "raystep-cli: error: " << message << "\n";
+    // One line whatever the message quotes (an option's value, a name): escaped as file text is.
+    std::cerr << "raystep-cli: error: " << printable(message, 4096) << "\n";
     return kExitBadInput;
 }
 

@@ -4,6 +4,8 @@
 #include "main_window.h"
 #include "session.h"
 
+#include "raystep/file_error.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
@@ -13,7 +15,9 @@
 
 namespace {
 int fail(const QString& message) {
-    std::fprintf(stderr, "raystep: error: %s\n", message.toUtf8().constData());
+    // One line whatever the message quotes (an option's value, a file's name).
+    std::fprintf(stderr, "raystep: error: %s\n",
+                 raystep::printable(message.toStdString(), 4096).c_str());
     return 2;
 }
 }  // namespace

@@ -823,4 +823,16 @@ TEST_F(CliReaders, DeepNestingAndControlCharactersStayOneLine) {
                   "bad\\nname.json:1: key 'objects[0].type': unknown object type 'cu\\nbe\\x00x'");
 }
 
+// Values typed on the command line are quoted escaped too: every message is one line, whatever
+// an option or a built-in name carries (a newline, an escape sequence).
+TEST_F(Cli, ControlCharactersInOptionsStayOneLine) {
+    expectBadInput("render 'no\nsuch' -o x.png", "no\\nsuch");
+    // (sh has no $'...': printf makes the bytes.)
+    expectBadInput("render default --accel \"$(printf 'oct\\033[31mree')\" -o x.png",
+                   "oct\\x1b[31mree");
+    expectBadInput(
+        "dda --grid \"$(printf '4,\\r3')\" --min 0,0 --max 4,3 --origin 0.5,0.2 --dir 1,0.6",
+        "--grid 4,\\r3");
+}
+
 }  // namespace
