@@ -519,4 +519,48 @@ TEST_F(Cli, LessonBadInput) {
     expectBadInputKeepFiles("lesson check 6 --answers missing.json", "missing.json");
     expectBadInputKeepFiles("lesson show 6 --lang fr", "--lang fr: expected en or it");
 }
+
+// --------------------------------------------------------------------------------------------
+// Numbers at the extremes: the grid's lambda, the DDA's crossing times, the kernels' range.
+
+TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
+    // lambda is cells a primitive: more lambda, never fewer cells, never past the cap (a huge
+    // lambda used to wrap through int to a one-cell grid).
+    long last = 0;
+    for (const char* lambda : {"0.001", "1", "4", "1e6", "2147483648", "1e300", "1.7e308"}) {
+        const CliRun r = run(std::string("render default --width 8 --height 6 --accel grid "
+                                         "--grid-lambda ") +
+                             lambda + " --stats s.json");
+        ASSERT_EQ(r.code, 0) << lambda << ": " << r.err;
+        const auto cells = nlohmann::json::parse(slurp(dir / "s.json"))["grid"]["cells"];
+        const long total = cells[0].get<long>() * cells[1].get<long>() * cells[2].get<long>();
+        EXPECT_GE(total, last) << lambda;
+        EXPECT_LE(total, 1L << 24) << lambda;
+        last = total;
+    }
+    EXPECT_GT(last, 1L << 20);
+    const CliRun help = run("render --help");
+    EXPECT_NE(help.out.find("cells a primitive"), std::string::npos) << help.out;
+    EXPECT_EQ(help.out.find("primitives a cell"), std::string::npos) << help.out;
+}
+
+TEST_F(Cli, GridRenderOfAHugeSceneDoesNotAbort) {
+    // A floor 2e307 wide seen from nearby: the DDA's crossing times overflow double (it used to
+    // abort on them). Rendered, or refused in one line if the scene's range is checked.
+    write("huge.json", R"({
+        "camera": {"eye": [0, 3, 10], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 45},
+        "lights": [{"position": [0, 100, 0], "color": [1, 1, 1], "intensity": 1}],
+        "materials": {"m": {"kd": 0.5}},
+        "objects": [
+          {"type": "triangle", "material": "m",
+           "vertices": [[-1e307, 0, -1e307], [-1e307, 0, 1e307], [1e307, 0, 1e307]]},
+          {"type": "sphere", "material": "m", "center": [0, 1, 0], "radius": 1}]})");
+    const CliRun r = run("render huge.json -o h.png --width 16 --height 12 --accel grid");
+    EXPECT_TRUE(r.code == 0 || r.code == 2) << r.code << "\n" << r.err;
+    if (r.code == 2) {
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "h.png"));
+    }
+}
+
 }  // namespace
