@@ -563,4 +563,33 @@ TEST_F(Cli, GridRenderOfAHugeSceneDoesNotAbort) {
     }
 }
 
+TEST_F(Cli, IntersectFarAheadAndOutOfRange) {
+    // A unit triangle straight ahead at t = 1e18: a hit (the watertight test's bound missed it).
+    CliRun r = run("intersect --ray 0.25,0.25,1e18:0,0,-1 --triangle 0,0,0:1,0,0:0,1,0 --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["hit"], true);
+    EXPECT_EQ(j["t"], 1e18);
+    // Squares past double's range (every method missed, silently) and products below it (the
+    // stable sphere hit a sphere missed by 4% of its radius): refused in one line.
+    const std::string far = "intersect --ray 0,0,0:0,0,1 --sphere 0,0,5e160:1e160";
+    expectBadInput(far, "left the range it is exact in");
+    expectBadInput(far + " --method textbook", "a result overflowed");
+    expectBadInput(
+        "intersect --ray 0,0,0:0,0,1 --triangle -1e160,-1e160,1e160:1e160,-1e160,"
+        "1e160:0,1e160,1e160",
+        "left the range it is exact in");
+    expectBadInput(
+        "intersect --ray 0,0,0:2.0340072443528589e-142,0,9.7909557516066899e-142 "
+        "--sphere 0,0,5e-141:1e-141",
+        "a result underflowed");
+    // In float, the numbers themselves must be floats.
+    expectBadInput("intersect --ray 0,0,0:0,0,1 --sphere 0,0,5:1e-50 --precision float",
+                   "--sphere 0,0,5:1e-50: 1e-50 is not a normal float");
+    expectBadInput("intersect --ray 0,0,1e39:0,0,1 --sphere 0,0,5:1 --precision float",
+                   "--ray 0,0,1e39:0,0,1: 1e+39 is not a normal float");
+    // Inside the range nothing is refused, however far in float (the sphere is a miss there).
+    r = run("intersect --ray 0,0,0:0,0,1 --sphere 0,0,1e8:1 --precision float --json");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
 }  // namespace
