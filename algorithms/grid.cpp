@@ -6,8 +6,50 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace raystep {
+
+namespace {
+template <int N>
+std::size_t totalCells(const IVecN<N>& res) {
+    std::size_t cells = 1;
+    for (int i = 0; i < N; ++i) cells *= static_cast<std::size_t>(res[i]);
+    return cells;
+}
+
+/// Cleary & Wyvill's cells per axis, d_i (cells / V)^(1/N), written d_i / g * cells^(1/N) with g
+/// the geometric mean of the d_i: scale-free, so no overflow or underflow whatever the scene's
+/// size. Each axis is clamped to [1, kMaxCellsPerAxis] as a double, then rounded.
+template <int N>
+IVecN<N> clearyWyvill(const VecN<N, double>& d, double cells) {
+    double meanLog = 0.0;
+    for (int i = 0; i < N; ++i) meanLog += std::log(d[i]);
+    meanLog /= N;
+    const double perAxis = N == 2 ? std::sqrt(cells) : std::cbrt(cells);
+    IVecN<N> res;
+    for (int i = 0; i < N; ++i) {
+        double r = std::exp(std::log(d[i]) - meanLog) * perAxis;
+        if (!(r >= 1.0)) r = 1.0;
+        r = std::min(r, double(GridOptions::kMaxCellsPerAxis));
+        res[i] = static_cast<int>(std::lround(r));
+    }
+    return res;
+}
+
+/// The largest total in [1, maxCells] whose resolution passes `fits` (bisected on the total, in
+/// a bracket that does not depend on lambda); 1 if none does.
+template <typename Rule, typename Fits>
+double largestFitting(std::size_t maxCells, Rule&& rule, Fits&& fits) {
+    double lo = 1.0, hi = double(maxCells);
+    if (fits(rule(hi))) return hi;
+    for (int i = 0; i < 60 && hi - lo > 0.5; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        (fits(rule(mid)) ? lo : hi) = mid;
+    }
+    return lo;
+}
+}  // namespace
 
 template <typename Prims>
 UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
@@ -24,7 +66,7 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
         extent = std::max(extent, b.hi[i] - b.lo[i]);
         far = std::max({far, std::abs(b.lo[i]), std::abs(b.hi[i])});
     }
-    extent = std::max(extent, far * 1e-12);
+    extent = std::min(std::max(extent, far * 1e-12), std::numeric_limits<double>::max());
     if (extent == 0.0) extent = 1.0;  // everything at the origin
     for (int i = 0; i < N; ++i)
         if (!(b.hi[i] - b.lo[i] > 1e-6 * extent)) {
@@ -33,33 +75,65 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
         }
     spec_.lo = b.lo;
     spec_.hi = b.hi;
-    const VecN<N, double> d = b.diagonal();
-    if (options.res) {
-        for (int i = 0; i < N; ++i)
-            spec_.res[i] = std::clamp((*options.res)[i], 1, GridOptions::kMaxCellsPerAxis);
-    } else {
-        // Cleary & Wyvill: cells per axis = d_i * (lambda N / V)^(1/dim), about lambda
-        // primitives a cell.
-        double volume = 1.0;
-        for (int i = 0; i < N; ++i) volume *= d[i];
-        const double perUnit = std::pow(options.lambda * std::max(n, 1u) / volume, 1.0 / N);
-        for (int i = 0; i < N; ++i)
-            spec_.res[i] = std::clamp(static_cast<int>(std::lround(d[i] * perUnit)), 1,
-                                      GridOptions::kMaxCellsPerAxis);
-    }
-
-    // Cells a primitive's bounds overlap, widened by a billionth of a cell so a primitive on a
-    // boundary is listed on both sides whatever the rounding.
+    // Cells of the box a primitive's bounds overlap, widened by a billionth of a cell so a
+    // primitive on a boundary is listed on both sides whatever the rounding. Clamped as doubles
+    // first: a cell index past int's range (or NaN) would be undefined behaviour as an int.
+    const auto cellOf = [&](int i, double x, double widen) {
+        const double f = std::floor((x - spec_.lo[i]) / spec_.cellSize(i) + widen);
+        if (!(f > 0.0)) return 0;
+        return f < spec_.res[i] - 1 ? static_cast<int>(f) : spec_.res[i] - 1;
+    };
     const auto cellRange = [&](std::uint32_t p, IVecN<N>& lo, IVecN<N>& hi) {
         const BoxN<N> pb = prims_.bounds(p);
         for (int i = 0; i < N; ++i) {
-            const double size = spec_.cellSize(i);
-            lo[i] = std::clamp(static_cast<int>(std::floor((pb.lo[i] - spec_.lo[i]) / size - 1e-9)),
-                               0, spec_.res[i] - 1);
-            hi[i] = std::clamp(static_cast<int>(std::floor((pb.hi[i] - spec_.lo[i]) / size + 1e-9)),
-                               0, spec_.res[i] - 1);
+            lo[i] = cellOf(i, pb.lo[i], -1e-9);
+            hi[i] = cellOf(i, pb.hi[i], 1e-9);
         }
     };
+    // The references a grid of resolution `res` would hold, counted without building it.
+    const std::size_t maxCells = std::max<std::size_t>(options.maxCells, 1);
+    const std::size_t maxReferences = std::max<std::size_t>(options.maxReferences, n);
+    const auto fitsReferences = [&](const IVecN<N>& res) {
+        spec_.res = res;
+        std::size_t total = 0;
+        IVecN<N> lo, hi;
+        for (std::uint32_t p = 0; p < n && total <= maxReferences; ++p) {
+            cellRange(p, lo, hi);
+            std::size_t cells = 1;
+            for (int i = 0; i < N; ++i) cells *= static_cast<std::size_t>(hi[i] - lo[i] + 1);
+            total += cells;
+        }
+        return total <= maxReferences;
+    };
+    const auto fitsCells = [&](const IVecN<N>& res) { return totalCells<N>(res) <= maxCells; };
+    IVecN<N> res;
+    if (options.res) {
+        for (int i = 0; i < N; ++i)
+            res[i] = std::clamp((*options.res)[i], 1, GridOptions::kMaxCellsPerAxis);
+        // Past the caps the asked resolution shrinks in proportion on every axis.
+        const IVecN<N> asked = res;
+        for (double shrink = 0.5; !(fitsCells(res) && fitsReferences(res)) && res != IVecN<N>(1);
+             shrink *= 0.5)
+            for (int i = 0; i < N; ++i) res[i] = std::max(1, static_cast<int>(asked[i] * shrink));
+    } else {
+        // Cleary & Wyvill: lambda N cells in all, so lambda is cells a primitive. The total is
+        // clamped to [1, kMaxCells] before any conversion (NaN: one cell), so nothing wraps and
+        // the cells never decrease as lambda grows.
+        const VecN<N, double> d = 0.5 * b.hi - 0.5 * b.lo;  // half: never overflows
+        const auto rule = [&](double cells) { return clearyWyvill<N>(d, cells); };
+        double target = options.lambda * std::max(n, 1u);
+        if (!(target >= 1.0)) target = 1.0;
+        target = std::min(target, double(maxCells));
+        // The largest total whose rounded resolution fits the cap depends on the scene's
+        // proportions only: every lambda beyond it gets that same resolution.
+        target = std::min(target, largestFitting(maxCells, rule, fitsCells));
+        // Primitives overlapping very many cells each: coarser, within the memory budget.
+        if (!fitsReferences(rule(target)))
+            target = std::min(target, largestFitting(maxCells, rule, fitsReferences));
+        res = rule(target);
+    }
+    spec_.res = res;
+
     // Every cell of the box [lo, hi] of cells, in any dimension (an odometer over the axes).
     const auto forCells = [&](const IVecN<N>& lo, const IVecN<N>& hi, auto&& f) {
         IVecN<N> c = lo;
@@ -72,9 +146,7 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
         }
     };
     // Two passes: count the references of each cell, then fill them (a flat array per cell).
-    std::size_t cells = 1;
-    for (int i = 0; i < N; ++i) cells *= static_cast<std::size_t>(spec_.res[i]);
-    cellStart_.assign(cells + 1, 0);
+    cellStart_.assign(totalCells<N>(spec_.res) + 1, 0);
     IVecN<N> lo, hi;
     for (std::uint32_t p = 0; p < n; ++p) {
         cellRange(p, lo, hi);
@@ -121,6 +193,14 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
     std::optional<HitT> closest;
     HitT hit;
     Dda<N, double> dda(spec_, ray.origin, ray.dir, ray.tMin, ray.tMax);
+    if (dda.problem()) {
+        // A ray the walk refuses (a NaN or infinite coordinate): test everything, as brute force
+        // does, rather than report a miss the kernels never saw.
+        for (std::uint32_t p = 0; p < prims_.count(); ++p)
+            if (visitPrimitive<AnyHit>(prims_, p, ray, hit, closest, nullptr, counters, rec, rayId))
+                return hit;
+        return closest;
+    }
     if constexpr (Rec::kEnabled) {
         if (dda.valid()) {
             DdaSetup e{rayId, {0, 0, 0}, N, {0.0, 0.0, 0.0}, dda.tEnter(), dda.tLeave()};

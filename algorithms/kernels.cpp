@@ -2,6 +2,9 @@
 
 #include "raystep/names.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace raystep {
 
 namespace {
@@ -40,6 +43,33 @@ std::string_view name(TriangleMethod m) {
 }
 std::string_view name(RayOffsetMethod m) {
     return nameOf(kOffsetNames, m);
+}
+
+KernelRange kernelRange(Precision p) {
+    // 192 (2 largest)^4, the plane method's |n|^2, stays below the largest finite value by 1e66
+    // (double) or 1e4 (float); smallest^4 stays above the smallest normal value by far more than
+    // the precision's 2^52 (2^23), so the rounding errors of a scene's own size are normal.
+    if (p == Precision::Float) return {1e-7, 1e8};
+    return {1e-60, 1e60};
+}
+
+std::optional<std::string> kernelRangeProblem(Precision p, double magnitude) {
+    const KernelRange r = kernelRange(p);
+    const auto g = [](double x) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", x);
+        return std::string(buf);
+    };
+    const std::string which = std::string(name(p));
+    if (!std::isfinite(magnitude)) return "a coordinate is not a finite number";
+    if (std::abs(magnitude) > r.largest)
+        return "coordinates reach " + g(std::abs(magnitude)) + ", beyond " + g(r.largest) +
+               " where the " + which + " intersection kernels are exact (their squares overflow)";
+    if (std::abs(magnitude) < r.smallest)
+        return "the whole scene lies within " + g(std::abs(magnitude)) + " of the origin, below " +
+               g(r.smallest) + " where the " + which +
+               " intersection kernels are exact (their products underflow)";
+    return std::nullopt;
 }
 
 }  // namespace raystep

@@ -6,6 +6,9 @@
 // summed up step after step, which drifts over hundreds of cells), with a floating-point filter
 // and, when the filter cannot tell, exact rational arithmetic. An exact tie (the ray through a grid
 // vertex or edge) steps every tied axis at once, so a cell the ray only touches is never visited.
+// The cells are exact for every finite grid and ray, whatever their magnitude: crossing times that
+// overflow to inf, are subnormal or round to 0 in double are bounded with an absolute term for
+// underflow and decided in rationals when the bounds overlap. Only non-finite input is refused.
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -31,12 +34,14 @@ struct GridSpec {
     T cellSize(int axis) const { return (hi[axis] - lo[axis]) / T(res[axis]); }
 };
 
-/// A time along the ray: either a given value (tMin, tMax) or the crossing of boundary k of an
-/// axis, kept symbolic so it can be compared exactly.
+/// A time along the ray: either a given value (tMin, tMax, possibly infinite) or the crossing of
+/// boundary k of an axis, kept symbolic so it can be compared exactly. A crossing's exact value is
+/// always finite (the grid and ray are), even where its double estimate overflowed to inf.
 struct Crossing {
     bool plain = true;
-    double t = 0.0;    // the value (plain), or its floating-point estimate
-    double err = 0.0;  // bound on |t - exact| (0 for plain values)
+    double t = 0.0;  // the value (plain), or its floating-point estimate (0 or inf out of range)
+    // low <= exact value <= high; equal when the value is known exactly (plain values).
+    double low = 0.0, high = 0.0;
     // The exact value is (lo + k (hi - lo) / res - o) / d.
     double lo = 0.0, hi = 0.0, o = 0.0, d = 1.0;
     int res = 1;
@@ -44,16 +49,18 @@ struct Crossing {
 };
 
 namespace detail {
-/// Sign of a - b in exact rational arithmetic (the rare case the filter cannot decide).
+/// Sign of a - b in exact arithmetic (the rare case the filter cannot decide): rationals, with a
+/// plain -inf below and +inf above every finite value; two equal infinities tie.
 int compareCrossingsExact(const Crossing& a, const Crossing& b);
 }  // namespace detail
 
-/// Sign of a - b, exact: floating point when the error bounds separate them, rationals otherwise.
+/// Sign of a - b, exact: floating point when the bounds separate them, rationals otherwise. An
+/// infinite tMax never wins over a crossing (always finite, even when its estimate is inf).
 inline int compareCrossings(const Crossing& a, const Crossing& b) {
-    if (a.t + a.err < b.t - b.err) return -1;
-    if (a.t - a.err > b.t + b.err) return 1;
+    if (a.high < b.low) return -1;
+    if (a.low > b.high) return 1;
     // Known exactly (a given value, or a ray starting on the boundary): compare as they are.
-    if (a.err == 0.0 && b.err == 0.0) return (a.t > b.t) - (a.t < b.t);
+    if (a.low == a.high && b.low == b.high) return (a.t > b.t) - (a.t < b.t);
     // Two boundaries of the same axis and ray: their order is the order of k along d.
     if (!a.plain && !b.plain && a.lo == b.lo && a.hi == b.hi && a.res == b.res && a.o == b.o &&
         a.d == b.d) {
@@ -70,6 +77,25 @@ class Dda {
     Dda(const GridSpec<N, T>& grid, const VecN<N, T>& origin, const VecN<N, T>& dir, T tMin = T(0),
         T tMax = std::numeric_limits<T>::infinity())
         : grid_(grid), o_(origin), d_(dir) {
+        for (int i = 0; i < N; ++i) {
+            if (!(std::isfinite(grid_.lo[i]) && std::isfinite(grid_.hi[i]) &&
+                  std::isfinite(o_[i]) && std::isfinite(d_[i]))) {
+                problem_ = "the grid or the ray has a coordinate that is NaN or infinite";
+                return;
+            }
+            if (grid_.res[i] < 1) {
+                problem_ = "the grid has an axis without cells";
+                return;
+            }
+            if (!(grid_.hi[i] > grid_.lo[i])) {
+                problem_ = "the grid's upper corner is not above its lower corner on every axis";
+                return;
+            }
+        }
+        if (std::isnan(tMin) || std::isnan(tMax)) {
+            problem_ = "the ray's interval [tMin, tMax] has a NaN end";
+            return;
+        }
         enter_ = plainTime(double(tMin));
         exit_ = plainTime(double(tMax));
         for (int i = 0; i < N; ++i) {
@@ -102,10 +128,16 @@ class Dda {
 
     /// True while the walk is in a cell of the grid.
     bool valid() const { return valid_; }
+    /// Why the walk refused its input (NaN or infinite grid, ray or interval end; an axis without
+    /// cells; hi not above lo), or nullptr. A refused walk is not valid and lists no cell: the
+    /// caller must report it (or fall back to testing everything), not take it for a miss.
+    const char* problem() const { return problem_; }
     const IVecN<N>& cell() const { return cell_; }
     const IVecN<N>& step() const { return step_; }
     const VecN<N, T>& tDelta() const { return tDelta_; }
     /// tMax of each axis: where the ray crosses the next boundary of that axis (inf if parallel).
+    /// These times, tEnter() and tExit() are double estimates (0 or inf where the exact time is
+    /// beyond double's range); the steps are decided on the exact times.
     VecN<N, T> tMax() const {
         VecN<N, T> m;
         for (int i = 0; i < N; ++i)
@@ -151,11 +183,11 @@ class Dda {
   private:
     static Crossing plainTime(double t) {
         Crossing c;
-        c.t = t;
+        c.t = c.low = c.high = t;
         return c;
     }
 
-    /// Crossing of boundary k of `axis`, with a bound on the rounding of its estimate. The grid's
+    /// Crossing of boundary k of `axis`, with bounds on the rounding of its estimate. The grid's
     /// own faces (k = 0, res) are exact; inner boundaries carry the rounding of lo + k (hi-lo)/res.
     /// The error of (b - o) / d is then relative to |b - o|, which keeps the bound tight for a
     /// ray starting right next to a boundary (a shadow ray leaving a floor on the grid's face).
@@ -177,6 +209,8 @@ class Dda {
         c.o = o;
         c.d = d;
         constexpr double eps = std::numeric_limits<double>::epsilon();
+        // Each rounding errs by eps/2 relative or, in the subnormal range, by half of this.
+        constexpr double tiny = std::numeric_limits<double>::denorm_min();
         double b, errB;
         if (k == 0) {
             b = c.lo, errB = 0.0;
@@ -192,13 +226,30 @@ class Dda {
             const bool exact =
                 sumIsExact(c.hi, -c.lo, width) && std::fma(size, double(c.res), -width) == 0.0 &&
                 std::fma(double(k), size, -offset) == 0.0 && sumIsExact(c.lo, offset, b);
-            errB = exact ? 0.0 : 4 * eps * (std::abs(c.lo) + std::abs(c.hi));
+            // k times the size's underflow, plus the offset's: (k + 1) half-denormals at most,
+            // below 2^-1040 for any int k.
+            errB = exact ? 0.0 : 4 * eps * (std::abs(c.lo) + std::abs(c.hi)) + 0x1p-1040;
         }
-        const double diff = b - c.o;
+        const double diff = b - c.o;  // a difference never underflows: relative error only
         c.t = diff / c.d;
-        c.err = (errB == 0.0 && diff == 0.0)
-                    ? 0.0  // the ray starts exactly on this boundary: t = 0, exactly
-                    : 2 * ((errB + eps * std::abs(diff)) / std::abs(c.d) + eps * std::abs(c.t));
+        // |t - exact| <= errB / |d| + eps |t| + (a half-denormal of underflow), doubled against
+        // the rounding of this bound itself; inf where it overflows.
+        const double e = 2 * (errB / std::abs(c.d) + eps * std::abs(c.t)) + 4 * tiny;
+        c.low = c.t - e;
+        c.high = c.t + e;
+        if (errB == 0.0 && diff == 0.0) {
+            c.low = c.high = 0.0;  // the ray starts exactly on this boundary: t = 0, exactly
+        } else if (std::isinf(c.t)) [[unlikely]] {
+            // The quotient overflowed, so |diff / d| > DBL_MAX: if diff is finite and its error
+            // small against it, the exact time lies beyond DBL_MAX / 2 with the estimate's sign;
+            // else (a boundary beyond DBL_MAX, say) nothing is known.
+            constexpr double big = std::numeric_limits<double>::max() / 2;
+            constexpr double inf = std::numeric_limits<double>::infinity();
+            const bool known =
+                std::isfinite(diff) && errB + eps * std::abs(diff) <= 0.25 * std::abs(diff);
+            c.low = known && c.t > 0 ? big : -inf;
+            c.high = known && c.t < 0 ? -big : inf;
+        }
         return c;
     }
     long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
@@ -226,40 +277,55 @@ class Dda {
         return {best, axes};
     }
 
-    /// The cell of `axis` just after the entry time: found from an estimate, then corrected with
-    /// exact comparisons of boundary crossings against the entry time.
+    /// The largest k in [0, res) with pred(k), for pred true at 0 (not asked again) and true then
+    /// false: checked at the guess and its neighbour first (the usual answer), else by bisection.
+    template <typename Pred>
+    static int lastTrue(int res, int guess, Pred&& pred) {
+        int lo = 0, hi = res;  // pred(lo) holds; hi == res or pred(hi) fails
+        if (guess > 0 && !pred(guess))
+            hi = guess;
+        else
+            lo = guess;
+        if (lo == guess && lo + 1 < hi) {
+            if (!pred(lo + 1)) return lo;
+            lo = lo + 1;
+        }
+        while (hi - lo > 1) {
+            const int mid = lo + (hi - lo) / 2;
+            (pred(mid) ? lo : hi) = mid;
+        }
+        return lo;
+    }
+    /// floor((p - lo) / size) clamped to the axis' cells, before any conversion to int (p may be
+    /// inf or NaN where the entry time overflowed).
+    int estimateCell(int axis, double p) const {
+        const double f = std::floor((p - double(grid_.lo[axis])) / double(grid_.cellSize(axis)));
+        if (!(f > 0.0)) return 0;
+        return f < grid_.res[axis] - 1 ? int(f) : grid_.res[axis] - 1;
+    }
+
+    /// The cell of `axis` just after the entry time: found from an estimate, then confirmed or
+    /// corrected with exact comparisons of boundary crossings against the entry time.
     int firstCell(int axis) const {
         const int res = grid_.res[axis];
         if (step_[axis] == 0) {
             // Parallel: the cell holding the origin's coordinate (b_k <= o < b_k+1; o = hi: last).
-            int k = int(std::floor((double(o_[axis]) - grid_.lo[axis]) / grid_.cellSize(axis)));
-            k = std::clamp(k, 0, res - 1);
             const auto below = [&](long j) {  // boundary j <= o, decided exactly
                 // (b_j - o) / 1 compared with 0: the sign of b_j - o.
                 const Crossing c = crossingOf(grid_, axis, j, double(o_[axis]), 1.0);
                 return compareCrossings(c, plainTime(0.0)) <= 0;
             };
-            while (k > 0 && !below(k)) --k;
-            while (k + 1 < res && below(k + 1)) ++k;
-            return k;
+            return lastTrue(res, estimateCell(axis, double(o_[axis])), below);
         }
         // Boundaries already crossed at the entry time: crossing <= enter.
         const auto crossed = [&](long j) {
             return compareCrossings(crossing(axis, j), enter_) <= 0;
         };
-        const double p = double(o_[axis]) + enter_.t * double(d_[axis]);
-        int k = int(std::floor((p - grid_.lo[axis]) / grid_.cellSize(axis)));
-        k = std::clamp(k, 0, res - 1);
-        if (step_[axis] > 0) {
-            // Cell k: boundary k crossed, boundary k+1 not yet.
-            while (k > 0 && !crossed(k)) --k;
-            while (k + 1 < res && crossed(k + 1)) ++k;
-        } else {
-            // Moving down, cell k: boundary k+1 crossed, boundary k not yet.
-            while (k + 1 < res && !crossed(k + 1)) ++k;
-            while (k > 0 && crossed(k)) --k;
-        }
-        return k;
+        const int guess = estimateCell(axis, double(o_[axis]) + enter_.t * double(d_[axis]));
+        // Cell k moving up: boundary k crossed, k+1 not yet (boundary 0 is, at the entry time).
+        if (step_[axis] > 0) return lastTrue(res, guess, crossed);
+        // Moving down: boundary k+1 crossed, k not yet (boundary 0 is where the ray leaves).
+        return lastTrue(res, guess, [&](long j) { return !crossed(j); });
     }
 
     GridSpec<N, T> grid_;
@@ -271,6 +337,7 @@ class Dda {
     unsigned enteredThrough_ = 0;
     unsigned lastAxes_ = 0;
     bool valid_ = false;
+    const char* problem_ = nullptr;
     mutable std::optional<std::pair<Crossing, unsigned>> pending_;
 };
 

@@ -221,17 +221,24 @@ Sheared<W> shear(const TVec3<T>& o, const TVec3<T>& d, const TVec3<T>& a, const 
     return s;
 }
 
-/// t = (U az + V bz + W cz) / det, and pbrt-v3's conservative bound on its rounding error (3.9.6).
+/// t = (U az + V bz + W cz) / det, and pbrt-v3's conservative bound on its rounding error (3.9.6),
+/// with the shear's own term: pbrt bounds the error of x = px - sx pz by gamma(5) (maxX + maxZ),
+/// as if |sx pz| could always reach maxZ; it is |d[kx]| |z| (sx = d[kx] / d[kz], z = pz / d[kz]).
+/// pbrt's term made the bound grow with the distance squared (a unit triangle 1e18 straight ahead
+/// failed t > bound); this one is as large only for an oblique ray, and is still conservative for
+/// directions longer than 1, which pbrt's was not.
 template <typename W>
-std::pair<W, W> distanceWithBound(const Sheared<W>& s) {
+std::pair<W, W> distanceWithBound(const Sheared<W>& s, W dx, W dy) {
     const W det = s.U + s.V + s.Wc;
     const W invDet = W(1) / det;
     const W t = (s.U * s.az + s.V * s.bz + s.Wc * s.cz) * invDet;
     const W maxX = std::max({std::abs(s.ax), std::abs(s.bx), std::abs(s.cx)});
     const W maxY = std::max({std::abs(s.ay), std::abs(s.by), std::abs(s.cy)});
     const W maxZ = std::max({std::abs(s.az), std::abs(s.bz), std::abs(s.cz)});
-    const W deltaX = gamma<W>(5) * (maxX + maxZ);
-    const W deltaY = gamma<W>(5) * (maxY + maxZ);
+    // |sx pz| <= |d[kx]| maxZ up to the roundings of sx, z and 1 / d[kz].
+    constexpr W shear = gamma<W>(7) * (W(1) + gamma<W>(4));
+    const W deltaX = gamma<W>(5) * maxX + shear * (std::abs(dx) * maxZ);
+    const W deltaY = gamma<W>(5) * maxY + shear * (std::abs(dy) * maxZ);
     const W deltaZ = gamma<W>(3) * maxZ;
     const W deltaE = W(2) * (gamma<W>(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
     const W maxE = std::max({std::abs(s.U), std::abs(s.V), std::abs(s.Wc)});
@@ -277,13 +284,13 @@ std::optional<TriangleHit<T>> intersectTriangleWatertight(const TVec3<T>& o, con
     const T det = s.U + s.V + s.Wc;
     steps("determinant", det);
     if (det == T(0) || !std::isfinite(det)) return std::nullopt;  // seen edge-on
-    const auto [t, deltaT] = detail::distanceWithBound(s);
+    const auto [t, deltaT] = detail::distanceWithBound(s, d[kx], d[ky]);
     steps("t", t);
     steps("t error bound", deltaT);
     if (!(t > tMin && t < tMax)) return std::nullopt;
     if (!(t > deltaT)) {
-        const auto [tw, deltaTw] =
-            detail::distanceWithBound(detail::shear<Wd>(o, d, a, b, c, kx, ky, kz));
+        const auto [tw, deltaTw] = detail::distanceWithBound(
+            detail::shear<Wd>(o, d, a, b, c, kx, ky, kz), Wd(d[kx]), Wd(d[ky]));
         if (!(tw > deltaTw)) return std::nullopt;  // t may truly be 0 or less: no hit
     }
     const T invDet = T(1) / det;

@@ -4,6 +4,7 @@
 #include "raystep/intersect.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace raystep {
@@ -27,6 +28,25 @@ std::string_view name(Precision p);
 std::string_view name(SphereMethod m);
 std::string_view name(TriangleMethod m);
 std::string_view name(RayOffsetMethod m);
+
+/// The magnitudes the kernels are exact in: with directions of length about 1 (the renderer's),
+/// a scene whose largest coordinate or radius lies in [smallest, largest] keeps every quantity
+/// the kernels form (up to fourth powers of coordinate differences, in the plane method) inside
+/// the precision's normal range, with room for its rounding errors: nothing overflows, and
+/// nothing underflows but quantities far below the scene's own rounding. Outside, squares
+/// overflow to inf (every method misses) or underflow to 0 (a discriminant of -0: a wrong hit).
+/// double: 1e-60 to 1e60; float: 1e-7 to 1e8.
+struct KernelRange {
+    double smallest;
+    double largest;
+};
+KernelRange kernelRange(Precision p);
+
+/// For a scene loader (or a command building rays by hand): nullopt if a scene whose largest
+/// coordinate or radius in absolute value is `magnitude` lies in the kernels' range for `p`;
+/// else the problem as one phrase ("coordinates reach 1e+200, beyond 1e+60 ..."). Cheap: check
+/// it once per scene, not per ray.
+std::optional<std::string> kernelRangeProblem(Precision p, double magnitude);
 
 /// Dispatch to the chosen ray-sphere kernel.
 template <typename T, typename Steps = NoSteps>

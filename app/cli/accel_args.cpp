@@ -36,8 +36,10 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
                     "kd-tree SAH build: exact (every split event, perfect splits) or fast (32 bins "
                     "per axis, all cores)")
         ->capture_default_str();
-    cmd->add_option("--grid-lambda", a.gridLambda,
-                    "Grid: about this many primitives a cell (Cleary-Wyvill rule)")
+    cmd->add_option(
+           "--grid-lambda", a.gridLambda,
+           "Grid: cells a primitive, lambda N cells in all (Cleary-Wyvill rule); at most " +
+               std::to_string(GridOptions::kMaxCells) + " cells")
         ->capture_default_str();
     cmd->add_option("--grid-res", a.gridRes, "Grid: cells per axis NX,NY,NZ instead of the rule");
     cmd->add_option("--mailbox", a.mailbox,

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cfenv>
 #include <cstdio>
 #include <iostream>
 
@@ -59,6 +60,12 @@ template <typename T>
 std::string fmt(const TVec3<T>& v) {
     return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")";
 }
+/// A number as a person would type it, for messages (1e-50, not 1.0000000000000001e-50).
+std::string brief(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
 std::string fmtStep(const StepLog::Step& s, bool isFloat) {
     const auto one = [&](double x) { return isFloat ? fmt(float(x)) : fmt(x); };
     if (s.size == 1) return one(s.v[0]);
@@ -72,10 +79,12 @@ struct Outcome {
     StepLog log;
 };
 
+/// The kernel and the hit point in T. Kept out of line (noipa) so that none of its arithmetic
+/// can be moved across the reading of the floating-point flags around the call.
 template <typename T>
-Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
-                    const std::vector<std::vector<double>>& shape, TriangleMethod tm,
-                    SphereMethod sm) {
+[[gnu::noipa]] Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
+                                   const std::vector<std::vector<double>>& shape, TriangleMethod tm,
+                                   SphereMethod sm) {
     Outcome out;
     const TVec3<T> to(o), td(d);
     const T inf = std::numeric_limits<T>::infinity();
@@ -99,6 +108,19 @@ Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
         }
     }
     return out;
+}
+
+/// Each input number must be a normal number of the precision (or 0): a float overflows past
+/// 3.4e38 and loses digits below 1.2e-38. The first that is not, for the message.
+std::optional<double> unrepresentable(bool isFloat,
+                                      const std::vector<std::vector<double>>& groups) {
+    if (!isFloat) return std::nullopt;
+    for (const auto& g : groups)
+        for (double x : g)
+            if (x != 0.0 && !(std::abs(x) >= std::numeric_limits<float>::min() &&
+                              std::abs(x) <= std::numeric_limits<float>::max()))
+                return x;
+    return std::nullopt;
 }
 
 }  // namespace
@@ -140,8 +162,30 @@ int runIntersect(const IntersectArgs& a) {
     }
     const std::string methodName(isTriangle ? name(tm) : name(sm));
     const bool isFloat = *precision == Precision::Float;
+    const std::string shapeOption =
+        isTriangle ? "--triangle " + a.triangle : "--sphere " + a.sphere;
+    if (const auto x = unrepresentable(isFloat, *ray))
+        return fail("--ray " + a.ray + ": " + brief(*x) +
+                    " is not a normal float (1.2e-38 to 3.4e38)");
+    if (const auto x = unrepresentable(isFloat, *shape))
+        return fail(shapeOption + ": " + brief(*x) + " is not a normal float (1.2e-38 to 3.4e38)");
+    // The kernels are exact while their arithmetic stays in the precision's normal range: any
+    // overflow, underflow or NaN in this one computation means the answer cannot be trusted.
+    std::feclearexcept(FE_ALL_EXCEPT);
     const Outcome r = isFloat ? intersectIn<float>(o, d, isTriangle, *shape, tm, sm)
                               : intersectIn<double>(o, d, isTriangle, *shape, tm, sm);
+    const int flags = std::fetestexcept(FE_OVERFLOW | FE_UNDERFLOW | FE_INVALID);
+    if (flags) {
+        const KernelRange range = kernelRange(*precision);
+        const char* what = (flags & FE_OVERFLOW)  ? "overflowed"
+                           : (flags & FE_INVALID) ? "was not a number"
+                                                  : "underflowed";
+        return fail("intersect --ray " + a.ray + " " + shapeOption + ": the " + methodName +
+                    " test in " + a.precision + " left the range it is exact in (a result " + what +
+                    "); its answer would not be reliable. Scale the inputs to " +
+                    brief(range.smallest) + " .. " + brief(range.largest) +
+                    " with a direction of length about 1");
+    }
 
     if (a.json) {
         nlohmann::ordered_json j;

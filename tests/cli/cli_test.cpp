@@ -835,4 +835,77 @@ TEST_F(Cli, ControlCharactersInOptionsStayOneLine) {
         "--grid 4,\\r3");
 }
 
+
+// --------------------------------------------------------------------------------------------
+// Numbers at the extremes: the grid's lambda, the DDA's crossing times, the kernels' range.
+
+TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
+    // lambda is cells a primitive: more lambda, never fewer cells, never past the cap (a huge
+    // lambda used to wrap through int to a one-cell grid).
+    long last = 0;
+    for (const char* lambda : {"0.001", "1", "4", "1e6", "2147483648", "1e300", "1.7e308"}) {
+        const CliRun r = run(std::string("render default --width 8 --height 6 --accel grid "
+                                         "--grid-lambda ") +
+                             lambda + " --stats s.json");
+        ASSERT_EQ(r.code, 0) << lambda << ": " << r.err;
+        const auto cells = nlohmann::json::parse(slurp(dir / "s.json"))["grid"]["cells"];
+        const long total = cells[0].get<long>() * cells[1].get<long>() * cells[2].get<long>();
+        EXPECT_GE(total, last) << lambda;
+        EXPECT_LE(total, 1L << 24) << lambda;
+        last = total;
+    }
+    EXPECT_GT(last, 1L << 20);
+    const CliRun help = run("render --help");
+    EXPECT_NE(help.out.find("cells a primitive"), std::string::npos) << help.out;
+    EXPECT_EQ(help.out.find("primitives a cell"), std::string::npos) << help.out;
+}
+
+TEST_F(Cli, GridRenderOfAHugeSceneDoesNotAbort) {
+    // A floor 2e307 wide seen from nearby: the DDA's crossing times overflow double (it used to
+    // abort on them). Rendered, or refused in one line if the scene's range is checked.
+    write("huge.json", R"({
+        "camera": {"eye": [0, 3, 10], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 45},
+        "lights": [{"position": [0, 100, 0], "color": [1, 1, 1], "intensity": 1}],
+        "materials": {"m": {"kd": 0.5}},
+        "objects": [
+          {"type": "triangle", "material": "m",
+           "vertices": [[-1e307, 0, -1e307], [-1e307, 0, 1e307], [1e307, 0, 1e307]]},
+          {"type": "sphere", "material": "m", "center": [0, 1, 0], "radius": 1}]})");
+    const CliRun r = run("render huge.json -o h.png --width 16 --height 12 --accel grid");
+    EXPECT_TRUE(r.code == 0 || r.code == 2) << r.code << "\n" << r.err;
+    if (r.code == 2) {
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "h.png"));
+    }
+}
+
+TEST_F(Cli, IntersectFarAheadAndOutOfRange) {
+    // A unit triangle straight ahead at t = 1e18: a hit (the watertight test's bound missed it).
+    CliRun r = run("intersect --ray 0.25,0.25,1e18:0,0,-1 --triangle 0,0,0:1,0,0:0,1,0 --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["hit"], true);
+    EXPECT_EQ(j["t"], 1e18);
+    // Squares past double's range (every method missed, silently) and products below it (the
+    // stable sphere hit a sphere missed by 4% of its radius): refused in one line.
+    const std::string far = "intersect --ray 0,0,0:0,0,1 --sphere 0,0,5e160:1e160";
+    expectBadInput(far, "left the range it is exact in");
+    expectBadInput(far + " --method textbook", "a result overflowed");
+    expectBadInput(
+        "intersect --ray 0,0,0:0,0,1 --triangle -1e160,-1e160,1e160:1e160,-1e160,"
+        "1e160:0,1e160,1e160",
+        "left the range it is exact in");
+    expectBadInput(
+        "intersect --ray 0,0,0:2.0340072443528589e-142,0,9.7909557516066899e-142 "
+        "--sphere 0,0,5e-141:1e-141",
+        "a result underflowed");
+    // In float, the numbers themselves must be floats.
+    expectBadInput("intersect --ray 0,0,0:0,0,1 --sphere 0,0,5:1e-50 --precision float",
+                   "--sphere 0,0,5:1e-50: 1e-50 is not a normal float");
+    expectBadInput("intersect --ray 0,0,1e39:0,0,1 --sphere 0,0,5:1 --precision float",
+                   "--ray 0,0,1e39:0,0,1: 1e+39 is not a normal float");
+    // Inside the range nothing is refused, however far in float (the sphere is a miss there).
+    r = run("intersect --ray 0,0,0:0,0,1 --sphere 0,0,1e8:1 --precision float --json");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
 }  // namespace

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace raystep {
@@ -23,8 +25,10 @@ using Cells = std::vector<std::array<long, N>>;
 template <int N>
 Cells<N> exactWalk(const GridSpec<N, double>& g, const std::array<double, N>& o,
                    const std::array<double, N>& d, double tMin = 0.0) {
-    Rational t0(tMin), t1;
-    bool bounded = false;
+    // tMin = -inf: no lower bound but the grid's own faces (the parallel case is not needed).
+    const bool fromMinusInf = tMin == -std::numeric_limits<double>::infinity();
+    Rational t0(fromMinusInf ? 0.0 : tMin), t1;
+    bool bounded = false, lowered = !fromMinusInf;
     std::array<Rational, N> lo, size;
     for (int i = 0; i < N; ++i) {
         lo[i] = Rational(g.lo[i]);
@@ -36,8 +40,9 @@ Cells<N> exactWalk(const GridSpec<N, double>& g, const std::array<double, N>& o,
         Rational a = (lo[i] - Rational(o[i])) / Rational(d[i]);
         Rational b = (Rational(g.hi[i]) - Rational(o[i])) / Rational(d[i]);
         if (a > b) std::swap(a, b);
-        if (a > t0) t0 = a;
+        if (!lowered || a > t0) t0 = a;
         if (!bounded || b < t1) t1 = b;
+        lowered = true;
         bounded = true;
     }
     if (!bounded || t0 >= t1) return {};
@@ -71,11 +76,12 @@ Cells<N> exactWalk(const GridSpec<N, double>& g, const std::array<double, N>& o,
 
 template <int N>
 Cells<N> ddaWalk(const GridSpec<N, double>& g, const std::array<double, N>& o,
-                 const std::array<double, N>& d, double tMin = 0.0) {
+                 const std::array<double, N>& d, double tMin = 0.0,
+                 double tMax = std::numeric_limits<double>::infinity()) {
     VecN<N, double> origin, dir;
     for (int i = 0; i < N; ++i) origin[i] = o[i], dir[i] = d[i];
     Cells<N> cells;
-    Dda<N, double> dda(g, origin, dir, tMin);
+    Dda<N, double> dda(g, origin, dir, tMin, tMax);
     for (bool more = dda.valid(); more; more = dda.next()) {
         std::array<long, N> c{};
         for (int i = 0; i < N; ++i) c[i] = dda.cell()[i];
@@ -233,6 +239,150 @@ TEST(Dda, HugeAndTinyGrids) {
         const Cells<3> diagonal = ddaWalk<3>(g, {0.0, 0.0, 0.0}, {1, 1, 1});
         EXPECT_EQ(diagonal.size(), 64u);
         EXPECT_EQ(diagonal, exactWalk<3>(g, {0.0, 0.0, 0.0}, {1, 1, 1}));
+    }
+}
+
+// --------------------------------------------------------------------------------------------
+// Crossing times beyond double's range: overflowing to infinity, subnormal, underflowing to 0
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTiny = std::numeric_limits<double>::denorm_min();
+
+TEST(Dda, OverflowingCrossingTimesAreOrderedExactly) {
+    // A tiny component against a large grid: that axis' crossings (1e10 / 1e-320) overflow to
+    // inf in double though they are finite, and must be ordered against the other axis' finite
+    // ones, against each other and against tMax = inf, never thrown on.
+    const GridSpec<2, double> g = grid2(4, 4, 0, 0, 1e10, 1e10);
+    for (const std::array<double, 2> d : {std::array<double, 2>{1, 1e-320},
+                                          {1, kTiny},
+                                          {-1, -1e-320},
+                                          {1e-320, 1},
+                                          {1e-320, 3e-320},  // both axes overflow
+                                          {kTiny, 2 * kTiny},
+                                          {1e-300, 1e-310}}) {
+        for (const std::array<double, 2> o : {std::array<double, 2>{5e9, 5e9},
+                                              {0, 0},  // on the grid's corner
+                                              {-1, 2.5e9},
+                                              {1e10, 1e10}}) {
+            SCOPED_TRACE(testing::Message()
+                         << "origin " << o[0] << "," << o[1] << " dir " << d[0] << "," << d[1]);
+            Cells<2> got;
+            EXPECT_NO_THROW(got = ddaWalk<2>(g, o, d));
+            EXPECT_EQ(got, exactWalk<2>(g, o, d));
+        }
+    }
+    // A grid wider than the largest double (its width overflows) and a 3D grid at 1e300.
+    const GridSpec<2, double> wide = grid2(3, 5, -1e308, -1e308, 1e308, 1e308);
+    for (const std::array<double, 2> d :
+         {std::array<double, 2>{1, 1e-10}, {1e-300, -1}, {1e-320, 1}}) {
+        Cells<2> got;
+        EXPECT_NO_THROW(got = ddaWalk<2>(wide, {0, 0}, d));
+        EXPECT_EQ(got, exactWalk<2>(wide, {0, 0}, d));
+    }
+    GridSpec<3, double> g3;
+    g3.res = {5, 7, 3};
+    g3.lo = VecN<3, double>(-1e300);
+    g3.hi = VecN<3, double>(1e300);
+    for (const std::array<double, 3> d :
+         {std::array<double, 3>{1, 1e-10, 0.3}, {1e-20, -1, 1e-30}, {0, 1e-300, 1}}) {
+        Cells<3> got;
+        EXPECT_NO_THROW(got = ddaWalk<3>(g3, {1e299, -3e299, 0}, d));
+        EXPECT_EQ(got, exactWalk<3>(g3, {1e299, -3e299, 0}, d));
+    }
+}
+
+TEST(Dda, InfiniteIntervalEnds) {
+    // tMin = -inf starts where the ray enters the grid (behind the origin too); tMin = tMax = inf
+    // is an empty interval; tMax = inf never wins over a finite crossing, even one that
+    // overflowed to inf in double.
+    const GridSpec<2, double> g = grid2(4, 4, 0, 0, 1e10, 1e10);
+    const std::array<double, 2> o{5e9, 5e9}, d{1, 1e-320};
+    Cells<2> got;
+    EXPECT_NO_THROW(got = ddaWalk<2>(g, o, d, -kInf));
+    EXPECT_EQ(got, exactWalk<2>(g, o, d, -kInf));
+    EXPECT_EQ(got.size(), 4u);
+    EXPECT_NO_THROW(got = ddaWalk<2>(g, o, d, kInf, kInf));
+    EXPECT_TRUE(got.empty());
+    EXPECT_NO_THROW(got = ddaWalk<2>(g, o, d, -kInf, -kInf));
+    EXPECT_TRUE(got.empty());
+    EXPECT_EQ(ddaWalk<2>(grid2(3, 3), {0.5, 0.5}, {1, 1}, -kInf),
+              (Cells<2>{{0, 0}, {1, 1}, {2, 2}}));
+}
+
+TEST(Dda, NonFiniteInputIsRefusedNotWalked) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const GridSpec<2, double> g = grid2(3, 3);
+    const auto refused = [](const Dda<2, double>& dda) {
+        return !dda.valid() && dda.problem() != nullptr;
+    };
+    EXPECT_TRUE(refused(Dda<2, double>(g, {nan, 0.5}, {1, 0})));
+    EXPECT_TRUE(refused(Dda<2, double>(g, {0.5, 0.5}, {1, nan})));
+    EXPECT_TRUE(refused(Dda<2, double>(g, {kInf, 0.5}, {-1, 0})));
+    EXPECT_TRUE(refused(Dda<2, double>(g, {0.5, 0.5}, {1, 0}, nan)));
+    EXPECT_TRUE(refused(Dda<2, double>(g, {0.5, 0.5}, {1, 0}, 0.0, nan)));
+    EXPECT_TRUE(refused(Dda<2, double>(grid2(3, 3, 0, 0, kInf, 3), {0.5, 0.5}, {1, 0})));
+    GridSpec<2, double> empty = grid2(3, 3);
+    empty.res = {0, 3};
+    EXPECT_TRUE(refused(Dda<2, double>(empty, {0.5, 0.5}, {1, 0})));
+    // Finite input at any magnitude is walked, and says nothing.
+    const Dda<2, double> fine(grid2(3, 3, 0, 0, 1e308, 3e-320), {0, 0}, {kTiny, 1e308});
+    EXPECT_TRUE(fine.valid());
+    EXPECT_EQ(fine.problem(), nullptr);
+}
+
+TEST(Dda, SubnormalBoundariesAgainstPythonFractions) {
+    // A 3 x 2 grid 10 denormals wide: the inner x boundaries 10/3 and 20/3 denormals are not
+    // doubles, and the y crossing at 5 / 1.55 denormals rounds to 3. Cells by hand, and from
+    // Python's fractions (an exact walk written apart from this file's).
+    const GridSpec<2, double> g = grid2(3, 2, 0, 0, 10 * kTiny, 10 * kTiny);
+    EXPECT_EQ(ddaWalk<2>(g, {0, 0}, {1, 1.55}), (Cells<2>{{0, 0}, {0, 1}, {1, 1}}));
+    EXPECT_EQ(ddaWalk<2>(g, {0, 0}, {1, 1.4}), (Cells<2>{{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
+}
+
+TEST(Dda, SubnormalGridsAgainstExact) {
+    Pcg32 rng(97, 5);
+    for (int i = 0; i < 600; ++i) {
+        GridSpec<2, double> g;
+        g.res = {1 + int(rng.uniform() * 9), 1 + int(rng.uniform() * 9)};
+        std::array<double, 2> o{}, d{};
+        for (int k = 0; k < 2; ++k) {
+            // Boundaries a few denormals to a few thousand apart, most of them not doubles.
+            const double width = std::floor(1 + rng.uniform() * (i % 2 ? 40 : 4000));
+            g.lo[k] = std::floor((rng.uniform() - 0.5) * 100) * kTiny;
+            g.hi[k] = g.lo[k] + width * kTiny;
+            o[k] = g.lo[k] + std::floor((rng.uniform() * 1.4 - 0.2) * width) * kTiny;
+            d[k] = (rng.uniform() - 0.5) * (i % 3 == 0 ? 1e-300 : 1.0);
+        }
+        if (i % 11 == 0) d[i % 2] = 0.0;
+        EXPECT_EQ(ddaWalk<2>(g, o, d), exactWalk<2>(g, o, d))
+            << "grid " << i << ": lo " << g.lo[0] << "," << g.lo[1] << " hi " << g.hi[0] << ","
+            << g.hi[1] << " res " << g.res[0] << "," << g.res[1] << " origin " << o[0] << ","
+            << o[1] << " dir " << d[0] << "," << d[1];
+    }
+}
+
+TEST(Dda, UnderflowingCrossingTimesAgainstExact) {
+    // Small grids, huge directions: crossing times of 1e-309 down to 1e-322 are subnormal (a few
+    // bits of precision left) or round to 0, and ties between axes are decided there.
+    Pcg32 rng(13, 8);
+    for (int i = 0; i < 600; ++i) {
+        GridSpec<3, double> g;
+        g.res = {1 + int(rng.uniform() * 7), 1 + int(rng.uniform() * 7),
+                 1 + int(rng.uniform() * 7)};
+        const double size = i % 3 == 0 ? 1.0 : (i % 3 == 1 ? 1e-9 : 1e-13);
+        g.lo = {-1.0 * size, 0.0, 0.25};
+        g.hi = {0.5 * size, 1.0 * size, 0.25 + 0.5 * size};
+        const double scale = i % 2 ? 1e308 : 1e300;
+        std::array<double, 3> o{}, d{};
+        for (int k = 0; k < 3; ++k) {
+            o[k] = g.lo[k] + (g.hi[k] - g.lo[k]) * rng.uniform();
+            d[k] = (rng.uniform() - 0.5) * scale;
+        }
+        if (i % 4 == 0) d[1] = d[0];  // the same speed along x and y: ties through edges
+        if (i % 5 == 0)
+            o[0] = g.lo[0] +
+                   (g.hi[0] - g.lo[0]) * int(rng.uniform() * g.res[0]) / g.res[0];  // on a boundary
+        EXPECT_EQ(ddaWalk<3>(g, o, d), exactWalk<3>(g, o, d)) << "ray " << i;
     }
 }
 
