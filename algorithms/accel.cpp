@@ -51,8 +51,10 @@ BuildSummary summarizeT(const AcceleratorT<Prims>& accel) {
         s.stats.references = g->references();
         s.stats.buildMs = g->buildMs();
         s.description = "grid ";
-        for (int i = 0; i < N; ++i)
-            s.description += (i ? "x" : "") + std::to_string(g->spec().res[i]);
+        for (int i = 0; i < N; ++i) {
+            if (i) s.description += 'x';
+            s.description += std::to_string(g->spec().res[i]);
+        }
     } else if (const auto* k = std::get_if<KdTree<Prims>>(&accel)) {
         s.stats = k->stats();
         s.description = "kdtree " + std::string(name(k->options().split));
