@@ -152,6 +152,10 @@ void readSetup(const Reader& r, const json& j, const std::string& path, Lesson& 
         std::array<int, 3> res{1, 1, 1};
         for (std::size_t i = 0; i < v.size(); ++i)
             res[i] = r.integer(v[i], JsonLineMap::element(p, i), 1, GridOptions::kMaxCellsPerAxis);
+        const std::size_t cells = std::size_t(res[0]) * res[1] * res[2];
+        if (cells > GridOptions::kMaxCells)
+            r.fail(p, std::to_string(cells) + " cells, more than the grid's " +
+                          std::to_string(GridOptions::kMaxCells) + " (2^24)");
         o.grid.res = res;
     });
     ifPresent(j, path, "grid_lambda",
@@ -403,8 +407,9 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         if (!v.contains("grid_res") || !v["grid_res"].is_array() || v["grid_res"].empty())
             r.fail(rp, "expected a list of resolutions (cells per axis)");
         for (std::size_t i = 0; i < v["grid_res"].size(); ++i)
-            s.resolutions.push_back(r.integer(v["grid_res"][i], JsonLineMap::element(rp, i), 1,
-                                              GridOptions::kMaxCellsPerAxis));
+            // The sweep's grids are cubes: 256^3 is the grid's cap of 2^24 cells.
+            s.resolutions.push_back(
+                r.integer(v["grid_res"][i], JsonLineMap::element(rp, i), 1, 256));
         ifPresent(v, p, "image", [&](const json& x, const std::string& xp) {
             const auto wh = readPair(r, x, xp, 1, 1024);
             s.width = wh[0];

@@ -259,4 +259,13 @@ Scene transformScene(Scene s, double scale, const Vec3& shift) {
     return s;
 }
 
+double largestCoordinate(const Scene& scene) {
+    double m = std::max(maxAbsComponent(scene.camera.eye), maxAbsComponent(scene.camera.lookAt));
+    for (const PointLight& l : scene.lights) m = std::max(m, maxAbsComponent(l.position));
+    for (const Sphere& s : scene.spheres) m = std::max(m, maxAbsComponent(s.center) + s.radius);
+    for (const Triangle& t : scene.triangles)
+        m = std::max({m, maxAbsComponent(t.a), maxAbsComponent(t.b), maxAbsComponent(t.c)});
+    return m;
+}
+
 }  // namespace raystep

@@ -2,6 +2,7 @@
 
 #include "json_reader.h"
 #include "raystep/json_lines.h"
+#include "raystep/kernels.h"
 #include "raystep/resources.h"
 
 #include <tiny_obj_loader.h>
@@ -480,8 +481,33 @@ Scene readScene(std::string_view text, const std::string& fileName, const FileRe
     if (!root.contains("objects") || !root["objects"].is_array() || root["objects"].empty())
         r.fail("objects", "the scene is empty: 'objects' must list at least one object");
     const json& objects = root["objects"];
-    for (std::size_t i = 0; i < objects.size(); ++i)
-        readObject(r, objects[i], JsonLineMap::element("objects", i), materialIds, resolver, scene);
+    // The intersection kernels are exact within a range of magnitudes (kernels.h): what reaches
+    // past it is refused by name, rather than rendered with silent misses.
+    const double largest = kernelRange(Precision::Double).largest;
+    double scale = std::max(maxAbsComponent(scene.camera.eye), maxAbsComponent(scene.camera.lookAt));
+    if (const auto problem = kernelRangeProblem(Precision::Double, scale); problem && scale > largest)
+        r.fail(root.contains("camera") ? "camera" : "", *problem);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const double m = maxAbsComponent(scene.lights[i].position);
+        if (const auto problem = kernelRangeProblem(Precision::Double, m); problem && m > largest)
+            r.fail(JsonLineMap::child(JsonLineMap::element("lights", i), "position"), *problem);
+    }
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const std::string path = JsonLineMap::element("objects", i);
+        const std::size_t spheres = scene.spheres.size(), triangles = scene.triangles.size();
+        readObject(r, objects[i], path, materialIds, resolver, scene);
+        double m = 0.0;
+        for (std::size_t k = spheres; k < scene.spheres.size(); ++k)
+            m = std::max(m, maxAbsComponent(scene.spheres[k].center) + scene.spheres[k].radius);
+        for (std::size_t k = triangles; k < scene.triangles.size(); ++k)
+            for (const Vec3& v : {scene.triangles[k].a, scene.triangles[k].b, scene.triangles[k].c})
+                m = std::max(m, maxAbsComponent(v));
+        if (const auto problem = kernelRangeProblem(Precision::Double, m); problem && m > largest)
+            r.fail(path, *problem);
+        scale = std::max(scale, m);
+    }
+    // A scene too small as a whole (each object alone may be as small as it likes).
+    if (const auto problem = kernelRangeProblem(Precision::Double, scale)) r.fail("objects", *problem);
     return scene;
 }
 

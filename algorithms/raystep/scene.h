@@ -117,4 +117,8 @@ struct Scene {
 /// numerical robustness and for tests at the extremes.
 Scene transformScene(Scene scene, double scale, const Vec3& shift);
 
+/// The largest coordinate in absolute value of the scene's geometry, camera and lights (a sphere
+/// counts its radius): what the kernels' range (kernels.h) is measured against.
+double largestCoordinate(const Scene& scene);
+
 }  // namespace raystep

@@ -2,6 +2,8 @@
 
 #include "common.h"
 
+#include "raystep/kernels.h"
+
 #include <climits>
 #include <cmath>
 #include <sstream>
@@ -135,6 +137,11 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
         if (!ok)
             return "--grid-res " + a.gridRes + ": expected NX,NY,NZ, whole numbers from 1 to " +
                    std::to_string(GridOptions::kMaxCellsPerAxis);
+        const double cells = (*res)[0] * (*res)[1] * (*res)[2];
+        if (cells > double(GridOptions::kMaxCells))
+            return "--grid-res " + a.gridRes + ": " + std::to_string(static_cast<long long>(cells)) +
+                   " cells, more than the grid's " +
+                   std::to_string(GridOptions::kMaxCells) + " (2^24)";
         o.grid.res = std::array<int, 3>{int((*res)[0]), int((*res)[1]), int((*res)[2])};
     }
     if (a.mailbox != "on" && a.mailbox != "off")
@@ -148,6 +155,14 @@ std::string describeAccel(const AccelChoice& c) {
     if (c.kind == AccelKind::KdTree || c.kind == AccelKind::Bvh)
         s += " " + std::string(name(c.options.kdtree.split));
     return s;
+}
+
+std::optional<std::string> checkKernelRange(const std::string& sceneName, const Scene& scene,
+                                            const AccelChoice& choice) {
+    if (choice.kernels.precision != Precision::Float) return std::nullopt;
+    if (auto problem = kernelRangeProblem(Precision::Float, largestCoordinate(scene)))
+        return sceneName + ": --precision float: " + *problem;
+    return std::nullopt;
 }
 
 }  // namespace raystep::cli

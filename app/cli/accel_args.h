@@ -35,6 +35,10 @@ struct AccelChoice {
 
 /// Checks every value; on a bad one, the one-line message for fail().
 std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out);
+/// The scene loader checks a scene against the double kernels' range; with --precision float the
+/// narrower float range is checked here (the message names the scene).
+std::optional<std::string> checkKernelRange(const std::string& sceneName, const Scene& scene,
+                                            const AccelChoice& choice);
 
 /// "kdtree sah", "grid", "bvh median": what the structure is, for tables and trace files.
 std::string describeAccel(const AccelChoice& c);

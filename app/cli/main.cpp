@@ -79,6 +79,7 @@ int runRender(const RenderArgs& a) {
     } catch (const SceneError& e) {
         return fail(e.what());
     }
+    if (auto problem = cli::checkKernelRange(a.scene, scene, choice)) return fail(*problem);
 
     RenderOptions opt;
     opt.width = a.width.value_or(scene.settings.width);

@@ -87,6 +87,8 @@ int runBuild(const BuildArgs& a) {
     ProgressBar bar("build " + describeAccel(choice));
     choice.options.kdtree.progress =
         choice.options.bvh.progress = [&](double f) { return bar.update(f); };
+    if (const auto* s3 = std::get_if<Scene>(&any))
+        if (auto problem = checkKernelRange(a.scene, *s3, choice)) return fail(*problem);
     const SceneInfo scene = infoOf(any);
     if (const auto* s2 = std::get_if<Scene2D>(&any)) {
         summary = summarize(buildAccelerator2D(*s2, choice.kind, choice.options, record));
@@ -211,6 +213,8 @@ int runTrace(const TraceArgs& a) {
         return fail(e.what());
     }
     if (const auto* s2 = std::get_if<Scene2D>(&any)) return trace2D(a, choice, *s2);
+    if (auto problem = checkKernelRange(a.scene, std::get<Scene>(any), choice))
+        return fail(*problem);
     if (a.pixel.empty()) return fail("--pixel X,Y is required for a 3D scene");
     const auto xy = parseNumbers(a.pixel);
     if (!xy || xy->size() != 2 || (*xy)[0] != std::floor((*xy)[0]) ||
@@ -288,6 +292,7 @@ int runCompare(const CompareArgs& a) {
     int code = 0;
     const auto scene = loadOrFail(a.scene, code);
     if (!scene) return code;
+    if (auto problem = checkKernelRange(a.scene, *scene, base)) return fail(*problem);
     RenderOptions opt;
     opt.width = a.width;
     opt.height = a.height;

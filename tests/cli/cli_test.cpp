@@ -188,6 +188,9 @@ TEST_F(Cli, BadCommandLineValues) {
     expectBadInput("render --accel bvh --leaf-size 0", "--leaf-size");
     expectBadInput("render --accel bvh --buckets 1", "--buckets");
     expectBadInput("render --accel grid --grid-res 4,4", "--grid-res");
+    // Each axis within its limit, the product past the grid's cap of 2^24 cells.
+    expectBadInput("render --accel grid --grid-res 512,512,512", "more than the grid's 16777216");
+    expectBadInput("build --accel grid --grid-res 300,300,300", "more than the grid's");
     expectBadInput("build --accel kdtree --kd-build quick",
                    "--kd-build quick: expected exact or fast");
     expectBadInput("build --accel kdtree --kd-build fast --bin-above 64",
@@ -877,6 +880,30 @@ TEST_F(Cli, GridRenderOfAHugeSceneDoesNotAbort) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_FALSE(fs::exists(dir / "h.png"));
     }
+}
+
+TEST_F(Cli, FloatKernelsRefuseAScenePastTheirRange) {
+    // Coordinates of 1e10 are fine for double and past float's exact range (1e8): every command
+    // that traces with --precision float refuses the scene by name, before writing anything.
+    write("far.json", R"({
+        "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
+        "objects": [{"type": "sphere", "radius": 1},
+                    {"type": "sphere", "center": [1e10, 0, 0], "radius": 1}]})");
+    for (const char* cmd : {"render far.json -o f.png --precision float",
+                            "trace far.json --pixel 1,1 -o t.json --precision float",
+                            "compare far.json --precision float",
+                            "build far.json --accel kdtree --precision float"}) {
+        const CliRun r = run(cmd);
+        EXPECT_EQ(r.code, 2) << cmd << "\n" << r.err;
+        EXPECT_NE(r.err.find("far.json: --precision float: coordinates reach 1e+10"),
+                  std::string::npos)
+            << cmd << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "f.png"));
+    EXPECT_FALSE(fs::exists(dir / "t.json"));
+    const CliRun ok = run("render far.json -o f.png --width 8 --height 6");
+    EXPECT_EQ(ok.code, 0) << ok.err;
 }
 
 TEST_F(Cli, IntersectFarAheadAndOutOfRange) {

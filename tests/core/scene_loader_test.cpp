@@ -612,11 +612,58 @@ TEST(SceneLoaderHostile, ACameraOutOfTheArithmeticsRangeNamesTheRealProblem) {
         EXPECT_EQ(e.key(), "camera.up") << e.what();
         EXPECT_TRUE(contains(e.what(), "length")) << e.what();
     }
-    // Far but within range: loads, and the camera's rays are unit vectors.
+    // Far but within the kernels' range: loads, and the camera's rays are unit vectors.
     const Scene s = load(
-        "{\"camera\": {\"eye\": [0, 0, 1e140], \"look_at\": [0, 0, 0]},"
-        "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e139}]}");
+        "{\"camera\": {\"eye\": [0, 0, 1e55], \"look_at\": [0, 0, 0]},"
+        "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e54}]}");
     EXPECT_NEAR(s.camera.generateRay(1, 1, 4, 4).dir.z, -1.0, 0.1);
+}
+
+// Class 16: geometry past the range where the intersection kernels are exact (their squares
+// overflow, or their products underflow) used to load and render with silent misses; it is
+// refused naming the object, light or camera that leaves the range.
+TEST(SceneLoaderHostile, GeometryOutsideTheKernelsRangeIsRefusedByName) {
+    const auto keyOf = [](const std::string& text) -> std::string {
+        try {
+            load(text);
+            return "(loaded)";
+        } catch (const SceneError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+            return e.key() + " | " + what;
+        }
+    };
+    const std::string unit = "{\"type\": \"sphere\", \"radius\": 1}";
+    const std::string camera = "\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n";
+    // A sphere far away, a triangle with one far vertex, a huge radius: each named by its index.
+    for (const std::string& far :
+         {std::string("{\"type\": \"sphere\", \"center\": [1e200, 0, 0], \"radius\": 1}"),
+          std::string("{\"type\": \"triangle\", \"vertices\": [[0,0,0],[1,0,0],[0,-1e61,0]]}"),
+          std::string("{\"type\": \"sphere\", \"radius\": 2e60}")}) {
+        const std::string k = keyOf("{" + camera + "\"objects\": [" + unit + ",\n" + far + "]}");
+        EXPECT_EQ(k.substr(0, k.find(" | ")), "objects[1]") << k;
+        EXPECT_TRUE(contains(k, "beyond 1e+60")) << k;
+    }
+    // A light far away.
+    std::string k = keyOf("{" + camera +
+                          "\"lights\": [{\"position\": [0, 0, 0]}, {\"position\": [0, 3e100, 0]}],\n"
+                          "\"objects\": [" + unit + "]}");
+    EXPECT_EQ(k.substr(0, k.find(" | ")), "lights[1].position") << k;
+    // A whole scene below the range: camera and sphere within 1e-70 of the origin.
+    k = keyOf("{\"camera\": {\"eye\": [0, 0, 5e-71], \"look_at\": [0, 0, 0]},\n"
+              "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e-71}]}");
+    EXPECT_EQ(k.substr(0, k.find(" | ")), "objects") << k;
+    EXPECT_TRUE(contains(k, "underflow")) << k;
+    // One tiny object in a scene of ordinary size is fine, and so are scenes near both ends.
+    EXPECT_EQ(keyOf("{" + camera + "\"objects\": [" + unit +
+                    ", {\"type\": \"sphere\", \"radius\": 1e-200}]}"),
+              "(loaded)");
+    EXPECT_EQ(keyOf("{\"camera\": {\"eye\": [0, 0, 5e59], \"look_at\": [0, 0, 0]},\n"
+                    "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e59}]}"),
+              "(loaded)");
+    EXPECT_EQ(keyOf("{\"camera\": {\"eye\": [0, 0, 5e-59], \"look_at\": [0, 0, 0]},\n"
+                    "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e-59}]}"),
+              "(loaded)");
 }
 
 /// Loads a scene of one mesh whose OBJ text is `obj`; returns the error ("" if none).
