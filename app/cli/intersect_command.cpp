@@ -79,10 +79,15 @@ struct Outcome {
     StepLog log;
 };
 
-/// The kernel and the hit point in T. Kept out of line (noipa) so that none of its arithmetic
-/// can be moved across the reading of the floating-point flags around the call.
+/// The kernel and the hit point in T. Kept out of line (GCC's noipa, clang's optnone) so that
+/// none of its arithmetic can be moved across the reading of the floating-point flags around it.
+#if defined(__clang__)
+#define RAYSTEP_OPAQUE [[gnu::noinline, clang::optnone]]
+#else
+#define RAYSTEP_OPAQUE [[gnu::noipa]]
+#endif
 template <typename T>
-[[gnu::noipa]] Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
+RAYSTEP_OPAQUE Outcome intersectIn(const glm::dvec3& o, const glm::dvec3& d, bool isTriangle,
                                    const std::vector<std::vector<double>>& shape, TriangleMethod tm,
                                    SphereMethod sm) {
     Outcome out;
