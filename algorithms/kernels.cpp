@@ -53,13 +53,17 @@ KernelRange kernelRange(Precision p) {
     return {1e-60, 1e60};
 }
 
+namespace {
+std::string g3(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    return buf;
+}
+}  // namespace
+
 std::optional<std::string> kernelRangeProblem(Precision p, double magnitude) {
     const KernelRange r = kernelRange(p);
-    const auto g = [](double x) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.3g", x);
-        return std::string(buf);
-    };
+    const auto g = g3;
     const std::string which = std::string(name(p));
     if (!std::isfinite(magnitude)) return "a coordinate is not a finite number";
     if (std::abs(magnitude) > r.largest)
@@ -69,6 +73,36 @@ std::optional<std::string> kernelRangeProblem(Precision p, double magnitude) {
         return "the whole scene lies within " + g(std::abs(magnitude)) + " of the origin, below " +
                g(r.smallest) + " where the " + which +
                " intersection kernels are exact (their products underflow)";
+    return std::nullopt;
+}
+
+std::optional<std::string> primitiveRangeProblem(Precision p, double reach, double size) {
+    const KernelRange r = kernelRange(p);
+    if (!std::isfinite(reach) || !std::isfinite(size)) return "a coordinate is not a finite number";
+    if (std::abs(reach) > r.largest)
+        return "coordinates reach " + g3(std::abs(reach)) + ", beyond " + g3(r.largest) +
+               " where the " + std::string(name(p)) +
+               " intersection kernels are exact (their squares overflow)";
+    if (size > 0.0 && size < r.smallest)
+        return "its size is " + g3(size) + ", below " + g3(r.smallest) + " where the " +
+               std::string(name(p)) +
+               " intersection kernels are exact (its squares underflow to 0: every ray near it "
+               "would hit)";
+    return std::nullopt;
+}
+
+std::optional<std::string> rayRangeProblem(Precision p, double reach, double dirLargest) {
+    const KernelRange r = kernelRange(p);
+    if (!std::isfinite(reach) || !std::isfinite(dirLargest))
+        return "a coordinate is not a finite number";
+    if (std::abs(reach) > r.largest)
+        return "the origin reaches " + g3(std::abs(reach)) + ", beyond " + g3(r.largest) +
+               " where the " + std::string(name(p)) + " intersection kernels are exact";
+    if (std::abs(dirLargest) > r.largest || std::abs(dirLargest) < r.smallest)
+        return "the direction's largest component is " + g3(std::abs(dirLargest)) +
+               ", outside " + g3(r.smallest) + " to " + g3(r.largest) + " where the " +
+               std::string(name(p)) + " intersection kernels are exact (its square overflows "
+               "or underflows)";
     return std::nullopt;
 }
 

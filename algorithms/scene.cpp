@@ -3,7 +3,10 @@
 #include "raystep/kernels.h"
 #include "raystep/prims.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace raystep {
 
@@ -266,6 +269,17 @@ double largestCoordinate(const Scene& scene) {
     for (const Triangle& t : scene.triangles)
         m = std::max({m, maxAbsComponent(t.a), maxAbsComponent(t.b), maxAbsComponent(t.c)});
     return m;
+}
+
+double smallestSize(const Scene& scene) {
+    double size = std::numeric_limits<double>::infinity();
+    for (const Sphere& s : scene.spheres) size = std::min(size, s.radius);
+    for (const Triangle& t : scene.triangles) {
+        const double edge = std::max({maxAbsComponent(t.b - t.a), maxAbsComponent(t.c - t.b),
+                                      maxAbsComponent(t.a - t.c)});
+        if (edge > 0.0) size = std::min(size, edge);
+    }
+    return std::isinf(size) ? 0.0 : size;
 }
 
 }  // namespace raystep

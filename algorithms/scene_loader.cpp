@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <charconv>
 #include <cstdlib>
 #include <filesystem>
@@ -496,13 +498,23 @@ Scene readScene(std::string_view text, const std::string& fileName, const FileRe
         const std::string path = JsonLineMap::element("objects", i);
         const std::size_t spheres = scene.spheres.size(), triangles = scene.triangles.size();
         readObject(r, objects[i], path, materialIds, resolver, scene);
-        double m = 0.0;
-        for (std::size_t k = spheres; k < scene.spheres.size(); ++k)
+        if (scene.triangles.size() > kMaxObjTriangles)
+            r.fail(path, "the scene has more than " + std::to_string(kMaxObjTriangles) +
+                             " triangles, the most raystep loads");
+        // The object's reach and its smallest part (radius, longest edge of a triangle).
+        double m = 0.0, size = std::numeric_limits<double>::infinity();
+        for (std::size_t k = spheres; k < scene.spheres.size(); ++k) {
             m = std::max(m, maxAbsComponent(scene.spheres[k].center) + scene.spheres[k].radius);
-        for (std::size_t k = triangles; k < scene.triangles.size(); ++k)
-            for (const Vec3& v : {scene.triangles[k].a, scene.triangles[k].b, scene.triangles[k].c})
-                m = std::max(m, maxAbsComponent(v));
-        if (const auto problem = kernelRangeProblem(Precision::Double, m); problem && m > largest)
+            size = std::min(size, scene.spheres[k].radius);
+        }
+        for (std::size_t k = triangles; k < scene.triangles.size(); ++k) {
+            const Triangle& t = scene.triangles[k];
+            m = std::max({m, maxAbsComponent(t.a), maxAbsComponent(t.b), maxAbsComponent(t.c)});
+            const double edge = std::max({maxAbsComponent(t.b - t.a), maxAbsComponent(t.c - t.b),
+                                          maxAbsComponent(t.a - t.c)});
+            if (edge > 0.0) size = std::min(size, edge);  // a degenerate one is never hit
+        }
+        if (const auto problem = primitiveRangeProblem(Precision::Double, m, std::isinf(size) ? 0.0 : size))
             r.fail(path, *problem);
         scale = std::max(scale, m);
     }
@@ -516,6 +528,10 @@ Vec2 readVec2(const Reader& r, const json& j, const std::string& path) {
         r.fail(path, "expected an array of 2 numbers [x, y], got " + Reader::typeName(j));
     return Vec2(r.number(j[0], JsonLineMap::element(path, 0)),
                 r.number(j[1], JsonLineMap::element(path, 1)));
+}
+
+double maxAbs2(const Vec2& v) {
+    return std::max(std::abs(v.x), std::abs(v.y));
 }
 
 Scene2D readScene2D(std::string_view text, const std::string& fileName) {
@@ -544,6 +560,9 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
         ray.origin = readVec2(r, v["origin"], JsonLineMap::child(p, "origin"));
         ray.dir = readVec2(r, v["dir"], JsonLineMap::child(p, "dir"));
         if (ray.dir == Vec2(0.0)) r.fail(JsonLineMap::child(p, "dir"), "must not be zero");
+        if (const auto problem = rayRangeProblem(Precision::Double, maxAbs2(ray.origin),
+                                                 maxAbs2(ray.dir)))
+            r.fail(p, *problem);
         scene.exampleRay = ray;
     });
     ifPresent(root, "", "circles", [&](const json& v, const std::string& p) {
@@ -554,8 +573,12 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
             r.checkKeys(v[i], cp, {"center", "radius"});
             if (!v[i].contains("center") || !v[i].contains("radius"))
                 r.fail(cp, "a circle needs a center and a radius");
-            scene.circles.push_back({readVec2(r, v[i]["center"], JsonLineMap::child(cp, "center")),
-                                     r.positive(v[i]["radius"], JsonLineMap::child(cp, "radius"))});
+            const Circle2 c{readVec2(r, v[i]["center"], JsonLineMap::child(cp, "center")),
+                            r.positive(v[i]["radius"], JsonLineMap::child(cp, "radius"))};
+            if (const auto problem = primitiveRangeProblem(
+                    Precision::Double, maxAbs2(c.center) + c.radius, c.radius))
+                r.fail(cp, *problem);
+            scene.circles.push_back(c);
         }
     });
     ifPresent(root, "", "segments", [&](const json& v, const std::string& p) {
@@ -569,6 +592,10 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
             const Segment2 seg{readVec2(r, v[i]["from"], JsonLineMap::child(sp, "from")),
                                readVec2(r, v[i]["to"], JsonLineMap::child(sp, "to"))};
             if (seg.a == seg.b) r.fail(JsonLineMap::child(sp, "to"), "the segment has no length");
+            if (const auto problem =
+                    primitiveRangeProblem(Precision::Double, std::max(maxAbs2(seg.a), maxAbs2(seg.b)),
+                                          maxAbs2(seg.b - seg.a)))
+                r.fail(sp, *problem);
             scene.segments.push_back(seg);
         }
     });

@@ -296,20 +296,7 @@ std::string traceToJson(const EventLog& log, const TraceInfo& info) {
         nodes.push_back({{"lo", {number(n.lo[0]), number(n.lo[1]), number(n.lo[2])}},
                          {"hi", {number(n.hi[0]), number(n.hi[1]), number(n.hi[2])}}});
     root["nodes"] = std::move(nodes);
-    ordered_json events = ordered_json::array();
-    for (const Event& ev : log.events()) {
-        ordered_json j;
-        j["type"] = kEventNames[ev.index()];
-        std::visit(
-            [&](const auto& e) {
-                auto copy = e;
-                fields(copy, Writer{j});
-            },
-            ev);
-        events.push_back(std::move(j));
-    }
-    root["events"] = std::move(events);
-    // One event per line: diffable, and a reader's error names a useful line.
+    // One value per line: diffable, and a reader's error names a useful line.
     std::string out = "{\n";
     bool first = true;
     for (auto it = root.begin(); it != root.end(); ++it) {
@@ -324,6 +311,22 @@ std::string traceToJson(const EventLog& log, const TraceInfo& info) {
         } else {
             out += it->dump();
         }
+    }
+    // The events, by far the most, are written one at a time: a tree of millions of JSON values
+    // would take several times the memory of the text.
+    const auto& events = log.events();
+    out += ",\n  \"events\": ";
+    out += events.empty() ? "[]" : "[\n";
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        ordered_json j;
+        j["type"] = kEventNames[events[i].index()];
+        std::visit(
+            [&](const auto& e) {
+                auto copy = e;
+                fields(copy, Writer{j});
+            },
+            events[i]);
+        out += "    " + j.dump() + (i + 1 < events.size() ? ",\n" : "\n  ]");
     }
     return out + "\n}\n";
 }

@@ -84,10 +84,7 @@ class FileError : public std::runtime_error {
     /// The message is escaped as a whole (printable), so it stays one line whatever it quotes;
     /// file() and key() keep the text as given.
     FileError(std::string file, int line, std::string key, const std::string& message)
-        : std::runtime_error(printable(file, 512) +
-                             (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
-                             (key.empty() ? std::string() : "key '" + printable(key, 160) + "': ") +
-                             printable(message, std::string::npos)),
+        : std::runtime_error(compose(file, line, key, message)),
           file_(std::move(file)),
           line_(line),
           key_(std::move(key)) {}
@@ -99,6 +96,16 @@ class FileError : public std::runtime_error {
     std::string file_;
     int line_;
     std::string key_;
+
+    // Appended piece by piece: GCC 12 sees a false overlap (-Wrestrict) in "x" + std::string&&.
+    static std::string compose(const std::string& file, int line, const std::string& key,
+                               const std::string& message) {
+        std::string s = printable(file, 512);
+        if (line > 0) s.append(":").append(std::to_string(line));
+        s.append(": ");
+        if (!key.empty()) s.append("key '").append(printable(key, 160)).append("': ");
+        return s.append(printable(message, std::string::npos));
+    }
 };
 
 }  // namespace raystep

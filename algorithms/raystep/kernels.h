@@ -47,6 +47,14 @@ KernelRange kernelRange(Precision p);
 /// else the problem as one phrase ("coordinates reach 1e+200, beyond 1e+60 ..."). Cheap: check
 /// it once per scene, not per ray.
 std::optional<std::string> kernelRangeProblem(Precision p, double magnitude);
+/// For one primitive: `reach` its largest coordinate in absolute value (a sphere's or circle's
+/// centre plus radius), `size` its radius or longest edge (0 for a degenerate one, never hit).
+/// Beyond the range its squares overflow; below it (a sphere of radius 1e-165) they underflow to
+/// 0 and every ray near it would hit. nullopt if it is in the range.
+std::optional<std::string> primitiveRangeProblem(Precision p, double reach, double size);
+/// For a ray given by hand (2D rays are not normalised): `reach` of its origin, `dirLargest` the
+/// largest component of its direction in absolute value.
+std::optional<std::string> rayRangeProblem(Precision p, double reach, double dirLargest);
 
 /// Dispatch to the chosen ray-sphere kernel.
 template <typename T, typename Steps = NoSteps>

@@ -120,5 +120,8 @@ Scene transformScene(Scene scene, double scale, const Vec3& shift);
 /// The largest coordinate in absolute value of the scene's geometry, camera and lights (a sphere
 /// counts its radius): what the kernels' range (kernels.h) is measured against.
 double largestCoordinate(const Scene& scene);
+/// The smallest sphere radius or longest triangle edge of the scene (degenerate triangles left
+/// out; 0 if nothing is left): what the kernels' range is measured against from below.
+double smallestSize(const Scene& scene);
 
 }  // namespace raystep

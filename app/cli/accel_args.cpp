@@ -162,6 +162,9 @@ std::optional<std::string> checkKernelRange(const std::string& sceneName, const 
     if (choice.kernels.precision != Precision::Float) return std::nullopt;
     if (auto problem = kernelRangeProblem(Precision::Float, largestCoordinate(scene)))
         return sceneName + ": --precision float: " + *problem;
+    if (auto problem =
+            primitiveRangeProblem(Precision::Float, largestCoordinate(scene), smallestSize(scene)))
+        return sceneName + ": --precision float: " + *problem;
     return std::nullopt;
 }
 

@@ -42,12 +42,17 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 }
 
 std::optional<std::string> checkOutputs(
-    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths) {
+    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths,
+    const std::vector<std::string>& inputs) {
     for (std::size_t i = 0; i < optionsAndPaths.size(); ++i) {
         const auto& [option, path] = optionsAndPaths[i];
         if (path.empty()) continue;
         if (const std::string why = writeProblem(path); !why.empty())
             return option + " " + path + ": " + why;
+        for (const std::string& input : inputs)
+            if (std::error_code ec; std::filesystem::is_regular_file(input, ec) && sameFile(input, path))
+                return option + " " + path + ": the command reads this file; writing over it "
+                                             "would lose it";
         for (std::size_t j = 0; j < i; ++j) {
             const auto& [otherOption, otherPath] = optionsAndPaths[j];
             if (!otherPath.empty() && sameFile(otherPath, path))
@@ -82,6 +87,14 @@ CLI::Validator wholeNumber(std::uint64_t lo, std::uint64_t hi) {
             return {};
         },
         "INT in [" + range + "]");
+}
+
+CLI::Validator fileName() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            return text.empty() ? std::string("an empty file name") : std::string();
+        },
+        "FILE");
 }
 
 CLI::Validator finiteNumber() {

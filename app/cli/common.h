@@ -24,10 +24,15 @@ std::optional<std::vector<double>> parseNumbers(const std::string& text, char se
 /// True if `path` ends in `ext` (".png"), in any case.
 bool hasExtension(const std::string& path, const std::string& ext);
 
-/// Checks, before any long work, that every output (option, path) can be written and that no two
-/// options name the same file; skips empty paths. The one-line problem if not.
+/// Checks, before any long work, that every output (option, path) can be written, that no two
+/// options name the same file and that no output is one of the command's input files (a scene,
+/// an answers file: writing over it would lose it); skips empty paths. The one-line problem if not.
 std::optional<std::string> checkOutputs(
-    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths);
+    const std::vector<std::pair<std::string, std::string>>& optionsAndPaths,
+    const std::vector<std::string>& inputs = {});
+
+/// CLI11 check for a file name option: not empty (`--events ""` would otherwise mean "none").
+CLI::Validator fileName();
 
 /// Writes a command's output files all or none (writeFilesAtomic); the one-line problem if not.
 std::optional<std::string> writeOutputs(const std::vector<FileToWrite>& files);

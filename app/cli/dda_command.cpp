@@ -42,6 +42,10 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
         dir[i] = T(d[i]);
     }
     Dda<N, T> dda(grid, origin, dir);
+    // In float, --max may round onto --min: the walk refuses the grid, which is not a miss.
+    if (dda.problem())
+        return fail(std::string("--precision ") + (sizeof(T) == 4 ? "float" : "double") + ": " +
+                    dda.problem());
     const auto axes = [](unsigned mask) {
         std::vector<int> v;
         for (int i = 0; i < N; ++i)

@@ -29,6 +29,7 @@ void addLessonCommand(CLI::App& app, LessonArgs& a) {
     a.check = lesson->add_subcommand("check", "Grade an answers file: score and feedback");
     a.check->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
     a.check->add_option("--answers", a.answers, "Answers: {\"lesson\": ID, \"answers\": {...}}")
+        ->check(fileName())
         ->required();
     a.check->add_flag("--json", a.json, "Print the grade as JSON");
     a.sweep = lesson->add_subcommand(
@@ -97,8 +98,10 @@ int check(const Lesson& l, const std::string& answersPath, Language lang, bool j
                            : i.correct ? (it ? "giusto" : "right")
                                        : (it ? "sbagliato" : "wrong");
         std::printf("  %-16s %-14s", i.exercise.c_str(), mark);
-        if (i.answered) std::printf(" %s: %s", it ? "data" : "given", i.given.c_str());
-        std::printf("\n      %s\n", i.feedback.c_str());
+        // The answer is the student's text: escaped, so it cannot forge a line of the report.
+        if (i.answered)
+            std::printf(" %s: %s", it ? "data" : "given", printable(i.given, 200).c_str());
+        std::printf("\n      %s\n", printable(i.feedback, 2000).c_str());
     }
     return 0;
 }

@@ -66,7 +66,8 @@ int runRender(const RenderArgs& a) {
     if (!a.heatmap.empty() && !cli::hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
     if (auto problem =
-            cli::checkOutputs({{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}}))
+            cli::checkOutputs({{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}},
+                              {a.scene}))
         return fail(*problem);
     cli::AccelChoice choice;
     if (auto problem = cli::resolveAccel(a.accel, choice)) return fail(*problem);
@@ -182,7 +183,8 @@ int main(int argc, char** argv) {
     RenderArgs r;
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");
     render->add_option("scene", r.scene, "Built-in scene name or scene file (default: default)");
-    render->add_option("-o,--output", r.output, "Output PNG (default: <scene>.png)");
+    render->add_option("-o,--output", r.output, "Output PNG (default: <scene>.png)")
+        ->check(cli::fileName());
     render->add_option("--width", r.width, "Image width in pixels")
         ->transform(cli::wholeNumber(1, kMaxImageSide));
     render->add_option("--height", r.height, "Image height in pixels")
@@ -205,8 +207,10 @@ int main(int argc, char** argv) {
     render->add_option("--seed", r.seed, "Seed of the random numbers")
         ->transform(cli::wholeNumber(0, UINT64_MAX))
         ->capture_default_str();
-    render->add_option("--stats", r.stats, "Write ray counts and timings as JSON");
-    render->add_option("--heatmap", r.heatmap, "Write primitive tests per pixel as a PNG heat map");
+    render->add_option("--stats", r.stats, "Write ray counts and timings as JSON")
+        ->check(cli::fileName());
+    render->add_option("--heatmap", r.heatmap, "Write primitive tests per pixel as a PNG heat map")
+        ->check(cli::fileName());
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";

@@ -4,6 +4,7 @@
 #include "progress.h"
 
 #include "raystep/image.h"
+#include "raystep/kernels.h"
 #include "raystep/scene_loader.h"
 #include "raystep/trace_io.h"
 #include "raystep/tracer.h"
@@ -54,7 +55,7 @@ nlohmann::ordered_json statsJson(const BuildSummary& b) {
 
 void addCapOption(CLI::App* cmd, std::size_t& cap) {
     cmd->add_option("--max-events", cap, "Stop recording after this many events")
-        ->transform(wholeNumber(1, 100'000'000))
+        ->transform(wholeNumber(1, 20'000'000))
         ->capture_default_str();
 }
 
@@ -67,14 +68,15 @@ void addBuildCommand(CLI::App& app, BuildArgs& a) {
     addAccelOptions(cmd, a.accel);
     cmd->add_flag("--json", a.json, "Print the report as JSON");
     cmd->add_option("--events", a.events,
-                    "Write the build's events (nodes, split candidates, leaves) as a trace file");
+                    "Write the build's events (nodes, split candidates, leaves) as a trace file")
+        ->check(fileName());
     addCapOption(cmd, a.maxEvents);
 }
 
 int runBuild(const BuildArgs& a) {
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (auto problem = checkOutputs({{"--events", a.events}})) return fail(*problem);
+    if (auto problem = checkOutputs({{"--events", a.events}}, {a.scene})) return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
         any = loadAnyScene(a.scene);
@@ -146,7 +148,9 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
     cmd->add_option("--pixel", a.pixel, "3D scenes: the pixel X,Y (0,0 is the top left)");
     cmd->add_option("--ray", a.ray,
                     "2D scenes: the ray OX,OY,DX,DY (default: the scene's example ray)");
-    cmd->add_option("-o,--output", a.output, "Trace file to write (JSON)")->required();
+    cmd->add_option("-o,--output", a.output, "Trace file to write (JSON)")
+        ->required()
+        ->check(fileName());
     cmd->add_option("--width", a.width, "Image width in pixels")
         ->transform(wholeNumber(1, kMaxImageSide));
     cmd->add_option("--height", a.height, "Image height in pixels")
@@ -172,6 +176,10 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
         if (!v || v->size() != 4 || ((*v)[2] == 0 && (*v)[3] == 0))
             return fail("--ray " + a.ray + ": expected OX,OY,DX,DY with a non-zero direction");
         ray = Ray2{Vec2((*v)[0], (*v)[1]), Vec2((*v)[2], (*v)[3])};
+        if (auto problem = rayRangeProblem(
+                Precision::Double, std::max(std::abs(ray.origin.x), std::abs(ray.origin.y)),
+                std::max(std::abs(ray.dir.x), std::abs(ray.dir.y))))
+            return fail("--ray " + a.ray + ": " + *problem);
     } else if (scene.exampleRay) {
         ray = *scene.exampleRay;
     } else {
@@ -205,7 +213,7 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
 int runTrace(const TraceArgs& a) {
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (auto problem = checkOutputs({{"-o", a.output}})) return fail(*problem);
+    if (auto problem = checkOutputs({{"-o", a.output}}, {a.scene})) return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
         any = loadAnyScene(a.scene);

@@ -8,6 +8,8 @@
 namespace raystep::gui {
 
 ImageView::ImageView(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
+    // A click takes the keyboard from the answer box, so B, R and N reach the window.
+    setFocusPolicy(Qt::ClickFocus);
     setMinimumSize(240, 180);
     renderButton_ = new QPushButton(tr("Render the image again"), this);
     renderButton_->setObjectName("renderAgain");

@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
     const auto screenshot = [&] {
         if (shot.isEmpty()) return;
         const QImage image = shown->grab().toImage();
-        if (!image.save(shot, "PNG")) {
-            scriptFails("--screenshot " + shot + ": cannot write the file");
+        if (const QString problem = raystep::gui::savePng(image, shot); !problem.isEmpty()) {
+            scriptFails("--screenshot " + problem);
             return;
         }
         std::printf("wrote %s (%dx%d): %s\n", shot.toUtf8().constData(), image.width(),

@@ -6,12 +6,14 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include "raystep/file_error.h"
 #include "raystep/image.h"
 #include "raystep/scene_loader.h"
 #include "raystep/trace_io.h"
 #include "raystep/tracer.h"
 
 #include <QAbstractListModel>
+#include <QBuffer>
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -844,12 +846,25 @@ void MainWindow::openFileDialog() {
     if (!path.isEmpty()) openScene(path, session_.kind());
 }
 
+QString savePng(const QImage& image, const QString& path) {
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG")) return path + ": cannot encode the image as PNG";
+    try {
+        writeFileAtomic(path.toStdString(), png.toStdString());
+    } catch (const std::exception& e) {
+        return QString::fromStdString(printable(e.what(), 4096));
+    }
+    return {};
+}
+
 void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
     const QString path = QFileDialog::getSaveFileName(this, tr("Screenshot of the %1").arg(what),
                                                       QString(), tr("PNG images (*.png)"));
     if (path.isEmpty()) return;
-    if (!w->grab().save(path, "PNG"))
-        QMessageBox::warning(this, tr("Cannot save"), tr("Could not write %1").arg(path));
+    if (const QString problem = savePng(w->grab().toImage(), path); !problem.isEmpty())
+        QMessageBox::warning(this, tr("Cannot save"), problem);
 }
 
 void MainWindow::exportTrace() {

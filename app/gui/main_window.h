@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 
+#include <QImage>
 #include <QMainWindow>
 #include <QPointer>
 
@@ -27,6 +28,11 @@ class QTimer;
 class QToolButton;
 
 namespace raystep::gui {
+
+/// Saves `image` as a PNG at `path` through the core's writer: regular files only (a FIFO or a
+/// device is refused, not opened and waited on), a temporary renamed into place (a failed write
+/// leaves the old file whole). The one-line problem, or an empty string.
+QString savePng(const QImage& image, const QString& path);
 
 class CompareWindow;
 class ImageView;

@@ -22,6 +22,8 @@ const QColor kRay(200, 30, 40);
 }  // namespace
 
 View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
+    // A click takes the keyboard from the answer box, so B, R and N reach the window.
+    setFocusPolicy(Qt::ClickFocus);
     setMinimumSize(320, 220);
     setAutoFillBackground(false);
     connect(&session_, &Session::cursorChanged, this, [this] { update(); });

@@ -43,6 +43,8 @@ constexpr unsigned char kRayColours[kRayKindCount][3] = {
 }  // namespace
 
 VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
+    // A click takes the keyboard from the answer box, so B, R and N reach the window.
+    setFocusPolicy(Qt::ClickFocus);
     setMinimumSize(240, 180);
     setAttribute(Qt::WA_OpaquePaintEvent);
     window_->SetOffScreenRendering(1);

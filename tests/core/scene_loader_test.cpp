@@ -374,6 +374,34 @@ TEST(Scene2DLoader, LectureScenesLoad) {
     }
 }
 
+// Class 16 in 2D: the circle test squares the direction, which is not normalised; a ray or a
+// primitive past the kernels' range is refused naming it.
+TEST(Scene2DLoader, GeometryOutsideTheKernelsRangeIsRefusedByName) {
+    const auto keyOf = [](const std::string& body) -> std::string {
+        try {
+            loadScene2DText("{\"dimensions\": 2,\n" + body + "}", "s.json");
+            return "(loaded)";
+        } catch (const SceneError& e) {
+            return e.key() + " | " + e.what();
+        }
+    };
+    const std::string circle = "\"circles\": [{\"center\": [2, 2], \"radius\": 1}]";
+    EXPECT_EQ(keyOf(circle), "(loaded)");
+    for (const auto& [body, key] : std::vector<std::pair<std::string, std::string>>{
+             {circle + ",\n\"ray\": {\"origin\": [0, 0], \"dir\": [1e200, 0]}", "ray"},
+             {circle + ",\n\"ray\": {\"origin\": [0, 0], \"dir\": [1e-70, 0]}", "ray"},
+             {circle + ",\n\"ray\": {\"origin\": [1e61, 0], \"dir\": [1, 0]}", "ray"},
+             {"\"circles\": [{\"center\": [2, 2], \"radius\": 1},\n{\"center\": [1e100, 0], "
+              "\"radius\": 1}]",
+              "circles[1]"},
+             {"\"circles\": [{\"center\": [2, 2], \"radius\": 1e-100}]", "circles[0]"},
+             {circle + ",\n\"segments\": [{\"from\": [0, 0], \"to\": [1e-80, 0]}]",
+              "segments[0]"}}) {
+        const std::string k = keyOf(body);
+        EXPECT_EQ(k.substr(0, k.find(" | ")), key) << body << "\n" << k;
+    }
+}
+
 TEST(Scene2DLoader, BadFilesNameLineAndKey) {
     const auto expectError = [](const std::string& text, int line, const std::string& key,
                                 const std::string& message) {
@@ -652,12 +680,20 @@ TEST(SceneLoaderHostile, GeometryOutsideTheKernelsRangeIsRefusedByName) {
     // A whole scene below the range: camera and sphere within 1e-70 of the origin.
     k = keyOf("{\"camera\": {\"eye\": [0, 0, 5e-71], \"look_at\": [0, 0, 0]},\n"
               "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e-71}]}");
-    EXPECT_EQ(k.substr(0, k.find(" | ")), "objects") << k;
+    EXPECT_EQ(k.substr(0, k.find(" | ")), "objects[0]") << k;
     EXPECT_TRUE(contains(k, "underflow")) << k;
-    // One tiny object in a scene of ordinary size is fine, and so are scenes near both ends.
-    EXPECT_EQ(keyOf("{" + camera + "\"objects\": [" + unit +
-                    ", {\"type\": \"sphere\", \"radius\": 1e-200}]}"),
-              "(loaded)");
+    // A primitive too small for its squares: a sphere of radius 1e-165 just ahead of the eye
+    // filled the whole image (r^2 and the ray's distance^2 both underflow to 0); a triangle with
+    // edges of 1e-70. Each named by its index, whatever the size of the rest of the scene.
+    for (const std::string& tiny :
+         {std::string("{\"type\": \"sphere\", \"center\": [0, 0, 4.9999], \"radius\": 1e-165}"),
+          std::string("{\"type\": \"triangle\", \"vertices\": [[0,0,0],[1e-70,0,0],[0,1e-70,0]]}"),
+          std::string("{\"type\": \"sphere\", \"radius\": 1e-200}")}) {
+        k = keyOf("{" + camera + "\"objects\": [" + unit + ",\n" + tiny + "]}");
+        EXPECT_EQ(k.substr(0, k.find(" | ")), "objects[1]") << k;
+        EXPECT_TRUE(contains(k, "underflow")) << k;
+    }
+    // Scenes near both ends of the range load.
     EXPECT_EQ(keyOf("{\"camera\": {\"eye\": [0, 0, 5e59], \"look_at\": [0, 0, 0]},\n"
                     "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e59}]}"),
               "(loaded)");

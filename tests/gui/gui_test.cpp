@@ -12,10 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
 #include <QImage>
+#include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QStandardPaths>
@@ -26,6 +29,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -478,6 +482,33 @@ void click(QWidget* w, QPoint at) {
 // the image; R, the example ray; B, the build), then answer every exercise right. The answers
 // are graded against the lesson's own trace, whatever the replay shows, and the panel says what
 // the replay shows and leads back to the lesson's trace.
+// The answer box has the keyboard most of the time in a lesson: a click on a view must take it,
+// or B, R and N typed after it go into the answer instead.
+TEST(App, ClickingAViewTakesTheKeysFromTheAnswerBox) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    ASSERT_TRUE(openLesson(w, "3"));
+    auto* answer = w.lessonPanel()->findChild<QLineEdit*>();
+    ASSERT_NE(answer, nullptr);
+    for (QWidget* view : {static_cast<QWidget*>(w.view3D()), static_cast<QWidget*>(w.imageView())}) {
+        SCOPED_TRACE(view->metaObject()->className());
+        answer->setFocus();
+        answer->clear();
+        QApplication::processEvents();
+        ASSERT_EQ(QApplication::focusWidget(), answer);
+        ASSERT_TRUE(view->isVisible());
+        click(view, QPoint(view->width() / 3, view->height() / 2));
+        EXPECT_EQ(QApplication::focusWidget(), view);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_B);
+        EXPECT_TRUE(w.waitUntilIdle());
+        EXPECT_EQ(w.session().logKind(), LogKind::Build);
+        EXPECT_TRUE(answer->text().isEmpty()) << answer->text().toStdString();
+    }
+}
+
 TEST(AppLifetimes, AnswersAfterAPixelClickROrBAreGradedAgainstTheLessonsTrace) {
     MainWindow w;
     w.resize(1500, 900);
@@ -734,6 +765,28 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     EXPECT_EQ(run("--lesson 99 --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_EQ(run("--lesson 6 --scene default --screenshot '" + c.string() + "' 2>/dev/null"), 2);
     EXPECT_FALSE(fs::exists(c));
+    // A FIFO as the screenshot: refused in one line, not opened and waited on (it hung); a
+    // folder that does not exist: the same, and nothing written.
+    const fs::path fifo = dir / "pipe.png", err = dir / "err.txt";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const int status = std::system(("timeout 60 '" RAYSTEP_APP "' --scene lecture-grid --screenshot '" +
+                                    fifo.string() + "' 2>'" + err.string() + "' </dev/null")
+                                       .c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);  // 124: it hung on the FIFO
+    std::ifstream errIn(err);
+    const std::string message((std::istreambuf_iterator<char>(errIn)),
+                              std::istreambuf_iterator<char>());
+    // One error line naming the file (Qt may add its own warnings on other lines).
+    const std::size_t at = message.find("raystep: error: --screenshot ");
+    ASSERT_NE(at, std::string::npos) << message;
+    const std::string errLine = message.substr(at, message.find('\n', at) - at);
+    EXPECT_NE(errLine.find("pipe.png: cannot write: is not a regular file"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("raystep: error:", at + 1), std::string::npos) << message;
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_EQ(run("--scene lecture-grid --screenshot '" + (dir / "no" / "x.png").string() +
+                  "' 2>/dev/null"),
+              2);
     fs::remove_all(dir);
 }
 
