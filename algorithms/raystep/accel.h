@@ -85,6 +85,10 @@ struct AccelOptions {
     GridOptions grid;
     KdTreeOptions kdtree;
     BvhOptions bvh;
+    /// The build's progress callback, whichever structure is built (nullptr: none).
+    void setProgress(const ProgressFn& progress) {
+        grid.progress = kdtree.progress = bvh.progress = progress;
+    }
 };
 
 /// Builds the chosen structure over `scene` (which must outlive it).

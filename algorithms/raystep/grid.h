@@ -30,6 +30,7 @@ struct GridOptions {
     static constexpr std::size_t kMaxReferences = std::size_t(1) << 27;  // 512 MiB of listings
     std::size_t maxCells = kMaxCells;  // the caps in force (tests lower them)
     std::size_t maxReferences = kMaxReferences;
+    ProgressFn progress;  // build progress (share of the primitives listed); may cancel
 };
 
 template <typename Prims>

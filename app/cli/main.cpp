@@ -95,8 +95,7 @@ int runRender(const RenderArgs& a) {
     std::optional<Accelerator> accel;
     {
         cli::ProgressBar buildBar("build " + cli::describeAccel(choice));
-        choice.options.kdtree.progress =
-            choice.options.bvh.progress = [&](double f) { return buildBar.update(f); };
+        choice.options.setProgress([&](double f) { return buildBar.update(f); });
         accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
         buildBar.finish();
     }

@@ -87,8 +87,7 @@ int runBuild(const BuildArgs& a) {
     EventLog* record = a.events.empty() ? nullptr : &log;
     BuildSummary summary;
     ProgressBar bar("build " + describeAccel(choice));
-    choice.options.kdtree.progress =
-        choice.options.bvh.progress = [&](double f) { return bar.update(f); };
+    choice.options.setProgress([&](double f) { return bar.update(f); });
     if (const auto* s3 = std::get_if<Scene>(&any))
         if (auto problem = checkKernelRange(a.scene, *s3, choice)) return fail(*problem);
     const SceneInfo scene = infoOf(any);
@@ -312,8 +311,7 @@ int runCompare(const CompareArgs& a) {
         AccelChoice c = base;
         c.options.kdtree.split = c.options.bvh.split = split;
         ProgressBar buildBar("build " + describeAccel(c));
-        c.options.kdtree.progress =
-            c.options.bvh.progress = [&](double f) { return buildBar.update(f); };
+        c.options.setProgress([&](double f) { return buildBar.update(f); });
         const Accelerator accel = buildAccelerator(*scene, c.kind, c.kernels, c.options);
         buildBar.finish();
         BuildSummary b = summarize(accel);

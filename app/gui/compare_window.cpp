@@ -23,8 +23,7 @@ CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKi
         AccelOptions o;
         o.kdtree.split = o.bvh.split = kSplits[i];
         if (progress)
-            o.kdtree.progress =
-                o.bvh.progress = [&progress, i](double f) { return progress((i + f) / 3.0); };
+            o.setProgress([&progress, i](double f) { return progress((i + f) / 3.0); });
         p[i] = Session::prepare(scene, kind, o);
     }
     return p;

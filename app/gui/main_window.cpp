@@ -352,7 +352,7 @@ void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
             .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
         [path = nameOrPath.toStdString(), kind, base](const ProgressFn& progress) {
             AccelOptions options = base;
-            options.kdtree.progress = options.bvh.progress = progress;
+            options.setProgress(progress);
             return Session::prepare(path, kind, options);
         },
         [this, nameOrPath, quiet, renderImage](SceneRef&& scene, const TaskOutcome& outcome) {
@@ -524,7 +524,7 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
         TaskKind::Scene, tr("Opening lesson %1: %2...").arg(lesson.number).arg(title),
         [lesson](const ProgressFn& progress) {
             AccelOptions options = lesson.options;
-            options.kdtree.progress = options.bvh.progress = progress;
+            options.setProgress(progress);
             Opened o;
             o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
             o.trace = recordLessonTrace(lesson, o.scene->scene,

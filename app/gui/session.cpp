@@ -17,7 +17,7 @@ void buildIn(LoadedScene& l, const AccelOptions& options) {
     else
         l.accel3D = buildAccelerator(std::get<Scene>(l.scene), l.kind, {}, options);
     // The progress callback belonged to this build only.
-    l.options.kdtree.progress = l.options.bvh.progress = nullptr;
+    l.options.setProgress(nullptr);
 }
 }  // namespace
 
@@ -45,7 +45,7 @@ SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& opt
 LogRef Session::recordBuild(const SceneRef& scene, const ProgressFn& progress) {
     auto log = std::make_shared<EventLog>();
     AccelOptions options = scene->options;
-    options.kdtree.progress = options.bvh.progress = progress;
+    options.setProgress(progress);
     if (const Scene2D* s2 = std::get_if<Scene2D>(&scene->scene))
         buildAccelerator2D(*s2, scene->kind, options, log.get());
     else

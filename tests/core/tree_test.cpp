@@ -700,13 +700,14 @@ namespace {
 
 TEST(Build, ProgressRisesToTheEndAndCanCancel) {
     const Scene s = loadBuiltinScene("stadium");
-    for (AccelKind kind : {AccelKind::KdTree, AccelKind::Bvh}) {
+    for (AccelKind kind : {AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh}) {
+        SCOPED_TRACE(accelKindName(kind));
         std::vector<double> seen;
         AccelOptions o;
-        o.kdtree.progress = o.bvh.progress = [&](double f) {
+        o.setProgress([&](double f) {
             seen.push_back(f);
             return true;
-        };
+        });
         buildAccelerator(s, kind, {}, o);
         ASSERT_GT(seen.size(), 10u);
         EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
@@ -714,10 +715,10 @@ TEST(Build, ProgressRisesToTheEndAndCanCancel) {
         EXPECT_LE(seen.back(), 1.0);
         // Asked to stop at 30%: the build stops with BuildCancelled, and soon.
         int calls = 0;
-        o.kdtree.progress = o.bvh.progress = [&](double f) {
+        o.setProgress([&](double f) {
             ++calls;
             return f < 0.3;
-        };
+        });
         EXPECT_THROW(buildAccelerator(s, kind, {}, o), BuildCancelled);
         EXPECT_LT(calls, 40);
     }
