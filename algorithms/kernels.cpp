@@ -99,9 +99,9 @@ std::optional<std::string> rayRangeProblem(Precision p, double reach, double dir
         return "the origin reaches " + g3(std::abs(reach)) + ", beyond " + g3(r.largest) +
                " where the " + std::string(name(p)) + " intersection kernels are exact";
     if (std::abs(dirLargest) > r.largest || std::abs(dirLargest) < r.smallest)
-        return "the direction's largest component is " + g3(std::abs(dirLargest)) +
-               ", outside " + g3(r.smallest) + " to " + g3(r.largest) + " where the " +
-               std::string(name(p)) + " intersection kernels are exact (its square overflows "
+        return "the direction's largest component is " + g3(std::abs(dirLargest)) + ", outside " +
+               g3(r.smallest) + " to " + g3(r.largest) + " where the " + std::string(name(p)) +
+               " intersection kernels are exact (its square overflows "
                "or underflows)";
     return std::nullopt;
 }

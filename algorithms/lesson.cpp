@@ -210,9 +210,9 @@ void readTrace(const Reader& r, const json& j, const std::string& path, LessonTr
             double n[4];
             for (int i = 0; i < 4; ++i) n[i] = r.number(v[i], JsonLineMap::element(p, i));
             if (n[2] == 0.0 && n[3] == 0.0) r.fail(p, "the direction must not be zero");
-            if (const auto problem = rayRangeProblem(
-                    Precision::Double, std::max(std::abs(n[0]), std::abs(n[1])),
-                    std::max(std::abs(n[2]), std::abs(n[3]))))
+            if (const auto problem =
+                    rayRangeProblem(Precision::Double, std::max(std::abs(n[0]), std::abs(n[1])),
+                                    std::max(std::abs(n[2]), std::abs(n[3]))))
                 r.fail(p, *problem);
             t.kind = LessonTrace::Kind::Ray2D;
             t.ray = Ray2{Vec2(n[0], n[1]), Vec2(n[2], n[3])};

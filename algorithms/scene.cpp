@@ -275,8 +275,8 @@ double smallestSize(const Scene& scene) {
     double size = std::numeric_limits<double>::infinity();
     for (const Sphere& s : scene.spheres) size = std::min(size, s.radius);
     for (const Triangle& t : scene.triangles) {
-        const double edge = std::max({maxAbsComponent(t.b - t.a), maxAbsComponent(t.c - t.b),
-                                      maxAbsComponent(t.a - t.c)});
+        const double edge = std::max(
+            {maxAbsComponent(t.b - t.a), maxAbsComponent(t.c - t.b), maxAbsComponent(t.a - t.c)});
         if (edge > 0.0) size = std::min(size, edge);
     }
     return std::isinf(size) ? 0.0 : size;

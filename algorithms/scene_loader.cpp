@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 namespace raystep {
@@ -486,8 +486,10 @@ Scene readScene(std::string_view text, const std::string& fileName, const FileRe
     // The intersection kernels are exact within a range of magnitudes (kernels.h): what reaches
     // past it is refused by name, rather than rendered with silent misses.
     const double largest = kernelRange(Precision::Double).largest;
-    double scale = std::max(maxAbsComponent(scene.camera.eye), maxAbsComponent(scene.camera.lookAt));
-    if (const auto problem = kernelRangeProblem(Precision::Double, scale); problem && scale > largest)
+    double scale =
+        std::max(maxAbsComponent(scene.camera.eye), maxAbsComponent(scene.camera.lookAt));
+    if (const auto problem = kernelRangeProblem(Precision::Double, scale);
+        problem && scale > largest)
         r.fail(root.contains("camera") ? "camera" : "", *problem);
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const double m = maxAbsComponent(scene.lights[i].position);
@@ -514,12 +516,14 @@ Scene readScene(std::string_view text, const std::string& fileName, const FileRe
                                           maxAbsComponent(t.a - t.c)});
             if (edge > 0.0) size = std::min(size, edge);  // a degenerate one is never hit
         }
-        if (const auto problem = primitiveRangeProblem(Precision::Double, m, std::isinf(size) ? 0.0 : size))
+        if (const auto problem =
+                primitiveRangeProblem(Precision::Double, m, std::isinf(size) ? 0.0 : size))
             r.fail(path, *problem);
         scale = std::max(scale, m);
     }
     // A scene too small as a whole (each object alone may be as small as it likes).
-    if (const auto problem = kernelRangeProblem(Precision::Double, scale)) r.fail("objects", *problem);
+    if (const auto problem = kernelRangeProblem(Precision::Double, scale))
+        r.fail("objects", *problem);
     return scene;
 }
 
@@ -560,8 +564,8 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
         ray.origin = readVec2(r, v["origin"], JsonLineMap::child(p, "origin"));
         ray.dir = readVec2(r, v["dir"], JsonLineMap::child(p, "dir"));
         if (ray.dir == Vec2(0.0)) r.fail(JsonLineMap::child(p, "dir"), "must not be zero");
-        if (const auto problem = rayRangeProblem(Precision::Double, maxAbs2(ray.origin),
-                                                 maxAbs2(ray.dir)))
+        if (const auto problem =
+                rayRangeProblem(Precision::Double, maxAbs2(ray.origin), maxAbs2(ray.dir)))
             r.fail(p, *problem);
         scene.exampleRay = ray;
     });
@@ -575,8 +579,8 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
                 r.fail(cp, "a circle needs a center and a radius");
             const Circle2 c{readVec2(r, v[i]["center"], JsonLineMap::child(cp, "center")),
                             r.positive(v[i]["radius"], JsonLineMap::child(cp, "radius"))};
-            if (const auto problem = primitiveRangeProblem(
-                    Precision::Double, maxAbs2(c.center) + c.radius, c.radius))
+            if (const auto problem = primitiveRangeProblem(Precision::Double,
+                                                           maxAbs2(c.center) + c.radius, c.radius))
                 r.fail(cp, *problem);
             scene.circles.push_back(c);
         }
@@ -592,9 +596,9 @@ Scene2D readScene2D(std::string_view text, const std::string& fileName) {
             const Segment2 seg{readVec2(r, v[i]["from"], JsonLineMap::child(sp, "from")),
                                readVec2(r, v[i]["to"], JsonLineMap::child(sp, "to"))};
             if (seg.a == seg.b) r.fail(JsonLineMap::child(sp, "to"), "the segment has no length");
-            if (const auto problem =
-                    primitiveRangeProblem(Precision::Double, std::max(maxAbs2(seg.a), maxAbs2(seg.b)),
-                                          maxAbs2(seg.b - seg.a)))
+            if (const auto problem = primitiveRangeProblem(Precision::Double,
+                                                           std::max(maxAbs2(seg.a), maxAbs2(seg.b)),
+                                                           maxAbs2(seg.b - seg.a)))
                 r.fail(sp, *problem);
             scene.segments.push_back(seg);
         }

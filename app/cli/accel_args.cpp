@@ -139,8 +139,8 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
                    std::to_string(GridOptions::kMaxCellsPerAxis);
         const double cells = (*res)[0] * (*res)[1] * (*res)[2];
         if (cells > double(GridOptions::kMaxCells))
-            return "--grid-res " + a.gridRes + ": " + std::to_string(static_cast<long long>(cells)) +
-                   " cells, more than the grid's " +
+            return "--grid-res " + a.gridRes + ": " +
+                   std::to_string(static_cast<long long>(cells)) + " cells, more than the grid's " +
                    std::to_string(GridOptions::kMaxCells) + " (2^24)";
         o.grid.res = std::array<int, 3>{int((*res)[0]), int((*res)[1]), int((*res)[2])};
     }

@@ -50,9 +50,11 @@ std::optional<std::string> checkOutputs(
         if (const std::string why = writeProblem(path); !why.empty())
             return option + " " + path + ": " + why;
         for (const std::string& input : inputs)
-            if (std::error_code ec; std::filesystem::is_regular_file(input, ec) && sameFile(input, path))
-                return option + " " + path + ": the command reads this file; writing over it "
-                                             "would lose it";
+            if (std::error_code ec;
+                std::filesystem::is_regular_file(input, ec) && sameFile(input, path))
+                return option + " " + path +
+                       ": the command reads this file; writing over it "
+                       "would lose it";
         for (std::size_t j = 0; j < i; ++j) {
             const auto& [otherOption, otherPath] = optionsAndPaths[j];
             if (!otherPath.empty() && sameFile(otherPath, path))

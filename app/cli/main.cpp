@@ -65,9 +65,8 @@ int runRender(const RenderArgs& a) {
         return fail("-o " + output + ": the image is written as PNG; name it *.png");
     if (!a.heatmap.empty() && !cli::hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
-    if (auto problem =
-            cli::checkOutputs({{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}},
-                              {a.scene}))
+    if (auto problem = cli::checkOutputs(
+            {{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}}, {a.scene}))
         return fail(*problem);
     cli::AccelChoice choice;
     if (auto problem = cli::resolveAccel(a.accel, choice)) return fail(*problem);

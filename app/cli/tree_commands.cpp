@@ -175,9 +175,9 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
         if (!v || v->size() != 4 || ((*v)[2] == 0 && (*v)[3] == 0))
             return fail("--ray " + a.ray + ": expected OX,OY,DX,DY with a non-zero direction");
         ray = Ray2{Vec2((*v)[0], (*v)[1]), Vec2((*v)[2], (*v)[3])};
-        if (auto problem = rayRangeProblem(
-                Precision::Double, std::max(std::abs(ray.origin.x), std::abs(ray.origin.y)),
-                std::max(std::abs(ray.dir.x), std::abs(ray.dir.y))))
+        if (auto problem = rayRangeProblem(Precision::Double,
+                                           std::max(std::abs(ray.origin.x), std::abs(ray.origin.y)),
+                                           std::max(std::abs(ray.dir.x), std::abs(ray.dir.y))))
             return fail("--ray " + a.ray + ": " + *problem);
     } else if (scene.exampleRay) {
         ray = *scene.exampleRay;

@@ -22,8 +22,7 @@ CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKi
     for (int i = 0; i < 3; ++i) {
         AccelOptions o;
         o.kdtree.split = o.bvh.split = kSplits[i];
-        if (progress)
-            o.setProgress([&progress, i](double f) { return progress((i + f) / 3.0); });
+        if (progress) o.setProgress([&progress, i](double f) { return progress((i + f) / 3.0); });
         p[i] = Session::prepare(scene, kind, o);
     }
     return p;

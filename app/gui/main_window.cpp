@@ -13,9 +13,9 @@
 #include "raystep/tracer.h"
 
 #include <QAbstractListModel>
-#include <QBuffer>
 #include <QAction>
 #include <QApplication>
+#include <QBuffer>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>

@@ -40,9 +40,11 @@ class Cli : public ::testing::Test {
         s << in.rdbuf();
         return s.str();
     }
+    /// Runs raystep-cli in the test's folder. Ended after 120 s: a command blocked on a FIFO or
+    /// in an endless loop fails its test (exit 124) instead of hanging the suite.
     CliRun run(const std::string& args, const std::string& stdoutTo = "out.txt") {
-        const std::string cmd = std::string("cd '") + dir.string() + "' && " + runAs + "'" +
-                                RAYSTEP_CLI "' " + args + " > " + stdoutTo +
+        const std::string cmd = std::string("cd '") + dir.string() + "' && timeout 120 " + runAs +
+                                "'" + RAYSTEP_CLI "' " + args + " > " + stdoutTo +
                                 " 2> err.txt < /dev/null";
         const int status = std::system(cmd.c_str());
         CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
@@ -751,24 +753,11 @@ TEST_F(Cli, LessonBadInput) {
 
 class CliReaders : public Cli {
   protected:
-    /// As run(), but the command is ended after 60 s: a reader blocked on a FIFO fails the test
-    /// instead of hanging it.
-    CliRun runBounded(const std::string& args) {
-        const std::string cmd = std::string("cd '") + dir.string() +
-                                "' && timeout 60 '" RAYSTEP_CLI "' " + args +
-                                " > out.txt 2> err.txt < /dev/null";
-        const int status = std::system(cmd.c_str());
-        CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
-                 slurp(dir / "err.txt")};
-        fs::remove(dir / "out.txt");
-        fs::remove(dir / "err.txt");
-        return r;
-    }
     /// Exit code 2, one "raystep-cli: error:" line containing `expected`, no new file.
     void expectOneLine(const std::string& args, const std::string& expected) {
         std::size_t before = 0;
         for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++before;
-        const CliRun r = runBounded(args);
+        const CliRun r = run(args);
         EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
@@ -838,7 +827,6 @@ TEST_F(Cli, ControlCharactersInOptionsStayOneLine) {
         "--grid 4,\\r3");
 }
 
-
 // --------------------------------------------------------------------------------------------
 // Numbers at the extremes: the grid's lambda, the DDA's crossing times, the kernels' range.
 
@@ -899,7 +887,8 @@ TEST_F(Cli, FloatKernelsRefuseAScenePastTheirRange) {
         EXPECT_EQ(r.code, 2) << cmd << "\n" << r.err;
         EXPECT_NE(r.err.find("far.json: --precision float: coordinates reach 1e+10"),
                   std::string::npos)
-            << cmd << "\n" << r.err;
+            << cmd << "\n"
+            << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
     EXPECT_FALSE(fs::exists(dir / "f.png"));
@@ -922,10 +911,10 @@ TEST_F(Cli, OutputsNeverOverwriteTheInputOrHaveNoName) {
     write("my.json", R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]},
         "objects": [{"type": "sphere", "radius": 1}]})");
     const std::string scene = slurp(dir / "my.json");
-    for (const char* cmd : {"trace my.json --pixel 0,0 -o my.json",
-                            "build my.json --events my.json",
-                            "render my.json -o x.png --stats my.json --width 4 --height 4",
-                            "render my.json -o x.png --stats ./my.json --width 4 --height 4"}) {
+    for (const char* cmd :
+         {"trace my.json --pixel 0,0 -o my.json", "build my.json --events my.json",
+          "render my.json -o x.png --stats my.json --width 4 --height 4",
+          "render my.json -o x.png --stats ./my.json --width 4 --height 4"}) {
         const CliRun r = run(cmd);
         EXPECT_EQ(r.code, 2) << cmd << "\n" << r.err;
         EXPECT_NE(r.err.find("the command reads this file"), std::string::npos) << r.err;
@@ -933,9 +922,9 @@ TEST_F(Cli, OutputsNeverOverwriteTheInputOrHaveNoName) {
         EXPECT_FALSE(fs::exists(dir / "x.png")) << cmd;
     }
     // An empty file name given on purpose is refused before any work, not taken as "none".
-    for (const char* cmd : {"build --events ''", "trace --pixel 0,0 -o ''", "render -o ''",
-                            "render --stats ''", "render --heatmap ''",
-                            "lesson check 6 --answers ''"}) {
+    for (const char* cmd :
+         {"build --events ''", "trace --pixel 0,0 -o ''", "render -o ''", "render --stats ''",
+          "render --heatmap ''", "lesson check 6 --answers ''"}) {
         const CliRun r = run(cmd);
         EXPECT_EQ(r.code, 2) << cmd << "\n" << r.err;
         EXPECT_NE(r.err.find("empty file name"), std::string::npos) << cmd << "\n" << r.err;
@@ -944,9 +933,10 @@ TEST_F(Cli, OutputsNeverOverwriteTheInputOrHaveNoName) {
 
 TEST_F(Cli, DdaRefusesAGridThatFloatCannotHold) {
     // In float, --max rounds onto --min: the walk has no grid, which is bad input, not a miss.
-    expectBadInput("dda --grid 4,4 --min 1,0 --max 1.00000001,1 --origin 0,0.5 --dir 1,0 "
-                   "--precision float",
-                   "not above its lower corner");
+    expectBadInput(
+        "dda --grid 4,4 --min 1,0 --max 1.00000001,1 --origin 0,0.5 --dir 1,0 "
+        "--precision float",
+        "not above its lower corner");
 }
 
 TEST_F(Cli, LessonCheckPrintsAStudentsAnswerAsOneEscapedLine) {

@@ -243,8 +243,8 @@ TEST(Lessons, ABadLessonFileNamesLineAndKey) {
     big.replace(big.find("{\"accel\": \"grid\"}"), 17,
                 "{\"accel\": \"grid\", \"grid_res\": [512, 512, 512]}");
     expectLessonError(big, 9, "setup.grid_res", "more than the grid's 16777216");
-    expectLessonError(lessonWith(",\n\"sweep\": {\"grid_res\": [4, 300]}"), 11,
-                      "sweep.grid_res[1]", "256");
+    expectLessonError(lessonWith(",\n\"sweep\": {\"grid_res\": [4, 300]}"), 11, "sweep.grid_res[1]",
+                      "256");
     expectLessonError(
         "{\"format\": \"raystep-lesson\", \"version\": 1, \"id\": \"t\", \"number\": 1,\n"
         "\"title\": {\"it\": \"Titolo\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"s\", \"trace\": "

@@ -673,13 +673,16 @@ TEST(SceneLoaderHostile, GeometryOutsideTheKernelsRangeIsRefusedByName) {
         EXPECT_TRUE(contains(k, "beyond 1e+60")) << k;
     }
     // A light far away.
-    std::string k = keyOf("{" + camera +
-                          "\"lights\": [{\"position\": [0, 0, 0]}, {\"position\": [0, 3e100, 0]}],\n"
-                          "\"objects\": [" + unit + "]}");
+    std::string k =
+        keyOf("{" + camera +
+              "\"lights\": [{\"position\": [0, 0, 0]}, {\"position\": [0, 3e100, 0]}],\n"
+              "\"objects\": [" +
+              unit + "]}");
     EXPECT_EQ(k.substr(0, k.find(" | ")), "lights[1].position") << k;
     // A whole scene below the range: camera and sphere within 1e-70 of the origin.
-    k = keyOf("{\"camera\": {\"eye\": [0, 0, 5e-71], \"look_at\": [0, 0, 0]},\n"
-              "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e-71}]}");
+    k = keyOf(
+        "{\"camera\": {\"eye\": [0, 0, 5e-71], \"look_at\": [0, 0, 0]},\n"
+        "\"objects\": [{\"type\": \"sphere\", \"radius\": 1e-71}]}");
     EXPECT_EQ(k.substr(0, k.find(" | ")), "objects[0]") << k;
     EXPECT_TRUE(contains(k, "underflow")) << k;
     // A primitive too small for its squares: a sphere of radius 1e-165 just ahead of the eye

@@ -493,7 +493,8 @@ TEST(App, ClickingAViewTakesTheKeysFromTheAnswerBox) {
     ASSERT_TRUE(openLesson(w, "3"));
     auto* answer = w.lessonPanel()->findChild<QLineEdit*>();
     ASSERT_NE(answer, nullptr);
-    for (QWidget* view : {static_cast<QWidget*>(w.view3D()), static_cast<QWidget*>(w.imageView())}) {
+    for (QWidget* view :
+         {static_cast<QWidget*>(w.view3D()), static_cast<QWidget*>(w.imageView())}) {
         SCOPED_TRACE(view->metaObject()->className());
         answer->setFocus();
         answer->clear();
@@ -769,9 +770,10 @@ TEST(App, ScreenshotOptionWritesTheWindow) {
     // folder that does not exist: the same, and nothing written.
     const fs::path fifo = dir / "pipe.png", err = dir / "err.txt";
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-    const int status = std::system(("timeout 60 '" RAYSTEP_APP "' --scene lecture-grid --screenshot '" +
-                                    fifo.string() + "' 2>'" + err.string() + "' </dev/null")
-                                       .c_str());
+    const int status =
+        std::system(("timeout 60 '" RAYSTEP_APP "' --scene lecture-grid --screenshot '" +
+                     fifo.string() + "' 2>'" + err.string() + "' </dev/null")
+                        .c_str());
     EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);  // 124: it hung on the FIFO
     std::ifstream errIn(err);
     const std::string message((std::istreambuf_iterator<char>(errIn)),
