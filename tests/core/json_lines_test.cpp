@@ -1,4 +1,6 @@
 #include "raystep/json_lines.h"
+#include "raystep/lesson.h"
+#include "raystep/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -92,6 +94,27 @@ TEST(JsonLineMap, AnyBytesAreSafe) {
         EXPECT_GE(map.lineOf("[0].x"), 1);
         EXPECT_LE(map.lineOf("[1]"),
                   1 + static_cast<int>(std::count(text.begin(), text.end(), '\n')));
+    }
+}
+
+// The two inputs the first fuzz sessions found (docs/reliability.md): the line map's array loop
+// never moved past a '}' it met after a NUL byte (nlohmann stops at one, the map read on), nor
+// after a // comment ended by a CR (nlohmann ends it there, the map only at a LF). Both must end,
+// and a reader must refuse them as its own error.
+TEST(JsonLineMap, TheFuzzersFindingsEnd) {
+    const std::string nul(
+        "//\0"
+        "1\0\n{\"a\":[0}",
+        14);
+    const std::string cr = "{\"a\": [2//\r],\n\"b\": {}}";
+    for (const std::string& text : {nul, cr}) {
+        const JsonLineMap map(text);
+        EXPECT_GE(map.lineOf("a[0]"), 1);
+        const FileResolver noFiles = [](const std::string&) {
+            return std::optional<std::string>();
+        };
+        EXPECT_THROW(loadSceneText(text, "f.json", noFiles), SceneError);
+        EXPECT_THROW(loadLessonText(text, "f.json"), LessonError);
     }
 }
 
