@@ -521,7 +521,7 @@ Scene readScene(std::string_view text, const std::string& fileName, const FileRe
             r.fail(path, *problem);
         scale = std::max(scale, m);
     }
-    // A scene too small as a whole (each object alone may be as small as it likes).
+    // A scene too small as a whole: its objects pass their own check only just, near the origin.
     if (const auto problem = kernelRangeProblem(Precision::Double, scale))
         r.fail("objects", *problem);
     return scene;
