@@ -412,14 +412,7 @@ void MainWindow::openFailed(const QString& what, const TaskOutcome& outcome, boo
         finishOpen(false, tr("cancelled"));
         return;
     }
-    QString message;
-    try {
-        std::rethrow_exception(outcome.error);
-    } catch (const std::exception& e) {
-        message = QString::fromUtf8(e.what());
-    } catch (...) {
-        message = tr("unknown error");
-    }
+    const QString message = outcome.errorText();
     if (!session_.hasScene()) {
         // Nothing was open before (a bad scene at start-up): say so where the user looks.
         lesson_->showText(tr("## Nothing is open\n\n%1 could not be opened:\n\n    %2\n\n"
@@ -487,14 +480,7 @@ void MainWindow::renderImage() {
                 imageView_->renderCancelled();
                 statusBar()->showMessage(tr("Render cancelled"));
             } else if (outcome.error) {
-                QString why;
-                try {
-                    std::rethrow_exception(outcome.error);
-                } catch (const std::exception& e) {
-                    why = QString::fromUtf8(e.what());
-                } catch (...) {
-                    why = tr("unknown error");
-                }
+                const QString why = outcome.errorText();
                 imageView_->renderFailed(why);
                 statusBar()->showMessage(tr("Render failed: %1").arg(why));
             } else {
@@ -747,12 +733,7 @@ void MainWindow::openCompare() {
                 return;
             }
             if (outcome.error) {
-                try {
-                    std::rethrow_exception(outcome.error);
-                } catch (const std::exception& e) {
-                    warn(tr("Compare"), QString::fromUtf8(e.what()));
-                } catch (...) {
-                }
+                warn(tr("Compare"), outcome.errorText());
                 return;
             }
             // A window of its own that closes with this one.

@@ -6,6 +6,17 @@
 
 namespace raystep::gui {
 
+QString TaskOutcome::errorText() const {
+    if (!error) return {};
+    try {
+        std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+        return QString::fromUtf8(e.what());
+    } catch (...) {
+        return QObject::tr("unknown error");
+    }
+}
+
 TaskRunner::TaskRunner(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
     // Polling keeps every hand-over on the GUI thread: a worker never calls into a QObject.
     timer_->setInterval(15);

@@ -33,6 +33,9 @@ struct TaskOutcome {
     bool superseded = false;   // a newer task of the same kind replaced it: nobody waits for it
     std::exception_ptr error;  // what the work threw, BuildCancelled aside
     bool ok() const { return !cancelled && !error; }
+    /// The error's message (what() of the exception thrown), "unknown error" for anything else,
+    /// empty without an error.
+    QString errorText() const;
 };
 
 class TaskRunner : public QObject {
