@@ -1,12 +1,12 @@
 #include "raystep/lesson.h"
 
-#include "json_reader.h"
-#include "raystep/kernels.h"
-#include "raystep/names.h"
-#include "raystep/replay.h"
-#include "raystep/resources.h"
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/base/json_reader.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/base/names.h"
+#include "raystep/trace/replay.h"
+#include "raystep/scene/resources.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <algorithm>
 #include <charconv>

@@ -5,12 +5,12 @@
 // Usage: raystep_accuracy [--rays N] [--out FILE.json] [--images DIR]
 #include "exact.h"
 
-#include "raystep/accel.h"
-#include "raystep/image.h"
-#include "raystep/kernels.h"
-#include "raystep/rng.h"
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/accel/accel.h"
+#include "raystep/render/image.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/base/rng.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <nlohmann/json.hpp>
 

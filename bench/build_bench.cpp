@@ -2,9 +2,9 @@
 // recording: bytes per event and the slowdown of a traced ray. Run: build/bench/raystep_bench_build
 // (scripts/measure_build.sh plots the scaling into docs/images/build-scaling.png).
 #include "meshes.h"
-#include "raystep/accel.h"
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/accel/accel.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <benchmark/benchmark.h>
 

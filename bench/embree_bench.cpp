@@ -3,9 +3,9 @@
 // (origins in the mesh's bounds, uniform directions). Ratios go to docs/performance.md.
 // Run: build/bench/raystep_bench_embree
 #include "meshes.h"
-#include "raystep/accel.h"
-#include "raystep/fast_prims.h"
-#include "raystep/rng.h"
+#include "raystep/accel/accel.h"
+#include "raystep/scene/fast_prims.h"
+#include "raystep/base/rng.h"
 
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>

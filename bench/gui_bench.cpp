@@ -5,7 +5,7 @@
 #include "main_window.h"
 #include "view2d.h"
 
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 #include <QApplication>

@@ -1,7 +1,7 @@
 #pragma once
 // Test meshes of any size for the benchmarks: the stadium's torus-knot tube (see
 // scripts/make_stadium_mesh.py), tessellated to about `triangles` triangles.
-#include "raystep/scene.h"
+#include "raystep/scene/scene.h"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Shows that recording off costs nothing: compiles algorithms/grid.cpp as it is and from a copy of
+# Shows that recording off costs nothing: compiles algorithms/raystep/accel/grid.cpp as it is and from a copy of
 # the sources with every recording hook (`if constexpr (Rec::kEnabled) ...`) deleted, and compares
 # the machine code of the NullRecorder walks. Prints IDENTICAL or the difference
 # (docs/performance.md, "Recording").
@@ -8,7 +8,7 @@ ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 cp -r "$ROOT/algorithms" "$TMP/algorithms"
-/usr/bin/python3 - "$TMP/algorithms/grid.cpp" "$TMP/algorithms/raystep/mailbox.h" <<'PY'
+/usr/bin/python3 - "$TMP/algorithms/raystep/accel/grid.cpp" "$TMP/algorithms/raystep/accel/mailbox.h" <<'PY'
 import sys
 HOOK = "if constexpr (Rec::kEnabled)"
 def strip(s):
@@ -39,8 +39,8 @@ for path in sys.argv[1:]:
     open(path, "w").write(strip(text))
 PY
 FLAGS=(-std=c++20 -O3 -DNDEBUG)
-g++ "${FLAGS[@]}" -I"$ROOT/algorithms" -c "$ROOT/algorithms/grid.cpp" -o "$TMP/with.o"
-g++ "${FLAGS[@]}" -I"$TMP/algorithms" -c "$TMP/algorithms/grid.cpp" -o "$TMP/without.o"
+g++ "${FLAGS[@]}" -I"$ROOT/algorithms" -c "$ROOT/algorithms/raystep/accel/grid.cpp" -o "$TMP/with.o"
+g++ "${FLAGS[@]}" -I"$TMP/algorithms" -c "$TMP/algorithms/raystep/accel/grid.cpp" -o "$TMP/without.o"
 for f in with without; do
   objdump -d --no-show-raw-insn -C "$TMP/$f.o" |
     awk '/^[0-9a-f]+ <.*walk<(true|false), raystep::NullRecorder>/{p=1; print; next} p&&/^$/{p=0} p' |
@@ -48,7 +48,7 @@ for f in with without; do
 done
 lines=$(wc -l < "$TMP/with.s")
 [ "$lines" -gt 100 ] || { echo "no NullRecorder walk found in the object code" >&2; exit 1; }
-if grep -q "kEnabled" "$TMP/algorithms/grid.cpp" "$TMP/algorithms/raystep/mailbox.h"; then
+if grep -q "kEnabled" "$TMP/algorithms/raystep/accel/grid.cpp" "$TMP/algorithms/raystep/accel/mailbox.h"; then
   echo "a hook was left in the stripped copy" >&2; exit 1
 fi
 if diff -q "$TMP/with.s" "$TMP/without.s" >/dev/null; then

@@ -3,11 +3,11 @@
 // the structure to build, the trace to record, steps that put the replay somewhere, and exercises
 // whose right answer is read from the recorded trace, never written in the lesson file.
 // The app shows them; `raystep-cli lesson` lists, validates and grades them.
-#include "raystep/accel.h"
-#include "raystep/events.h"
-#include "raystep/file_error.h"
-#include "raystep/scene.h"
-#include "raystep/scene2d.h"
+#include "raystep/accel/accel.h"
+#include "raystep/trace/events.h"
+#include "raystep/base/file_error.h"
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
 
 #include <cstddef>
 #include <map>

@@ -1,7 +1,7 @@
 #pragma once
 // The options that choose and tune an acceleration structure and the intersection kernels,
 // shared by render, build, trace and compare.
-#include "raystep/accel.h"
+#include "raystep/accel/accel.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,6 @@
 #include "common.h"
 
-#include "raystep/file_error.h"
+#include "raystep/base/file_error.h"
 
 #include <algorithm>
 #include <charconv>

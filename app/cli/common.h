@@ -1,7 +1,7 @@
 #pragma once
 // What every raystep-cli command shares: the one-line error, strict number parsing, and the
 // output files (checked before the work, written all or none after it).
-#include "raystep/image.h"
+#include "raystep/render/image.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,8 +2,8 @@
 
 #include "common.h"
 
-#include "raystep/dda.h"
-#include "raystep/kernels.h"
+#include "raystep/accel/dda.h"
+#include "raystep/geometry/kernels.h"
 
 #include <nlohmann/json.hpp>
 

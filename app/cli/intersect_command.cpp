@@ -2,7 +2,7 @@
 
 #include "common.h"
 
-#include "raystep/kernels.h"
+#include "raystep/geometry/kernels.h"
 
 #include <nlohmann/json.hpp>
 

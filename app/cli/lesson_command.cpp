@@ -4,7 +4,7 @@
 #include "progress.h"
 
 #include "raystep/lesson.h"
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 

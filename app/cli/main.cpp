@@ -7,10 +7,10 @@
 #include "progress.h"
 #include "tree_commands.h"
 
-#include "raystep/accel.h"
-#include "raystep/image.h"
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/accel/accel.h"
+#include "raystep/render/image.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -3,11 +3,11 @@
 #include "common.h"
 #include "progress.h"
 
-#include "raystep/image.h"
-#include "raystep/kernels.h"
-#include "raystep/scene_loader.h"
-#include "raystep/trace_io.h"
-#include "raystep/tracer.h"
+#include "raystep/render/image.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/trace/trace_io.h"
+#include "raystep/render/tracer.h"
 
 #include <tbb/info.h>
 #include <nlohmann/json.hpp>

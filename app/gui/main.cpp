@@ -4,7 +4,7 @@
 #include "main_window.h"
 #include "session.h"
 
-#include "raystep/file_error.h"
+#include "raystep/base/file_error.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

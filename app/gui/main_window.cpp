@@ -6,11 +6,11 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
-#include "raystep/file_error.h"
-#include "raystep/image.h"
-#include "raystep/scene_loader.h"
-#include "raystep/trace_io.h"
-#include "raystep/tracer.h"
+#include "raystep/base/file_error.h"
+#include "raystep/render/image.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/trace/trace_io.h"
+#include "raystep/render/tracer.h"
 
 #include <QAbstractListModel>
 #include <QAction>

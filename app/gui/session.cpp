@@ -1,7 +1,7 @@
 #include "session.h"
 
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <QStringList>
 

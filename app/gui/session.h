@@ -1,10 +1,10 @@
 #pragma once
 // What the app shows: a scene (3D or one of the lecture's 2D pictures), its structure, a recorded
 // log and the replay cursor over it. The views draw from it; they own no algorithm.
-#include "raystep/accel.h"
-#include "raystep/replay.h"
-#include "raystep/scene.h"
-#include "raystep/scene2d.h"
+#include "raystep/accel/accel.h"
+#include "raystep/trace/replay.h"
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
 
 #include <QImage>
 #include <QObject>

@@ -6,7 +6,8 @@
 //
 // There is no nested event loop: the window starts a task and goes on; the result arrives later
 // through the task's `done`, called from the runner's timer on the GUI thread.
-#include "raystep/accel_types.h"
+#include "raystep/accel/query.h"
+#include "raystep/base/progress.h"
 
 #include <QObject>
 #include <QString>

@@ -1,10 +1,10 @@
 // Every accelerator must find what brute force finds: the same nearest primitive at the same t,
 // for seeded random rays of every awkward kind, on every built-in scene.
-#include "raystep/accel.h"
+#include "raystep/accel/accel.h"
 #include "meshes.h"
-#include "raystep/rng.h"
-#include "raystep/scene_loader.h"
-#include "raystep/tracer.h"
+#include "raystep/base/rng.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/render/tracer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Primary rays: "project the pixels onto the scene". Directions by hand from the field of view.
-#include "raystep/camera.h"
+#include "raystep/scene/camera.h"
 
 #include <gtest/gtest.h>
 

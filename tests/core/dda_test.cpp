@@ -1,8 +1,8 @@
 // The DDA against an exact rational traversal written here: every cell whose interior the ray
 // crosses, in order. The reference lists every boundary crossing in rationals, sorts them, and
 // locates each stretch between two crossings by its midpoint: nothing of dda.h is used.
-#include "raystep/dda.h"
-#include "raystep/rng.h"
+#include "raystep/accel/dda.h"
+#include "raystep/base/rng.h"
 
 #include "exact.h"
 

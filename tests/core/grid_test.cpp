@@ -1,8 +1,8 @@
 // The uniform grid's resolution rule at the extremes of lambda, its memory caps, and the grid at
 // magnitudes where the DDA's crossing times leave double's range. Expected resolutions are worked
 // out by hand from the Cleary-Wyvill rule; hits are checked against brute force.
-#include "raystep/accel.h"
-#include "raystep/rng.h"
+#include "raystep/accel/accel.h"
+#include "raystep/base/rng.h"
 
 #include <gtest/gtest.h>
 

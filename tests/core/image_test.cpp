@@ -1,5 +1,5 @@
 // sRGB encoding by the formula of IEC 61966-2-1, the heat-map scale, and atomic PNG writing.
-#include "raystep/image.h"
+#include "raystep/render/image.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>

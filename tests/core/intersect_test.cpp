@@ -1,8 +1,8 @@
 // Intersection kernels at the extremes. Every expected answer comes from exact rational
 // arithmetic or 50-digit floats (tests/support/exact.h), never from the code under test.
-#include "raystep/kernels.h"
-#include "raystep/math.h"
-#include "raystep/rng.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/base/math.h"
+#include "raystep/base/rng.h"
 
 #include "exact.h"
 

@@ -1,6 +1,6 @@
-#include "raystep/json_lines.h"
+#include "raystep/base/json_lines.h"
 #include "raystep/lesson.h"
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // reference answer passes its own check and a wrong one fails; the references of the slides'
 // examples equal a hand computation; bad lesson, answers and progress files name line and key.
 #include "raystep/lesson.h"
-#include "raystep/replay.h"
-#include "raystep/scene_loader.h"
+#include "raystep/trace/replay.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

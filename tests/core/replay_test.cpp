@@ -1,8 +1,8 @@
 // Replay: the state at a cursor is what the lecture shows at that step, and seeking anywhere,
 // in any order, gives the state of a fold from the start.
-#include "raystep/replay.h"
-#include "raystep/accel.h"
-#include "raystep/scene_loader.h"
+#include "raystep/trace/replay.h"
+#include "raystep/accel/accel.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The scene loader: every built-in scene loads, good files give the documented defaults, and each
 // kind of bad input fails with the file, the line and the key of the problem.
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 #include "raystep/lesson.h"
-#include "raystep/trace_io.h"
+#include "raystep/trace/trace_io.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The local model and the secondary-ray directions against values computed by hand.
-#include "raystep/shading.h"
-#include "raystep/rng.h"
+#include "raystep/render/shading.h"
+#include "raystep/base/rng.h"
 
 #include "expect_color.h"
 

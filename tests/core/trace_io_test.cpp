@@ -1,6 +1,6 @@
 // The trace reader on hostile input (robustness review, issue 15): every field's type and every
 // id's range is checked, and every failure is one TraceError line naming the file, line and key.
-#include "raystep/trace_io.h"
+#include "raystep/trace/trace_io.h"
 
 #include <gtest/gtest.h>
 

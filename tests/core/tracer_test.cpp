@@ -1,7 +1,7 @@
 // The tracer on scenes small enough to shade by hand: each expected colour is worked out in the
 // comment beside it from the lecture's formulas, not from the code under test.
-#include "raystep/tracer.h"
-#include "raystep/scene_loader.h"
+#include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
 
 #include "expect_color.h"
 

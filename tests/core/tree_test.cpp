@@ -2,13 +2,13 @@
 // written here, the split sweep against counting by hand, the 2D lecture scenes, the event log
 // (its size, its cap, its file) and replay.
 #include "meshes.h"
-#include "raystep/accel.h"
-#include "raystep/rng.h"
-#include "raystep/round_outward.h"
-#include "raystep/scene2d.h"
-#include "raystep/scene_loader.h"
-#include "raystep/trace_io.h"
-#include "raystep/tracer.h"
+#include "raystep/accel/accel.h"
+#include "raystep/base/rng.h"
+#include "raystep/base/round_outward.h"
+#include "raystep/scene/scene2d.h"
+#include "raystep/scene/scene_loader.h"
+#include "raystep/trace/trace_io.h"
+#include "raystep/render/tracer.h"
 
 #include <gtest/gtest.h>
 

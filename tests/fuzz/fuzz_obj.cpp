@@ -1,7 +1,7 @@
 // OBJ meshes: the input is the OBJ file of a fixed scene's one mesh, read through loadSceneText
 // (the vertex check, tinyobjloader, the index and overflow checks).
 #include "fuzz_support.h"
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 namespace {
 // A scale other than 1 so the overflow check after scaling is reachable.

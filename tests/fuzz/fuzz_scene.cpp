@@ -1,7 +1,7 @@
 // Scene files: loadSceneText on the input, with meshes served from a fixed set of small OBJ files
 // (any other name is refused, as a missing file would be).
 #include "fuzz_support.h"
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <map>
 #include <optional>

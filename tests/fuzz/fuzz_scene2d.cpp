@@ -1,6 +1,6 @@
 // 2D scene files: isScene2DText (which must never throw) and loadScene2DText on the input.
 #include "fuzz_support.h"
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text = raystep::fuzz::asText(data, size);

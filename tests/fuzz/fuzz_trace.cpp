@@ -1,7 +1,7 @@
 // Trace files: traceFromJson on the input; what it accepts is written back with traceToJson and
 // must read again to the same trace.
 #include "fuzz_support.h"
-#include "raystep/trace_io.h"
+#include "raystep/trace/trace_io.h"
 
 #include <optional>
 

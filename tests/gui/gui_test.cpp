@@ -8,7 +8,7 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
-#include "raystep/scene_loader.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Component-wise comparison of colours in GoogleTest.
-#include "raystep/math.h"
+#include "raystep/base/math.h"
 
 #include <gtest/gtest.h>
 

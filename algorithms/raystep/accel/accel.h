@@ -1,0 +1,150 @@
+#pragma once
+// The accelerator interface: "given the scene, find the nearest hit of a ray efficiently".
+// A closed set of structures dispatched through std::variant (no virtual call per ray).
+// Brute force is the slides' RaySceneIntersection; the uniform grid walks cells with the 3D-DDA;
+// the kd-tree subdivides space, the BVH the objects.
+#include "raystep/accel/query.h"
+#include "raystep/base/progress.h"
+#include "raystep/accel/bvh.h"
+#include "raystep/trace/events.h"
+#include "raystep/accel/grid.h"
+#include "raystep/accel/kdtree.h"
+#include "raystep/accel/mailbox.h"
+#include "raystep/base/ray.h"
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace raystep {
+
+/// The slides' loop: test every primitive, keep the closest.
+template <typename Prims>
+class BruteForceT {
+  public:
+    using RayT = typename Prims::RayT;
+    using HitT = typename Prims::HitT;
+    explicit BruteForceT(Prims prims) : prims_(std::move(prims)) {}
+    const Prims& primitives() const { return prims_; }
+    const KernelOptions& kernels() const { return prims_.kernels(); }
+
+    /// Nearest hit in (ray.tMin, ray.tMax).
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const {
+        NullRecorder rec;
+        return loop<false>(ray, counters, rec, kNoId);
+    }
+    /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
+    bool occluded(RayT ray, TraversalCounters& counters) const {
+        NullRecorder rec;
+        return loop<true>(ray, counters, rec, kNoId).has_value();
+    }
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                                  std::uint32_t rayId) const {
+        return loop<false>(ray, counters, log, rayId);
+    }
+    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const {
+        return loop<true>(ray, counters, log, rayId).has_value();
+    }
+
+  private:
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> loop(RayT ray, TraversalCounters& counters, Rec& rec,
+                             std::uint32_t rayId) const {
+        std::optional<HitT> closest;
+        HitT hit;
+        // intersect shortens ray.tMax, so later primitives must be closer to win.
+        for (std::uint32_t p = 0; p < prims_.count(); ++p)
+            if (visitPrimitive<AnyHit>(prims_, p, ray, hit, closest, nullptr, counters, rec, rayId))
+                return hit;
+        return closest;
+    }
+
+    Prims prims_;
+};
+using BruteForce = BruteForceT<ScenePrims>;
+
+enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
+
+/// Parses "bruteforce|grid|kdtree|bvh"; nullopt for anything else.
+std::optional<AccelKind> parseAccelKind(std::string_view name);
+std::string_view accelKindName(AccelKind kind);
+
+using KdTree3 = KdTree<ScenePrims>;
+using Bvh3 = Bvh<ScenePrims>;
+/// The structures over any primitive set: the 3D scene, or a 2D lecture scene.
+template <typename Prims>
+using AcceleratorT =
+    std::variant<BruteForceT<Prims>, UniformGridT<Prims>, KdTree<Prims>, Bvh<Prims>>;
+using Accelerator = AcceleratorT<ScenePrims>;
+using Accelerator2D = AcceleratorT<Scene2DPrims>;
+
+/// Build parameters of the structures (each reads its own).
+struct AccelOptions {
+    GridOptions grid;
+    KdTreeOptions kdtree;
+    BvhOptions bvh;
+    /// The build's progress callback, whichever structure is built (nullptr: none).
+    void setProgress(const ProgressFn& progress) {
+        grid.progress = kdtree.progress = bvh.progress = progress;
+    }
+};
+
+/// Builds the chosen structure over `scene` (which must outlive it).
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels = {},
+                             const AccelOptions& options = {});
+/// The same build with the tree's construction (nodes, candidates, leaves) recorded into `log`.
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions kernels,
+                             const AccelOptions& options, EventLog& log);
+
+/// The same structures over a 2D scene (segments and circles), optionally recording the build.
+Accelerator2D buildAccelerator2D(const Scene2D& scene, AccelKind kind,
+                                 const AccelOptions& options = {}, EventLog* log = nullptr);
+
+/// The kernels and precision the structure tests primitives with.
+inline const KernelOptions& kernelsOf(const Accelerator& accel) {
+    return std::visit([](const auto& a) -> const KernelOptions& { return a.kernels(); }, accel);
+}
+
+inline std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray,
+                                    TraversalCounters& counters) {
+    return std::visit([&](const auto& a) { return a.intersect(ray, counters); }, accel);
+}
+inline bool occluded(const Accelerator& accel, const Ray& ray, TraversalCounters& counters) {
+    return std::visit([&](const auto& a) { return a.occluded(ray, counters); }, accel);
+}
+/// The queries with a recorder: NullRecorder calls the plain ones above.
+template <typename Rec>
+std::optional<Hit> intersect(const Accelerator& accel, const Ray& ray, TraversalCounters& counters,
+                             Rec& rec, std::uint32_t rayId) {
+    if constexpr (Rec::kEnabled)
+        return std::visit([&](const auto& a) { return a.intersect(ray, counters, rec, rayId); },
+                          accel);
+    else
+        return intersect(accel, ray, counters);
+}
+template <typename Rec>
+bool occluded(const Accelerator& accel, const Ray& ray, TraversalCounters& counters, Rec& rec,
+              std::uint32_t rayId) {
+    if constexpr (Rec::kEnabled)
+        return std::visit([&](const auto& a) { return a.occluded(ray, counters, rec, rayId); },
+                          accel);
+    else
+        return occluded(accel, ray, counters);
+}
+
+/// What a structure's build made, for `raystep-cli build` and `compare`.
+struct BuildSummary {
+    TreeStats stats;
+    std::string description;  // e.g. "grid 64x48x64", "kdtree sah"
+};
+BuildSummary summarize(const Accelerator& accel);
+BuildSummary summarize(const Accelerator2D& accel);
+
+/// Records one 2D ray through the structure: its RayBegin, the traversal, then RayHit or RayMiss.
+std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, EventLog& log,
+                               TraversalCounters* counters = nullptr);
+
+}  // namespace raystep

@@ -1,0 +1,300 @@
+#include "raystep/accel/bvh.h"
+
+#include "raystep/scene/fast_prims.h"
+#include "raystep/accel/mailbox.h"
+#include "raystep/scene/scene2d.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace raystep {
+
+namespace {
+constexpr int kMaxBvhDepth = 48;  // deeper nodes split by the median, so the stack stays small
+constexpr int kStackSize = 64;
+}  // namespace
+
+template <typename Prims, typename Rec>
+class BvhBuilder {
+  public:
+    static constexpr int N = Prims::N;
+    using Box = BoxN<N>;
+
+    BvhBuilder(const Prims& prims, const BvhOptions& opt, Rec& rec, std::vector<BvhNode<N>>& nodes,
+               std::vector<std::uint32_t>& ids, TreeStats& stats)
+        : opt_(opt), rec_(rec), nodes_(nodes), ids_(ids), stats_(stats) {
+        const std::uint32_t n = prims.count();
+        bounds_.resize(n);
+        centres_.resize(n);
+        for (std::uint32_t p = 0; p < n; ++p) {
+            bounds_[p] = prims.bounds(p);
+            centres_[p] = bounds_[p].centroid();
+        }
+        ids_.resize(n);
+        std::iota(ids_.begin(), ids_.end(), 0u);
+    }
+
+    std::uint32_t build(std::uint32_t begin, std::uint32_t end, int depth, std::uint32_t parent) {
+        const auto id = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        Box box, centreBox;
+        for (std::uint32_t k = begin; k < end; ++k) {
+            box.extend(bounds_[ids_[k]]);
+            centreBox.extend(centres_[ids_[k]]);
+        }
+        nodes_[id].bounds = box;
+        const std::uint32_t n = end - begin;
+        stats_.maxDepth = std::max<std::uint32_t>(stats_.maxDepth, depth);
+        if constexpr (Rec::kEnabled) {
+            rec_.node(id, box.lo3(), box.hi3());
+            rec_(BuildNode{id, parent, static_cast<std::uint32_t>(depth), n});
+        }
+        const int axis = centreBox.longestAxis();
+        const std::size_t maxLeaf = opt_.split == SplitMethod::Sah ? std::max(opt_.maxLeafSize, 1)
+                                                                   : std::max(opt_.leafSize, 1);
+        if (n <= 1 || (opt_.split != SplitMethod::Sah && n <= maxLeaf))
+            return leaf(id, begin, end, LeafReason::FewPrimitives, depth);
+        if (!(centreBox.hi[axis] > centreBox.lo[axis]))
+            return leaf(id, begin, end, LeafReason::NoSplit, depth);
+
+        const double lo = centreBox.lo[axis], hi = centreBox.hi[axis];
+        const auto centre = [&](std::uint32_t p) { return centres_[p][axis]; };
+        std::uint32_t* first = ids_.data() + begin;
+        std::uint32_t* last = ids_.data() + end;
+        std::uint32_t mid = begin;
+        double cost = 0.0, position = 0.0;
+        SplitMethod method = depth >= kMaxBvhDepth ? SplitMethod::Median : opt_.split;
+        if (method == SplitMethod::Midpoint) {
+            position = 0.5 * (lo + hi);
+            mid = begin + static_cast<std::uint32_t>(std::partition(first, last,
+                                                                    [&](std::uint32_t p) {
+                                                                        return centre(p) < position;
+                                                                    }) -
+                                                     first);
+            if (mid == begin || mid == end) method = SplitMethod::Median;  // pbrt's fallback
+        }
+        if (method == SplitMethod::Median) {
+            mid = begin + n / 2;
+            std::nth_element(first, ids_.data() + mid, last, [&](std::uint32_t a, std::uint32_t b) {
+                return centre(a) < centre(b);
+            });
+            position = centre(ids_[mid]);
+        }
+        if (method == SplitMethod::Sah) {
+            // Bin the centres, then sweep the bucket boundaries: cost of each as a split.
+            const int nb = std::clamp(opt_.buckets, 2, 256);
+            std::vector<std::uint32_t> count(nb, 0);
+            std::vector<Box> bucketBox(nb);
+            const auto bucketOf = [&](std::uint32_t p) {
+                return std::min(nb - 1, static_cast<int>(nb * ((centre(p) - lo) / (hi - lo))));
+            };
+            for (std::uint32_t k = begin; k < end; ++k) {
+                const int b = bucketOf(ids_[k]);
+                ++count[b];
+                bucketBox[b].extend(bounds_[ids_[k]]);
+            }
+            std::vector<Box> below(nb);  // below[i]: buckets 0..i
+            Box acc;
+            for (int i = 0; i < nb; ++i) acc.extend(bucketBox[i]), below[i] = acc;
+            const double area = box.area();
+            double best = kInfinity;
+            int bestSplit = -1;
+            Box above;
+            std::uint32_t nAbove = 0;
+            std::vector<double> costs(nb - 1);
+            std::vector<std::pair<double, double>> ratios(nb - 1);
+            std::vector<std::uint32_t> nLeft(nb - 1);
+            for (int i = nb - 1; i > 0; --i) {  // split between bucket i-1 and i
+                above.extend(bucketBox[i]);
+                nAbove += count[i];
+                const std::uint32_t nBelow = n - nAbove;
+                const double pl = nBelow ? below[i - 1].area() / area : 0.0;
+                const double pr = nAbove ? above.area() / area : 0.0;
+                costs[i - 1] = (nBelow && nAbove)
+                                   ? sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, nBelow, nAbove)
+                                   : kInfinity;  // everything on one side splits nothing
+                ratios[i - 1] = {pl, pr};
+                nLeft[i - 1] = nBelow;
+            }
+            for (int i = 0; i < nb - 1; ++i) {
+                if constexpr (Rec::kEnabled)
+                    if (std::isfinite(costs[i]))
+                        rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nLeft[i],
+                                            n - nLeft[i], lo + (hi - lo) * (i + 1) / nb,
+                                            ratios[i].first, ratios[i].second, costs[i]});
+                if (costs[i] < best) best = costs[i], bestSplit = i;
+            }
+            const double leafCost = opt_.cIsect * n;
+            if (bestSplit < 0) return leaf(id, begin, end, LeafReason::NoSplit, depth);
+            if (n <= maxLeaf && leafCost <= best)
+                return leaf(id, begin, end, LeafReason::SahCheaper, depth);
+            mid = begin +
+                  static_cast<std::uint32_t>(
+                      std::partition(first, last,
+                                     [&](std::uint32_t p) { return bucketOf(p) <= bestSplit; }) -
+                      first);
+            cost = best;
+            position = lo + (hi - lo) * (bestSplit + 1) / nb;
+        } else {
+            // The chosen split's SAH cost, for the record and the comparison of strategies.
+            Box l, r;
+            for (std::uint32_t k = begin; k < mid; ++k) l.extend(bounds_[ids_[k]]);
+            for (std::uint32_t k = mid; k < end; ++k) r.extend(bounds_[ids_[k]]);
+            const double area = box.area();
+            const double pl = area > 0 ? l.area() / area : 0.5,
+                         pr = area > 0 ? r.area() / area : 0.5;
+            cost = sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, mid - begin, end - mid);
+            if constexpr (Rec::kEnabled)
+                rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), mid - begin, end - mid,
+                                    position, pl, pr, cost});
+        }
+        if constexpr (Rec::kEnabled)
+            rec_(SplitChosen{id, static_cast<std::uint8_t>(axis), position, cost, opt_.cIsect * n});
+        nodes_[id].axis = static_cast<std::uint8_t>(axis);
+        const double fl = double(mid - begin) / n;
+        progress_.child(fl, [&] { build(begin, mid, depth + 1, id); });
+        std::uint32_t right = 0;
+        progress_.child(1 - fl, [&] { right = build(mid, end, depth + 1, id); });
+        nodes_[id].index = right;
+        return id;
+    }
+
+  private:
+    std::uint32_t leaf(std::uint32_t id, std::uint32_t begin, std::uint32_t end, LeafReason reason,
+                       int depth) {
+        std::sort(ids_.begin() + begin, ids_.begin() + end);  // tested in id order
+        nodes_[id].index = begin;
+        nodes_[id].count = end - begin;
+        ++stats_.leaves;
+        ++stats_.leafReasons[static_cast<int>(reason)];
+        if constexpr (Rec::kEnabled)
+            rec_(LeafMade{id, reason, end - begin, static_cast<std::uint32_t>(depth),
+                          opt_.cIsect * (end - begin)});
+        progress_.leafDone();
+        return id;
+    }
+
+    const BvhOptions& opt_;
+    Rec& rec_;
+    std::vector<BvhNode<N>>& nodes_;
+    std::vector<std::uint32_t>& ids_;
+    TreeStats& stats_;
+    std::vector<Box> bounds_;
+    std::vector<VecN<N, double>> centres_;
+    BuildProgress progress_{opt_.progress};
+};
+
+template <int N>
+double bvhSahCost(const std::vector<BvhNode<N>>& nodes, std::uint32_t id, const BvhOptions& opt) {
+    const BvhNode<N>& node = nodes[id];
+    if (node.leaf()) return opt.cIsect * node.count;
+    const double area = node.bounds.area();
+    if (!(area > 0)) return opt.cTrav;
+    return opt.cTrav + nodes[id + 1].bounds.area() / area * bvhSahCost(nodes, id + 1, opt) +
+           nodes[node.index].bounds.area() / area * bvhSahCost(nodes, node.index, opt);
+}
+
+template <typename Prims>
+Bvh<Prims>::Bvh(Prims prims, const BvhOptions& options)
+    : prims_(std::move(prims)), options_(options) {
+    NullRecorder rec;
+    build(rec);
+}
+
+template <typename Prims>
+Bvh<Prims>::Bvh(Prims prims, const BvhOptions& options, EventLog& log)
+    : prims_(std::move(prims)), options_(options) {
+    build(log);
+}
+
+template <typename Prims>
+template <typename Rec>
+void Bvh<Prims>::build(Rec& rec) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint32_t n = prims_.count();
+    if (n > 0) {
+        nodes_.reserve(2 * std::size_t(n));
+        BvhBuilder<Prims, Rec> builder(prims_, options_, rec, nodes_, primIds_, stats_);
+        builder.build(0, n, 0, kNoId);
+        stats_.sahCost = bvhSahCost(nodes_, 0, options_);
+    }
+    stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
+    stats_.references = primIds_.size();
+    stats_.buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    options_.progress = nullptr;  // it may refer to the caller's locals: only the build used it
+}
+
+template <typename Prims>
+template <bool AnyHit, typename Rec>
+auto Bvh<Prims>::traverse(RayT ray, TraversalCounters& counters, Rec& rec,
+                          std::uint32_t rayId) const -> std::optional<HitT> {
+    if (nodes_.empty()) return std::nullopt;
+    const VecN<N, double> invDir = inverseDirection<N>(ray.dir);
+    std::uint32_t todo[kStackSize];
+    int top = 0;
+    std::optional<HitT> closest;
+    HitT hit;
+    std::uint32_t id = 0;
+    for (;;) {
+        const BvhNode<N>& node = nodes_[id];
+        // ray.tMax is the nearest hit so far: a box that starts beyond it is skipped.
+        if (const auto range =
+                intersectBoxN<N>(ray.origin, invDir, node.bounds, ray.tMin, ray.tMax)) {
+            ++counters.nodeVisits;
+            if constexpr (Rec::kEnabled) rec(NodeEnter{rayId, id, range->first, range->second});
+            if (!node.leaf()) {
+                // Nearer child first: the one on the side the ray comes from.
+                if (invDir[node.axis] < 0) {
+                    todo[top++] = id + 1;
+                    id = node.index;
+                } else {
+                    todo[top++] = node.index;
+                    id = id + 1;
+                }
+                continue;
+            }
+            // Each primitive is in one leaf only: no mailbox needed.
+            for (std::uint32_t k = 0; k < node.count; ++k)
+                if (visitPrimitive<AnyHit>(prims_, primIds_[node.index + k], ray, hit, closest,
+                                           nullptr, counters, rec, rayId))
+                    return hit;
+        } else if constexpr (Rec::kEnabled) {
+            const auto whole =
+                intersectBoxN<N>(ray.origin, invDir, node.bounds, ray.tMin, kInfinity);
+            rec(NodeSkip{rayId, id, whole ? whole->first : kInfinity,
+                         whole ? whole->second : kInfinity});
+        }
+        if (top == 0) break;
+        id = todo[--top];
+    }
+    return closest;
+}
+
+template <typename Prims>
+auto Bvh<Prims>::intersect(RayT ray, TraversalCounters& counters) const -> std::optional<HitT> {
+    NullRecorder rec;
+    return traverse<false>(ray, counters, rec, kNoId);
+}
+template <typename Prims>
+bool Bvh<Prims>::occluded(RayT ray, TraversalCounters& counters) const {
+    NullRecorder rec;
+    return traverse<true>(ray, counters, rec, kNoId).has_value();
+}
+template <typename Prims>
+auto Bvh<Prims>::intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                           std::uint32_t rayId) const -> std::optional<HitT> {
+    return traverse<false>(ray, counters, log, rayId);
+}
+template <typename Prims>
+bool Bvh<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
+                          std::uint32_t rayId) const {
+    return traverse<true>(ray, counters, log, rayId).has_value();
+}
+
+template class Bvh<ScenePrims>;
+template class Bvh<Scene2DPrims>;
+template class Bvh<FloatScenePrims>;
+
+}  // namespace raystep

@@ -1,0 +1,130 @@
+#pragma once
+// The kd-tree of the lecture: space cut by axis-aligned planes, a primitive listed in every leaf
+// it overlaps. Three ways to place the plane: the middle of the node (midpoint), the median of
+// the primitives' centres (median), or the plane of lowest Surface Area Heuristic cost (sah):
+//   Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R),  P(L|C) = Area(L) / Area(C),
+// with Cost(leaf) = C_isect N. The SAH build sweeps sorted split events and is O(N log N)
+// (Wald & Havran 2006). Traversal is the slides' TestTree: front to back with a stack, stopping
+// as soon as the nearest hit lies in the node being left.
+#include "raystep/accel/query.h"
+#include "raystep/base/progress.h"
+#include "raystep/trace/events.h"
+#include "raystep/scene/prims.h"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace raystep {
+
+enum class SplitMethod { Midpoint, Median, Sah };
+std::optional<SplitMethod> parseSplitMethod(std::string_view s);
+std::string_view name(SplitMethod m);
+
+/// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
+/// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over
+/// 16-32 bins per axis at every node (still perfect splits), float bounds rounded outward, big
+/// nodes and subtrees on all cores: a tree 3-23% dearer on the knot meshes (cheaper on the
+/// stadium: the greedy sweep is not optimal), built 11-20x faster from 262K triangles up
+/// (docs/performance.md).
+enum class KdBuild { Exact, Fast };
+std::optional<KdBuild> parseKdBuild(std::string_view s);
+std::string_view name(KdBuild b);
+
+/// Build parameters, the lecture's names. Defaults after pbrt-v4's kd-tree (traversal 1,
+/// intersection 5, empty bonus 0.5, one primitive a leaf for the SAH). Midpoint and median have
+/// no cost to stop them, so their leaves default to 4 primitives.
+struct KdTreeOptions {
+    SplitMethod split = SplitMethod::Sah;
+    double cTrav = 1.0;       // cost of one traversal step
+    double cIsect = 5.0;      // cost of one ray-primitive test
+    double emptyBonus = 0.5;  // a split with an empty side costs (1 - emptyBonus) times as much
+    int maxDepth = 0;         // 0 = round(8 + 1.3 log2 N) (pbrt)
+    int leafSize = 0;         // this many primitives or fewer make a leaf; 0 = 1 (SAH) or 4
+    bool mailbox = true;      // test a primitive listed in several leaves once per ray
+    // SAH: 0 (the default) sweeps every split event exactly (Wald & Havran). N > 0: nodes with
+    // more than N primitives choose among 256 bin boundaries per axis instead (min-max binning).
+    int exactBelow = 0;
+    KdBuild build = KdBuild::Exact;  // SAH only
+    ProgressFn progress;  // build progress (share of the primitives placed in leaves); may cancel
+};
+
+/// What a build made (`raystep-cli build`).
+struct TreeStats {
+    std::uint32_t nodes = 0;
+    std::uint32_t leaves = 0;
+    std::uint32_t emptyLeaves = 0;
+    std::uint32_t maxDepth = 0;
+    std::uint64_t references = 0;  // primitive ids stored in leaves (duplicates counted)
+    double sahCost = 0.0;          // expected cost of a ray through the root box (no empty bonus)
+    double buildMs = 0.0;
+    std::array<std::uint32_t, 5> leafReasons{};  // by LeafReason
+};
+
+/// One node: an interior node splits `axis` at `split` (left child next in the array, right child
+/// at `index`); a leaf holds `count` primitive ids from prims()[index].
+struct KdNode {
+    double split = 0.0;
+    std::uint32_t index = 0;
+    std::uint32_t count = 0;  // leaves only
+    std::uint8_t axis = 0;    // 0..N-1, kLeaf for a leaf
+    static constexpr std::uint8_t kLeaf = 3;
+    bool leaf() const { return axis == kLeaf; }
+};
+
+template <typename Prims>
+class KdTree {
+  public:
+    static constexpr int N = Prims::N;
+    using RayT = typename Prims::RayT;
+    using HitT = typename Prims::HitT;
+
+    KdTree(Prims prims, const KdTreeOptions& options);
+    /// The same build, recording every node, candidate and decision into `log`.
+    KdTree(Prims prims, const KdTreeOptions& options, EventLog& log);
+
+    /// Nearest hit in (ray.tMin, ray.tMax).
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const;
+    /// Any hit in (ray.tMin, ray.tMax).
+    bool occluded(RayT ray, TraversalCounters& counters) const;
+    /// The same queries, recording every node, test and skip of ray `rayId` into `log`.
+    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
+                                  std::uint32_t rayId) const;
+    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const;
+
+    const Prims& primitives() const { return prims_; }
+    const KernelOptions& kernels() const { return prims_.kernels(); }
+    const KdTreeOptions& options() const { return options_; }
+    const std::vector<KdNode>& nodes() const { return nodes_; }
+    /// Primitive ids of the leaves (leaf n holds primIds()[index .. index + count)).
+    const std::vector<std::uint32_t>& primIds() const { return primIds_; }
+    const BoxN<N>& bounds() const { return bounds_; }
+    const TreeStats& stats() const { return stats_; }
+    int maxDepthLimit() const { return maxDepth_; }
+
+  private:
+    template <typename Rec>
+    void build(Rec& rec);
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> traverse(RayT ray, TraversalCounters& counters, Rec& rec,
+                                 std::uint32_t rayId) const;
+
+    Prims prims_;
+    KdTreeOptions options_;
+    int maxDepth_ = 0;
+    BoxN<N> bounds_;
+    std::vector<KdNode> nodes_;
+    std::vector<std::uint32_t> primIds_;
+    TreeStats stats_;
+};
+
+/// SAH cost of a split: C_trav + C_isect (pL nL + pR nR), times (1 - emptyBonus) when one side is
+/// empty (an empty side is cheap to skip, so cutting off empty space is encouraged).
+inline double sahCost(double cTrav, double cIsect, double emptyBonus, double pl, double pr,
+                      std::uint32_t nl, std::uint32_t nr) {
+    const double bonus = (nl == 0 || nr == 0) ? 1.0 - emptyBonus : 1.0;
+    return bonus * (cTrav + cIsect * (pl * nl + pr * nr));
+}
+
+}  // namespace raystep

@@ -1,0 +1,101 @@
+#pragma once
+// The lecture's algorithm: primary rays, local Phong model with a shadow ray per light,
+// reflection and transparency rays, and Monte Carlo diffuse bounces (colour bleeding).
+#include "raystep/accel/accel.h"
+#include "raystep/render/image.h"
+#include "raystep/base/rng.h"
+#include "raystep/scene/scene.h"
+
+#include <array>
+#include <functional>
+
+namespace raystep {
+
+struct TraceSettings {
+    int bounces = 5;         // depth of secondary rays: 0 = primary rays only (plus shadow rays)
+    int diffuseSamples = 0;  // diffuse bounce rays at the first diffuse hit of a path; 0 = none
+    RayOffsetMethod rayOffset = RayOffsetMethod::Robust;  // where secondary rays start
+};
+
+struct RenderOptions {
+    int width = 640;
+    int height = 480;
+    int spp = 1;  // 1 = through the pixel centre; more = jittered strata over the pixel
+    TraceSettings trace;
+    int threads = 0;  // 0 = all cores
+    std::uint64_t seed = 1;
+};
+
+/// Everything one pixel (or one ray tree) cost.
+struct RayCounters {
+    std::array<std::uint64_t, kRayKindCount> rays{};  // indexed by RayKind
+    TraversalCounters traversal;
+    std::uint64_t& operator[](RayKind k) { return rays[static_cast<int>(k)]; }
+    std::uint64_t operator[](RayKind k) const { return rays[static_cast<int>(k)]; }
+    std::uint64_t totalRays() const {
+        std::uint64_t n = 0;
+        for (auto r : rays) n += r;
+        return n;
+    }
+    RayCounters& operator+=(const RayCounters& o) {
+        for (int i = 0; i < kRayKindCount; ++i) rays[i] += o.rays[i];
+        traversal += o.traversal;
+        return *this;
+    }
+};
+
+/// Traces the ray tree of single rays; stateless apart from references, so threads share one.
+class Tracer {
+  public:
+    Tracer(const Scene& scene, const Accelerator& accel, TraceSettings settings)
+        : scene_(scene), accel_(accel), settings_(settings) {}
+
+    /// Radiance arriving along `ray` (a ray of `kind` at bounce `depth`).
+    Color trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng, RayCounters& counters) const;
+
+    /// Radiance of pixel (x, y) averaged over `spp` samples, with that pixel's own random stream.
+    Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const;
+    /// The same pixel with its whole ray tree recorded into `log`: every ray, DDA step, node,
+    /// test, hit and shading term, then the pixel's colour. Same colour as renderPixel.
+    Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters,
+                      EventLog& log) const;
+
+  private:
+    template <typename Rec>
+    Color pixel(int x, int y, const RenderOptions& options, RayCounters& counters, Rec& rec) const;
+    template <typename Rec>
+    Color trace(const Ray& ray, RayKind kind, int depth, std::uint32_t parent, bool diffuseBranched,
+                Pcg32& rng, RayCounters& counters, Rec& rec) const;
+    template <typename Rec>
+    Color shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int depth,
+                bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const;
+
+    const Scene& scene_;
+    const Accelerator& accel_;
+    TraceSettings settings_;
+};
+
+struct RenderResult {
+    Image image;
+    std::vector<std::uint64_t> costPerPixel;  // primitive tests per pixel (the heat map)
+    RayCounters counters;
+    double renderMs = 0.0;
+    bool cancelled = false;
+};
+
+/// Renders the whole image in tiles on `options.threads` threads. The image and the counters are
+/// the same for any thread count: each pixel has its own random stream.
+/// Records pixel (x, y) of a width x height image of the scene as its settings say (bounces,
+/// diffuse samples; one sample through the pixel's centre): the app's click, the lessons' pixels.
+Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int y, int width,
+                       int height, EventLog& log);
+
+RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                    const ProgressFn& progress = {});
+
+/// Origin of a secondary ray leaving the surface point `sp` (unit normal n, either side) in
+/// direction w: past the point's error box (robust) or a fixed 1e-4 along the normal (epsilon).
+Vec3 spawnRayOrigin(const SurfacePoint& sp, const Vec3& n, const Vec3& w, Precision precision,
+                    RayOffsetMethod method);
+
+}  // namespace raystep

@@ -1,0 +1,232 @@
+#pragma once
+// The event model: every algorithm is a template over a recorder. NullRecorder records nothing and
+// its hooks sit behind `if constexpr`, so the uninstrumented code is the plain code. EventLog keeps
+// small plain-data events (a std::variant, no strings, no heap per event) up to a cap, plus two
+// side tables that would not fit in an event: the rays (origin, direction) and the tree nodes
+// (bounds). docs/trace-format.md describes the file these are saved to.
+#include "raystep/base/ray.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace raystep {
+
+constexpr std::uint32_t kNoId = 0xffffffffu;
+
+/// A ray starts: its geometry is rays[ray] of the log.
+struct RayBegin {
+    std::uint32_t ray;
+    std::uint32_t parent;  // kNoId for a primary ray
+    RayKind kind;
+    std::uint8_t depth;
+};
+/// The DDA is set up: step and tDelta per axis, and the part of the ray inside the grid.
+struct DdaSetup {
+    std::uint32_t ray;
+    std::array<std::int8_t, 3> step;
+    std::uint8_t dims;
+    std::array<double, 3> tDelta;
+    double tEnter, tExit;
+};
+/// The DDA is in a new cell: the first cell (axes = the grid face it came in through, 0 from
+/// inside) or a step (axes = the axis taken; several on an exact tie). tMax after the step.
+struct DdaCell {
+    std::uint32_t ray;
+    std::uint8_t axes;
+    std::array<std::int32_t, 3> cell;
+    std::array<double, 3> tMax;
+};
+/// A primitive already tested by this ray (in an earlier cell or leaf) is not tested again.
+struct MailboxSkip {
+    std::uint32_t ray;
+    std::uint32_t prim;
+};
+struct PrimitiveTest {
+    std::uint32_t ray;
+    std::uint32_t prim;
+    bool hit;
+    double t;  // the hit's t, or infinity
+};
+/// A tree node the ray visits, over [tNear, tFar] of the ray.
+struct NodeEnter {
+    std::uint32_t ray;
+    std::uint32_t node;
+    double tNear, tFar;
+};
+/// A node the ray does not visit: its interval starts beyond the closest hit, or the ray misses it.
+struct NodeSkip {
+    std::uint32_t ray;
+    std::uint32_t node;
+    double tNear, tFar;
+};
+/// Build: a node is opened with its primitives (bounds in nodes[node] of the log).
+struct BuildNode {
+    std::uint32_t node;
+    std::uint32_t parent;
+    std::uint32_t depth;
+    std::uint32_t prims;
+};
+/// Build: one candidate split plane and its cost,
+/// sahCost = C_trav + C_isect (pL nL + pR nR) (times 1 - emptyBonus when a side is empty).
+struct SplitCandidate {
+    std::uint32_t node;
+    std::uint8_t axis;
+    std::uint32_t nl, nr;
+    double position;
+    double pl, pr;  // Area(L)/Area(C), Area(R)/Area(C)
+    double sahCost;
+};
+/// Build: the plane chosen for a node (its children are the next BuildNode events naming it as
+/// parent: the left subtree first).
+struct SplitChosen {
+    std::uint32_t node;
+    std::uint8_t axis;
+    double position;
+    double sahCost;
+    double leafCost;  // C_isect N: what not splitting would cost
+};
+enum class LeafReason : std::uint8_t {
+    FewPrimitives,  // at most the leaf size
+    MaxDepth,       // the depth limit
+    SahCheaper,     // no split costs less than the leaf
+    NoSplit,        // no plane inside the node separates anything (flat node, all centroids equal)
+    NoProgress,     // midpoint / median: every primitive would go to both sides
+};
+struct LeafMade {
+    std::uint32_t node;
+    LeafReason reason;
+    std::uint32_t prims;
+    std::uint32_t depth;
+    double leafCost;
+};
+struct RayHit {
+    std::uint32_t ray;
+    std::uint32_t prim;
+    double t, u, v;
+};
+struct RayMiss {
+    std::uint32_t ray;
+};
+enum class ShadingTermKind : std::uint8_t {
+    Ambient,
+    Diffuse,
+    Specular,
+    Reflected,
+    Transmitted,
+    DiffuseBounce
+};
+/// One term of the colour at a hit (already weighted: the terms of a ray sum to its colour).
+struct ShadingTerm {
+    std::uint32_t ray;
+    ShadingTermKind term;
+    std::uint32_t light;  // the light of a diffuse or specular term, kNoId otherwise
+    std::array<double, 3> rgb;
+};
+struct PixelResult {
+    std::uint32_t x, y;
+    std::array<double, 3> rgb;
+};
+
+using Event = std::variant<RayBegin, DdaSetup, DdaCell, MailboxSkip, PrimitiveTest, NodeEnter,
+                           NodeSkip, BuildNode, SplitCandidate, SplitChosen, LeafMade, RayHit,
+                           RayMiss, ShadingTerm, PixelResult>;
+static_assert(sizeof(Event) <= 64, "an event must fit in 64 bytes");
+static_assert(std::is_trivially_copyable_v<Event>);
+
+/// Names used in the trace file, by variant index.
+constexpr std::array<std::string_view, std::variant_size_v<Event>> kEventNames = {
+    "ray_begin",  "dda_setup", "dda_cell",   "mailbox_skip",    "primitive_test",
+    "node_enter", "node_skip", "build_node", "split_candidate", "split_chosen",
+    "leaf_made",  "ray_hit",   "ray_miss",   "shading_term",    "pixel_result"};
+constexpr std::array<std::string_view, 5> kLeafReasonNames = {
+    "few_primitives", "max_depth", "sah_cheaper", "no_split", "no_progress"};
+constexpr std::array<std::string_view, 6> kShadingTermNames = {
+    "ambient", "diffuse", "specular", "reflected", "transmitted", "diffuse_bounce"};
+
+/// Records nothing: every hook is behind `if constexpr (Rec::kEnabled)`.
+struct NullRecorder {
+    static constexpr bool kEnabled = false;
+    template <typename E>
+    void operator()(const E&) {}
+    std::uint32_t beginRay(const Ray&, RayKind, int, std::uint32_t) { return kNoId; }
+    void node(std::uint32_t, const std::array<double, 3>&, const std::array<double, 3>&) {}
+};
+
+/// Geometry of a recorded ray (rays[id] of the log).
+struct RayRecord {
+    Vec3 origin, dir;
+    double tMin, tMax;
+    RayKind kind;
+    std::uint8_t depth;
+    std::uint32_t parent;
+};
+/// Bounds of a recorded tree node (nodes[id] of the log; 2D uses the first two coordinates).
+struct NodeRecord {
+    std::array<double, 3> lo, hi;
+};
+
+/// Appends events until `cap`; past it, counts what it drops (truncated() says so).
+class EventLog {
+  public:
+    static constexpr bool kEnabled = true;
+    static constexpr std::size_t kDefaultCap = 4'000'000;  // about 224 MB of events
+
+    explicit EventLog(std::size_t cap = kDefaultCap) : cap_(cap) {}
+
+    template <typename E>
+    void operator()(const E& e) {
+        if (events_.size() < cap_)
+            events_.emplace_back(e);
+        else
+            ++dropped_;
+    }
+    /// Records a new ray (RayBegin + its geometry) and returns its id.
+    std::uint32_t beginRay(const Ray& r, RayKind kind, int depth, std::uint32_t parent) {
+        const auto id = static_cast<std::uint32_t>(rays_.size());
+        rays_.push_back(
+            {r.origin, r.dir, r.tMin, r.tMax, kind, static_cast<std::uint8_t>(depth), parent});
+        (*this)(RayBegin{id, parent, kind, static_cast<std::uint8_t>(depth)});
+        return id;
+    }
+    /// Records the bounds of tree node `id` (nodes are numbered as the structure numbers them).
+    void node(std::uint32_t id, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+        if (nodes_.size() <= id) nodes_.resize(id + 1);
+        nodes_[id] = {lo, hi};
+    }
+
+    const std::vector<Event>& events() const { return events_; }
+    const std::vector<RayRecord>& rays() const { return rays_; }
+    const std::vector<NodeRecord>& nodes() const { return nodes_; }
+    std::size_t cap() const { return cap_; }
+    std::size_t dropped() const { return dropped_; }
+    bool truncated() const { return dropped_ > 0; }
+    void clear() {
+        events_.clear();
+        rays_.clear();
+        nodes_.clear();
+        dropped_ = 0;
+    }
+    // For the trace reader.
+    void append(const Event& e) { events_.push_back(e); }
+    void addRay(const RayRecord& r) { rays_.push_back(r); }
+    void setDropped(std::size_t d) { dropped_ = d; }
+
+  private:
+    std::size_t cap_;
+    std::vector<Event> events_;
+    std::vector<RayRecord> rays_;
+    std::vector<NodeRecord> nodes_;
+    std::size_t dropped_ = 0;
+};
+
+/// What a cap message says: one line for the user.
+inline std::string capMessage(const EventLog& log) {
+    return "event cap of " + std::to_string(log.cap()) +
+           " reached: " + std::to_string(log.dropped()) + " later events were not recorded";
+}
+
+}  // namespace raystep

@@ -1,0 +1,117 @@
+#include "raystep/trace/replay.h"
+
+#include <algorithm>
+
+namespace raystep {
+
+namespace {
+/// A new ray starts: forget the previous ray's traversal.
+void startRay(ReplayState& s, std::uint32_t ray) {
+    s.ray = ray;
+    s.ddaSetup.reset();
+    s.ddaCell.reset();
+    s.visitedCells.clear();
+    s.tests.clear();
+    s.mailboxSkips.clear();
+    s.nearestT.reset();
+    s.nearestPrim = kNoId;
+    s.nodesEntered.clear();
+    s.nodesSkipped.clear();
+    s.node.reset();
+    s.hit.reset();
+    s.missed = false;
+}
+}  // namespace
+
+void applyEvent(ReplayState& s, const Event& event) {
+    ++s.cursor;
+    std::visit(
+        [&](const auto& e) {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, RayBegin>) {
+                startRay(s, e.ray);
+            } else if constexpr (std::is_same_v<E, DdaSetup>) {
+                s.ddaSetup = e;
+            } else if constexpr (std::is_same_v<E, DdaCell>) {
+                s.ddaCell = e;
+                s.visitedCells.push_back(e.cell);
+            } else if constexpr (std::is_same_v<E, MailboxSkip>) {
+                s.mailboxSkips.push_back(e.prim);
+            } else if constexpr (std::is_same_v<E, PrimitiveTest>) {
+                s.tests.push_back(e);
+                // A hit counts as the nearest so far only if it is nearer (or a lower id at the
+                // same t): the structures' rule, so the replay agrees with the ray's hit.
+                if (e.hit && (!s.nearestT || e.t < *s.nearestT ||
+                              (e.t == *s.nearestT && e.prim < s.nearestPrim))) {
+                    s.nearestT = e.t;
+                    s.nearestPrim = e.prim;
+                }
+            } else if constexpr (std::is_same_v<E, NodeEnter>) {
+                s.node = e;
+                s.nodesEntered.push_back(e.node);
+            } else if constexpr (std::is_same_v<E, NodeSkip>) {
+                s.nodesSkipped.push_back(e.node);
+            } else if constexpr (std::is_same_v<E, BuildNode>) {
+                s.buildNode = e;
+                s.candidates.clear();
+                s.chosen.reset();
+                ++s.nodesBuilt;
+            } else if constexpr (std::is_same_v<E, SplitCandidate>) {
+                s.candidates.push_back(e);
+            } else if constexpr (std::is_same_v<E, SplitChosen>) {
+                s.chosen = e;
+            } else if constexpr (std::is_same_v<E, LeafMade>) {
+                ++s.leavesMade;
+                s.lastLeaf = e;
+            } else if constexpr (std::is_same_v<E, RayHit>) {
+                s.ray = e.ray;
+                s.hit = e;
+            } else if constexpr (std::is_same_v<E, RayMiss>) {
+                s.ray = e.ray;
+                s.missed = true;
+            } else if constexpr (std::is_same_v<E, ShadingTerm>) {
+                if (!s.terms.empty() && s.terms.front().ray != e.ray) s.terms.clear();
+                s.terms.push_back(e);
+            } else if constexpr (std::is_same_v<E, PixelResult>) {
+                s.pixel = e;
+            }
+        },
+        event);
+}
+
+Replay::Replay(const EventLog& log) : log_(&log) {
+    // One pass keeps a state every kCheckpointEvery events (and the state at 0).
+    ReplayState s;
+    checkpoints_.push_back(s);
+    const auto& events = log.events();
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        applyEvent(s, events[i]);
+        if (s.cursor % kCheckpointEvery == 0) checkpoints_.push_back(s);
+    }
+}
+
+const ReplayState& Replay::seek(std::size_t cursor) {
+    cursor = std::min(cursor, size());
+    // Forward from where we are when that is near; otherwise from the checkpoint below.
+    if (cursor < state_.cursor || cursor - state_.cursor > kCheckpointEvery)
+        state_ = checkpoints_[cursor / kCheckpointEvery];
+    const auto& events = log_->events();
+    while (state_.cursor < cursor) applyEvent(state_, events[state_.cursor]);
+    return state_;
+}
+
+std::size_t Replay::nextOfKind(std::size_t from, std::size_t kind) const {
+    const auto& events = log_->events();
+    for (std::size_t i = from; i < events.size(); ++i)
+        if (events[i].index() == kind) return i;
+    return events.size();
+}
+
+std::size_t Replay::previousOfKind(std::size_t from, std::size_t kind) const {
+    const auto& events = log_->events();
+    for (std::size_t i = std::min(from, events.size()); i-- > 0;)
+        if (events[i].index() == kind) return i;
+    return size();
+}
+
+}  // namespace raystep
