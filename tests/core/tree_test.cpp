@@ -147,6 +147,36 @@ TEST(KdTree, SahCostEqualsARecomputation) {
     }
 }
 
+TEST(KdTree, ForEachNodeGivesEveryNodeOnceWithTheBoxTheBuildGaveIt) {
+    for (const char* name : {"default", "cornell", "stadium"}) {
+        for (KdBuild build : {KdBuild::Exact, KdBuild::Fast}) {
+            const Scene s = loadBuiltinScene(name);
+            KdTreeOptions o;
+            o.build = build;
+            EventLog log;
+            const KdTree3 t(ScenePrims(s, {}), o, log);
+            ASSERT_EQ(log.nodes().size(), t.nodes().size()) << name;
+            std::vector<int> seen(t.nodes().size(), 0);
+            std::vector<bool> parentSeen(t.nodes().size(), false);
+            parentSeen[0] = true;
+            t.forEachNode([&](std::uint32_t id, const KdNode& node, const BoxN<3>& box) {
+                ASSERT_LT(id, seen.size());
+                ++seen[id];
+                EXPECT_TRUE(parentSeen[id]) << name << " node " << id;
+                // The build recorded each node's box as it opened it: the walk must agree.
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_EQ(box.lo[a], log.nodes()[id].lo[a]) << name << " node " << id;
+                    EXPECT_EQ(box.hi[a], log.nodes()[id].hi[a]) << name << " node " << id;
+                }
+                if (!node.leaf()) parentSeen[id + 1] = parentSeen[node.index] = true;
+            });
+            EXPECT_EQ(std::count(seen.begin(), seen.end(), 1),
+                      static_cast<std::ptrdiff_t>(seen.size()))
+                << name;
+        }
+    }
+}
+
 TEST(KdTree, SahBeatsMidpointAndMedianOnTheStadium) {
     // The teapot in a stadium: the SAH cuts away the empty room, the others cannot tell.
     const Scene s = loadBuiltinScene("stadium");

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace raystep {
@@ -97,6 +98,23 @@ class KdTree {
     const KernelOptions& kernels() const { return prims_.kernels(); }
     const KdTreeOptions& options() const { return options_; }
     const std::vector<KdNode>& nodes() const { return nodes_; }
+    /// Calls visit(id, node, box) for every node, a parent before its children, with the node's
+    /// box: how to draw the tree or find a node's box without knowing the nodes' order in memory.
+    template <typename Visit>
+    void forEachNode(Visit&& visit) const {
+        if (nodes_.empty()) return;
+        std::vector<std::pair<std::uint32_t, BoxN<N>>> stack{{0u, bounds_}};
+        while (!stack.empty()) {
+            const auto [id, box] = stack.back();
+            stack.pop_back();
+            const KdNode& node = nodes_[id];
+            visit(id, node, box);
+            if (node.leaf()) continue;
+            const auto [left, right] = box.splitAt(node.axis, node.split);
+            stack.push_back({node.index, right});  // popped after the whole left subtree
+            stack.push_back({id + 1, left});
+        }
+    }
     /// Primitive ids of the leaves (leaf n holds primIds()[index .. index + count)).
     const std::vector<std::uint32_t>& primIds() const { return primIds_; }
     const BoxN<N>& bounds() const { return bounds_; }
