@@ -13,6 +13,7 @@ RAYSTEP_GUI_PACKAGES=(
 )
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev
+  g++-aarch64-linux-gnu  # scripts/check_aarch64.sh: the core compiles for ARM64
 )
 # test.sh's second build: clang 14 with its sanitizer and libFuzzer runtimes, and llvm-14 for
 # llvm-symbolizer (readable stacks in sanitizer reports).

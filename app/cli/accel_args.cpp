@@ -111,7 +111,7 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
     if (a.binAbove) {
         if (*a.binAbove < 1)
             return "--bin-above " + std::to_string(*a.binAbove) + ": must be 1 or more";
-        o.kdtree.exactBelow = *a.binAbove;
+        o.kdtree.binAbove = *a.binAbove;
     }
     const auto kdBuild = parseKdBuild(a.kdBuild);
     if (!kdBuild) return "--kd-build " + a.kdBuild + ": expected exact or fast";

@@ -118,7 +118,7 @@ TEST_P(EveryScene, KdTreeFindsWhatBruteForceFinds) {
     // The other SAH builds: 256 bins above 64 primitives, and the fast build (32 bins at every
     // node, subtrees on other threads for the stadium).
     AccelOptions binned, fast;
-    binned.kdtree.exactBelow = 64;
+    binned.kdtree.binAbove = 64;
     fast.kdtree.build = KdBuild::Fast;
     expectSameHits(s, buildAccelerator(s, AccelKind::KdTree, {}, binned), count,
                    GetParam() + " kdtree binned above 64");

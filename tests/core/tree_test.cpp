@@ -4,11 +4,11 @@
 #include "meshes.h"
 #include "raystep/accel/accel.h"
 #include "raystep/base/rng.h"
-#include "raystep/base/round_outward.h"
+#include "raystep/base/simd.h"
+#include "raystep/render/tracer.h"
 #include "raystep/scene/scene2d.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/trace_io.h"
-#include "raystep/render/tracer.h"
 
 #include <gtest/gtest.h>
 
@@ -57,7 +57,14 @@ void expectOutwardAt(double x, int slot) {
     for (int i = 0; i < 2 * N; ++i) in[i] = 0.5;  // the other edges: a float, kept
     in[slot] = x;
     float out[2 * N];
-    roundOutward<N>(in, out);
+    simd::roundOutward<N>(in, out);
+    // The portable code (ARM64's) must give the same bits as the SSE2 code the build uses here.
+    float portableOut[2 * N];
+    simd::portable::roundOutward<N>(in, portableOut);
+    for (int i = 0; i < 2 * N; ++i)
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(portableOut[i]),
+                  std::bit_cast<std::uint32_t>(out[i]))
+            << "x = " << x << " in slot " << slot;
     const float want = outwardByNextafter(x, slot < N);
     // Bit patterns: -0 and +0 differ, and NaN is compared too.
     EXPECT_EQ(std::bit_cast<std::uint32_t>(out[slot]), std::bit_cast<std::uint32_t>(want))
@@ -114,9 +121,74 @@ TEST(RoundOutward, MatchesNextafterAtTheExtremes) {
     }
     double nan[6] = {std::nan(""), 0, 0, 0, 0, 0};
     float out[6];
-    roundOutward<3>(nan, out);
+    simd::roundOutward<3>(nan, out);
     EXPECT_TRUE(std::isnan(out[0]));
 }
+
+#if defined(__SSE2__)
+// The fast build's binning is written once over simd::Float4 and Int4: on x86 they are SSE2, on
+// ARM64 the portable lanes. Same inputs, same bits, lane by lane, or the two builds' trees differ.
+TEST(Simd, PortableLanesGiveTheSse2Bits) {
+    namespace P = simd::portable;
+    namespace S = simd::sse2;
+    Pcg32 rng(20261128, 3);
+    const auto draw = [&] {
+        switch (static_cast<int>(rng.uniform() * 6)) {
+            case 0:
+                return 0.0f;
+            case 1:
+                return -0.0f;
+            case 2:
+                return std::numeric_limits<float>::infinity();
+            case 3:
+                return static_cast<float>(rng.uniform() * 64.0);
+            default:
+                return static_cast<float>(
+                    std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 60) - 30));
+        }
+    };
+    const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+    for (int k = 0; k < 20000; ++k) {
+        float a[4], b[4];
+        for (int i = 0; i < 4; ++i) a[i] = draw(), b[i] = draw();
+        float p[4], q[4];
+        const auto same = [&](const char* op) {
+            for (int i = 0; i < 4; ++i)
+                ASSERT_EQ(bits(p[i]), bits(q[i]))
+                    << op << " lane " << i << ": " << a[i] << ", " << b[i];
+        };
+        P::store(p, P::load(a) - P::load(b)), S::store(q, S::load(a) - S::load(b)), same("-");
+        P::store(p, P::load(a) * P::load(b)), S::store(q, S::load(a) * S::load(b)), same("*");
+        P::store(p, P::min(P::load(a), P::load(b))), S::store(q, S::min(S::load(a), S::load(b))),
+            same("min");
+        P::store(p, P::max(P::load(a), P::load(b))), S::store(q, S::max(S::load(a), S::load(b))),
+            same("max");
+        P::store(p, P::set(a[0], b[1], a[2], b[3])), S::store(q, S::set(a[0], b[1], a[2], b[3])),
+            same("set");
+        P::store(p, P::splat(a[1])), S::store(q, S::splat(a[1])), same("splat");
+        // Bins: clamped to [0, 63.5] first, as the binner does, then truncated and merged.
+        const auto clamp = [&](auto load, auto mn, auto mx, auto splat) {
+            return mn(mx(load(a), splat(0.0f)), splat(63.5f));
+        };
+        std::int32_t pi[4], qi[4];
+        P::store(pi, P::shiftRight<1>(P::truncate(clamp(P::load, P::min, P::max, P::splat))));
+        S::store(qi, S::shiftRight<1>(S::truncate(clamp(S::load, S::min, S::max, S::splat))));
+        for (int i = 0; i < 4; ++i) ASSERT_EQ(pi[i], qi[i]) << "bin of " << a[i];
+        const P::Int4 pl = P::truncate(clamp(P::load, P::min, P::max, P::splat));
+        const S::Int4 sl = S::truncate(clamp(S::load, S::min, S::max, S::splat));
+        ASSERT_EQ(P::lane<0>(pl), S::lane<0>(sl));
+        ASSERT_EQ(P::lane<1>(pl), S::lane<1>(sl));
+        std::uint32_t starts[4], ends[4];
+        for (int i = 0; i < 4; ++i)
+            starts[i] = rng.uniform() < 0.5 ? 0u : 7u, ends[i] = rng.uniform() < 0.5 ? 0u : 1u;
+        ASSERT_EQ(P::occupied4(starts, ends), S::occupied4(starts, ends));
+    }
+    // The occupancy mask by hand: lanes 1 and 3 hold something.
+    const std::uint32_t starts[4] = {0, 2, 0, 0}, ends[4] = {0, 0, 0, 5};
+    EXPECT_EQ(P::occupied4(starts, ends), 0b1010u);
+    EXPECT_EQ(S::occupied4(starts, ends), 0b1010u);
+}
+#endif
 
 TEST(KdTree, SahCostEqualsARecomputation) {
     for (const char* name : {"default", "cornell", "whitted", "stadium"}) {

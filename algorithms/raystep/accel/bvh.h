@@ -6,7 +6,7 @@
 #include "raystep/accel/query.h"
 #include "raystep/base/progress.h"
 #include "raystep/trace/events.h"
-#include "raystep/accel/kdtree.h"  // SplitMethod, TreeStats, sahCost
+#include "raystep/accel/sah.h"
 #include "raystep/scene/prims.h"
 
 #include <cstdint>

@@ -7,9 +7,10 @@
 // (Wald & Havran 2006). Traversal is the slides' TestTree: front to back with a stack, stopping
 // as soon as the nearest hit lies in the node being left.
 #include "raystep/accel/query.h"
+#include "raystep/accel/sah.h"
 #include "raystep/base/progress.h"
-#include "raystep/trace/events.h"
 #include "raystep/scene/prims.h"
+#include "raystep/trace/events.h"
 
 #include <cstdint>
 #include <optional>
@@ -18,10 +19,6 @@
 #include <vector>
 
 namespace raystep {
-
-enum class SplitMethod { Midpoint, Median, Sah };
-std::optional<SplitMethod> parseSplitMethod(std::string_view s);
-std::string_view name(SplitMethod m);
 
 /// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
 /// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over
@@ -46,21 +43,9 @@ struct KdTreeOptions {
     bool mailbox = true;      // test a primitive listed in several leaves once per ray
     // SAH: 0 (the default) sweeps every split event exactly (Wald & Havran). N > 0: nodes with
     // more than N primitives choose among 256 bin boundaries per axis instead (min-max binning).
-    int exactBelow = 0;
+    int binAbove = 0;
     KdBuild build = KdBuild::Exact;  // SAH only
     ProgressFn progress;  // build progress (share of the primitives placed in leaves); may cancel
-};
-
-/// What a build made (`raystep-cli build`).
-struct TreeStats {
-    std::uint32_t nodes = 0;
-    std::uint32_t leaves = 0;
-    std::uint32_t emptyLeaves = 0;
-    std::uint32_t maxDepth = 0;
-    std::uint64_t references = 0;  // primitive ids stored in leaves (duplicates counted)
-    double sahCost = 0.0;          // expected cost of a ray through the root box (no empty bonus)
-    double buildMs = 0.0;
-    std::array<std::uint32_t, 5> leafReasons{};  // by LeafReason
 };
 
 /// One node: an interior node splits `axis` at `split` (left child next in the array, right child
@@ -125,7 +110,9 @@ class KdTree {
     template <typename Rec>
     void build(Rec& rec);
     template <bool AnyHit, typename Rec>
-    std::optional<HitT> traverse(RayT ray, TraversalCounters& counters, Rec& rec,
+    /// The slides' TestTree: the nodes the ray crosses, nearest first, stopping once the
+    /// nearest hit lies before the node being entered.
+    std::optional<HitT> testTree(RayT ray, TraversalCounters& counters, Rec& rec,
                                  std::uint32_t rayId) const;
 
     Prims prims_;
@@ -136,13 +123,5 @@ class KdTree {
     std::vector<std::uint32_t> primIds_;
     TreeStats stats_;
 };
-
-/// SAH cost of a split: C_trav + C_isect (pL nL + pR nR), times (1 - emptyBonus) when one side is
-/// empty (an empty side is cheap to skip, so cutting off empty space is encouraged).
-inline double sahCost(double cTrav, double cIsect, double emptyBonus, double pl, double pr,
-                      std::uint32_t nl, std::uint32_t nr) {
-    const double bonus = (nl == 0 || nr == 0) ? 1.0 - emptyBonus : 1.0;
-    return bonus * (cTrav + cIsect * (pl * nl + pr * nr));
-}
 
 }  // namespace raystep
