@@ -1,12 +1,13 @@
+// The acceleration options checked and turned into the core's AccelOptions and KernelOptions.
 #include "accel_args.h"
 
 #include "common.h"
 
+#include "raystep/base/format.h"
 #include "raystep/geometry/kernels.h"
 
 #include <climits>
 #include <cmath>
-#include <sstream>
 
 namespace raystep::cli {
 
@@ -57,10 +58,14 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
 }
 
 namespace {
-std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
+/// --bin-above into the kd-tree's options under the field's old name (exactBelow) or its new one
+/// (binAbove), so the CLI builds on either side of the rename.
+template <typename KdTreeOptionsT>
+void setBinAbove(KdTreeOptionsT& kd, int primitives) {
+    if constexpr (requires { kd.binAbove; })
+        kd.binAbove = primitives;
+    else
+        kd.exactBelow = primitives;
 }
 }  // namespace
 
@@ -84,17 +89,18 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
     o.kdtree.split = o.bvh.split = *split;
     if (a.cTrav) {
         if (!std::isfinite(*a.cTrav) || *a.cTrav < 0)
-            return "--c-trav " + fmt(*a.cTrav) + ": must be a finite number, 0 or more";
+            return "--c-trav " + formatNumber(*a.cTrav) + ": must be a finite number, 0 or more";
         o.kdtree.cTrav = o.bvh.cTrav = *a.cTrav;
     }
     if (a.cIsect) {
         if (!std::isfinite(*a.cIsect) || !(*a.cIsect > 0))
-            return "--c-isect " + fmt(*a.cIsect) + ": must be a finite number greater than 0";
+            return "--c-isect " + formatNumber(*a.cIsect) +
+                   ": must be a finite number greater than 0";
         o.kdtree.cIsect = o.bvh.cIsect = *a.cIsect;
     }
     if (a.emptyBonus) {
         if (!(*a.emptyBonus >= 0 && *a.emptyBonus <= 1))
-            return "--empty-bonus " + fmt(*a.emptyBonus) + ": must be from 0 to 1";
+            return "--empty-bonus " + formatNumber(*a.emptyBonus) + ": must be from 0 to 1";
         o.kdtree.emptyBonus = *a.emptyBonus;
     }
     if (a.maxDepth) {
@@ -111,7 +117,7 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
     if (a.binAbove) {
         if (*a.binAbove < 1)
             return "--bin-above " + std::to_string(*a.binAbove) + ": must be 1 or more";
-        o.kdtree.exactBelow = *a.binAbove;
+        setBinAbove(o.kdtree, *a.binAbove);
     }
     const auto kdBuild = parseKdBuild(a.kdBuild);
     if (!kdBuild) return "--kd-build " + a.kdBuild + ": expected exact or fast";
@@ -126,7 +132,8 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
         o.bvh.buckets = *a.buckets;
     }
     if (!std::isfinite(a.gridLambda) || !(a.gridLambda > 0))
-        return "--grid-lambda " + fmt(a.gridLambda) + ": must be a finite number greater than 0";
+        return "--grid-lambda " + formatNumber(a.gridLambda) +
+               ": must be a finite number greater than 0";
     o.grid.lambda = a.gridLambda;
     if (!a.gridRes.empty()) {
         const auto res = parseNumbers(a.gridRes);
