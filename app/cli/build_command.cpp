@@ -1,5 +1,4 @@
-// `raystep-cli build`: one structure built, reported as text or JSON, its events written on
-// request.
+// `raystep-cli build`: one structure built and reported, its events written on request.
 #include "build_command.h"
 
 #include "common.h"

@@ -1,5 +1,4 @@
-// raystep-cli: the renderer from the command line, for lecturers' scripts and for tests. This file
-// only registers each command and runs the one given; each lives in its own <name>_command file.
+// raystep-cli: the renderer from the command line, for lecturers' scripts and for tests.
 #include "build_command.h"
 #include "common.h"
 #include "compare_command.h"
@@ -36,7 +35,7 @@ int main(int argc, char** argv) {
         return fail(std::string("unknown command '") + argv[1] +
                     "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson)");
 
-    // Registered in this order, so `--help` lists them so.
+    // Each command lives in its <name>_command file; `--help` lists them in this order.
     addScenesCommand(app);
     RenderArgs renderArgs;
     addRenderCommand(app, renderArgs);

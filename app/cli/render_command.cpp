@@ -1,5 +1,4 @@
-// `raystep-cli render`: builds the chosen structure, renders with progress bars, and writes the
-// image, the heat map and the stats all or none.
+// `raystep-cli render`: build, render, then write image, heat map and stats all or none.
 #include "render_command.h"
 
 #include "common.h"
