@@ -1,12 +1,13 @@
+// The acceleration options checked and turned into the core's AccelOptions and KernelOptions.
 #include "accel_args.h"
 
 #include "common.h"
 
+#include "raystep/base/format.h"
 #include "raystep/geometry/kernels.h"
 
 #include <climits>
 #include <cmath>
-#include <sstream>
 
 namespace raystep::cli {
 
@@ -56,14 +57,6 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
         ->capture_default_str();
 }
 
-namespace {
-std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-}  // namespace
-
 std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
     const auto kind = parseAccelKind(a.accel);
     if (!kind) return "--accel " + a.accel + ": expected bruteforce, grid, kdtree or bvh";
@@ -84,17 +77,18 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
     o.kdtree.split = o.bvh.split = *split;
     if (a.cTrav) {
         if (!std::isfinite(*a.cTrav) || *a.cTrav < 0)
-            return "--c-trav " + fmt(*a.cTrav) + ": must be a finite number, 0 or more";
+            return "--c-trav " + formatNumber(*a.cTrav) + ": must be a finite number, 0 or more";
         o.kdtree.cTrav = o.bvh.cTrav = *a.cTrav;
     }
     if (a.cIsect) {
         if (!std::isfinite(*a.cIsect) || !(*a.cIsect > 0))
-            return "--c-isect " + fmt(*a.cIsect) + ": must be a finite number greater than 0";
+            return "--c-isect " + formatNumber(*a.cIsect) +
+                   ": must be a finite number greater than 0";
         o.kdtree.cIsect = o.bvh.cIsect = *a.cIsect;
     }
     if (a.emptyBonus) {
         if (!(*a.emptyBonus >= 0 && *a.emptyBonus <= 1))
-            return "--empty-bonus " + fmt(*a.emptyBonus) + ": must be from 0 to 1";
+            return "--empty-bonus " + formatNumber(*a.emptyBonus) + ": must be from 0 to 1";
         o.kdtree.emptyBonus = *a.emptyBonus;
     }
     if (a.maxDepth) {
@@ -126,7 +120,8 @@ std::optional<std::string> resolveAccel(const AccelArgs& a, AccelChoice& out) {
         o.bvh.buckets = *a.buckets;
     }
     if (!std::isfinite(a.gridLambda) || !(a.gridLambda > 0))
-        return "--grid-lambda " + fmt(a.gridLambda) + ": must be a finite number greater than 0";
+        return "--grid-lambda " + formatNumber(a.gridLambda) +
+               ": must be a finite number greater than 0";
     o.grid.lambda = a.gridLambda;
     if (!a.gridRes.empty()) {
         const auto res = parseNumbers(a.gridRes);

@@ -1,3 +1,4 @@
+// The shared CLI helpers: errors, number parsing, option checks and all-or-none output files.
 #include "common.h"
 
 #include "raystep/base/file_error.h"
@@ -107,6 +108,12 @@ CLI::Validator finiteNumber() {
             return {};
         },
         "NUMBER");
+}
+
+void addMaxEventsOption(CLI::App* cmd, std::size_t& cap) {
+    cmd->add_option("--max-events", cap, "Stop recording after this many events")
+        ->transform(wholeNumber(1, 20'000'000))
+        ->capture_default_str();
 }
 
 std::optional<int> parseInt(const std::string& text, int lo, int hi) {

@@ -1,10 +1,11 @@
 #pragma once
-// What every raystep-cli command shares: the one-line error, strict number parsing, and the
-// output files (checked before the work, written all or none after it).
+// What every raystep-cli command shares: the one-line error, strict number parsing and option
+// checks, and the output files (checked before the work, written all or none after it).
 #include "raystep/render/image.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -43,6 +44,9 @@ CLI::Validator wholeNumber(std::uint64_t lo, std::uint64_t hi);
 
 /// CLI11 check for a real-number option: finite (no nan, inf or overflow to inf).
 CLI::Validator finiteNumber();
+
+/// Adds --max-events to a command that records events: past `cap` the trace file is cut short.
+void addMaxEventsOption(CLI::App* cmd, std::size_t& cap);
 
 /// Whole number from text, within [lo, hi]; nullopt otherwise.
 std::optional<int> parseInt(const std::string& text, int lo, int hi);

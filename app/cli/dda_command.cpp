@@ -1,8 +1,10 @@
+// `raystep-cli dda`: the 3D-DDA walk of one ray, as a table or as JSON.
 #include "dda_command.h"
 
 #include "common.h"
 
 #include "raystep/accel/dda.h"
+#include "raystep/base/format.h"
 #include "raystep/geometry/kernels.h"
 
 #include <nlohmann/json.hpp>
@@ -87,10 +89,8 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
         return 0;
     }
     const auto num = [](T v) {
-        char buf[32];
         if (!std::isfinite(v)) return std::string("inf");
-        std::snprintf(buf, sizeof buf, "%.6g", double(v));
-        return std::string(buf);
+        return formatNumber(double(v));
     };
     if (!dda.valid()) {
         std::printf("the ray misses the grid: no cells\n");

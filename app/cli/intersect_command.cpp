@@ -1,7 +1,9 @@
+// `raystep-cli intersect`: one kernel run on the parsed ray and shape, its range watched.
 #include "intersect_command.h"
 
 #include "common.h"
 
+#include "raystep/base/format.h"
 #include "raystep/geometry/kernels.h"
 
 #include <nlohmann/json.hpp>
@@ -50,26 +52,19 @@ glm::dvec3 vec(const std::vector<double>& v) {
     return {v[0], v[1], v[2]};
 }
 
-template <typename T>
-std::string fmt(T v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", std::is_same_v<T, float> ? 9 : 17, double(v));
-    return buf;
+/// Every digit of a number in the precision it was computed in, so the working can be checked to
+/// the last bit.
+std::string allDigits(double v, bool isFloat) {
+    return isFloat ? formatNumber(float(v), kRoundTripDigits<float>)
+                   : formatNumber(v, kRoundTripDigits<double>);
 }
-template <typename T>
-std::string fmt(const TVec3<T>& v) {
-    return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")";
+std::string allDigits(const glm::dvec3& v, bool isFloat) {
+    return "(" + allDigits(v.x, isFloat) + ", " + allDigits(v.y, isFloat) + ", " +
+           allDigits(v.z, isFloat) + ")";
 }
-/// A number as a person would type it, for messages (1e-50, not 1.0000000000000001e-50).
-std::string brief(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-std::string fmtStep(const StepLog::Step& s, bool isFloat) {
-    const auto one = [&](double x) { return isFloat ? fmt(float(x)) : fmt(x); };
-    if (s.size == 1) return one(s.v[0]);
-    return "(" + one(s.v[0]) + ", " + one(s.v[1]) + ", " + one(s.v[2]) + ")";
+std::string stepText(const StepLog::Step& s, bool isFloat) {
+    if (s.size == 1) return allDigits(s.v[0], isFloat);
+    return allDigits(glm::dvec3(s.v[0], s.v[1], s.v[2]), isFloat);
 }
 
 struct Outcome {
@@ -170,10 +165,11 @@ int runIntersect(const IntersectArgs& a) {
     const std::string shapeOption =
         isTriangle ? "--triangle " + a.triangle : "--sphere " + a.sphere;
     if (const auto x = unrepresentable(isFloat, *ray))
-        return fail("--ray " + a.ray + ": " + brief(*x) +
+        return fail("--ray " + a.ray + ": " + formatNumber(*x) +
                     " is not a normal float (1.2e-38 to 3.4e38)");
     if (const auto x = unrepresentable(isFloat, *shape))
-        return fail(shapeOption + ": " + brief(*x) + " is not a normal float (1.2e-38 to 3.4e38)");
+        return fail(shapeOption + ": " + formatNumber(*x) +
+                    " is not a normal float (1.2e-38 to 3.4e38)");
     // The kernels are exact while their arithmetic stays in the precision's normal range: any
     // overflow, underflow or NaN in this one computation means the answer cannot be trusted.
     std::feclearexcept(FE_ALL_EXCEPT);
@@ -188,7 +184,7 @@ int runIntersect(const IntersectArgs& a) {
         return fail("intersect --ray " + a.ray + " " + shapeOption + ": the " + methodName +
                     " test in " + a.precision + " left the range it is exact in (a result " + what +
                     "); its answer would not be reliable. Scale the inputs to " +
-                    brief(range.smallest) + " .. " + brief(range.largest) +
+                    formatNumber(range.smallest) + " .. " + formatNumber(range.largest) +
                     " with a direction of length about 1");
     }
 
@@ -212,19 +208,19 @@ int runIntersect(const IntersectArgs& a) {
         std::cout << j.dump(2) << "\n";
         return 0;
     }
-    const auto p = [&](const glm::dvec3& v) { return isFloat ? fmt(glm::vec3(v)) : fmt(v); };
+    const auto p = [&](const glm::dvec3& v) { return allDigits(v, isFloat); };
+    const auto num = [&](double x) { return allDigits(x, isFloat); };
     std::printf("ray        origin %s  direction %s\n", p(o).c_str(), p(d).c_str());
     if (isTriangle)
         std::printf("triangle   a %s  b %s  c %s\n", p(vec((*shape)[0])).c_str(),
                     p(vec((*shape)[1])).c_str(), p(vec((*shape)[2])).c_str());
     else
         std::printf("sphere     centre %s  radius %s\n", p(vec((*shape)[0])).c_str(),
-                    isFloat ? fmt(float((*shape)[1][0])).c_str() : fmt((*shape)[1][0]).c_str());
+                    num((*shape)[1][0]).c_str());
     std::printf("method     %s, in %s\n\n", methodName.c_str(), a.precision.c_str());
     for (const auto& s : r.log.steps)
-        std::printf("  %-20s %s\n", s.name, fmtStep(s, isFloat).c_str());
+        std::printf("  %-20s %s\n", s.name, stepText(s, isFloat).c_str());
     std::printf("\n");
-    const auto num = [&](double x) { return isFloat ? fmt(float(x)) : fmt(x); };
     if (!r.hit) {
         std::printf("result     miss\n");
     } else if (isTriangle) {

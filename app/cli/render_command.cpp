@@ -1,0 +1,163 @@
+// `raystep-cli render`: build, render, then write image, heat map and stats all or none.
+#include "render_command.h"
+
+#include "common.h"
+#include "progress.h"
+
+#include "raystep/render/image.h"
+#include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <tbb/info.h>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raystep::cli {
+
+void addRenderCommand(CLI::App& app, RenderArgs& a) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene to a PNG image");
+    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option("-o,--output", a.output, "Output PNG (default: <scene>.png)")
+        ->check(fileName());
+    cmd->add_option("--width", a.width, "Image width in pixels")
+        ->transform(wholeNumber(1, kMaxImageSide));
+    cmd->add_option("--height", a.height, "Image height in pixels")
+        ->transform(wholeNumber(1, kMaxImageSide));
+    cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (0 = primary rays only)")
+        ->transform(wholeNumber(0, 64));
+    cmd->add_option("--spp", a.spp, "Jittered samples per pixel")->transform(wholeNumber(1, 4096));
+    cmd->add_option("--diffuse-samples", a.diffuseSamples,
+                    "Random diffuse bounce rays at the first diffuse hit (0 = none)")
+        ->transform(wholeNumber(0, 1024));
+    addAccelOptions(cmd, a.accel);
+    cmd->add_option("--ray-offset", a.rayOffset,
+                    "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
+        ->capture_default_str();
+    cmd->add_option("--threads", a.threads, "Threads (default: all cores)")
+        ->transform(wholeNumber(1, 1024));
+    cmd->add_option("--seed", a.seed, "Seed of the random numbers")
+        ->transform(wholeNumber(0, UINT64_MAX))
+        ->capture_default_str();
+    cmd->add_option("--stats", a.stats, "Write ray counts and timings as JSON")->check(fileName());
+    cmd->add_option("--heatmap", a.heatmap, "Write primitive tests per pixel as a PNG heat map")
+        ->check(fileName());
+}
+
+int runRender(const RenderArgs& a) {
+    const std::string output =
+        a.output.empty() ? std::filesystem::path(a.scene).stem().string() + ".png" : a.output;
+    if (!hasExtension(output, ".png"))
+        return fail("-o " + output + ": the image is written as PNG; name it *.png");
+    if (!a.heatmap.empty() && !hasExtension(a.heatmap, ".png"))
+        return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
+    if (auto problem = checkOutputs(
+            {{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}}, {a.scene}))
+        return fail(*problem);
+    AccelChoice choice;
+    if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
+    const auto offset = parseRayOffset(a.rayOffset);
+    if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
+
+    Scene scene;
+    try {
+        scene = loadScene(a.scene);
+    } catch (const SceneError& e) {
+        return fail(e.what());
+    }
+    if (auto problem = checkKernelRange(a.scene, scene, choice)) return fail(*problem);
+
+    RenderOptions opt;
+    opt.width = a.width.value_or(scene.settings.width);
+    opt.height = a.height.value_or(scene.settings.height);
+    opt.spp = a.spp.value_or(scene.settings.spp);
+    opt.trace.bounces = a.bounces.value_or(scene.settings.bounces);
+    opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene.settings.diffuseSamples);
+    opt.threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+    opt.seed = a.seed;
+    opt.trace.rayOffset = *offset;
+
+    std::optional<Accelerator> accel;
+    {
+        ProgressBar buildBar("build " + describeAccel(choice));
+        choice.options.setProgress([&](double f) { return buildBar.update(f); });
+        accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
+        buildBar.finish();
+    }
+
+    ProgressBar bar("render " + scene.name);
+    const RenderResult result =
+        render(scene, *accel, opt, [&bar](double f) { return bar.update(f); });
+    bar.finish();
+
+    // The image, the heat map and the stats are written all or none, once all are ready.
+    std::vector<FileToWrite> files;
+    const std::string png = encodePng(output, toSrgb8(result.image), opt.width, opt.height);
+    files.push_back({output, png});
+    std::string heatmapPng, statsJson;
+    if (!a.heatmap.empty()) {
+        heatmapPng = encodePng(a.heatmap, heatmapRgb8(result.costPerPixel, opt.width, opt.height),
+                               opt.width, opt.height);
+        files.push_back({a.heatmap, heatmapPng});
+    }
+    if (!a.stats.empty()) {
+        const RayCounters& c = result.counters;
+        nlohmann::ordered_json j;
+        j["scene"] = scene.name;
+        j["width"] = opt.width;
+        j["height"] = opt.height;
+        j["spp"] = opt.spp;
+        j["bounces"] = opt.trace.bounces;
+        j["diffuse_samples"] = opt.trace.diffuseSamples;
+        j["accel"] = describeAccel(choice);
+        j["precision"] = a.accel.precision;
+        j["ray_offset"] = a.rayOffset;
+        j["triangle_method"] = a.accel.triangleMethod;
+        j["sphere_method"] = a.accel.sphereMethod;
+        if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
+            const auto& res = grid->spec().res;
+            j["grid"] = {{"cells", {res.x, res.y, res.z}},
+                         {"references", grid->references()},
+                         {"empty_cells", grid->emptyCells()},
+                         {"mailbox", a.accel.mailbox}};
+        }
+        if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+            const BuildSummary b = summarize(*accel);
+            j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
+                         {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},
+                         {"sah_cost", b.stats.sahCost},   {"build_ms", b.stats.buildMs}};
+        }
+        j["threads"] = opt.threads;
+        j["seed"] = opt.seed;
+        j["primitives"] = {{"spheres", scene.spheres.size()},
+                           {"triangles", scene.triangles.size()}};
+        for (int k = 0; k < kRayKindCount; ++k)
+            j["rays"][std::string(kRayKindNames[k])] = c.rays[k];
+        j["rays"]["total"] = c.totalRays();
+        j["primitive_tests"] = c.traversal.primitiveTests;
+        j["node_visits"] = c.traversal.nodeVisits;
+        j["mailbox_skips"] = c.traversal.mailboxSkips;
+        j["max_primitive_tests_per_pixel"] =
+            *std::max_element(result.costPerPixel.begin(), result.costPerPixel.end());
+        j["render_ms"] = result.renderMs;
+        j["mrays_per_s"] = c.totalRays() / (result.renderMs * 1e3);
+        statsJson = j.dump(2) + "\n";
+        files.push_back({a.stats, statsJson});
+    }
+    if (auto problem = writeOutputs(files)) return fail(*problem);
+    std::printf("wrote %s (%dx%d, %d spp, %llu rays, %.0f ms)\n", output.c_str(), opt.width,
+                opt.height, opt.spp, static_cast<unsigned long long>(result.counters.totalRays()),
+                result.renderMs);
+    if (!a.heatmap.empty())
+        std::printf("wrote %s (primitive tests per pixel, 0 = dark to %llu = bright)\n",
+                    a.heatmap.c_str(),
+                    static_cast<unsigned long long>(
+                        *std::max_element(result.costPerPixel.begin(), result.costPerPixel.end())));
+    return 0;
+}
+
+}  // namespace raystep::cli
