@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test through ctest:
-# first the Release build (core, CLI and the app under Xvfb), then a clang build of the core's and
-# the CLI's tests under AddressSanitizer + UBSan, with a short run of each fuzz target
-# (docs/reliability.md).
+# first the Release build (core, course, CLI and the app under Xvfb), then a clang build of the
+# core's, the course's and the CLI's tests under AddressSanitizer + UBSan, with a short run of each
+# fuzz target (docs/reliability.md).
 set -euo pipefail
 RAYSTEP_ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 source "$RAYSTEP_ROOT/scripts/deps.sh"
@@ -28,4 +28,4 @@ fi
 CC=clang-14 CXX=clang++-14 configure "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRAYSTEP_SANITIZE=ON -DRAYSTEP_BUILD_GUI=OFF -DRAYSTEP_FUZZ=ON
 build "$asan"
-ctest --test-dir "$asan" --output-on-failure -j2 -L 'core|cli|fuzz'
+ctest --test-dir "$asan" --output-on-failure -j2 -L 'core|course|cli|fuzz'

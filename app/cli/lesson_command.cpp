@@ -3,7 +3,12 @@
 #include "common.h"
 #include "progress.h"
 
-#include "raystep/lesson.h"
+#include "course/exercise.h"
+#include "course/grading.h"
+#include "course/grid_sweep.h"
+#include "course/lesson.h"
+#include "course/lesson_trace.h"
+
 #include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>

@@ -1,10 +1,13 @@
 #pragma once
 // The lesson panel: the lesson's text, its steps (each puts the replay somewhere) and its
-// exercises, checked against the recorded trace by the core (raystep/lesson.h). The main window
-// opens lessons and moves the replay; the panel asks for it through signals.
+// exercises, checked against the recorded trace by the lesson engine (course/exercise.h). The
+// main window opens lessons and moves the replay; the panel asks for it through signals.
 #include "session.h"
 
-#include "raystep/lesson.h"
+#include "course/exercise.h"
+#include "course/grid_sweep.h"
+#include "course/lesson.h"
+#include "course/progress.h"
 
 #include <QWidget>
 

@@ -6,6 +6,9 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include "course/grid_sweep.h"
+#include "course/lesson_trace.h"
+
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
 #include "raystep/scene/scene_loader.h"

@@ -4,7 +4,8 @@
 #include "session.h"
 #include "task_runner.h"
 
-#include "raystep/lesson.h"
+#include "course/lesson.h"
+#include "course/progress.h"
 
 #include <functional>
 #include <optional>

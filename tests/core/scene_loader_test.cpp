@@ -1,7 +1,6 @@
 // The scene loader: every built-in scene loads, good files give the documented defaults, and each
 // kind of bad input fails with the file, the line and the key of the problem.
 #include "raystep/scene/scene_loader.h"
-#include "raystep/lesson.h"
 #include "raystep/trace/trace_io.h"
 
 #include <gtest/gtest.h>
@@ -574,8 +573,8 @@ TEST(SceneLoaderHostile, ANulByteIsRefusedWithItsLine) {
         }
     }
     EXPECT_THROW(loadScene2DText(std::string("{\"dimensions\": 2}\0", 17), "a.json"), SceneError);
-    EXPECT_THROW(loadLessonText(std::string("{}\0", 3), "l.json"), LessonError);
     EXPECT_THROW(traceFromJson(std::string("{}\0", 3), "t.json"), TraceError);
+    // The course's readers: tests/course/lesson_hostile_test.cpp.
 }
 
 // Class 12: text from the file (and the file's name) is quoted escaped and shortened, so the

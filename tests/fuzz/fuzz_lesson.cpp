@@ -3,7 +3,8 @@
 // The lesson "lives" in a folder that does not exist, so a relative scene path finds no file;
 // a built-in scene name works as in a real lesson.
 #include "fuzz_support.h"
-#include "raystep/lesson.h"
+#include "course/grading.h"
+#include "course/lesson.h"
 
 namespace {
 

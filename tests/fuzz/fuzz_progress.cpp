@@ -1,7 +1,7 @@
 // Progress files: parseProgress on the input; what it accepts is written back with
 // progressToJson (as the app saves it) and must read again to the same progress.
 #include "fuzz_support.h"
-#include "raystep/lesson.h"
+#include "course/progress.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text = raystep::fuzz::asText(data, size);

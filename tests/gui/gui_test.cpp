@@ -8,6 +8,8 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include "course/lesson_trace.h"
+
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// A file that cannot be read as what it should be (scene, lesson, answers, trace): which file,
+// A file that cannot be read as what it should be (scene, trace, course file): which file,
 // which line, which key, and why, in the one-line form "file:line: key 'k': message".
 #include <cstddef>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 #pragma once
 // Where each key of a JSON text stands: nlohmann::json keeps no positions, and every error
-// in a scene or lesson file must name its line. Paths look like "objects[2].radius".
+// in a scene or course file must name its line. Paths look like "objects[2].radius".
 #include <cstdint>
 #include <string>
 #include <string_view>

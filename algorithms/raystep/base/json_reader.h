@@ -1,7 +1,8 @@
 #pragma once
-// Reading a file (scene, lesson, answers, progress, trace) so that every error names the file,
-// the line and the key: one function that opens files, the JSON parse behind a depth cap, and
-// typed accessors over nlohmann::json that throw the loader's own error type. Internal to the core.
+// Reading a file (a scene, a trace, the course's files) so that every error names the file, the
+// line and the key: one function that opens files, the JSON parse behind a depth cap, and typed
+// accessors over nlohmann::json that throw the loader's own error type. Internal to the core and
+// the course library (app/course).
 #include "raystep/base/file_error.h"
 #include "raystep/base/json_lines.h"
 #include "raystep/base/math.h"
@@ -29,7 +30,7 @@ namespace raystep::detail {
 
 using nlohmann::json;
 
-/// The most a JSON file (scene, lesson, answers, progress) may hold: the built-in ones are under
+/// The most a JSON file (a scene, the course's files) may hold: the built-in ones are under
 /// 64 KB, and nlohmann's tree of a hostile 8 MB stays within a few hundred MB.
 constexpr std::size_t kMaxJsonFileBytes = std::size_t(8) << 20;
 /// The most an OBJ mesh may hold (the stadium's knot is 1.6 MB; 256 MB is about 10M triangles).

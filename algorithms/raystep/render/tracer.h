@@ -86,7 +86,7 @@ struct RenderResult {
 /// Renders the whole image in tiles on `options.threads` threads. The image and the counters are
 /// the same for any thread count: each pixel has its own random stream.
 /// Records pixel (x, y) of a width x height image of the scene as its settings say (bounces,
-/// diffuse samples; one sample through the pixel's centre): the app's click, the lessons' pixels.
+/// diffuse samples; one sample through the pixel's centre): the app's click, the course's pixels.
 Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int y, int width,
                        int height, EventLog& log);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The fast path of the trade-off lessons: the scene kept as a float copy (no conversion per test),
+// The fast path of the lecture's trade-offs: the scene kept as a float copy (no conversion per test),
 // Moller-Trumbore triangles and textbook spheres in float. Less accurate (docs/accuracy.md), and
 // what the benchmarks race against Embree. The structures run over it unchanged (same templates).
 #include "raystep/scene/prims.h"

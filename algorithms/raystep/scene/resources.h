@@ -1,6 +1,6 @@
 #pragma once
-// Files embedded in the binaries at build time (the built-in scenes, their meshes, the lessons),
-// so the tools work from any folder without the source tree.
+// Files embedded in the core at build time (the built-in scenes and their meshes;
+// cmake/embed_files.cmake), so the tools work from any folder without the source tree.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -8,8 +8,7 @@
 
 namespace raystep {
 
-/// Contents of the embedded file `name`: a scene by file name ("whitted.json"), a lesson as
-/// "lessons/06-grid-2d-dda.json".
+/// Contents of the embedded file `name`, by file name ("whitted.json", "stadium-knot.obj").
 std::optional<std::string_view> embeddedFile(std::string_view name);
 
 /// Names of all embedded files, sorted.

@@ -1,5 +1,5 @@
 #pragma once
-// The scene model: only what the lessons need (pinhole camera, point lights, spheres,
+// The scene model: only what the lecture needs (pinhole camera, point lights, spheres,
 // triangles, Phong materials with reflection, transparency and a checker texture).
 #include "raystep/scene/camera.h"
 #include "raystep/geometry/kernels.h"
@@ -113,7 +113,7 @@ struct Scene {
 };
 
 /// The scene with every position mapped by p -> p * scale + shift (sizes, checker cubes and the
-/// camera follow): the same picture at another scale or far from the origin, for the lessons on
+/// camera follow): the same picture at another scale or far from the origin, for the lecture on
 /// numerical robustness and for tests at the extremes.
 Scene transformScene(Scene scene, double scale, const Vec3& shift);
 

@@ -1,6 +1,6 @@
 #pragma once
 // Replay: what a recorded log shows after its first `cursor` events. A view is a pure function of
-// (scene, log, cursor); this is the "log, cursor" part, shared by the app, the lessons' checks
+// (scene, log, cursor); this is the "log, cursor" part, shared by the app, the course's checks
 // and the tests. Seeking backwards is as cheap as forwards: the replay keeps a checkpoint every
 // few thousand events and folds forward from the nearest one.
 #include "raystep/trace/events.h"

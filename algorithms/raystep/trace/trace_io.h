@@ -1,5 +1,5 @@
 #pragma once
-// The trace file (docs/trace-format.md): an event log as versioned JSON, for the app, the lessons
+// The trace file (docs/trace-format.md): an event log as versioned JSON, for the app, the course
 // and students' own scripts. Reading checks every field and names the file, line and key of the
 // first problem.
 #include "raystep/trace/events.h"

@@ -1,0 +1,480 @@
+// Reading lesson files (docs/lesson-format.md) into the model of course/lesson.h, with errors
+// that name the file, the line and the key; and finding the built-in lessons.
+#include "course/lesson.h"
+
+#include "course/embedded_lessons.h"
+
+#include "raystep/base/json_reader.h"
+#include "raystep/base/names.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/trace/replay.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raystep {
+
+using detail::ifPresent;
+using detail::json;
+using Reader = detail::JsonReader<LessonError>;
+
+namespace {
+
+constexpr NameTable<ExerciseKind, 5> kExerciseKinds{{{ExerciseKind::NextCell, "next_cell"},
+                                                     {ExerciseKind::Value, "value"},
+                                                     {ExerciseKind::PickSplit, "pick_split"},
+                                                     {ExerciseKind::Count, "count"},
+                                                     {ExerciseKind::HitOrMiss, "hit_or_miss"}}};
+constexpr NameTable<Quantity, 17> kQuantities{{{Quantity::TMaxX, "tMax.x"},
+                                               {Quantity::TMaxY, "tMax.y"},
+                                               {Quantity::TMaxZ, "tMax.z"},
+                                               {Quantity::TDeltaX, "tDelta.x"},
+                                               {Quantity::TDeltaY, "tDelta.y"},
+                                               {Quantity::TDeltaZ, "tDelta.z"},
+                                               {Quantity::TEnter, "t_enter"},
+                                               {Quantity::TExit, "t_exit"},
+                                               {Quantity::HitT, "hit.t"},
+                                               {Quantity::HitU, "hit.u"},
+                                               {Quantity::HitV, "hit.v"},
+                                               {Quantity::TestT, "test.t"},
+                                               {Quantity::NodeTNear, "node.tNear"},
+                                               {Quantity::NodeTFar, "node.tFar"},
+                                               {Quantity::CandidatePL, "candidate.pL"},
+                                               {Quantity::CandidatePR, "candidate.pR"},
+                                               {Quantity::CandidateCost, "candidate.sahCost"}}};
+constexpr NameTable<LessonView, 3> kViews{
+    {{LessonView::View2D, "2d"}, {LessonView::View3D, "3d"}, {LessonView::Image, "image"}}};
+
+std::optional<std::size_t> eventKindNamed(std::string_view name) {
+    for (std::size_t i = 0; i < kEventNames.size(); ++i)
+        if (kEventNames[i] == name) return i;
+    return std::nullopt;
+}
+std::string eventKindList() {
+    std::string s;
+    for (const auto n : kEventNames) s += (s.empty() ? "" : ", ") + std::string(n);
+    return s;
+}
+
+// ---- reading lesson files ----
+
+LocalText readText(const Reader& r, const json& j, const std::string& path) {
+    // A string, or an array of lines (easier to write and review than one long string).
+    const auto one = [&](const json& v, const std::string& p) {
+        if (v.is_string()) return v.get<std::string>();
+        if (!v.is_array())
+            r.fail(p, "expected a string or an array of lines, got " + Reader::typeName(v));
+        std::string s;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            if (i) s += '\n';
+            s += r.string(v[i], JsonLineMap::element(p, i));
+        }
+        return s;
+    };
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"en", "it"});
+    if (!j.contains("en")) r.fail(path, "the English text \"en\" is required");
+    LocalText t;
+    t.en = one(j["en"], JsonLineMap::child(path, "en"));
+    ifPresent(j, path, "it", [&](const json& v, const std::string& p) { t.it = one(v, p); });
+    if (t.en.empty()) r.fail(JsonLineMap::child(path, "en"), "must not be empty");
+    return t;
+}
+
+ReplayPosition readPosition(const Reader& r, const json& j, const std::string& path) {
+    ReplayPosition at;
+    if (j.is_string()) {
+        const auto s = j.get<std::string>();
+        if (s == "start") return at;
+        if (s == "end") {
+            at.mode = ReplayPosition::Mode::End;
+            return at;
+        }
+        r.fail(path,
+               "expected \"start\", \"end\", a number of events, or {\"after\" | "
+               "\"before\": EVENT, \"nth\": N}");
+    }
+    if (j.is_number()) {
+        at.mode = ReplayPosition::Mode::Cursor;
+        at.cursor = static_cast<std::size_t>(r.integer(j, path, 0, 100'000'000));
+        return at;
+    }
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"after", "before", "nth"});
+    const bool after = j.contains("after"), before = j.contains("before");
+    if (after == before) r.fail(path, "give exactly one of \"after\" and \"before\"");
+    const std::string key = after ? "after" : "before";
+    const std::string kindPath = JsonLineMap::child(path, key);
+    const auto kind = eventKindNamed(r.string(j[key], kindPath));
+    if (!kind) r.fail(kindPath, "unknown event kind (expected one of " + eventKindList() + ")");
+    at.mode = after ? ReplayPosition::Mode::AfterEvent : ReplayPosition::Mode::BeforeEvent;
+    at.eventKind = *kind;
+    ifPresent(j, path, "nth", [&](const json& v, const std::string& p) {
+        at.nth = r.integer(v, p, 1, 100'000'000);
+    });
+    return at;
+}
+
+void readSetup(const Reader& r, const json& j, const std::string& path, Lesson& l) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path,
+                {"accel", "split", "mailbox", "grid_res", "grid_lambda", "leaf_size", "max_depth",
+                 "c_trav", "c_isect", "empty_bonus", "buckets"});
+    AccelOptions& o = l.options;
+    ifPresent(j, path, "accel", [&](const json& v, const std::string& p) {
+        const auto k = parseAccelKind(r.string(v, p));
+        if (!k) r.fail(p, "expected bruteforce, grid, kdtree or bvh");
+        l.accel = *k;
+    });
+    ifPresent(j, path, "split", [&](const json& v, const std::string& p) {
+        const auto s = parseSplitMethod(r.string(v, p));
+        if (!s) r.fail(p, "expected midpoint, median or sah");
+        o.kdtree.split = o.bvh.split = *s;
+    });
+    ifPresent(j, path, "mailbox", [&](const json& v, const std::string& p) {
+        if (!v.is_boolean()) r.fail(p, "expected true or false, got " + Reader::typeName(v));
+        o.grid.mailbox = o.kdtree.mailbox = v.get<bool>();
+    });
+    ifPresent(j, path, "grid_res", [&](const json& v, const std::string& p) {
+        if (!v.is_array() || v.size() < 2 || v.size() > 3)
+            r.fail(p, "expected [NX, NY] or [NX, NY, NZ], got " + Reader::typeName(v));
+        std::array<int, 3> res{1, 1, 1};
+        for (std::size_t i = 0; i < v.size(); ++i)
+            res[i] = r.integer(v[i], JsonLineMap::element(p, i), 1, GridOptions::kMaxCellsPerAxis);
+        const std::size_t cells = std::size_t(res[0]) * res[1] * res[2];
+        if (cells > GridOptions::kMaxCells)
+            r.fail(p, std::to_string(cells) + " cells, more than the grid's " +
+                          std::to_string(GridOptions::kMaxCells) + " (2^24)");
+        o.grid.res = res;
+    });
+    ifPresent(j, path, "grid_lambda",
+              [&](const json& v, const std::string& p) { o.grid.lambda = r.positive(v, p); });
+    ifPresent(j, path, "leaf_size", [&](const json& v, const std::string& p) {
+        o.kdtree.leafSize = o.bvh.leafSize = r.integer(v, p, 1, 1'000'000);
+    });
+    ifPresent(j, path, "max_depth", [&](const json& v, const std::string& p) {
+        o.kdtree.maxDepth = r.integer(v, p, 1, 60);
+    });
+    ifPresent(j, path, "c_trav", [&](const json& v, const std::string& p) {
+        o.kdtree.cTrav = o.bvh.cTrav = r.nonNegative(v, p);
+    });
+    ifPresent(j, path, "c_isect", [&](const json& v, const std::string& p) {
+        o.kdtree.cIsect = o.bvh.cIsect = r.positive(v, p);
+    });
+    ifPresent(j, path, "empty_bonus", [&](const json& v, const std::string& p) {
+        o.kdtree.emptyBonus = r.nonNegative(v, p);
+        if (o.kdtree.emptyBonus > 1.0) r.fail(p, "must be between 0 and 1");
+    });
+    ifPresent(j, path, "buckets", [&](const json& v, const std::string& p) {
+        o.bvh.buckets = r.integer(v, p, 2, 256);
+    });
+}
+
+std::array<int, 2> readPair(const Reader& r, const json& j, const std::string& path, int lo,
+                            int hi) {
+    if (!j.is_array() || j.size() != 2)
+        r.fail(path, "expected an array of 2 whole numbers, got " + Reader::typeName(j));
+    return {r.integer(j[0], JsonLineMap::element(path, 0), lo, hi),
+            r.integer(j[1], JsonLineMap::element(path, 1), lo, hi)};
+}
+
+void readTrace(const Reader& r, const json& j, const std::string& path, LessonTrace& t) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"ray", "pixel", "image", "build"});
+    const int forms = int(j.contains("ray")) + int(j.contains("pixel")) + int(j.contains("build"));
+    if (forms != 1) r.fail(path, "give exactly one of \"ray\", \"pixel\" and \"build\"");
+    if (j.contains("build")) {
+        const std::string p = JsonLineMap::child(path, "build");
+        if (j["build"] != true) r.fail(p, "expected true");
+        t.kind = LessonTrace::Kind::Build;
+    } else if (j.contains("ray")) {
+        const std::string p = JsonLineMap::child(path, "ray");
+        const json& v = j["ray"];
+        if (v == "example") {
+            t.kind = LessonTrace::Kind::ExampleRay;
+        } else {
+            if (!v.is_array() || v.size() != 4)
+                r.fail(p, "expected \"example\" or [OX, OY, DX, DY]");
+            double n[4];
+            for (int i = 0; i < 4; ++i) n[i] = r.number(v[i], JsonLineMap::element(p, i));
+            if (n[2] == 0.0 && n[3] == 0.0) r.fail(p, "the direction must not be zero");
+            if (const auto problem =
+                    rayRangeProblem(Precision::Double, std::max(std::abs(n[0]), std::abs(n[1])),
+                                    std::max(std::abs(n[2]), std::abs(n[3]))))
+                r.fail(p, *problem);
+            t.kind = LessonTrace::Kind::Ray2D;
+            t.ray = Ray2{Vec2(n[0], n[1]), Vec2(n[2], n[3])};
+        }
+    } else {
+        t.kind = LessonTrace::Kind::Pixel;
+        const auto xy = readPair(r, j["pixel"], JsonLineMap::child(path, "pixel"), 0, 8192);
+        t.x = xy[0];
+        t.y = xy[1];
+    }
+    ifPresent(j, path, "image", [&](const json& v, const std::string& p) {
+        const auto wh = readPair(r, v, p, 1, 8192);
+        t.width = wh[0];
+        t.height = wh[1];
+    });
+    if (t.kind == LessonTrace::Kind::Pixel && (t.x >= t.width || t.y >= t.height))
+        r.fail(JsonLineMap::child(path, "pixel"), "outside the " + std::to_string(t.width) + "x" +
+                                                      std::to_string(t.height) + " image");
+}
+
+Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path,
+                {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind", "ray_depth",
+                 "until", "with_t", "tolerance"});
+    Exercise ex;
+    ex.line = r.lines().lineOf(path);
+    for (const char* key : {"id", "type", "prompt"})
+        if (!j.contains(key)) r.fail(path, std::string("\"") + key + "\" is required");
+    ex.id = r.string(j["id"], JsonLineMap::child(path, "id"));
+    if (ex.id.empty() || ex.id.find_first_of(" \t\n\"") != std::string::npos)
+        r.fail(JsonLineMap::child(path, "id"), "an exercise id is one word, e.g. \"next-cell\"");
+    const std::string typePath = JsonLineMap::child(path, "type");
+    const auto kind = valueNamed(kExerciseKinds, r.string(j["type"], typePath));
+    if (!kind) r.fail(typePath, "expected next_cell, value, pick_split, count or hit_or_miss");
+    ex.kind = *kind;
+    ex.prompt = readText(r, j["prompt"], JsonLineMap::child(path, "prompt"));
+    ifPresent(j, path, "hint",
+              [&](const json& v, const std::string& p) { ex.hint = readText(r, v, p); });
+    ifPresent(j, path, "at",
+              [&](const json& v, const std::string& p) { ex.at = readPosition(r, v, p); });
+    ifPresent(j, path, "tolerance", [&](const json& v, const std::string& p) {
+        ex.tolerance = r.positive(v, p);
+        if (ex.tolerance >= 1.0) r.fail(p, "a tolerance of 100% or more accepts anything");
+    });
+    const auto onlyFor = [&](const char* key, ExerciseKind k) {
+        if (j.contains(key) && ex.kind != k)
+            r.fail(JsonLineMap::child(path, key),
+                   "only " + std::string(exerciseKindName(k)) + " exercises take this key");
+    };
+    onlyFor("quantity", ExerciseKind::Value);
+    onlyFor("count", ExerciseKind::Count);
+    onlyFor("ray_kind", ExerciseKind::Count);
+    onlyFor("ray_depth", ExerciseKind::Count);
+    onlyFor("until", ExerciseKind::Count);
+    ifPresent(j, path, "until",
+              [&](const json& v, const std::string& p) { ex.until = readPosition(r, v, p); });
+    onlyFor("with_t", ExerciseKind::HitOrMiss);
+    if (ex.kind == ExerciseKind::Value) {
+        if (!j.contains("quantity")) r.fail(path, "a value exercise names its \"quantity\"");
+        const std::string p = JsonLineMap::child(path, "quantity");
+        const auto q = valueNamed(kQuantities, r.string(j["quantity"], p));
+        if (!q) {
+            std::string names;
+            for (const auto& [v, n] : kQuantities)
+                names += (names.empty() ? "" : ", ") + std::string(n);
+            r.fail(p, "unknown quantity (expected one of " + names + ")");
+        }
+        ex.quantity = *q;
+    }
+    if (ex.kind == ExerciseKind::Count) {
+        if (!j.contains("count")) r.fail(path, "a count exercise names the event it counts");
+        const std::string p = JsonLineMap::child(path, "count");
+        const auto k = eventKindNamed(r.string(j["count"], p));
+        if (!k) r.fail(p, "unknown event kind (expected one of " + eventKindList() + ")");
+        ex.countKind = *k;
+        ifPresent(j, path, "ray_kind", [&](const json& v, const std::string& rp) {
+            const std::string name = r.string(v, rp);
+            for (int i = 0; i < kRayKindCount; ++i)
+                if (kRayKindNames[i] == name) ex.rayKind = static_cast<RayKind>(i);
+            if (!ex.rayKind)
+                r.fail(rp, "expected primary, shadow, reflection, refraction or diffuse");
+            if (ex.countKind != variantIndex<RayBegin>())
+                r.fail(rp, "only a count of ray_begin events can name a ray kind");
+        });
+        ifPresent(j, path, "ray_depth", [&](const json& v, const std::string& rp) {
+            ex.rayDepth = r.integer(v, rp, 0, 64);
+            if (ex.countKind != variantIndex<RayBegin>())
+                r.fail(rp, "only a count of ray_begin events can name a ray depth");
+        });
+    }
+    ifPresent(j, path, "with_t", [&](const json& v, const std::string& p) {
+        if (!v.is_boolean()) r.fail(p, "expected true or false");
+        ex.withT = v.get<bool>();
+    });
+    return ex;
+}
+
+LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"text", "at", "filter", "camera"});
+    LessonStep s;
+    s.line = r.lines().lineOf(path);
+    if (!j.contains("text")) r.fail(path, "a step needs its \"text\"");
+    s.text = readText(r, j["text"], JsonLineMap::child(path, "text"));
+    ifPresent(j, path, "at",
+              [&](const json& v, const std::string& p) { s.at = readPosition(r, v, p); });
+    ifPresent(j, path, "filter",
+              [&](const json& v, const std::string& p) { s.filter = r.string(v, p); });
+    ifPresent(j, path, "camera", [&](const json& v, const std::string& p) {
+        r.requireObject(v, p);
+        r.checkKeys(v, p, {"azimuth", "elevation", "zoom"});
+        LessonCamera c;
+        ifPresent(v, p, "azimuth",
+                  [&](const json& x, const std::string& xp) { c.azimuth = r.number(x, xp); });
+        ifPresent(v, p, "elevation", [&](const json& x, const std::string& xp) {
+            c.elevation = r.number(x, xp);
+            if (std::abs(c.elevation) >= 90.0) r.fail(xp, "must be between -90 and 90 degrees");
+        });
+        ifPresent(v, p, "zoom",
+                  [&](const json& x, const std::string& xp) { c.zoom = r.positive(x, xp); });
+        s.camera = c;
+    });
+    return s;
+}
+
+// Built-in lessons are named by their place in the source tree, as a lesson file would be.
+constexpr std::string_view kLessonFolder = "lessons/";
+
+}  // namespace
+
+std::optional<Language> parseLanguage(std::string_view code) {
+    if (code == "en") return Language::En;
+    if (code == "it") return Language::It;
+    return std::nullopt;
+}
+
+std::string_view exerciseKindName(ExerciseKind k) {
+    return nameOf(kExerciseKinds, k);
+}
+std::optional<Quantity> parseQuantity(std::string_view name) {
+    return valueNamed(kQuantities, name);
+}
+std::string_view quantityName(Quantity q) {
+    return nameOf(kQuantities, q);
+}
+std::string_view lessonViewName(LessonView v) {
+    return nameOf(kViews, v);
+}
+
+const Exercise* Lesson::exercise(std::string_view exerciseId) const {
+    for (const Exercise& e : exercises)
+        if (e.id == exerciseId) return &e;
+    return nullptr;
+}
+
+namespace {
+Lesson readLesson(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
+    r.requireObject(root, "");
+    r.checkKeys(root, "",
+                {"format", "version", "id", "number", "title", "text", "scene", "setup", "views",
+                 "trace", "sweep", "steps", "exercises"});
+    if (root.value("format", json()) != "raystep-lesson")
+        r.fail("format", "a lesson file starts with \"format\": \"raystep-lesson\"");
+    if (!root.contains("version")) r.fail("", "\"version\" is required (1)");
+    if (r.integer(root["version"], "version", 1, 1000) != 1)
+        r.fail("version", "this raystep reads lesson files of version 1");
+    for (const char* key : {"id", "number", "title", "text", "scene", "trace"})
+        if (!root.contains(key)) r.fail("", std::string("\"") + key + "\" is required");
+    Lesson l;
+    l.file = fileName;
+    l.id = r.string(root["id"], "id");
+    if (l.id.empty() || l.id.find_first_of(" \t\n/\"") != std::string::npos)
+        r.fail("id", "a lesson id is one word without '/', e.g. \"grid-2d-dda\"");
+    l.number = r.integer(root["number"], "number", 1, 999);
+    l.title = readText(r, root["title"], "title");
+    l.text = readText(r, root["text"], "text");
+    l.scene = r.string(root["scene"], "scene");
+    if (l.scene.empty()) r.fail("scene", "must name a built-in scene or a scene file");
+    ifPresent(root, "", "setup",
+              [&](const json& v, const std::string& p) { readSetup(r, v, p, l); });
+    readTrace(r, root["trace"], "trace", l.trace);
+    ifPresent(root, "", "views", [&](const json& v, const std::string& p) {
+        if (!v.is_array() || v.empty())
+            r.fail(p, "expected a list of views: \"2d\", \"3d\", \"image\"");
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const std::string ep = JsonLineMap::element(p, i);
+            const auto view = valueNamed(kViews, r.string(v[i], ep));
+            if (!view) r.fail(ep, "expected \"2d\", \"3d\" or \"image\"");
+            l.views.push_back(*view);
+        }
+    });
+    ifPresent(root, "", "sweep", [&](const json& v, const std::string& p) {
+        r.requireObject(v, p);
+        r.checkKeys(v, p, {"grid_res", "image"});
+        GridSweepSpec s;
+        const std::string rp = JsonLineMap::child(p, "grid_res");
+        if (!v.contains("grid_res") || !v["grid_res"].is_array() || v["grid_res"].empty())
+            r.fail(rp, "expected a list of resolutions (cells per axis)");
+        for (std::size_t i = 0; i < v["grid_res"].size(); ++i)
+            // The sweep's grids are cubes: 256^3 is the grid's cap of 2^24 cells.
+            s.resolutions.push_back(
+                r.integer(v["grid_res"][i], JsonLineMap::element(rp, i), 1, 256));
+        ifPresent(v, p, "image", [&](const json& x, const std::string& xp) {
+            const auto wh = readPair(r, x, xp, 1, 1024);
+            s.width = wh[0];
+            s.height = wh[1];
+        });
+        l.sweep = s;
+    });
+    ifPresent(root, "", "steps", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) r.fail(p, "expected an array of steps");
+        for (std::size_t i = 0; i < v.size(); ++i)
+            l.steps.push_back(readStep(r, v[i], JsonLineMap::element(p, i)));
+    });
+    ifPresent(root, "", "exercises", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) r.fail(p, "expected an array of exercises");
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const std::string ep = JsonLineMap::element(p, i);
+            Exercise ex = readExercise(r, v[i], ep);
+            if (l.exercise(ex.id)) r.fail(JsonLineMap::child(ep, "id"), "exercise id used twice");
+            l.exercises.push_back(std::move(ex));
+        }
+    });
+    const bool twoDTrace =
+        l.trace.kind == LessonTrace::Kind::ExampleRay || l.trace.kind == LessonTrace::Kind::Ray2D;
+    if (l.views.empty())
+        l.views = twoDTrace ? std::vector<LessonView>{LessonView::View2D}
+                            : std::vector<LessonView>{LessonView::View3D, LessonView::Image};
+    if (l.trace.kind == LessonTrace::Kind::Build && l.accel != AccelKind::KdTree &&
+        l.accel != AccelKind::Bvh)
+        r.fail("trace", "a build can be recorded for a kdtree or a bvh (setup.accel)");
+    return l;
+}
+
+}  // namespace
+
+Lesson loadLessonText(std::string_view text, const std::string& fileName) {
+    return detail::guarded<LessonError>(fileName, [&] { return readLesson(text, fileName); });
+}
+
+std::vector<Lesson> builtinLessons() {
+    std::vector<Lesson> lessons;
+    for (const std::string& f : embeddedLessonNames()) {
+        lessons.push_back(loadLessonText(*embeddedLesson(f), std::string(kLessonFolder) + f));
+        lessons.back().builtin = true;
+    }
+    std::sort(lessons.begin(), lessons.end(),
+              [](const Lesson& a, const Lesson& b) { return a.number < b.number; });
+    return lessons;
+}
+
+Lesson loadLesson(const std::string& idOrPath) {
+    for (Lesson& l : builtinLessons())
+        if (l.id == idOrPath || std::to_string(l.number) == idOrPath) return std::move(l);
+    std::string text;
+    try {
+        text = detail::readRegularFile(idOrPath, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        if (!f.missing())
+            throw LessonError(idOrPath, 0, "",
+                              std::string("cannot read the lesson file: ") + f.what());
+        std::string ids;
+        for (const Lesson& l : builtinLessons())
+            ids += (ids.empty() ? "" : ", ") + std::to_string(l.number) + " " + l.id;
+        throw LessonError(idOrPath, 0, "",
+                          "no such lesson file, and no built-in lesson of that id or number "
+                          "(built-in: " +
+                              ids + ")");
+    }
+    return loadLessonText(text, idOrPath);
+}
+
+}  // namespace raystep

@@ -1,0 +1,139 @@
+#pragma once
+// Lessons (docs/lesson-format.md): the model and its loader. A lesson is the lecture's topic as
+// text in English and Italian, a scene, the structure to build, the trace to record, steps that
+// put the replay somewhere, and exercises whose right answer is read from the recorded trace,
+// never written in the lesson file (course/exercise.h). The app shows them; `raystep-cli lesson`
+// lists, validates and grades them.
+#include "course/grid_sweep.h"
+
+#include "raystep/accel/accel.h"
+#include "raystep/base/file_error.h"
+#include "raystep/scene/scene2d.h"
+#include "raystep/trace/events.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raystep {
+
+enum class Language { En, It };
+std::optional<Language> parseLanguage(std::string_view code);  // "en", "it"
+
+/// A text in both languages (Italian falls back to English where a lesson leaves it out).
+struct LocalText {
+    std::string en, it;
+    const std::string& in(Language l) const { return l == Language::It && !it.empty() ? it : en; }
+};
+
+/// A lesson, answers or progress file that cannot be used: file, line, key and why.
+class LessonError : public FileError {
+  public:
+    using FileError::FileError;
+};
+
+/// Where a step or an exercise puts the replay cursor. Positions name events, not counts, so a
+/// lesson survives a change in how many events come before.
+struct ReplayPosition {
+    enum class Mode { Start, End, Cursor, AfterEvent, BeforeEvent };
+    Mode mode = Mode::Start;
+    std::size_t cursor = 0;     // Cursor: this many events applied
+    std::size_t eventKind = 0;  // AfterEvent / BeforeEvent: variant index of the event
+    int nth = 1;                // ... its nth occurrence (1-based)
+};
+
+enum class LessonView { View2D, View3D, Image };
+std::string_view lessonViewName(LessonView v);  // "2d", "3d", "image"
+
+/// The 3D view's camera for a step: degrees around the scene's centre, and a zoom factor.
+struct LessonCamera {
+    double azimuth = 0.0, elevation = 0.0, zoom = 1.0;
+};
+
+struct LessonStep {
+    LocalText text;
+    ReplayPosition at;
+    std::string filter;  // what the event list shows (its filter text), empty = everything
+    std::optional<LessonCamera> camera;
+    int line = 0;  // in the lesson file, for messages
+};
+
+/// The recording a lesson is about.
+struct LessonTrace {
+    enum class Kind { ExampleRay, Ray2D, Pixel, Build };
+    Kind kind = Kind::ExampleRay;
+    Ray2 ray;          // Ray2D
+    int x = 0, y = 0;  // Pixel, in a width x height image
+    int width = 320, height = 240;
+};
+
+enum class ExerciseKind { NextCell, Value, PickSplit, Count, HitOrMiss };
+std::string_view exerciseKindName(ExerciseKind k);
+
+/// Quantities a Value exercise asks for; each is read from the next event of its kind at or after
+/// the exercise's position.
+enum class Quantity {
+    TMaxX,
+    TMaxY,
+    TMaxZ,  // next dda_cell
+    TDeltaX,
+    TDeltaY,
+    TDeltaZ,  // next dda_setup
+    TEnter,
+    TExit,  // next dda_setup
+    HitT,
+    HitU,
+    HitV,   // next ray_hit (u, v: barycentric coordinates on a triangle)
+    TestT,  // next primitive_test that hits
+    NodeTNear,
+    NodeTFar,  // next node_enter
+    CandidatePL,
+    CandidatePR,
+    CandidateCost,  // next split_candidate
+};
+std::optional<Quantity> parseQuantity(std::string_view name);
+std::string_view quantityName(Quantity q);
+
+struct Exercise {
+    std::string id;
+    ExerciseKind kind = ExerciseKind::Value;
+    LocalText prompt, hint;
+    ReplayPosition at;
+    Quantity quantity = Quantity::TMaxX;  // Value
+    std::size_t countKind = 0;            // Count: variant index of the events counted
+    std::optional<RayKind> rayKind;       // Count of ray_begin: only rays of this kind
+    std::optional<int> rayDepth;          // ... and of this depth (0 = primary)
+    std::optional<ReplayPosition> until;  // Count: up to here (else to the end)
+    bool withT = false;                   // HitOrMiss: the t of a hit is asked too
+    double tolerance = 0.01;              // relative (absolute below 1) for numbers
+    int line = 0;
+};
+
+struct Lesson {
+    std::string id;
+    int number = 0;
+    LocalText title, text;
+    std::string scene;  // a built-in scene name or a path relative to the lesson file
+    AccelKind accel = AccelKind::BruteForce;
+    AccelOptions options;
+    std::vector<LessonView> views;
+    LessonTrace trace;
+    std::optional<GridSweepSpec> sweep;
+    std::vector<LessonStep> steps;
+    std::vector<Exercise> exercises;
+    std::string file;      // where it was read from (messages)
+    bool builtin = false;  // embedded in raystep (its scene is a built-in name)
+
+    const Exercise* exercise(std::string_view exerciseId) const;
+};
+
+/// Parses lesson text; errors name `fileName`, the line and the key.
+Lesson loadLessonText(std::string_view text, const std::string& fileName);
+/// A built-in lesson by id ("grid-2d-dda") or number ("6"), else a lesson file.
+Lesson loadLesson(const std::string& idOrPath);
+/// The built-in lessons in the lecture's order.
+std::vector<Lesson> builtinLessons();
+
+}  // namespace raystep

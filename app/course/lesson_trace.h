@@ -1,0 +1,40 @@
+#pragma once
+// Running a lesson: its scene, the structure and the trace it records; and the replay positions
+// its steps and exercises name, found in that trace.
+#include "course/lesson.h"
+
+#include "raystep/accel/accel.h"
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
+#include "raystep/trace/events.h"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace raystep {
+
+/// A lesson made ready: its scene, the structure and the recorded trace.
+struct LessonRun {
+    std::unique_ptr<std::variant<Scene, Scene2D>> scene;
+    std::optional<Accelerator> accel3D;
+    std::optional<Accelerator2D> accel2D;
+    std::unique_ptr<EventLog> log;
+};
+/// The lesson's scene, as a path the app and loadAnyScene accept.
+std::string lessonScenePath(const Lesson& lesson);
+/// Loads the scene, builds the structure and records the trace.
+LessonRun runLesson(const Lesson& lesson);
+/// Records the lesson's trace with a scene and structure already made.
+std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
+                                            const std::variant<Scene, Scene2D>& scene,
+                                            const Accelerator* accel3D,
+                                            const Accelerator2D* accel2D);
+
+/// The cursor a position stands for in `log`; nullopt when the log has no such event.
+std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const EventLog& log);
+std::string describePosition(const ReplayPosition& at, Language lang = Language::En);
+
+}  // namespace raystep

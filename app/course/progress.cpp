@@ -1,0 +1,134 @@
+// A student's progress file: read (every error names file, line and key), written, folded
+// together with what another window saved, and summed up as a report for the course.
+#include "course/progress.h"
+
+#include "raystep/base/json_reader.h"
+
+#include <sstream>
+
+namespace raystep {
+
+using detail::ifPresent;
+using detail::json;
+using Reader = detail::JsonReader<LessonError>;
+
+namespace {
+Progress readProgress(std::string_view text, const std::string& fileName) {
+    auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
+    const json& root = parsed.root;
+    const Reader r(fileName, std::move(parsed.lines));
+    r.requireObject(root, "");
+    r.checkKeys(root, "", {"format", "version", "lessons"});
+    if (root.value("format", json()) != "raystep-progress")
+        r.fail("format", "not a raystep progress file");
+    Progress p;
+    ifPresent(root, "", "lessons", [&](const json& v, const std::string& path) {
+        r.requireObject(v, path);
+        for (const auto& [id, lj] : v.items()) {
+            const std::string lp = JsonLineMap::child(path, id);
+            r.requireObject(lj, lp);
+            r.checkKeys(lj, lp, {"step", "exercises"});
+            LessonProgress& lesson = p.lessons[id];
+            ifPresent(lj, lp, "step", [&](const json& s, const std::string& sp) {
+                lesson.step = r.integer(s, sp, 0, 10'000);
+            });
+            ifPresent(lj, lp, "exercises", [&](const json& ej, const std::string& ep) {
+                r.requireObject(ej, ep);
+                for (const auto& [eid, rec] : ej.items()) {
+                    const std::string rp = JsonLineMap::child(ep, eid);
+                    r.requireObject(rec, rp);
+                    r.checkKeys(rec, rp, {"correct", "attempts", "answer"});
+                    LessonProgress::ExerciseRecord& e = lesson.exercises[eid];
+                    ifPresent(rec, rp, "correct", [&](const json& x, const std::string& xp) {
+                        if (!x.is_boolean()) r.fail(xp, "expected true or false");
+                        e.correct = x.get<bool>();
+                    });
+                    ifPresent(rec, rp, "attempts", [&](const json& x, const std::string& xp) {
+                        e.attempts = r.integer(x, xp, 0, 1'000'000);
+                    });
+                    ifPresent(rec, rp, "answer", [&](const json& x, const std::string& xp) {
+                        e.answer = r.string(x, xp);
+                    });
+                }
+            });
+        }
+    });
+    return p;
+}
+}  // namespace
+
+Progress parseProgress(std::string_view text, const std::string& fileName) {
+    return detail::guarded<LessonError>(fileName, [&] { return readProgress(text, fileName); });
+}
+
+std::optional<Progress> loadProgressFile(const std::string& path) {
+    std::string text;
+    try {
+        text = detail::readRegularFile(path, detail::kMaxJsonFileBytes);
+    } catch (const detail::ReadFailure& f) {
+        if (f.missing()) return std::nullopt;
+        throw LessonError(path, 0, "", std::string("cannot read the progress file: ") + f.what());
+    }
+    return parseProgress(text, path);
+}
+
+std::string progressToJson(const Progress& p) {
+    json lessons = json::object();
+    for (const auto& [id, l] : p.lessons) {
+        json ex = json::object();
+        for (const auto& [eid, e] : l.exercises)
+            ex[eid] = {{"correct", e.correct}, {"attempts", e.attempts}, {"answer", e.answer}};
+        lessons[id] = {{"step", l.step}, {"exercises", ex}};
+    }
+    const json root = {{"format", "raystep-progress"}, {"version", 1}, {"lessons", lessons}};
+    return root.dump(2) + "\n";
+}
+
+void mergeProgress(Progress& into, const Progress& saved) {
+    for (const auto& [id, theirs] : saved.lessons) {
+        const auto [it, added] = into.lessons.try_emplace(id, theirs);
+        if (added) continue;
+        for (const auto& [ex, rec] : theirs.exercises) {
+            const auto [mine, fresh] = it->second.exercises.try_emplace(ex, rec);
+            if (fresh) continue;
+            if (rec.attempts > mine->second.attempts) {
+                mine->second.attempts = rec.attempts;
+                mine->second.answer = rec.answer;
+            }
+            mine->second.correct = mine->second.correct || rec.correct;
+        }
+    }
+}
+
+std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang) {
+    const bool it = lang == Language::It;
+    std::ostringstream s;
+    s << (it ? "# raystep: progressi\n\n" : "# raystep: progress\n\n");
+    s << (it ? "| Lezione | Esercizi | Svolti | Corretti | Tentativi |\n"
+             : "| Lesson | Exercises | Done | Right | Attempts |\n");
+    s << "|---|---:|---:|---:|---:|\n";
+    int total = 0, done = 0, right = 0;
+    for (const Lesson& l : lessons) {
+        int d = 0, r = 0, attempts = 0;
+        if (const auto lp = p.lessons.find(l.id); lp != p.lessons.end())
+            for (const Exercise& ex : l.exercises)
+                if (const auto e = lp->second.exercises.find(ex.id);
+                    e != lp->second.exercises.end()) {
+                    d += e->second.attempts > 0;
+                    r += e->second.correct;
+                    attempts += e->second.attempts;
+                }
+        total += static_cast<int>(l.exercises.size());
+        done += d;
+        right += r;
+        s << "| " << l.number << ". " << l.title.in(lang) << " | " << l.exercises.size() << " | "
+          << d << " | " << r << " | " << attempts << " |\n";
+    }
+    s << "\n"
+      << (it ? "Totale: " : "Total: ") << right << " / " << total
+      << (it ? " esercizi corretti, " : " exercises right, ") << done
+      << (it ? " svolti.\n" : " attempted.\n");
+    return s.str();
+}
+
+}  // namespace raystep
