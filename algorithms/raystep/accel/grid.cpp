@@ -1,10 +1,10 @@
 #include "raystep/accel/grid.h"
 
 #include "raystep/accel/mailbox.h"
+#include "raystep/base/timer.h"
 #include "raystep/scene/scene2d.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -54,7 +54,7 @@ double largestFitting(std::size_t maxCells, Rule&& rule, Fits&& fits) {
 template <typename Prims>
 UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
     : prims_(std::move(prims)), mailbox_(options.mailbox) {
-    const auto start = std::chrono::steady_clock::now();
+    ScopedTimer timer(buildMs_);
     const std::uint32_t n = prims_.count();
     BoxN<N> b;
     for (std::uint32_t p = 0; p < n; ++p) b.extend(prims_.bounds(p));
@@ -168,8 +168,6 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
         forCells(lo, hi, [&](std::size_t c) { cellPrims_[fill[c]++] = p; });
         report(0.5 + 0.5 * (p + 1) / n, p);
     }
-    buildMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <typename Prims>
