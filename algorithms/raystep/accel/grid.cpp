@@ -210,7 +210,7 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
     }
     if constexpr (Rec::kEnabled) {
         if (dda.valid()) {
-            DdaSetup e{rayId, {0, 0, 0}, N, {0.0, 0.0, 0.0}, dda.tEnter(), dda.tLeave()};
+            DdaSetup e{rayId, {0, 0, 0}, N, {0.0, 0.0, 0.0}, dda.tEnter(), dda.tGridExit()};
             for (int i = 0; i < N; ++i) {
                 e.step[i] = static_cast<std::int8_t>(dda.step()[i]);
                 e.tDelta[i] = dda.tDelta()[i];
@@ -236,7 +236,7 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
                 return hit;
         // A hit beyond this cell may be beaten by a primitive of a later cell: walk on until the
         // nearest hit lies before the cell's far side.
-        if (closest && closest->t < dda.tExit()) break;
+        if (closest && closest->t < dda.tCellExit()) break;
     }
     return closest;
 }
