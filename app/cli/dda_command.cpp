@@ -77,7 +77,7 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
             s["tMax"] = tMax;
             s["tDelta"] = tDelta;
             s["t_enter"] = double(dda.tEnter());
-            s["t_exit"] = double(dda.tExit());
+            s["t_exit"] = double(dda.tCellExit());
             std::string text = s.dump(2);
             for (std::size_t at = text.find('\n'); at != std::string::npos;
                  at = text.find('\n', at + 1))
@@ -111,7 +111,7 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
         for (int i = 0; i < N; ++i) std::printf(" %5d", dda.cell()[i]);
         const VecN<N, T> tMax = dda.tMax();
         for (int i = 0; i < N; ++i) std::printf(" %12s", num(tMax[i]).c_str());
-        std::printf("  %10s %10s  ", num(dda.tEnter()).c_str(), num(dda.tExit()).c_str());
+        std::printf("  %10s %10s  ", num(dda.tEnter()).c_str(), num(dda.tCellExit()).c_str());
         more = dda.next();
         if (!more) {
             std::printf("leaves the grid\n");

@@ -2,6 +2,7 @@
 // crosses, in order. The reference lists every boundary crossing in rationals, sorts them, and
 // locates each stretch between two crossings by its midpoint: nothing of dda.h is used.
 #include "raystep/accel/dda.h"
+#include "raystep/accel/dda_textbook.h"
 #include "raystep/base/rng.h"
 
 #include "exact.h"
@@ -163,21 +164,17 @@ TEST(Dda, StartsOnBoundariesAndOutside) {
     }
 }
 
-/// The slides' loop verbatim, with tMax accumulated (tMax += tDelta), for comparison.
-Cells<2> naiveWalk(int n, std::array<double, 2> o, std::array<double, 2> d) {
-    long x = long(std::floor(o[0])), y = long(std::floor(o[1]));
-    double tMaxX = (x + 1 - o[0]) / d[0], tMaxY = (y + 1 - o[1]) / d[1];
-    const double tDeltaX = 1 / d[0], tDeltaY = 1 / d[1];
-    Cells<2> cells{{x, y}};
-    while (x < n && y < n) {
-        if (tMaxX < tMaxY) {
-            tMaxX += tDeltaX;
-            ++x;
-        } else {
-            tMaxY += tDeltaY;
-            ++y;
-        }
-        if (x < n && y < n) cells.push_back({x, y});
+/// The slides' loop (ddaTextbook, tMax accumulated by tMax += tDelta): its cells, for comparison.
+template <int N>
+Cells<N> textbookWalk(const GridSpec<N, double>& g, const std::array<double, N>& o,
+                      const std::array<double, N>& d) {
+    VecN<N, double> origin, dir;
+    for (int i = 0; i < N; ++i) origin[i] = o[i], dir[i] = d[i];
+    Cells<N> cells;
+    for (const TextbookCell<N, double>& c : ddaTextbook(g, origin, dir)) {
+        std::array<long, N> cell{};
+        for (int i = 0; i < N; ++i) cell[i] = c.cell[i];
+        cells.push_back(cell);
     }
     return cells;
 }
@@ -201,7 +198,7 @@ TEST(Dda, LongNearDiagonalWalks) {
           std::array<double, 2>{399.5, 299.5 + 1e-13}}) {
         const Cells<2> exact = exactWalk<2>(g, o, d);
         EXPECT_EQ(ddaWalk<2>(g, o, d), exact);
-        EXPECT_NE(naiveWalk(500, o, d), exact);
+        EXPECT_NE(textbookWalk<2>(g, o, d), exact);
     }
 }
 
@@ -222,7 +219,22 @@ TEST(Dda, RandomRaysAgainstExactIn3D) {
         if (i % 7 == 0)
             o[0] = g.lo[0] + (g.hi[0] - g.lo[0]) * int(rng.uniform() * g.res[0]) / g.res[0];
         EXPECT_EQ(ddaWalk<3>(g, o, d), exactWalk<3>(g, o, d)) << "ray " << i;
+        // The slides' loop too, away from parallel axes and boundaries: a dozen cells, no drift.
+        if (i % 5 != 0 && i % 7 != 0) {
+            EXPECT_EQ(textbookWalk<3>(g, o, d), exactWalk<3>(g, o, d)) << "textbook ray " << i;
+        }
     }
+}
+
+TEST(Dda, TextbookLoopOnTheLecturesExample) {
+    // The lecture's example, as the slides' table: the cells, and tMax accumulated step by step.
+    const auto rows = ddaTextbook(grid2(4, 3), {0.5, 0.25}, {1, 0.6});
+    EXPECT_EQ(textbookWalk<2>(grid2(4, 3), {0.5, 0.25}, {1, 0.6}),
+              exactWalk<2>(grid2(4, 3), {0.5, 0.25}, {1, 0.6}));
+    ASSERT_EQ(rows.size(), 6u);
+    EXPECT_EQ(rows[0].tMax.x, 0.5);
+    EXPECT_DOUBLE_EQ(rows[0].tMax.y, 0.75 / 0.6);
+    EXPECT_EQ(rows[1].tMax.x, 1.5);  // stepped X: tMaxX += tDeltaX
 }
 
 TEST(Dda, HugeAndTinyGrids) {

@@ -1,18 +1,19 @@
 #pragma once
 // The accelerator interface: "given the scene, find the nearest hit of a ray efficiently".
 // A closed set of structures dispatched through std::variant (no virtual call per ray).
-// Brute force is the slides' RaySceneIntersection; the uniform grid walks cells with the 3D-DDA;
-// the kd-tree subdivides space, the BVH the objects.
-#include "raystep/accel/query.h"
-#include "raystep/base/progress.h"
+// Brute force (bruteforce.h) is the slides' RaySceneIntersection; the uniform grid walks cells
+// with the 3D-DDA; the kd-tree subdivides space, the BVH the objects.
+#include "raystep/accel/bruteforce.h"
 #include "raystep/accel/bvh.h"
-#include "raystep/trace/events.h"
 #include "raystep/accel/grid.h"
 #include "raystep/accel/kdtree.h"
 #include "raystep/accel/mailbox.h"
+#include "raystep/accel/query.h"
+#include "raystep/base/progress.h"
 #include "raystep/base/ray.h"
 #include "raystep/scene/scene.h"
 #include "raystep/scene/scene2d.h"
+#include "raystep/trace/events.h"
 
 #include <optional>
 #include <string>
@@ -20,51 +21,6 @@
 #include <variant>
 
 namespace raystep {
-
-/// The slides' loop: test every primitive, keep the closest.
-template <typename Prims>
-class BruteForceT {
-  public:
-    using RayT = typename Prims::RayT;
-    using HitT = typename Prims::HitT;
-    explicit BruteForceT(Prims prims) : prims_(std::move(prims)) {}
-    const Prims& primitives() const { return prims_; }
-    const KernelOptions& kernels() const { return prims_.kernels(); }
-
-    /// Nearest hit in (ray.tMin, ray.tMax).
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const {
-        NullRecorder rec;
-        return loop<false>(ray, counters, rec, kNoId);
-    }
-    /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
-    bool occluded(RayT ray, TraversalCounters& counters) const {
-        NullRecorder rec;
-        return loop<true>(ray, counters, rec, kNoId).has_value();
-    }
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                  std::uint32_t rayId) const {
-        return loop<false>(ray, counters, log, rayId);
-    }
-    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const {
-        return loop<true>(ray, counters, log, rayId).has_value();
-    }
-
-  private:
-    template <bool AnyHit, typename Rec>
-    std::optional<HitT> loop(RayT ray, TraversalCounters& counters, Rec& rec,
-                             std::uint32_t rayId) const {
-        std::optional<HitT> closest;
-        HitT hit;
-        // intersect shortens ray.tMax, so later primitives must be closer to win.
-        for (std::uint32_t p = 0; p < prims_.count(); ++p)
-            if (visitPrimitive<AnyHit>(prims_, p, ray, hit, closest, nullptr, counters, rec, rayId))
-                return hit;
-        return closest;
-    }
-
-    Prims prims_;
-};
-using BruteForce = BruteForceT<ScenePrims>;
 
 enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
 

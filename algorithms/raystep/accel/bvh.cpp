@@ -1,12 +1,14 @@
 #include "raystep/accel/bvh.h"
 
-#include "raystep/scene/fast_prims.h"
 #include "raystep/accel/mailbox.h"
+#include "raystep/base/timer.h"
+#include "raystep/scene/fast_prims.h"
 #include "raystep/scene/scene2d.h"
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
+#include <optional>
+#include <utility>
 
 namespace raystep {
 
@@ -35,6 +37,7 @@ class BvhBuilder {
         std::iota(ids_.begin(), ids_.end(), 0u);
     }
 
+    /// One node over ids_[begin, end): its box, then a leaf, or a split and the two children.
     std::uint32_t build(std::uint32_t begin, std::uint32_t end, int depth, std::uint32_t parent) {
         const auto id = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
@@ -51,107 +54,32 @@ class BvhBuilder {
             rec_(BuildNode{id, parent, static_cast<std::uint32_t>(depth), n});
         }
         const int axis = centreBox.longestAxis();
-        const std::size_t maxLeaf = opt_.split == SplitMethod::Sah ? std::max(opt_.maxLeafSize, 1)
-                                                                   : std::max(opt_.leafSize, 1);
-        if (n <= 1 || (opt_.split != SplitMethod::Sah && n <= maxLeaf))
+        if (n <= 1 || (opt_.split != SplitMethod::Sah && n <= maxLeaf()))
             return leaf(id, begin, end, LeafReason::FewPrimitives, depth);
         if (!(centreBox.hi[axis] > centreBox.lo[axis]))
             return leaf(id, begin, end, LeafReason::NoSplit, depth);
 
-        const double lo = centreBox.lo[axis], hi = centreBox.hi[axis];
-        const auto centre = [&](std::uint32_t p) { return centres_[p][axis]; };
-        std::uint32_t* first = ids_.data() + begin;
-        std::uint32_t* last = ids_.data() + end;
-        std::uint32_t mid = begin;
-        double cost = 0.0, position = 0.0;
-        SplitMethod method = depth >= kMaxBvhDepth ? SplitMethod::Median : opt_.split;
-        if (method == SplitMethod::Midpoint) {
-            position = 0.5 * (lo + hi);
-            mid = begin + static_cast<std::uint32_t>(std::partition(first, last,
-                                                                    [&](std::uint32_t p) {
-                                                                        return centre(p) < position;
-                                                                    }) -
-                                                     first);
-            if (mid == begin || mid == end) method = SplitMethod::Median;  // pbrt's fallback
+        // The three builds, one case each; past kMaxBvhDepth every method splits by the median.
+        const Node node{id, begin, end, axis, centreBox.lo[axis], centreBox.hi[axis], box};
+        Split split;
+        switch (depth >= kMaxBvhDepth ? SplitMethod::Median : opt_.split) {
+            case SplitMethod::Midpoint:
+                split = splitMidpoint(node);
+                break;
+            case SplitMethod::Median:
+                split = splitMedian(node);
+                break;
+            case SplitMethod::Sah:
+                split = splitSahBinned(node);
+                break;
         }
-        if (method == SplitMethod::Median) {
-            mid = begin + n / 2;
-            std::nth_element(first, ids_.data() + mid, last, [&](std::uint32_t a, std::uint32_t b) {
-                return centre(a) < centre(b);
-            });
-            position = centre(ids_[mid]);
-        }
-        if (method == SplitMethod::Sah) {
-            // Bin the centres, then sweep the bucket boundaries: cost of each as a split.
-            const int nb = std::clamp(opt_.buckets, 2, 256);
-            std::vector<std::uint32_t> count(nb, 0);
-            std::vector<Box> bucketBox(nb);
-            const auto bucketOf = [&](std::uint32_t p) {
-                return std::min(nb - 1, static_cast<int>(nb * ((centre(p) - lo) / (hi - lo))));
-            };
-            for (std::uint32_t k = begin; k < end; ++k) {
-                const int b = bucketOf(ids_[k]);
-                ++count[b];
-                bucketBox[b].extend(bounds_[ids_[k]]);
-            }
-            std::vector<Box> below(nb);  // below[i]: buckets 0..i
-            Box acc;
-            for (int i = 0; i < nb; ++i) acc.extend(bucketBox[i]), below[i] = acc;
-            const double area = box.area();
-            double best = kInfinity;
-            int bestSplit = -1;
-            Box above;
-            std::uint32_t nAbove = 0;
-            std::vector<double> costs(nb - 1);
-            std::vector<std::pair<double, double>> ratios(nb - 1);
-            std::vector<std::uint32_t> nLeft(nb - 1);
-            for (int i = nb - 1; i > 0; --i) {  // split between bucket i-1 and i
-                above.extend(bucketBox[i]);
-                nAbove += count[i];
-                const std::uint32_t nBelow = n - nAbove;
-                const double pl = nBelow ? below[i - 1].area() / area : 0.0;
-                const double pr = nAbove ? above.area() / area : 0.0;
-                costs[i - 1] = (nBelow && nAbove)
-                                   ? sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, nBelow, nAbove)
-                                   : kInfinity;  // everything on one side splits nothing
-                ratios[i - 1] = {pl, pr};
-                nLeft[i - 1] = nBelow;
-            }
-            for (int i = 0; i < nb - 1; ++i) {
-                if constexpr (Rec::kEnabled)
-                    if (std::isfinite(costs[i]))
-                        rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), nLeft[i],
-                                            n - nLeft[i], lo + (hi - lo) * (i + 1) / nb,
-                                            ratios[i].first, ratios[i].second, costs[i]});
-                if (costs[i] < best) best = costs[i], bestSplit = i;
-            }
-            const double leafCost = opt_.cIsect * n;
-            if (bestSplit < 0) return leaf(id, begin, end, LeafReason::NoSplit, depth);
-            if (n <= maxLeaf && leafCost <= best)
-                return leaf(id, begin, end, LeafReason::SahCheaper, depth);
-            mid = begin +
-                  static_cast<std::uint32_t>(
-                      std::partition(first, last,
-                                     [&](std::uint32_t p) { return bucketOf(p) <= bestSplit; }) -
-                      first);
-            cost = best;
-            position = lo + (hi - lo) * (bestSplit + 1) / nb;
-        } else {
-            // The chosen split's SAH cost, for the record and the comparison of strategies.
-            Box l, r;
-            for (std::uint32_t k = begin; k < mid; ++k) l.extend(bounds_[ids_[k]]);
-            for (std::uint32_t k = mid; k < end; ++k) r.extend(bounds_[ids_[k]]);
-            const double area = box.area();
-            const double pl = area > 0 ? l.area() / area : 0.5,
-                         pr = area > 0 ? r.area() / area : 0.5;
-            cost = sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, mid - begin, end - mid);
-            if constexpr (Rec::kEnabled)
-                rec_(SplitCandidate{id, static_cast<std::uint8_t>(axis), mid - begin, end - mid,
-                                    position, pl, pr, cost});
-        }
+        if (split.leaf) return leaf(id, begin, end, *split.leaf, depth);
+
         if constexpr (Rec::kEnabled)
-            rec_(SplitChosen{id, static_cast<std::uint8_t>(axis), position, cost, opt_.cIsect * n});
+            rec_(SplitChosen{id, static_cast<std::uint8_t>(axis), split.position, split.cost,
+                             opt_.cIsect * n});
         nodes_[id].axis = static_cast<std::uint8_t>(axis);
+        const std::uint32_t mid = split.mid;
         const double fl = double(mid - begin) / n;
         progress_.child(fl, [&] { build(begin, mid, depth + 1, id); });
         std::uint32_t right = 0;
@@ -161,6 +89,128 @@ class BvhBuilder {
     }
 
   private:
+    /// The node being split: ids_[begin, end), split along `axis` of the centres' bounds [lo, hi].
+    struct Node {
+        std::uint32_t id, begin, end;
+        int axis;
+        double lo, hi;
+        const Box& box;
+        std::uint32_t count() const { return end - begin; }
+    };
+    /// ids_[begin, mid) go left, [mid, end) right; or, when the SAH says so, a leaf.
+    struct Split {
+        std::uint32_t mid = 0;
+        double position = 0.0, cost = 0.0;
+        std::optional<LeafReason> leaf;
+    };
+
+    std::size_t maxLeaf() const {
+        return opt_.split == SplitMethod::Sah ? std::max(opt_.maxLeafSize, 1)
+                                              : std::max(opt_.leafSize, 1);
+    }
+    double centre(std::uint32_t p, int axis) const { return centres_[p][axis]; }
+
+    /// Midpoint: the middle of the centres' bounds; everything on one side falls back to the
+    /// median (pbrt's fallback).
+    Split splitMidpoint(const Node& node) {
+        const double position = 0.5 * (node.lo + node.hi);
+        std::uint32_t* first = ids_.data() + node.begin;
+        const std::uint32_t mid =
+            node.begin +
+            static_cast<std::uint32_t>(
+                std::partition(first, ids_.data() + node.end,
+                               [&](std::uint32_t p) { return centre(p, node.axis) < position; }) -
+                first);
+        if (mid == node.begin || mid == node.end) return splitMedian(node);
+        return costOf(node, mid, position);
+    }
+
+    /// Median: equal counts on both sides, split at the middle primitive's centre.
+    Split splitMedian(const Node& node) {
+        const std::uint32_t mid = node.begin + node.count() / 2;
+        std::nth_element(ids_.data() + node.begin, ids_.data() + mid, ids_.data() + node.end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             return centre(a, node.axis) < centre(b, node.axis);
+                         });
+        return costOf(node, mid, centre(ids_[mid], node.axis));
+    }
+
+    /// The chosen split's SAH cost, for the record and the comparison of strategies.
+    Split costOf(const Node& node, std::uint32_t mid, double position) {
+        Box l, r;
+        for (std::uint32_t k = node.begin; k < mid; ++k) l.extend(bounds_[ids_[k]]);
+        for (std::uint32_t k = mid; k < node.end; ++k) r.extend(bounds_[ids_[k]]);
+        const double area = node.box.area();
+        const double pl = area > 0 ? l.area() / area : 0.5, pr = area > 0 ? r.area() / area : 0.5;
+        const double cost =
+            sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, mid - node.begin, node.end - mid);
+        if constexpr (Rec::kEnabled)
+            rec_(SplitCandidate{node.id, static_cast<std::uint8_t>(node.axis), mid - node.begin,
+                                node.end - mid, position, pl, pr, cost});
+        return {mid, position, cost, std::nullopt};
+    }
+
+    /// Binned SAH: bin the centres, then sweep the bucket boundaries, the cost of each as a
+    /// split; a leaf when no split separates anything, or when it is cheaper and small enough.
+    Split splitSahBinned(const Node& node) {
+        const std::uint32_t n = node.count();
+        const double lo = node.lo, hi = node.hi;
+        const int nb = std::clamp(opt_.buckets, 2, 256);
+        std::vector<std::uint32_t> count(nb, 0);
+        std::vector<Box> bucketBox(nb);
+        const auto bucketOf = [&](std::uint32_t p) {
+            return std::min(nb - 1,
+                            static_cast<int>(nb * ((centre(p, node.axis) - lo) / (hi - lo))));
+        };
+        for (std::uint32_t k = node.begin; k < node.end; ++k) {
+            const int b = bucketOf(ids_[k]);
+            ++count[b];
+            bucketBox[b].extend(bounds_[ids_[k]]);
+        }
+        std::vector<Box> below(nb);  // below[i]: buckets 0..i
+        Box acc;
+        for (int i = 0; i < nb; ++i) acc.extend(bucketBox[i]), below[i] = acc;
+        const double area = node.box.area();
+        double best = kInfinity;
+        int bestSplit = -1;
+        Box above;
+        std::uint32_t nAbove = 0;
+        std::vector<double> costs(nb - 1);
+        std::vector<std::pair<double, double>> ratios(nb - 1);
+        std::vector<std::uint32_t> nLeft(nb - 1);
+        for (int i = nb - 1; i > 0; --i) {  // split between bucket i-1 and i
+            above.extend(bucketBox[i]);
+            nAbove += count[i];
+            const std::uint32_t nBelow = n - nAbove;
+            const double pl = nBelow ? below[i - 1].area() / area : 0.0;
+            const double pr = nAbove ? above.area() / area : 0.0;
+            costs[i - 1] = (nBelow && nAbove)
+                               ? sahCost(opt_.cTrav, opt_.cIsect, 0.0, pl, pr, nBelow, nAbove)
+                               : kInfinity;  // everything on one side splits nothing
+            ratios[i - 1] = {pl, pr};
+            nLeft[i - 1] = nBelow;
+        }
+        for (int i = 0; i < nb - 1; ++i) {
+            if constexpr (Rec::kEnabled)
+                if (std::isfinite(costs[i]))
+                    rec_(SplitCandidate{node.id, static_cast<std::uint8_t>(node.axis), nLeft[i],
+                                        n - nLeft[i], lo + (hi - lo) * (i + 1) / nb,
+                                        ratios[i].first, ratios[i].second, costs[i]});
+            if (costs[i] < best) best = costs[i], bestSplit = i;
+        }
+        const double leafCost = opt_.cIsect * n;
+        if (bestSplit < 0) return {0, 0.0, 0.0, LeafReason::NoSplit};
+        if (n <= maxLeaf() && leafCost <= best) return {0, 0.0, 0.0, LeafReason::SahCheaper};
+        std::uint32_t* first = ids_.data() + node.begin;
+        const std::uint32_t mid =
+            node.begin +
+            static_cast<std::uint32_t>(
+                std::partition(first, ids_.data() + node.end,
+                               [&](std::uint32_t p) { return bucketOf(p) <= bestSplit; }) -
+                first);
+        return {mid, lo + (hi - lo) * (bestSplit + 1) / nb, best, std::nullopt};
+    }
+
     std::uint32_t leaf(std::uint32_t id, std::uint32_t begin, std::uint32_t end, LeafReason reason,
                        int depth) {
         std::sort(ids_.begin() + begin, ids_.begin() + end);  // tested in id order
@@ -211,7 +261,7 @@ Bvh<Prims>::Bvh(Prims prims, const BvhOptions& options, EventLog& log)
 template <typename Prims>
 template <typename Rec>
 void Bvh<Prims>::build(Rec& rec) {
-    const auto start = std::chrono::steady_clock::now();
+    ScopedTimer timer(stats_.buildMs);
     const std::uint32_t n = prims_.count();
     if (n > 0) {
         nodes_.reserve(2 * std::size_t(n));
@@ -221,8 +271,6 @@ void Bvh<Prims>::build(Rec& rec) {
     }
     stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
     stats_.references = primIds_.size();
-    stats_.buildMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     options_.progress = nullptr;  // it may refer to the caller's locals: only the build used it
 }
 

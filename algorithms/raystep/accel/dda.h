@@ -1,17 +1,19 @@
 #pragma once
 // The 3D-DDA of Amanatides & Woo (1987), in 2D and 3D from one template: walk a regular grid
-// cell by cell along a ray, from one cell boundary to the next. The lecture's variables are all
-// here (X, Y, Z as `cell`, tMax, tDelta, step); what differs from the slides is how the next axis
-// is chosen. `tMaxX < tMaxY` is decided on the crossing times computed afresh from the ray (not
-// summed up step after step, which drifts over hundreds of cells), with a floating-point filter
-// and, when the filter cannot tell, exact rational arithmetic. An exact tie (the ray through a grid
-// vertex or edge) steps every tied axis at once, so a cell the ray only touches is never visited.
-// The cells are exact for every finite grid and ray, whatever their magnitude: crossing times that
-// overflow to inf, are subnormal or round to 0 in double are bounded with an absolute term for
-// underflow and decided in rationals when the bounds overlap. Only non-finite input is refused.
+// cell by cell along a ray, from one cell boundary to the next. The lecture's variables are the
+// walk's state (X, Y, Z as `cell_`, then `step_`, `tDelta_`, `tMax_`); what differs from the
+// slides is how the next axis is chosen. `tMaxX < tMaxY` is decided on crossing times computed
+// afresh from the ray (not summed step after step, which drifts over hundreds of cells), with a
+// floating-point filter and, when the filter cannot tell, exact rational arithmetic. An exact tie
+// (the ray through a grid vertex or edge) steps every tied axis at once, so a cell the ray only
+// touches is never visited. The cells are exact for every finite grid and ray, whatever their
+// magnitude: crossing times that overflow to inf, are subnormal or round to 0 in double are
+// bounded with an absolute term for underflow and decided in rationals when the bounds overlap.
+// Only non-finite input is refused.
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -70,6 +72,14 @@ inline int compareCrossings(const Crossing& a, const Crossing& b) {
     return detail::compareCrossingsExact(a, b);
 }
 
+// The walk below is the slides' DDA3D with one change: where the slides accumulate
+// `tMaxX += tDeltaX` at each step, this walk recomputes tMaxX from the index of the boundary ahead
+// (X + 1 moving up, X moving down): t = (lo + k (hi - lo) / res - o) / d, kept symbolic. A sum
+// rounds at every step and, hundreds of cells down the ray, the rounding errors add up to a wrong
+// `tMaxX < tMaxY` (a cell skipped, or one the ray only touches); the recomputed time errs by a
+// few ulps wherever it is, and when that is not enough to decide, the comparison goes exact. The
+// slides' loop itself, drift included, is ddaTextbook() in dda_textbook.h.
+
 /// The walk itself. Construct it, then read cell() and step with next() until it returns false.
 template <int N, typename T = double>
 class Dda {
@@ -121,7 +131,10 @@ class Dda {
         }
         // Only an interval of positive length crosses the interior of a cell.
         if (compareCrossings(enter_, exit_) >= 0) return;
-        for (int i = 0; i < N; ++i) cell_[i] = firstCell(i);
+        for (int i = 0; i < N; ++i) {
+            cell_[i] = firstCell(i);
+            if (step_[i]) tMax_[i] = crossing(i, nextBoundary(i));
+        }
         valid_ = true;
         lastAxes_ = enteredThrough_;
     }
@@ -136,20 +149,20 @@ class Dda {
     const IVecN<N>& step() const { return step_; }
     const VecN<N, T>& tDelta() const { return tDelta_; }
     /// tMax of each axis: where the ray crosses the next boundary of that axis (inf if parallel).
-    /// These times, tEnter() and tExit() are double estimates (0 or inf where the exact time is
-    /// beyond double's range); the steps are decided on the exact times.
+    /// These times, tEnter(), tCellExit() and tGridExit() are double estimates (0 or inf where the
+    /// exact time is beyond double's range); the steps are decided on the exact times.
     VecN<N, T> tMax() const {
         VecN<N, T> m;
         for (int i = 0; i < N; ++i)
-            m[i] =
-                step_[i] ? T(crossing(i, nextBoundary(i)).t) : std::numeric_limits<T>::infinity();
+            m[i] = step_[i] ? T(tMax_[i].t) : std::numeric_limits<T>::infinity();
         return m;
     }
-    /// Where the ray enters and leaves the current cell (clipped to [tMin, tMax]).
+    /// Where the ray enters the current cell (clipped to [tMin, tMax]).
     T tEnter() const { return T(enter_.t); }
     /// Where the ray leaves the grid (or reaches tMax).
-    T tLeave() const { return T(exit_.t); }
-    T tExit() const {
+    T tGridExit() const { return T(exit_.t); }
+    /// Where the ray leaves the current cell: its next crossing, or the grid's exit (or tMax).
+    T tCellExit() const {
         const auto [next, axes] = nextCrossing();
         return T(axes && compareCrossings(next, exit_) < 0 ? next.t : exit_.t);
     }
@@ -169,6 +182,7 @@ class Dda {
         for (int i = 0; i < N; ++i) {
             if (!(axes & (1u << i))) continue;
             cell_[i] += step_[i];
+            tMax_[i] = crossing(i, nextBoundary(i));  // the slides' tMax += tDelta, exact
             if (cell_[i] < 0 || cell_[i] >= grid_.res[i]) {
                 valid_ = false;
                 return false;
@@ -255,7 +269,7 @@ class Dda {
     long nextBoundary(int axis) const { return step_[axis] > 0 ? cell_[axis] + 1 : cell_[axis]; }
 
     /// The nearest boundary crossing ahead, and every axis that crosses at that same time;
-    /// computed once per cell (tExit() and next() both need it).
+    /// found once per cell (tCellExit() and next() both need it).
     const std::pair<Crossing, unsigned>& nextCrossing() const {
         if (!pending_) pending_ = computeNextCrossing();
         return *pending_;
@@ -265,7 +279,7 @@ class Dda {
         unsigned axes = 0;
         for (int i = 0; i < N; ++i) {
             if (!step_[i]) continue;
-            const Crossing c = crossing(i, nextBoundary(i));
+            const Crossing& c = tMax_[i];
             const int cmp = axes ? compareCrossings(c, best) : -1;
             if (cmp < 0) {
                 best = c;
@@ -330,9 +344,11 @@ class Dda {
 
     GridSpec<N, T> grid_;
     VecN<N, T> o_, d_;
-    IVecN<N> step_{0};
+    // The slides' variables: X, Y, Z; stepX...; tDeltaX...; tMaxX... (exact, for a non-zero step).
     IVecN<N> cell_{0};
+    IVecN<N> step_{0};
     VecN<N, T> tDelta_{T(0)};
+    std::array<Crossing, N> tMax_{};
     Crossing enter_, exit_;
     unsigned enteredThrough_ = 0;
     unsigned lastAxes_ = 0;

@@ -1,10 +1,10 @@
 #include "raystep/accel/grid.h"
 
 #include "raystep/accel/mailbox.h"
+#include "raystep/base/timer.h"
 #include "raystep/scene/scene2d.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -54,7 +54,7 @@ double largestFitting(std::size_t maxCells, Rule&& rule, Fits&& fits) {
 template <typename Prims>
 UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
     : prims_(std::move(prims)), mailbox_(options.mailbox) {
-    const auto start = std::chrono::steady_clock::now();
+    ScopedTimer timer(buildMs_);
     const std::uint32_t n = prims_.count();
     BoxN<N> b;
     for (std::uint32_t p = 0; p < n; ++p) b.extend(prims_.bounds(p));
@@ -168,8 +168,6 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
         forCells(lo, hi, [&](std::size_t c) { cellPrims_[fill[c]++] = p; });
         report(0.5 + 0.5 * (p + 1) / n, p);
     }
-    buildMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <typename Prims>
@@ -212,7 +210,7 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
     }
     if constexpr (Rec::kEnabled) {
         if (dda.valid()) {
-            DdaSetup e{rayId, {0, 0, 0}, N, {0.0, 0.0, 0.0}, dda.tEnter(), dda.tLeave()};
+            DdaSetup e{rayId, {0, 0, 0}, N, {0.0, 0.0, 0.0}, dda.tEnter(), dda.tGridExit()};
             for (int i = 0; i < N; ++i) {
                 e.step[i] = static_cast<std::int8_t>(dda.step()[i]);
                 e.tDelta[i] = dda.tDelta()[i];
@@ -238,7 +236,7 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
                 return hit;
         // A hit beyond this cell may be beaten by a primitive of a later cell: walk on until the
         // nearest hit lies before the cell's far side.
-        if (closest && closest->t < dda.tExit()) break;
+        if (closest && closest->t < dda.tCellExit()) break;
     }
     return closest;
 }

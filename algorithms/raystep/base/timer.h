@@ -1,10 +1,11 @@
 #pragma once
-// Build timers: one object times a scope and writes the milliseconds where the stats keep them.
+// A build or render timer: one object per timed block instead of a pair of clock readings.
 #include <chrono>
 
 namespace raystep {
 
-/// Writes the milliseconds from its construction to its destruction into `ms`.
+/// Writes the milliseconds between its construction and its destruction into `ms` (pbrt-v3's
+/// RAII ProfilePhase idea): `ScopedTimer timer(stats_.buildMs);` at the top of the block.
 class ScopedTimer {
   public:
     explicit ScopedTimer(double& ms) : ms_(ms), start_(std::chrono::steady_clock::now()) {}

@@ -1,5 +1,6 @@
 #include "raystep/render/tracer.h"
 
+#include "raystep/base/timer.h"
 #include "raystep/render/shading.h"
 
 #include <tbb/blocked_range.h>
@@ -7,7 +8,6 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
-#include <chrono>
 #include <mutex>
 
 namespace raystep {
@@ -185,64 +185,66 @@ Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int 
 
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const ProgressFn& progress) {
-    const auto start = std::chrono::steady_clock::now();
     RenderResult result;
-    result.image = Image(options.width, options.height);
-    result.costPerPixel.assign(result.image.pixels.size(), 0);
-    const Tracer tracer(scene, accel, options.trace);
+    {
+        // Stopped at the block's end, before `result` is returned (and perhaps moved).
+        ScopedTimer timer(result.renderMs);
+        result.image = Image(options.width, options.height);
+        result.costPerPixel.assign(result.image.pixels.size(), 0);
+        const Tracer tracer(scene, accel, options.trace);
 
-    constexpr int kTile = 16;
-    const int tilesX = (options.width + kTile - 1) / kTile;
-    const int tilesY = (options.height + kTile - 1) / kTile;
-    const int tileCount = tilesX * tilesY;
+        constexpr int kTile = 16;
+        const int tilesX = (options.width + kTile - 1) / kTile;
+        const int tilesY = (options.height + kTile - 1) / kTile;
+        const int tileCount = tilesX * tilesY;
 
-    std::atomic<bool> cancelled{false};
-    std::atomic<int> tilesDone{0};
-    std::mutex totalsMutex;
-    std::mutex progressMutex;
+        std::atomic<bool> cancelled{false};
+        std::atomic<int> tilesDone{0};
+        std::mutex totalsMutex;
+        std::mutex progressMutex;
 
-    const auto renderTile = [&](int tile) {
-        const int x0 = (tile % tilesX) * kTile;
-        const int y0 = (tile / tilesX) * kTile;
-        const int x1 = std::min(x0 + kTile, options.width);
-        const int y1 = std::min(y0 + kTile, options.height);
-        RayCounters tileCounters;
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                RayCounters pixel;
-                result.image.at(x, y) = tracer.renderPixel(x, y, options, pixel);
-                result.costPerPixel[static_cast<std::size_t>(y) * options.width + x] =
-                    pixel.traversal.primitiveTests;
-                tileCounters += pixel;
+        const auto renderTile = [&](int tile) {
+            const int x0 = (tile % tilesX) * kTile;
+            const int y0 = (tile / tilesX) * kTile;
+            const int x1 = std::min(x0 + kTile, options.width);
+            const int y1 = std::min(y0 + kTile, options.height);
+            RayCounters tileCounters;
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    RayCounters pixel;
+                    result.image.at(x, y) = tracer.renderPixel(x, y, options, pixel);
+                    result.costPerPixel[static_cast<std::size_t>(y) * options.width + x] =
+                        pixel.traversal.primitiveTests;
+                    tileCounters += pixel;
+                }
             }
-        }
-        {
-            const std::lock_guard lock(totalsMutex);
-            result.counters += tileCounters;
-        }
-        const int done = ++tilesDone;
-        // Progress is reported by whichever worker is free to; the others do not wait.
-        if (progress && progressMutex.try_lock()) {
-            if (!progress(static_cast<double>(done) / tileCount)) cancelled = true;
-            progressMutex.unlock();
-        }
-    };
+            {
+                const std::lock_guard lock(totalsMutex);
+                result.counters += tileCounters;
+            }
+            const int done = ++tilesDone;
+            // Progress is reported by whichever worker is free to; the others do not wait.
+            if (progress && progressMutex.try_lock()) {
+                if (!progress(static_cast<double>(done) / tileCount)) cancelled = true;
+                progressMutex.unlock();
+            }
+        };
 
-    const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1),
-                          [&](const tbb::blocked_range<int>& r) {
-                              for (int tile = r.begin(); tile != r.end(); ++tile) {
-                                  if (cancelled) return;
-                                  renderTile(tile);
-                              }
-                          });
-    });
-    result.cancelled = cancelled;
-    if (progress && !result.cancelled) progress(1.0);
-    result.renderMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const int threads =
+            options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1),
+                              [&](const tbb::blocked_range<int>& r) {
+                                  for (int tile = r.begin(); tile != r.end(); ++tile) {
+                                      if (cancelled) return;
+                                      renderTile(tile);
+                                  }
+                              });
+        });
+        result.cancelled = cancelled;
+        if (progress && !result.cancelled) progress(1.0);
+    }
     return result;
 }
 

@@ -30,6 +30,7 @@ struct DdaSetup {
     std::array<std::int8_t, 3> step;
     std::uint8_t dims;
     std::array<double, 3> tDelta;
+    // Where the ray enters and leaves the grid (Dda::tGridExit, not a cell's exit).
     double tEnter, tExit;
 };
 /// The DDA is in a new cell: the first cell (axes = the grid face it came in through, 0 from
