@@ -1,8 +1,13 @@
+// The replay app's window: its layout, wiring and menus, and opening scenes and lessons.
 #include "main_window.h"
 
 #include "compare_window.h"
+#include "event_list.h"
 #include "image_view.h"
+#include "inspector.h"
+#include "lesson_controller.h"
 #include "lesson_panel.h"
+#include "timeline.h"
 #include "view2d.h"
 #include "vtk_view.h"
 
@@ -11,101 +16,47 @@
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
+#include "raystep/render/tracer.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/trace_io.h"
-#include "raystep/render/tracer.h"
 
-#include <QAbstractListModel>
 #include <QAction>
 #include <QApplication>
 #include <QBuffer>
 #include <QCloseEvent>
-#include <QComboBox>
-#include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
-#include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
-#include <QListView>
-#include <QLockFile>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScreen>
 #include <QSettings>
-#include <QSlider>
-#include <QSortFilterProxyModel>
-#include <QSpinBox>
 #include <QSplitter>
-#include <QStandardPaths>
 #include <QStatusBar>
-#include <QTextBrowser>
 #include <QTimer>
-#include <QToolBar>
-#include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 
 namespace raystep::gui {
 
-/// The log as a list: rows are made when shown, so a million events cost nothing up front.
-class EventListModel : public QAbstractListModel {
-  public:
-    explicit EventListModel(Session& s, QObject* parent) : QAbstractListModel(parent), s_(s) {
-        connect(&s_, &Session::logChanged, this, [this] {
-            beginResetModel();
-            endResetModel();
-        });
-    }
-    int rowCount(const QModelIndex& parent) const override {
-        return parent.isValid() ? 0 : static_cast<int>(s_.size());
-    }
-    QVariant data(const QModelIndex& index, int role) const override {
-        if (role != Qt::DisplayRole || !index.isValid()) return {};
-        return QStringLiteral("%1  %2")
-            .arg(index.row() + 1)
-            .arg(describeEvent(s_.log().events()[index.row()]));
-    }
-
-  private:
-    Session& s_;
-};
-
 namespace {
-// Event kinds the timeline can jump to, with their variant index.
-const std::pair<const char*, std::size_t> kJumpKinds[] = {
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "DDA step"), variantIndex<DdaCell>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "primitive test"),
-     variantIndex<PrimitiveTest>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "mailbox skip"), variantIndex<MailboxSkip>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "node enter"), variantIndex<NodeEnter>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "ray begin"), variantIndex<RayBegin>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "hit"), variantIndex<RayHit>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::MainWindow", "split chosen"), variantIndex<SplitChosen>()},
-};
 constexpr int kImageWidth = 320, kImageHeight = 240;
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    buildUi();
-    // The student's progress: one JSON file under the user's data folder, replaced atomically.
-    progressPath_ =
-        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
-    try {
-        if (auto saved = loadProgressFile(progressPath_.toStdString()))
-            studentProgress_ = std::move(*saved);
-    } catch (const LessonError& e) {
-        // Keep the unreadable file aside rather than overwrite it at the next answer.
-        QFile::rename(progressPath_, progressPath_ + ".unreadable");
-        statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
-                                     .arg(progressPath_ + ".unreadable", e.what()));
-    }
+    setWindowTitle(tr("raystep"));
+    createViews();
+    createTimeline();
+    createDocks();
+    createStatusBar();
+    createActions();
+    createMenus();
     QSettings settings;
     geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
@@ -116,8 +67,7 @@ MainWindow::~MainWindow() {
     runner_.shutdown();
 }
 
-void MainWindow::buildUi() {
-    setWindowTitle(tr("raystep"));
+void MainWindow::createViews() {
     view2D_ = new View2D(session_);
     view3D_ = new VtkView(session_);
     imageView_ = new ImageView(session_);
@@ -131,46 +81,24 @@ void MainWindow::buildUi() {
     views->addWidget(right);
     views->setStretchFactor(0, 3);
     views->setStretchFactor(1, 2);
+    views_ = views;
+    connect(imageView_, &ImageView::renderRequested, this, [this] { renderImage(); });
+    connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
+        session_.tracePixel(x, y, kImageWidth, kImageHeight);
+        session_.setCursor(session_.size());
+        statusBar()->showMessage(
+            tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
+    });
+    connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
+}
 
-    // The timeline: step, play, jump to the next event of a kind, speed, scrubber.
-    auto* timeline = new QWidget;
-    auto* tl = new QHBoxLayout(timeline);
-    tl->setContentsMargins(6, 2, 6, 2);
-    const auto button = [&](const QString& text, const QString& tip, auto slot) {
-        auto* b = new QToolButton;
-        b->setText(text);
-        b->setToolTip(tip);
-        connect(b, &QToolButton::clicked, this, slot);
-        tl->addWidget(b);
-        return b;
-    };
-    button(QStringLiteral("|<"), tr("First event (Home)"), [this] { session_.setCursor(0); });
-    button(QStringLiteral("<"), tr("Step back (Left)"), [this] { stepBack(); });
-    play_ = button(QStringLiteral(">"), tr("Play / pause (Space)"), [this] { togglePlay(); });
-    button(QStringLiteral(">|"), tr("Step forward (Right)"), [this] { stepForward(); });
-    kindCombo_ = new QComboBox;
-    for (const auto& [name, kind] : kJumpKinds) kindCombo_->addItem(tr(name));
-    tl->addWidget(kindCombo_);
-    button(tr("next"), tr("Jump to the next event of this kind (N)"),
-           [this] { jumpToNextOfKind(); });
-    tl->addWidget(new QLabel(tr("speed")));
-    speed_ = new QSpinBox;
-    speed_->setRange(1, 200);
-    speed_->setValue(4);
-    speed_->setSuffix(tr(" /s"));
-    tl->addWidget(speed_);
-    scrubber_ = new QSlider(Qt::Horizontal);
-    tl->addWidget(scrubber_, 1);
-    position_ = new QLabel;
-    tl->addWidget(position_);
-    connect(scrubber_, &QSlider::valueChanged, this,
-            [this](int v) { session_.setCursor(static_cast<std::size_t>(v)); });
-
+void MainWindow::createTimeline() {
+    timeline_ = new Timeline(session_);
     auto* centre = new QWidget;
     auto* cl = new QVBoxLayout(centre);
     cl->setContentsMargins(0, 0, 0, 0);
-    cl->addWidget(views, 1);
-    cl->addWidget(timeline);
+    cl->addWidget(views_, 1);
+    cl->addWidget(timeline_);
     auto* main = new QSplitter(Qt::Horizontal);
     main->addWidget(lesson_);
     main->addWidget(centre);
@@ -179,38 +107,30 @@ void MainWindow::buildUi() {
     main->setStretchFactor(1, 4);
     main->setSizes({360, 1100});
     setCentralWidget(main);
+}
 
+void MainWindow::createDocks() {
     // Inspector and event list, as docks the user may move (kept with QSettings).
-    inspector_ = new QTextBrowser;
-    inspector_->setObjectName("inspector");
+    inspector_ = new Inspector(session_);
     auto* inspectorDock = new QDockWidget(tr("Inspector"), this);
     inspectorDock->setObjectName("inspectorDock");
     inspectorDock->setWidget(inspector_);
     addDockWidget(Qt::RightDockWidgetArea, inspectorDock);
-    auto* listPanel = new QWidget;
-    auto* ll = new QVBoxLayout(listPanel);
-    ll->setContentsMargins(0, 0, 0, 0);
-    filterEdit_ = new QLineEdit;
-    filterEdit_->setPlaceholderText(tr("Filter events (e.g. cell, test, mailbox)"));
-    ll->addWidget(filterEdit_);
-    eventModel_ = new EventListModel(session_, this);
-    eventFilter_ = new QSortFilterProxyModel(this);
-    eventFilter_->setSourceModel(eventModel_);
-    eventFilter_->setFilterCaseSensitivity(Qt::CaseInsensitive);
-    connect(filterEdit_, &QLineEdit::textChanged, eventFilter_,
-            &QSortFilterProxyModel::setFilterFixedString);
-    events_ = new QListView;
-    events_->setModel(eventFilter_);
-    events_->setUniformItemSizes(true);
-    ll->addWidget(events_);
-    connect(events_, &QListView::clicked, this, [this](const QModelIndex& i) {
-        session_.setCursor(static_cast<std::size_t>(eventFilter_->mapToSource(i).row()) + 1);
-    });
+    events_ = new EventList(session_);
     auto* listDock = new QDockWidget(tr("Events"), this);
     listDock->setObjectName("eventsDock");
-    listDock->setWidget(listPanel);
+    listDock->setWidget(events_);
     addDockWidget(Qt::RightDockWidgetArea, listDock);
 
+    lessons_ =
+        new LessonController(*this, session_, runner_, generation_, lesson_, events_, view3D_);
+    connect(lesson_, &LessonPanel::lessonRequested, this,
+            [this](const QString& id) { openLesson(id); });
+    connect(lessons_, &LessonController::lessonRequested, this,
+            [this](const QString& id) { openLesson(id); });
+}
+
+void MainWindow::createStatusBar() {
     // Background work in the status bar: what runs, how far, and Cancel.
     taskLabel_ = new QLabel;
     progress_ = new QProgressBar;
@@ -233,86 +153,41 @@ void MainWindow::buildUi() {
                 if (runner_.busy(TaskKind::Render))
                     imageView_->renderProgress(runner_.percent(TaskKind::Render));
             });
-    connect(imageView_, &ImageView::renderRequested, this, [this] { renderImage(); });
-    connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
-        session_.tracePixel(x, y, kImageWidth, kImageHeight);
-        session_.setCursor(session_.size());
-        statusBar()->showMessage(
-            tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
-    });
+}
 
-    timer_ = new QTimer(this);
-    connect(timer_, &QTimer::timeout, this, [this] {
-        if (session_.cursor() >= session_.size()) return togglePlay();
-        stepForward();
-    });
-    connect(speed_, &QSpinBox::valueChanged, this,
-            [this](int v) { timer_->setInterval(1000 / v); });
-    timer_->setInterval(1000 / speed_->value());
+void MainWindow::createActions() {
+    const auto action = [this](const QString& text, QKeySequence key, auto slot) {
+        auto* a = new QAction(text, this);
+        if (!key.isEmpty()) a->setShortcut(key);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    Actions& a = actions_;
+    a.open = action(tr("&Open scene..."), QKeySequence::Open, [this] { openFileDialog(); });
+    a.exportTrace = action(tr("Export &trace..."), QKeySequence::Save, [this] { exportTrace(); });
+    a.shotWindow = action(tr("Export screenshot of the &window..."), {},
+                          [this] { exportScreenshot(this, tr("window")); });
+    a.shot2D = action(tr("Export screenshot of the &2D view..."), {},
+                      [this] { exportScreenshot(view2D_, tr("2D view")); });
+    a.shot3D = action(tr("Export screenshot of the &3D view..."), {},
+                      [this] { exportScreenshot(view3D_, tr("3D view")); });
+    a.shotImage = action(tr("Export screenshot of the &image view..."), {},
+                         [this] { exportScreenshot(imageView_, tr("image view")); });
+    a.exportReport =
+        action(tr("Export &progress report..."), {}, [this] { lessons_->exportProgressReport(); });
+    a.quit = action(tr("&Quit"), QKeySequence::Quit, [this] { close(); });
 
-    connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
-    connect(&session_, &Session::logChanged, this, [this] {
-        updateTimeline();
-        if (lesson_->hasLesson()) {
-            lesson_->setReplayNote(replayDescription());
-        } else if (session_.showingBuild()) {
-            lesson_->showText(
-                tr("## Building the %1\n\nEach node is split by a plane. Step through the "
-                   "**candidate** planes (dashed): the chart under the scene draws the cost of "
-                   "each, "
-                   "`Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` "
-                   "(in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the "
-                   "cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the "
-                   "next "
-                   "choice with the *split chosen* kind and **N**.")
-                    .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
-        }
-    });
-
-    // The lesson panel asks; the window moves the replay, opens lessons, saves progress.
-    connect(lesson_, &LessonPanel::lessonRequested, this,
-            [this](const QString& id) { openLesson(id); });
-    connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
-    connect(lesson_, &LessonPanel::lessonTraceRequested, this, [this] {
-        showLessonTrace();
-        applyStep(lesson_->step());
-    });
-    connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
-        showLessonTrace();
-        const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
-        if (at) session_.setCursor(*at);
-    });
-    connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
-    connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
-    connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
-
-    // Menus and the standard shortcuts.
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open scene..."), QKeySequence::Open, this, [this] { openFileDialog(); });
-    file->addAction(tr("Export &trace..."), QKeySequence::Save, this, [this] { exportTrace(); });
-    file->addAction(tr("Export screenshot of the &window..."), this,
-                    [this] { exportScreenshot(this, tr("window")); });
-    file->addAction(tr("Export screenshot of the &2D view..."), this,
-                    [this] { exportScreenshot(view2D_, tr("2D view")); });
-    file->addAction(tr("Export screenshot of the &3D view..."), this,
-                    [this] { exportScreenshot(view3D_, tr("3D view")); });
-    file->addAction(tr("Export screenshot of the &image view..."), this,
-                    [this] { exportScreenshot(imageView_, tr("image view")); });
-    file->addAction(tr("Export &progress report..."), this, [this] { exportProgressReport(); });
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-    QMenu* replay = menuBar()->addMenu(tr("&Replay"));
-    replay->addAction(tr("Step &forward"), QKeySequence(Qt::Key_Right), this,
-                      [this] { stepForward(); });
-    replay->addAction(tr("Step &back"), QKeySequence(Qt::Key_Left), this, [this] { stepBack(); });
-    replay->addAction(tr("&Play / pause"), QKeySequence(Qt::Key_Space), this,
-                      [this] { togglePlay(); });
-    replay->addAction(tr("&Next event of the kind"), QKeySequence(Qt::Key_N), this,
-                      [this] { jumpToNextOfKind(); });
-    replay->addSeparator();
-    replay->addAction(tr("Replay the &build (candidates, splits, leaves)"), QKeySequence(Qt::Key_B),
-                      this, [this] { replayBuild(); });
-    replay->addAction(tr("Replay the &example ray"), QKeySequence(Qt::Key_R), this, [this] {
+    a.stepForward = action(tr("Step &forward"), QKeySequence(Qt::Key_Right),
+                           [this] { timeline_->stepForward(); });
+    a.stepBack =
+        action(tr("Step &back"), QKeySequence(Qt::Key_Left), [this] { timeline_->stepBack(); });
+    a.play = action(tr("&Play / pause"), QKeySequence(Qt::Key_Space),
+                    [this] { timeline_->togglePlay(); });
+    a.nextOfKind = action(tr("&Next event of the kind"), QKeySequence(Qt::Key_N),
+                          [this] { timeline_->jumpToNextOfKind(); });
+    a.replayBuild = action(tr("Replay the &build (candidates, splits, leaves)"),
+                           QKeySequence(Qt::Key_B), [this] { replayBuild(); });
+    a.exampleRay = action(tr("Replay the &example ray"), QKeySequence(Qt::Key_R), [this] {
         if (session_.is2D())
             session_.traceExampleRay();
         else
@@ -320,30 +195,46 @@ void MainWindow::buildUi() {
                 tr("R replays the example ray of a 2D scene; in 3D, click "
                    "a pixel of the image."));
     });
-    replay->addAction(tr("&First event"), QKeySequence(Qt::Key_Home), this,
-                      [this] { session_.setCursor(0); });
-    replay->addAction(tr("&Last event"), QKeySequence(Qt::Key_End), this,
-                      [this] { session_.setCursor(session_.size()); });
-    QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
-    lessonsMenu_ = lessons->addMenu(tr("&Built-in lessons"));
-    fillLessonsMenu();
-    lessons->addAction(tr("Open lesson &file..."), this, [this] {
+    a.first =
+        action(tr("&First event"), QKeySequence(Qt::Key_Home), [this] { session_.setCursor(0); });
+    a.last = action(tr("&Last event"), QKeySequence(Qt::Key_End),
+                    [this] { session_.setCursor(session_.size()); });
+
+    a.openLessonFile = action(tr("Open lesson &file..."), {}, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), QString(),
                                                           tr("Lessons (*.json)"));
         if (!path.isEmpty()) openLesson(path);
     });
-    lecturerAction_ = lessons->addAction(tr("&Lecturer mode (show answers)"));
-    lecturerAction_->setCheckable(true);
-    lecturerAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    connect(lecturerAction_, &QAction::toggled, lesson_, &LessonPanel::setLecturerMode);
+    a.lecturer = new QAction(tr("&Lecturer mode (show answers)"), this);
+    a.lecturer->setCheckable(true);
+    a.lecturer->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    connect(a.lecturer, &QAction::toggled, lesson_, &LessonPanel::setLecturerMode);
+
+    a.compare = action(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C),
+                       [this] { openCompare(); });
+    a.renderAgain = action(tr("Render the &image again"), {}, [this] { renderImage(); });
+    a.heatmap = new QAction(tr("&Heat map of primitive tests"), this);
+    a.heatmap->setCheckable(true);
+    connect(a.heatmap, &QAction::toggled, imageView_, &ImageView::setHeatmap);
+    a.resetCamera = action(tr("&Reset 3D camera"), {}, [this] { view3D_->resetCamera(); });
+}
+
+void MainWindow::createMenus() {
+    const Actions& a = actions_;
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addActions(
+        {a.open, a.exportTrace, a.shotWindow, a.shot2D, a.shot3D, a.shotImage, a.exportReport});
+    file->addSeparator();
+    file->addAction(a.quit);
+    QMenu* replay = menuBar()->addMenu(tr("&Replay"));
+    replay->addActions({a.stepForward, a.stepBack, a.play, a.nextOfKind});
+    replay->addSeparator();
+    replay->addActions({a.replayBuild, a.exampleRay, a.first, a.last});
+    QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
+    lessons_->setLessonsMenu(lessons->addMenu(tr("&Built-in lessons")));
+    lessons->addActions({a.openLessonFile, a.lecturer});
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C), this,
-                    [this] { openCompare(); });
-    view->addAction(tr("Render the &image again"), this, [this] { renderImage(); });
-    QAction* heat = view->addAction(tr("&Heat map of primitive tests"));
-    heat->setCheckable(true);
-    connect(heat, &QAction::toggled, imageView_, &ImageView::setHeatmap);
-    view->addAction(tr("&Reset 3D camera"), this, [this] { view3D_->resetCamera(); });
+    view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
 }
 
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
@@ -362,26 +253,9 @@ void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
             if (outcome.superseded) return;  // a newer open is under way
             if (!outcome.ok()) return openFailed(nameOrPath, outcome, quiet);
             showScene(std::move(scene), renderImage);
-            if (session_.is2D()) {
-                lesson_->showText(
-                    tr("## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and "
-                       "**Left**, play with **Space**, jump to the next event of a kind with "
-                       "**N**. The inspector shows X, Y, tMax and tDelta as on the board; the list "
-                       "shows every event.")
-                        .arg(QString::fromStdString(session_.name()),
-                             QString::fromStdString(session_.scene2D()->description)));
-            } else {
-                lesson_->showText(
-                    tr("## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is "
-                       "recorded and replayed in the 3D view, the inspector and the event list.")
-                        .arg(QString::fromStdString(session_.name()),
-                             QString::fromStdString(session_.scene3D()->description)));
-            }
+            lessons_->showSceneIntro();
             // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
-            view2D_->setVisible(session_.is2D());
-            view3D_->setVisible(!session_.is2D());
-            imageView_->setVisible(!session_.is2D());
-            view3D_->parentWidget()->setVisible(!session_.is2D());
+            showViews(session_.is2D(), !session_.is2D(), !session_.is2D());
             setWindowTitle(tr("raystep - %1").arg(nameOrPath));
             finishOpen(true, {});
         });
@@ -406,7 +280,6 @@ void MainWindow::showScene(SceneRef scene, bool renderImage) {
         // A first ray to replay before any click: the image's centre.
         session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
-    updateTimeline();
 }
 
 void MainWindow::openFailed(const QString& what, const TaskOutcome& outcome, bool quiet) {
@@ -504,24 +377,13 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
         finishOpen(false, QString::fromUtf8(e.what()));
         return;
     }
-    struct Opened {
-        SceneRef scene;
-        LogRef trace;
-    };
-    const QString title = QString::fromStdString(lesson.title.in(lang_));
-    const bool started = runner_.start<Opened>(
+    const QString title = QString::fromStdString(lesson.title.in(lessons_->language()));
+    const bool started = runner_.start<LessonController::Opened>(
         TaskKind::Scene, tr("Opening lesson %1: %2...").arg(lesson.number).arg(title),
         [lesson](const ProgressFn& progress) {
-            AccelOptions options = lesson.options;
-            options.setProgress(progress);
-            Opened o;
-            o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
-            o.trace = recordLessonTrace(lesson, o.scene->scene,
-                                        o.scene->accel3D ? &*o.scene->accel3D : nullptr,
-                                        o.scene->accel2D ? &*o.scene->accel2D : nullptr);
-            return o;
+            return LessonController::prepare(lesson, progress);
         },
-        [this, lesson, quiet, title](Opened&& o, const TaskOutcome& outcome) {
+        [this, lesson, quiet, title](LessonController::Opened&& o, const TaskOutcome& outcome) {
             if (outcome.superseded) return;
             if (!outcome.ok()) {
                 openFailed(tr("lesson %1").arg(lesson.number), outcome, quiet);
@@ -532,49 +394,21 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
                 return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
             };
             showScene(std::move(o.scene), shows(LessonView::Image));
-            session_.showLog(o.trace, lesson.trace.kind == LessonTrace::Kind::Build
-                                          ? LogKind::Build
-                                          : LogKind::Lesson);
-            view2D_->setVisible(shows(LessonView::View2D));
-            view3D_->setVisible(shows(LessonView::View3D));
-            imageView_->setVisible(shows(LessonView::Image));
-            view3D_->parentWidget()->setVisible(shows(LessonView::View3D) ||
-                                                shows(LessonView::Image));
-            // The panel records answers into this lesson's progress (std::map entries do not
-            // move) and grades them against its own share of the trace.
-            lesson_->showLesson(lesson, o.trace, &studentProgress_.lessons[lesson.id]);
+            session_.showLog(o.trace, LessonController::logKind(lesson));
+            showViews(shows(LessonView::View2D), shows(LessonView::View3D),
+                      shows(LessonView::Image));
+            lessons_->show(lesson, o.trace);
             setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
-            applyStep(lesson_->step());
             finishOpen(true, {});
         });
     if (!started) finishOpen(false, tr("the window is closing"));
 }
 
-void MainWindow::showLessonTrace() {
-    if (!lesson_->hasLesson() || !lesson_->lessonLog()) return;
-    if (session_.logRef() == lesson_->lessonLog()) return;
-    session_.showLog(lesson_->lessonLog(), lesson_->lesson().trace.kind == LessonTrace::Kind::Build
-                                               ? LogKind::Build
-                                               : LogKind::Lesson);
-}
-
-QString MainWindow::replayDescription() const {
-    if (!lesson_->hasLesson() || session_.logRef() == lesson_->lessonLog()) return {};
-    switch (session_.logKind()) {
-        case LogKind::Pixel:
-            for (auto it = session_.log().events().rbegin(); it != session_.log().events().rend();
-                 ++it)
-                if (const auto* p = std::get_if<PixelResult>(&*it))
-                    return tr("the ray tree of pixel (%1, %2)").arg(p->x).arg(p->y);
-            return tr("a pixel's ray tree");
-        case LogKind::ExampleRay:
-            return tr("the scene's example ray");
-        case LogKind::Build:
-            return tr("the construction of the %1")
-                .arg(QString::fromUtf8(accelKindName(session_.kind()).data()));
-        default:
-            return tr("another trace");
-    }
+void MainWindow::showViews(bool view2D, bool view3D, bool image) {
+    view2D_->setVisible(view2D);
+    view3D_->setVisible(view3D);
+    imageView_->setVisible(image);
+    view3D_->parentWidget()->setVisible(view3D || image);
 }
 
 void MainWindow::replayBuild() {
@@ -607,99 +441,20 @@ void MainWindow::replayBuild() {
         });
 }
 
-void MainWindow::applyStep(int index) {
-    if (!lesson_->hasLesson() || lesson_->lesson().steps.empty()) {
-        session_.setCursor(session_.size());
-        return;
-    }
-    showLessonTrace();
-    const LessonStep& step = lesson_->lesson().steps[index];
-    if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
-    filterEdit_->setText(QString::fromStdString(step.filter));
-    if (step.camera)
-        view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
-    studentProgress_.lessons[lesson_->lesson().id].step = index;
-    saveProgress();
-}
-
-void MainWindow::saveProgress() {
-    // Another window of the app may have saved since: fold its answers in under a lock, then
-    // write beside and rename (QSaveFile), so neither a crash nor a second window loses work.
-    QDir().mkpath(QFileInfo(progressPath_).absolutePath());
-    QLockFile lock(progressPath_ + ".lock");
-    if (!lock.tryLock(2000)) {
-        statusBar()->showMessage(tr("Cannot save the progress: %1 is locked").arg(progressPath_));
-        return;
-    }
-    try {
-        if (const auto saved = loadProgressFile(progressPath_.toStdString()))
-            mergeProgress(studentProgress_, *saved);
-    } catch (const LessonError&) {
-        // Unreadable now (it was read at start): replaced by what this window knows.
-    }
-    QSaveFile f(progressPath_);
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(QByteArray::fromStdString(progressToJson(studentProgress_))) < 0 || !f.commit())
-        statusBar()->showMessage(tr("Cannot save the progress to %1").arg(progressPath_));
-}
-
-void MainWindow::exportProgressReport() {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export progress report"),
-                                     QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
-    if (path.isEmpty()) return;
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(QByteArray::fromStdString(
-            progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
-        !f.commit())
-        QMessageBox::warning(this, tr("Cannot save"), tr("Could not write %1").arg(path));
-}
-
-void MainWindow::runSweep() {
-    if (!lesson_->hasLesson() || !lesson_->lesson().sweep || !session_.hasScene()) return;
-    const GridSweepSpec spec = *lesson_->lesson().sweep;
-    const std::uint64_t generation = generation_;
-    const LogRef lessonLog = lesson_->lessonLog();
-    runner_.start<std::vector<GridSweepRow>>(
-        TaskKind::Sweep,
-        tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
-        [ref = session_.sceneRef(), spec](const ProgressFn& progress) {
-            return runGridSweep(ref->scene, spec, progress);
-        },
-        [this, generation, lessonLog](std::vector<GridSweepRow>&& rows,
-                                      const TaskOutcome& outcome) {
-            // Only for the lesson that asked.
-            if (outcome.superseded || generation != generation_ ||
-                lesson_->lessonLog() != lessonLog)
-                return;
-            if (outcome.ok())
-                lesson_->showSweep(rows);
-            else
-                statusBar()->showMessage(outcome.cancelled ? tr("Sweep cancelled")
-                                                           : tr("The sweep failed"));
-        });
-}
-
 void MainWindow::setLanguage(Language lang) {
-    lang_ = lang;
-    lesson_->setLanguage(lang);
-    lesson_->setLessons(builtinLessons());
-    fillLessonsMenu();
-}
-
-void MainWindow::fillLessonsMenu() {
-    lessonsMenu_->clear();
-    for (const Lesson& l : builtinLessons()) {
-        const QString id = QString::fromStdString(l.id);
-        lessonsMenu_->addAction(
-            QStringLiteral("&%1. %2").arg(l.number).arg(QString::fromStdString(l.title.in(lang_))),
-            this, [this, id] { openLesson(id); });
-    }
+    lessons_->setLanguage(lang);
 }
 
 void MainWindow::setLecturerMode(bool on) {
-    lecturerAction_->setChecked(on);
+    actions_.lecturer->setChecked(on);
+}
+
+const Progress& MainWindow::studentProgress() const {
+    return lessons_->studentProgress();
+}
+
+QString MainWindow::progressPath() const {
+    return lessons_->progressPath();
 }
 
 void MainWindow::openCompare() {
@@ -787,41 +542,16 @@ QString MainWindow::inspectorText() const {
 }
 
 void MainWindow::stepForward() {
-    session_.setCursor(session_.cursor() + 1);
+    timeline_->stepForward();
 }
 void MainWindow::stepBack() {
-    if (session_.cursor() > 0) session_.setCursor(session_.cursor() - 1);
+    timeline_->stepBack();
 }
 void MainWindow::jumpToNextOfKind() {
-    const std::size_t kind = kJumpKinds[std::max(0, kindCombo_->currentIndex())].second;
-    const std::size_t at = session_.replay().nextOfKind(session_.cursor(), kind);
-    session_.setCursor(at < session_.size() ? at + 1 : session_.size());
+    timeline_->jumpToNextOfKind();
 }
 void MainWindow::togglePlay() {
-    if (timer_->isActive()) {
-        timer_->stop();
-        play_->setText(QStringLiteral(">"));
-    } else {
-        if (session_.cursor() >= session_.size()) session_.setCursor(0);
-        timer_->start();
-        play_->setText(QStringLiteral("||"));
-    }
-}
-
-void MainWindow::updateTimeline() {
-    const QSignalBlocker block(scrubber_);
-    scrubber_->setRange(0, static_cast<int>(session_.size()));
-    scrubber_->setValue(static_cast<int>(session_.cursor()));
-    position_->setText(tr("%1 / %2").arg(session_.cursor()).arg(session_.size()));
-    inspector_->setPlainText(describeState(session_));
-    if (session_.cursor() > 0) {
-        const QModelIndex i = eventFilter_->mapFromSource(
-            eventModel_->index(static_cast<int>(session_.cursor()) - 1));
-        if (i.isValid()) {
-            events_->setCurrentIndex(i);
-            events_->scrollTo(i);
-        }
-    }
+    timeline_->togglePlay();
 }
 
 void MainWindow::openFileDialog() {

@@ -1,6 +1,7 @@
 #pragma once
 // The replay app's window: lesson panel, 2D view, 3D view and image side by side, the timeline
-// under them, the inspector and the event list on the right.
+// under them, the inspector and the event list on the right. It lays them out, wires them, holds
+// the menus, and opens scenes and lessons in the background; each part has a file of its own.
 #include "session.h"
 #include "task_runner.h"
 
@@ -14,19 +15,10 @@
 #include <QMainWindow>
 #include <QPointer>
 
-class QComboBox;
+class QAction;
 class QLabel;
-class QMenu;
-class QLineEdit;
-class QListView;
 class QProgressBar;
 class QPushButton;
-class QSlider;
-class QSortFilterProxyModel;
-class QSpinBox;
-class QTextBrowser;
-class QTimer;
-class QToolButton;
 
 namespace raystep::gui {
 
@@ -36,11 +28,14 @@ namespace raystep::gui {
 QString savePng(const QImage& image, const QString& path);
 
 class CompareWindow;
+class EventList;
 class ImageView;
+class Inspector;
+class LessonController;
 class LessonPanel;
+class Timeline;
 class View2D;
 class VtkView;
-class EventListModel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -81,8 +76,8 @@ class MainWindow : public QMainWindow {
     LessonPanel* lessonPanel() const { return lesson_; }
     void setLanguage(Language lang);
     void setLecturerMode(bool on);
-    const Progress& studentProgress() const { return studentProgress_; }
-    QString progressPath() const { return progressPath_; }
+    const Progress& studentProgress() const;
+    QString progressPath() const;
     /// The inspector's text (what tests read).
     QString inspectorText() const;
     View2D* view2D() const { return view2D_; }
@@ -98,6 +93,7 @@ class MainWindow : public QMainWindow {
     void opened(bool ok, const QString& error);
 
   public slots:
+    // The timeline's (timeline.h), for the tests and scripts that drive the window.
     void stepForward();
     void stepBack();
     void jumpToNextOfKind();
@@ -107,25 +103,23 @@ class MainWindow : public QMainWindow {
     void closeEvent(QCloseEvent*) override;
 
   private:
-    void buildUi();
-    void updateTimeline();
+    // The window's parts, made in this order by the constructor.
+    void createViews();
+    void createTimeline();
+    void createDocks();
+    void createStatusBar();
+    void createActions();
+    void createMenus();
     void openFileDialog();
     void exportScreenshot(QWidget* w, const QString& what);
     void exportTrace();
-    void exportProgressReport();
-    void applyStep(int index);
-    /// A lesson's steps and exercises are positions in its trace: replay it again if needed.
-    void showLessonTrace();
-    void saveProgress();
-    void runSweep();
-    void fillLessonsMenu();
     /// Shows a scene made by a worker: views, text, the first ray to replay, the render.
     void showScene(SceneRef scene, bool renderImage);
+    /// Which of the 2D view, 3D view and image are shown (a 2D lesson needs no 3D view).
+    void showViews(bool view2D, bool view3D, bool image);
     /// An open that did not end well: say why (a dialog unless quiet), keep what is shown.
     void openFailed(const QString& what, const TaskOutcome& outcome, bool quiet);
     void finishOpen(bool ok, const QString& error);
-    /// What the replay shows when it is not the lesson's trace ("" when it is).
-    QString replayDescription() const;
     /// A warning that does not block the event loop (no nested loop: the window goes on).
     void warn(const QString& title, const QString& text);
 
@@ -141,22 +135,20 @@ class MainWindow : public QMainWindow {
     VtkView* view3D_ = nullptr;
     ImageView* imageView_ = nullptr;
     LessonPanel* lesson_ = nullptr;
-    QAction* lecturerAction_ = nullptr;
-    QMenu* lessonsMenu_ = nullptr;
-    Language lang_ = Language::En;
-    Progress studentProgress_;
-    QString progressPath_;
-    QTextBrowser* inspector_ = nullptr;
-    QListView* events_ = nullptr;
-    EventListModel* eventModel_ = nullptr;
-    QSortFilterProxyModel* eventFilter_ = nullptr;
-    QLineEdit* filterEdit_ = nullptr;
-    QSlider* scrubber_ = nullptr;
-    QLabel* position_ = nullptr;
-    QComboBox* kindCombo_ = nullptr;
-    QSpinBox* speed_ = nullptr;
-    QToolButton* play_ = nullptr;
-    QTimer* timer_ = nullptr;
+    QWidget* views_ = nullptr;
+    Timeline* timeline_ = nullptr;
+    Inspector* inspector_ = nullptr;
+    EventList* events_ = nullptr;
+    LessonController* lessons_ = nullptr;
+    /// The menus' actions, made by createActions and placed by createMenus.
+    struct Actions {
+        QAction *open, *exportTrace, *shotWindow, *shot2D, *shot3D, *shotImage, *exportReport,
+            *quit;
+        QAction *stepForward, *stepBack, *play, *nextOfKind, *replayBuild, *exampleRay, *first,
+            *last;
+        QAction *openLessonFile, *lecturer;
+        QAction *compare, *renderAgain, *heatmap, *resetCamera;
+    } actions_{};
     QLabel* taskLabel_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

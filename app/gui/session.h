@@ -2,9 +2,9 @@
 // What the app shows: a scene (3D or one of the lecture's 2D pictures), its structure, a recorded
 // log and the replay cursor over it. The views draw from it; they own no algorithm.
 #include "raystep/accel/accel.h"
-#include "raystep/trace/replay.h"
 #include "raystep/scene/scene.h"
 #include "raystep/scene/scene2d.h"
+#include "raystep/trace/replay.h"
 
 #include <QImage>
 #include <QObject>
@@ -118,10 +118,5 @@ class Session : public QObject {
     std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);  // over *log_
     std::size_t cursor_ = 0;
 };
-
-/// One line describing event `i` of the log, for the event list.
-QString describeEvent(const Event& e);
-/// The inspector's text: the current event and the algorithm's variables.
-QString describeState(const Session& s);
 
 }  // namespace raystep::gui

@@ -334,20 +334,14 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
         // Every node's box (for the node being entered) and the split lines.
         kdBoxes_.resize(kd->nodes().size());
         lp.setPen(QPen(kGridLine, 1));
-        const auto walk = [&](auto&& self, std::uint32_t id, BoxN<2> box) -> void {
+        kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<2>& box) {
             kdBoxes_[id] = box;
-            const KdNode& n = kd->nodes()[id];
             if (n.leaf()) return;
-            BoxN<2> l = box, r = box;
-            l.hi[n.axis] = r.lo[n.axis] = n.split;
             const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
             const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
             // A build's replay draws only the planes chosen so far (paintEvent), not the answer.
             if (!session_.showingBuild()) lp.drawLine(toScreen(a), toScreen(b));
-            self(self, id + 1, l);
-            self(self, n.index, r);
-        };
-        walk(walk, 0, kd->bounds());
+        });
     }
     lp.setPen(QPen(kPrimitive, 2.0));
     for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) drawPrimitive(lp, p);

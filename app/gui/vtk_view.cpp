@@ -238,22 +238,17 @@ void VtkView::rebuildRays() {
         }
     } else if (const auto* kd = accel ? std::get_if<KdTree3>(accel) : nullptr;
                kd && st.node && st.node->node < kd->nodes().size()) {
-        // The entered node's box: walk down from the root to it (nodes are in depth-first order).
-        Vec3 lo = kd->bounds().lo, hi = kd->bounds().hi;
-        std::uint32_t id = 0;
-        while (id != st.node->node && !kd->nodes()[id].leaf()) {
-            const KdNode& n = kd->nodes()[id];
-            if (st.node->node < n.index) {
-                hi[n.axis] = n.split;
-                id = id + 1;
-            } else {
-                lo[n.axis] = n.split;
-                id = n.index;
-            }
+        // The entered node's box, from the walk over the tree that carries every node's box.
+        const std::uint32_t entered = st.node->node;
+        std::optional<std::pair<KdNode, BoxN<3>>> found;
+        kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<3>& b) {
+            if (id == entered) found.emplace(n, b);
+        });
+        if (found) {
+            const auto& [n, b] = *found;
+            box(b.lo, b.hi, kNode);
+            if (!n.leaf()) plane(b.lo, b.hi, n.axis, n.split, kChosen);
         }
-        box(lo, hi, kNode);
-        if (!kd->nodes()[id].leaf())
-            plane(lo, hi, kd->nodes()[id].axis, kd->nodes()[id].split, kChosen);
     } else if (const auto* bvh = accel ? std::get_if<Bvh3>(accel) : nullptr;
                bvh && !session_.showingBuild()) {
         // Object subdivision: every box the ray has entered (they may overlap), the current one

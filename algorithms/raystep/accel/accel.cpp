@@ -24,6 +24,7 @@ namespace {
 template <typename Prims>
 AcceleratorT<Prims> build(const Prims& prims, AccelKind kind, const AccelOptions& options,
                           EventLog* log) {
+    if (log) log->setDims(Prims::N);
     GridOptions grid = options.grid;
     switch (kind) {
         case AccelKind::BruteForce:
@@ -100,6 +101,7 @@ std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, Even
                                TraversalCounters* counters) {
     TraversalCounters local;
     TraversalCounters& c = counters ? *counters : local;
+    log.setDims(2);
     const std::uint32_t id =
         log.beginRay(Ray{Vec3(ray.origin, 0.0), Vec3(ray.dir, 0.0), ray.tMin, ray.tMax},
                      RayKind::Primary, 0, kNoId);

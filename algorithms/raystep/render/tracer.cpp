@@ -144,6 +144,7 @@ Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounter
 
 Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters,
                           EventLog& log) const {
+    log.setDims(3);
     const Color c = pixel(x, y, options, counters, log);
     log(PixelResult{static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), {c.x, c.y, c.z}});
     return c;

@@ -203,6 +203,10 @@ class EventLog {
     const std::vector<RayRecord>& rays() const { return rays_; }
     const std::vector<NodeRecord>& nodes() const { return nodes_; }
     std::size_t cap() const { return cap_; }
+    /// 2 for a log of a 2D scene, 3 for a 3D one: said once by whoever records, so a reader of
+    /// an event (a 2D cell leaves its third coordinate at 0) need not guess.
+    int dims() const { return dims_; }
+    void setDims(int dims) { dims_ = dims; }
     std::size_t dropped() const { return dropped_; }
     bool truncated() const { return dropped_ > 0; }
     void clear() {
@@ -222,6 +226,7 @@ class EventLog {
     std::vector<RayRecord> rays_;
     std::vector<NodeRecord> nodes_;
     std::size_t dropped_ = 0;
+    int dims_ = 3;
 };
 
 /// What a cap message says: one line for the user.

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Fills app/gui/i18n/raystep_it.ts with the Italian of every string (the lecture's language).
 Run after lupdate has added new strings: it keeps the table below as the one source of truth and
-reports any string it has no translation for."""
+reports any string it has no translation for. The lecture's help texts are not here: they are
+Markdown files per language in app/gui/texts/."""
 import pathlib
 import sys
 import xml.etree.ElementTree as ET
@@ -51,16 +52,6 @@ IT = {
     "Rendered in %1 ms; click a pixel to trace it":
         "Rendering in %1 ms; clicca un pixel per tracciarlo",
     "Pixel (%1, %2): %3 events recorded": "Pixel (%1, %2): %3 eventi registrati",
-    "## Building the %1\n\nEach node is split by a plane. Step through the **candidate** planes "
-    "(dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + "
-    "P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The "
-    "**chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). "
-    "Jump to the next choice with the *split chosen* kind and **N**.":
-        "## Costruzione del %1\n\nOgni nodo è diviso da un piano. Scorri i piani **candidati**: "
-        "il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + "
-        "P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo "
-        "perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della "
-        "foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.",
     "&File": "&File",
     "&Open scene...": "&Apri scena...",
     "Export &trace...": "Esporta &traccia...",
@@ -86,16 +77,6 @@ IT = {
     "&Heat map of primitive tests": "&Mappa di calore dei test di primitive",
     "&Reset 3D camera": "&Reimposta la camera 3D",
     "Cannot open the scene": "Impossibile aprire la scena",
-    "## %1\n\n%2\n\nThe ray is the slides' example. Step with **Right** and **Left**, play with "
-    "**Space**, jump to the next event of a kind with **N**. The inspector shows X, Y, tMax and "
-    "tDelta as on the board; the list shows every event.":
-        "## %1\n\n%2\n\nIl raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, "
-        "avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, "
-        "Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.",
-    "## %1\n\n%2\n\nClick a pixel of the image to trace it: its ray tree is recorded and replayed "
-    "in the 3D view, the inspector and the event list.":
-        "## %1\n\n%2\n\nClicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è "
-        "registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.",
     "Rendering %1...": "Rendering di %1...",
     "Loading %1 and building its %2...": "Caricamento di %1 e costruzione del suo %2...",
     "Opening %1 cancelled": "Apertura di %1 annullata",

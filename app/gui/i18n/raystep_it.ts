@@ -74,6 +74,13 @@
     </message>
 </context>
 <context>
+    <name>raystep::gui::EventList</name>
+    <message>
+        <source>Filter events (e.g. cell, test, mailbox)</source>
+        <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
+    </message>
+</context>
+<context>
     <name>raystep::gui::ImageView</name>
     <message>
         <location filename="../image_view.cpp" line="85" />
@@ -94,6 +101,37 @@
         <location filename="../image_view.cpp" line="93" />
         <source>Ray tracing (raystep): click a pixel to trace it</source>
         <translation>Ray tracing (raystep): clicca un pixel per tracciarlo</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::LessonController</name>
+    <message>
+        <source>Progress file unreadable, kept as %1: %2</source>
+        <translation>File dei progressi illeggibile, conservato come %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot save the progress to %1</source>
+        <translation>Impossibile salvare i progressi in %1</translation>
+    </message>
+    <message>
+        <source>Export progress report</source>
+        <translation>Esporta il resoconto dei progressi</translation>
+    </message>
+    <message>
+        <source>Markdown (*.md)</source>
+        <translation>Markdown (*.md)</translation>
+    </message>
+    <message>
+        <source>Tracing the same rays at %1 grid resolutions...</source>
+        <translation>Tracciamento degli stessi raggi con %1 risoluzioni della griglia...</translation>
+    </message>
+    <message>
+        <source>Cannot save</source>
+        <translation>Impossibile salvare</translation>
+    </message>
+    <message>
+        <source>Could not write %1</source>
+        <translation>Impossibile scrivere %1</translation>
     </message>
 </context>
 <context>
@@ -274,99 +312,14 @@
 <context>
     <name>raystep::gui::MainWindow</name>
     <message>
-        <location filename="../main_window.cpp" line="78" />
-        <source>DDA step</source>
-        <translation>passo del DDA</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="79" />
-        <source>primitive test</source>
-        <translation>test di una primitiva</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="81" />
-        <source>mailbox skip</source>
-        <translation>saltata dalla mailbox</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="82" />
-        <source>node enter</source>
-        <translation>ingresso in un nodo</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="83" />
-        <source>ray begin</source>
-        <translation>inizio di un raggio</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="84" />
-        <source>hit</source>
-        <translation>intersezione</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="85" />
-        <source>split chosen</source>
-        <translation>split scelto</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="103" />
-        <source>Progress file unreadable, kept as %1: %2</source>
-        <translation>File dei progressi illeggibile, conservato come %1: %2</translation>
-    </message>
-    <message>
         <location filename="../main_window.cpp" line="115" />
         <source>raystep</source>
         <translation>raystep</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="142" />
-        <source>First event (Home)</source>
-        <translation>Primo evento (Home)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="143" />
-        <source>Step back (Left)</source>
-        <translation>Passo indietro (Sinistra)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="144" />
-        <source>Play / pause (Space)</source>
-        <translation>Avvia / pausa (Spazio)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="145" />
-        <source>Step forward (Right)</source>
-        <translation>Passo avanti (Destra)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="149" />
-        <source>next</source>
-        <translation>successivo</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="149" />
-        <source>Jump to the next event of this kind (N)</source>
-        <translation>Salta al prossimo evento di questo tipo (N)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="151" />
-        <source>speed</source>
-        <translation>velocità</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="155" />
-        <source> /s</source>
-        <translation> /s</translation>
-    </message>
-    <message>
         <location filename="../main_window.cpp" line="181" />
         <source>Inspector</source>
         <translation>Ispettore</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="189" />
-        <source>Filter events (e.g. cell, test, mailbox)</source>
-        <translation>Filtra gli eventi (es. cell, test, mailbox)</translation>
     </message>
     <message>
         <location filename="../main_window.cpp" line="204" />
@@ -393,15 +346,6 @@
         <location filename="../main_window.cpp" line="230" />
         <source>Pixel (%1, %2): %3 events recorded</source>
         <translation>Pixel (%1, %2): %3 eventi registrati</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="247" />
-        <source>## Building the %1
-
-Each node is split by a plane. Step through the **candidate** planes (dashed): the chart under the scene draws the cost of each, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` with `P = Area(L) / Area(C)` (in 2D the area of a cell is its perimeter). The **chosen** plane (red) is the cheapest, taken only if it beats the leaf's cost (dashed line). Jump to the next choice with the *split chosen* kind and **N**.</source>
-        <translation>## Costruzione del %1
-
-Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto la scena disegna il costo di ognuno, `Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R)` con `P = Area(L) / Area(C)` (in 2D l'area di una cella è il suo perimetro). Il piano **scelto** (rosso) è il più economico, preso solo se costa meno della foglia (linea tratteggiata). Salta alla scelta successiva con il tipo *split scelto* e **N**.</translation>
     </message>
     <message>
         <location filename="../main_window.cpp" line="271" />
@@ -579,32 +523,6 @@ Ogni nodo è diviso da un piano. Scorri i piani **candidati**: il grafico sotto 
         <translation>Impossibile aprire la scena</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="353" />
-        <source>## %1
-
-%2
-
-The ray is the slides' example. Step with **Right** and **Left**, play with **Space**, jump to the next event of a kind with **N**. The inspector shows X, Y, tMax and tDelta as on the board; the list shows every event.</source>
-        <translation>## %1
-
-%2
-
-Il raggio è l'esempio delle slide. Avanza con **Destra** e **Sinistra**, avvia con **Spazio**, salta al prossimo evento di un tipo con **N**. L'ispettore mostra X, Y, tMax e tDelta come alla lavagna; la lista mostra ogni evento.</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="360" />
-        <source>## %1
-
-%2
-
-Click a pixel of the image to trace it: its ray tree is recorded and replayed in the 3D view, the inspector and the event list.</source>
-        <translation>## %1
-
-%2
-
-Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registrato e riprodotto nella vista 3D, nell'ispettore e nella lista degli eventi.</translation>
-    </message>
-    <message>
         <location filename="../main_window.cpp" line="368" />
         <source>Rendering %1...</source>
         <translation>Rendering di %1...</translation>
@@ -626,26 +544,6 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <translation>raystep - lezione %1: %2</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="485" />
-        <source>Cannot save the progress to %1</source>
-        <translation>Impossibile salvare i progressi in %1</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="490" />
-        <source>Export progress report</source>
-        <translation>Esporta il resoconto dei progressi</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="491" />
-        <source>Markdown (*.md)</source>
-        <translation>Markdown (*.md)</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="506" />
-        <source>Tracing the same rays at %1 grid resolutions...</source>
-        <translation>Tracciamento degli stessi raggi con %1 risoluzioni della griglia...</translation>
-    </message>
-    <message>
         <location filename="../main_window.cpp" line="553" />
         <source>Building the midpoint, median and SAH trees...</source>
         <translation>Costruzione degli alberi midpoint, mediana e SAH...</translation>
@@ -659,11 +557,6 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <location filename="../main_window.cpp" line="562" />
         <source>Compare</source>
         <translation>Confronto</translation>
-    </message>
-    <message>
-        <location filename="../main_window.cpp" line="608" />
-        <source>%1 / %2</source>
-        <translation>%1 / %2</translation>
     </message>
     <message>
         <location filename="../main_window.cpp" line="622" />
@@ -693,12 +586,6 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../main_window.cpp" line="498" />
-        <location filename="../main_window.cpp" line="631" />
-        <source>Could not write %1</source>
-        <translation>Impossibile scrivere %1</translation>
-    </message>
-    <message>
         <location filename="../main_window.cpp" line="635" />
         <source>Export trace</source>
         <translation>Esporta traccia</translation>
@@ -707,6 +594,73 @@ Clicca un pixel dell'immagine per tracciarlo: il suo albero di raggi è registra
         <location filename="../main_window.cpp" line="636" />
         <source>Trace files (*.json)</source>
         <translation>File di traccia (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>raystep::gui::Timeline</name>
+    <message>
+        <source>DDA step</source>
+        <translation>passo del DDA</translation>
+    </message>
+    <message>
+        <source>primitive test</source>
+        <translation>test di una primitiva</translation>
+    </message>
+    <message>
+        <source>mailbox skip</source>
+        <translation>saltata dalla mailbox</translation>
+    </message>
+    <message>
+        <source>node enter</source>
+        <translation>ingresso in un nodo</translation>
+    </message>
+    <message>
+        <source>ray begin</source>
+        <translation>inizio di un raggio</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>intersezione</translation>
+    </message>
+    <message>
+        <source>split chosen</source>
+        <translation>split scelto</translation>
+    </message>
+    <message>
+        <source>First event (Home)</source>
+        <translation>Primo evento (Home)</translation>
+    </message>
+    <message>
+        <source>Step back (Left)</source>
+        <translation>Passo indietro (Sinistra)</translation>
+    </message>
+    <message>
+        <source>Play / pause (Space)</source>
+        <translation>Avvia / pausa (Spazio)</translation>
+    </message>
+    <message>
+        <source>Step forward (Right)</source>
+        <translation>Passo avanti (Destra)</translation>
+    </message>
+    <message>
+        <source>next</source>
+        <translation>successivo</translation>
+    </message>
+    <message>
+        <source>Jump to the next event of this kind (N)</source>
+        <translation>Salta al prossimo evento di questo tipo (N)</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>velocità</translation>
+    </message>
+    <message>
+        <source> /s</source>
+        <translation> /s</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
     </message>
 </context>
 <context>

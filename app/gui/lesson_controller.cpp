@@ -1,0 +1,232 @@
+// The lesson controller: a lesson's steps, exercises, progress and sweep, and the help texts.
+#include "lesson_controller.h"
+
+#include "event_list.h"
+#include "lesson_panel.h"
+#include "vtk_view.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLockFile>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QStatusBar>
+
+namespace raystep::gui {
+
+LessonController::Opened LessonController::prepare(const Lesson& lesson,
+                                                   const ProgressFn& progress) {
+    AccelOptions options = lesson.options;
+    options.setProgress(progress);
+    Opened o;
+    o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
+    o.trace =
+        recordLessonTrace(lesson, o.scene->scene, o.scene->accel3D ? &*o.scene->accel3D : nullptr,
+                          o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+    return o;
+}
+
+LogKind LessonController::logKind(const Lesson& lesson) {
+    return lesson.trace.kind == LessonTrace::Kind::Build ? LogKind::Build : LogKind::Lesson;
+}
+
+LessonController::LessonController(QMainWindow& window, Session& session, TaskRunner& runner,
+                                   const std::uint64_t& generation, LessonPanel* panel,
+                                   EventList* events, VtkView* view3D)
+    : QObject(&window),
+      window_(window),
+      session_(session),
+      runner_(runner),
+      generation_(generation),
+      lesson_(panel),
+      events_(events),
+      view3D_(view3D) {
+    // The student's progress: one JSON file under the user's data folder, replaced atomically.
+    progressPath_ =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
+    try {
+        if (auto saved = loadProgressFile(progressPath_.toStdString()))
+            studentProgress_ = std::move(*saved);
+    } catch (const LessonError& e) {
+        // Keep the unreadable file aside rather than overwrite it at the next answer.
+        QFile::rename(progressPath_, progressPath_ + ".unreadable");
+        window_.statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
+                                             .arg(progressPath_ + ".unreadable", e.what()));
+    }
+
+    // The lesson panel asks; the controller moves the replay and saves the progress.
+    connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
+    connect(lesson_, &LessonPanel::lessonTraceRequested, this, [this] {
+        showLessonTrace();
+        applyStep(lesson_->step());
+    });
+    connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
+        showLessonTrace();
+        const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
+        if (at) session_.setCursor(*at);
+    });
+    connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
+    connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
+    connect(&session_, &Session::logChanged, this, [this] { showReplayText(); });
+}
+
+void LessonController::show(const Lesson& lesson, const LogRef& trace) {
+    // The panel records answers into this lesson's progress (std::map entries do not move) and
+    // grades them against its own share of the trace.
+    lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id]);
+    applyStep(lesson_->step());
+}
+
+void LessonController::applyStep(int index) {
+    if (!lesson_->hasLesson() || lesson_->lesson().steps.empty()) {
+        session_.setCursor(session_.size());
+        return;
+    }
+    showLessonTrace();
+    const LessonStep& step = lesson_->lesson().steps[index];
+    if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
+    events_->setFilter(QString::fromStdString(step.filter));
+    if (step.camera)
+        view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
+    studentProgress_.lessons[lesson_->lesson().id].step = index;
+    saveProgress();
+}
+
+void LessonController::showLessonTrace() {
+    if (!lesson_->hasLesson() || !lesson_->lessonLog()) return;
+    if (session_.logRef() == lesson_->lessonLog()) return;
+    session_.showLog(lesson_->lessonLog(), logKind(lesson_->lesson()));
+}
+
+void LessonController::saveProgress() {
+    // Another window of the app may have saved since: fold its answers in under a lock, then
+    // write beside and rename (QSaveFile), so neither a crash nor a second window loses work.
+    QDir().mkpath(QFileInfo(progressPath_).absolutePath());
+    QLockFile lock(progressPath_ + ".lock");
+    if (!lock.tryLock(2000)) {
+        window_.statusBar()->showMessage(
+            tr("Cannot save the progress: %1 is locked").arg(progressPath_));
+        return;
+    }
+    try {
+        if (const auto saved = loadProgressFile(progressPath_.toStdString()))
+            mergeProgress(studentProgress_, *saved);
+    } catch (const LessonError&) {
+        // Unreadable now (it was read at start): replaced by what this window knows.
+    }
+    QSaveFile f(progressPath_);
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(QByteArray::fromStdString(progressToJson(studentProgress_))) < 0 || !f.commit())
+        window_.statusBar()->showMessage(tr("Cannot save the progress to %1").arg(progressPath_));
+}
+
+void LessonController::exportProgressReport() {
+    const QString path =
+        QFileDialog::getSaveFileName(&window_, tr("Export progress report"),
+                                     QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
+    if (path.isEmpty()) return;
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(QByteArray::fromStdString(
+            progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
+        !f.commit())
+        QMessageBox::warning(&window_, tr("Cannot save"), tr("Could not write %1").arg(path));
+}
+
+void LessonController::runSweep() {
+    if (!lesson_->hasLesson() || !lesson_->lesson().sweep || !session_.hasScene()) return;
+    const GridSweepSpec spec = *lesson_->lesson().sweep;
+    const std::uint64_t generation = generation_;
+    const LogRef lessonLog = lesson_->lessonLog();
+    runner_.start<std::vector<GridSweepRow>>(
+        TaskKind::Sweep,
+        tr("Tracing the same rays at %1 grid resolutions...").arg(spec.resolutions.size()),
+        [ref = session_.sceneRef(), spec](const ProgressFn& progress) {
+            return runGridSweep(ref->scene, spec, progress);
+        },
+        [this, generation, lessonLog](std::vector<GridSweepRow>&& rows,
+                                      const TaskOutcome& outcome) {
+            // Only for the lesson that asked.
+            if (outcome.superseded || generation != generation_ ||
+                lesson_->lessonLog() != lessonLog)
+                return;
+            if (outcome.ok())
+                lesson_->showSweep(rows);
+            else
+                window_.statusBar()->showMessage(outcome.cancelled ? tr("Sweep cancelled")
+                                                                   : tr("The sweep failed"));
+        });
+}
+
+void LessonController::setLanguage(Language lang) {
+    lang_ = lang;
+    lesson_->setLanguage(lang);
+    lesson_->setLessons(builtinLessons());
+    fillLessonsMenu();
+}
+
+void LessonController::setLessonsMenu(QMenu* menu) {
+    lessonsMenu_ = menu;
+    fillLessonsMenu();
+}
+
+void LessonController::fillLessonsMenu() {
+    lessonsMenu_->clear();
+    for (const Lesson& l : builtinLessons()) {
+        const QString id = QString::fromStdString(l.id);
+        lessonsMenu_->addAction(
+            QStringLiteral("&%1. %2").arg(l.number).arg(QString::fromStdString(l.title.in(lang_))),
+            this, [this, id] { emit lessonRequested(id); });
+    }
+}
+
+void LessonController::showSceneIntro() {
+    const bool twoD = session_.is2D();
+    lesson_->showText(lectureText(twoD ? QStringLiteral("scene_2d") : QStringLiteral("scene_3d"))
+                          .arg(QString::fromStdString(session_.name()),
+                               QString::fromStdString(twoD ? session_.scene2D()->description
+                                                           : session_.scene3D()->description)));
+}
+
+void LessonController::showReplayText() {
+    if (lesson_->hasLesson()) {
+        lesson_->setReplayNote(replayDescription());
+    } else if (session_.showingBuild()) {
+        lesson_->showText(lectureText(QStringLiteral("building"))
+                              .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+    }
+}
+
+QString LessonController::replayDescription() const {
+    if (!lesson_->hasLesson() || session_.logRef() == lesson_->lessonLog()) return {};
+    switch (session_.logKind()) {
+        case LogKind::Pixel:
+            for (auto it = session_.log().events().rbegin(); it != session_.log().events().rend();
+                 ++it)
+                if (const auto* p = std::get_if<PixelResult>(&*it))
+                    return tr("the ray tree of pixel (%1, %2)").arg(p->x).arg(p->y);
+            return tr("a pixel's ray tree");
+        case LogKind::ExampleRay:
+            return tr("the scene's example ray");
+        case LogKind::Build:
+            return tr("the construction of the %1")
+                .arg(QString::fromUtf8(accelKindName(session_.kind()).data()));
+        default:
+            return tr("another trace");
+    }
+}
+
+QString LessonController::lectureText(const QString& name) const {
+    // texts/<language>/<name>.md, compiled in as a Qt resource (CMakeLists.txt).
+    const QString lang = lang_ == Language::It ? QStringLiteral("it") : QStringLiteral("en");
+    QFile f(QStringLiteral(":/texts/%1/%2.md").arg(lang, name));
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(f.readAll()).trimmed();
+}
+
+}  // namespace raystep::gui

@@ -1,0 +1,83 @@
+#pragma once
+// The lesson controller: what the window does for the open lesson. It moves the replay to the
+// lesson's steps and exercises, keeps and saves the student's progress, runs the grid sweep, and
+// writes the lecture's help texts (texts/) into the lesson panel.
+#include "session.h"
+#include "task_runner.h"
+
+#include "raystep/lesson.h"
+
+#include <QObject>
+
+class QMainWindow;
+class QMenu;
+
+namespace raystep::gui {
+
+class EventList;
+class LessonPanel;
+class VtkView;
+
+class LessonController : public QObject {
+    Q_OBJECT
+  public:
+    /// What a worker makes of a lesson: its scene with the structure built, and its trace.
+    struct Opened {
+        SceneRef scene;
+        LogRef trace;
+    };
+    /// Loads the lesson's scene, builds its structure and records its trace; any thread.
+    static Opened prepare(const Lesson& lesson, const ProgressFn& progress);
+    /// How the session replays a lesson's trace.
+    static LogKind logKind(const Lesson& lesson);
+
+    /// `generation` counts the scenes the window has shown: a sweep for an older one is dropped.
+    LessonController(QMainWindow& window, Session& session, TaskRunner& runner,
+                     const std::uint64_t& generation, LessonPanel* panel, EventList* events,
+                     VtkView* view3D);
+
+    /// Shows a lesson whose trace the session now replays, at the step the progress was at.
+    void show(const Lesson& lesson, const LogRef& trace);
+    /// The text beside a scene opened by hand: its name, description and how to replay it.
+    void showSceneIntro();
+    void setLanguage(Language lang);
+    Language language() const { return lang_; }
+    /// The menu the built-in lessons are listed in (filled again on a change of language).
+    void setLessonsMenu(QMenu* menu);
+    const Progress& studentProgress() const { return studentProgress_; }
+    QString progressPath() const { return progressPath_; }
+    void exportProgressReport();
+
+  signals:
+    /// A lesson picked in the lessons menu.
+    void lessonRequested(const QString& id);
+
+  private:
+    void applyStep(int index);
+    /// A lesson's steps and exercises are positions in its trace: replay it again if needed.
+    void showLessonTrace();
+    void saveProgress();
+    void runSweep();
+    void fillLessonsMenu();
+    /// The panel's text for a new replay: a note when it is not the lesson's trace, the SAH's
+    /// explanation for a build replayed without a lesson.
+    void showReplayText();
+    /// What the replay shows when it is not the lesson's trace ("" when it is).
+    QString replayDescription() const;
+    /// A help text of texts/ in the interface's language.
+    QString lectureText(const QString& name) const;
+
+    QMainWindow& window_;
+    Session& session_;
+    TaskRunner& runner_;
+    const std::uint64_t& generation_;
+    LessonPanel* lesson_;
+    EventList* events_;
+    VtkView* view3D_;
+    QMenu* lessonsMenu_ = nullptr;
+    Language lang_ = Language::En;
+    Progress studentProgress_;
+    QString progressPath_;
+};
+
+}  // namespace raystep::gui
