@@ -5,7 +5,9 @@
 #include "session.h"
 #include "task_runner.h"
 
-#include "raystep/lesson.h"
+#include "course/lesson.h"
+#include "course/lesson_trace.h"
+#include "course/progress.h"
 
 #include <QObject>
 
