@@ -123,7 +123,7 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                 if (!e) c.fail("no DDA set-up follows its position");
                 v = q == Quantity::TEnter ? e->second.tEnter
                     : q == Quantity::TExit
-                        ? e->second.tExit
+                        ? e->second.tGridExit
                         : e->second
                               .tDelta[static_cast<int>(q) - static_cast<int>(Quantity::TDeltaX)];
                 source = "dda_setup";

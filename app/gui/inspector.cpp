@@ -43,7 +43,7 @@ QString describeState(const Session& s) {
                      .arg(d.step[0])
                      .arg(d.step[1])
                      .arg(threeD ? QStringLiteral("   stepZ = %1").arg(d.step[2]) : QString());
-        lines << QStringLiteral("t_enter = %1   t_exit = %2").arg(num(d.tEnter), num(d.tExit));
+        lines << QStringLiteral("t_enter = %1   t_exit = %2").arg(num(d.tEnter), num(d.tGridExit));
     }
     if (st.node)
         lines << QStringLiteral("node %1, t in [%2, %3]")

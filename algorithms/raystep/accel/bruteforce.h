@@ -2,7 +2,7 @@
 // Brute force, the slides' RaySceneIntersection: test every primitive, keep the closest. The
 // baseline every acceleration structure is measured against (and must agree with).
 #include "raystep/accel/mailbox.h"
-#include "raystep/accel/query.h"
+#include "raystep/accel/query_impl.h"
 #include "raystep/base/ray.h"
 #include "raystep/scene/prims.h"
 #include "raystep/scene/scene2d.h"
@@ -16,7 +16,7 @@ namespace raystep {
 
 /// No structure at all: every query tests every primitive of `Prims`, in order.
 template <typename Prims>
-class BruteForceT {
+class BruteForceT : public Queries<BruteForceT<Prims>, Prims> {
   public:
     using RayT = typename Prims::RayT;
     using HitT = typename Prims::HitT;
@@ -24,25 +24,13 @@ class BruteForceT {
     const Prims& primitives() const { return prims_; }
     const KernelOptions& kernels() const { return prims_.kernels(); }
 
-    /// Nearest hit in (ray.tMin, ray.tMax).
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const {
-        NullRecorder rec;
-        return raySceneIntersection<false>(ray, counters, rec, kNoId);
-    }
-    /// Any hit in (ray.tMin, ray.tMax): shadow rays stop at the first one.
-    bool occluded(RayT ray, TraversalCounters& counters) const {
-        NullRecorder rec;
-        return raySceneIntersection<true>(ray, counters, rec, kNoId).has_value();
-    }
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                  std::uint32_t rayId) const {
-        return raySceneIntersection<false>(ray, counters, log, rayId);
-    }
-    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const {
-        return raySceneIntersection<true>(ray, counters, log, rayId).has_value();
-    }
-
   private:
+    friend class Queries<BruteForceT, Prims>;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> query(RayT ray, TraversalCounters& counters, Rec& rec,
+                              std::uint32_t rayId) const {
+        return raySceneIntersection<AnyHit>(ray, counters, rec, rayId);
+    }
     /// The slides' loop: for each primitive, intersect; keep the nearest (AnyHit: the first).
     template <bool AnyHit, typename Rec>
     std::optional<HitT> raySceneIntersection(RayT ray, TraversalCounters& counters, Rec& rec,

@@ -1,4 +1,5 @@
 #include "raystep/accel/bvh.h"
+#include "raystep/accel/query_impl.h"
 
 #include "raystep/accel/mailbox.h"
 #include "raystep/base/timer.h"
@@ -238,11 +239,11 @@ class BvhBuilder {
 template <int N>
 double bvhSahCost(const std::vector<BvhNode<N>>& nodes, std::uint32_t id, const BvhOptions& opt) {
     const BvhNode<N>& node = nodes[id];
-    if (node.leaf()) return opt.cIsect * node.count;
+    if (node.leaf()) return leafCost(opt.cIsect, node.count);
     const double area = node.bounds.area();
     if (!(area > 0)) return opt.cTrav;
-    return opt.cTrav + nodes[id + 1].bounds.area() / area * bvhSahCost(nodes, id + 1, opt) +
-           nodes[node.index].bounds.area() / area * bvhSahCost(nodes, node.index, opt);
+    return interiorCost(opt.cTrav, area, nodes[id + 1].bounds.area(), bvhSahCost(nodes, id + 1, opt),
+                        nodes[node.index].bounds.area(), bvhSahCost(nodes, node.index, opt));
 }
 
 template <typename Prims>
@@ -320,29 +321,11 @@ auto Bvh<Prims>::traverse(RayT ray, TraversalCounters& counters, Rec& rec,
     return closest;
 }
 
-template <typename Prims>
-auto Bvh<Prims>::intersect(RayT ray, TraversalCounters& counters) const -> std::optional<HitT> {
-    NullRecorder rec;
-    return traverse<false>(ray, counters, rec, kNoId);
-}
-template <typename Prims>
-bool Bvh<Prims>::occluded(RayT ray, TraversalCounters& counters) const {
-    NullRecorder rec;
-    return traverse<true>(ray, counters, rec, kNoId).has_value();
-}
-template <typename Prims>
-auto Bvh<Prims>::intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                           std::uint32_t rayId) const -> std::optional<HitT> {
-    return traverse<false>(ray, counters, log, rayId);
-}
-template <typename Prims>
-bool Bvh<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
-                          std::uint32_t rayId) const {
-    return traverse<true>(ray, counters, log, rayId).has_value();
-}
-
 template class Bvh<ScenePrims>;
 template class Bvh<Scene2DPrims>;
 template class Bvh<FloatScenePrims>;
+template class Queries<Bvh<ScenePrims>, ScenePrims>;
+template class Queries<Bvh<Scene2DPrims>, Scene2DPrims>;
+template class Queries<Bvh<FloatScenePrims>, FloatScenePrims>;
 
 }  // namespace raystep

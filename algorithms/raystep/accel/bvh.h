@@ -4,10 +4,12 @@
 // bounds (midpoint), by equal counts (median), or by the SAH over binned centres (12 buckets,
 // pbrt). Traversal visits the nearer child first and skips boxes beyond the nearest hit.
 #include "raystep/accel/query.h"
-#include "raystep/base/progress.h"
-#include "raystep/trace/events.h"
 #include "raystep/accel/sah.h"
+#include "raystep/base/progress.h"
+#include "raystep/scene/fast_prims.h"
 #include "raystep/scene/prims.h"
+#include "raystep/scene/scene2d.h"
+#include "raystep/trace/events.h"
 
 #include <cstdint>
 #include <optional>
@@ -35,7 +37,7 @@ struct BvhNode {
 };
 
 template <typename Prims>
-class Bvh {
+class Bvh : public Queries<Bvh<Prims>, Prims> {
   public:
     static constexpr int N = Prims::N;
     using RayT = typename Prims::RayT;
@@ -43,12 +45,6 @@ class Bvh {
 
     Bvh(Prims prims, const BvhOptions& options);
     Bvh(Prims prims, const BvhOptions& options, EventLog& log);
-
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const;
-    bool occluded(RayT ray, TraversalCounters& counters) const;
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                  std::uint32_t rayId) const;
-    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const;
 
     const Prims& primitives() const { return prims_; }
     const KernelOptions& kernels() const { return prims_.kernels(); }
@@ -58,6 +54,12 @@ class Bvh {
     const TreeStats& stats() const { return stats_; }
 
   private:
+    friend class Queries<Bvh, Prims>;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> query(RayT ray, TraversalCounters& counters, Rec& rec,
+                              std::uint32_t rayId) const {
+        return traverse<AnyHit>(ray, counters, rec, rayId);
+    }
     template <typename Rec>
     void build(Rec& rec);
     template <bool AnyHit, typename Rec>
@@ -70,5 +72,10 @@ class Bvh {
     std::vector<std::uint32_t> primIds_;
     TreeStats stats_;
 };
+
+// Instantiated beside the traversal (bvh.cpp).
+extern template class Queries<Bvh<ScenePrims>, ScenePrims>;
+extern template class Queries<Bvh<Scene2DPrims>, Scene2DPrims>;
+extern template class Queries<Bvh<FloatScenePrims>, FloatScenePrims>;
 
 }  // namespace raystep

@@ -1,4 +1,5 @@
 #include "raystep/accel/grid.h"
+#include "raystep/accel/query_impl.h"
 
 #include "raystep/accel/mailbox.h"
 #include "raystep/base/timer.h"
@@ -241,29 +242,9 @@ auto UniformGridT<Prims>::walk(RayT ray, TraversalCounters& counters, Rec& rec,
     return closest;
 }
 
-template <typename Prims>
-auto UniformGridT<Prims>::intersect(RayT ray, TraversalCounters& counters) const
-    -> std::optional<HitT> {
-    NullRecorder rec;
-    return walk<false>(ray, counters, rec, kNoId);
-}
-template <typename Prims>
-bool UniformGridT<Prims>::occluded(RayT ray, TraversalCounters& counters) const {
-    NullRecorder rec;
-    return walk<true>(ray, counters, rec, kNoId).has_value();
-}
-template <typename Prims>
-auto UniformGridT<Prims>::intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                    std::uint32_t rayId) const -> std::optional<HitT> {
-    return walk<false>(ray, counters, log, rayId);
-}
-template <typename Prims>
-bool UniformGridT<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
-                                   std::uint32_t rayId) const {
-    return walk<true>(ray, counters, log, rayId).has_value();
-}
-
 template class UniformGridT<ScenePrims>;
 template class UniformGridT<Scene2DPrims>;
+template class Queries<UniformGridT<ScenePrims>, ScenePrims>;
+template class Queries<UniformGridT<Scene2DPrims>, Scene2DPrims>;
 
 }  // namespace raystep

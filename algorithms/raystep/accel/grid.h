@@ -2,11 +2,12 @@
 // The uniform grid of the lecture: primitives listed in every cell their bounds overlap, and the
 // ray walked cell by cell with the DDA, testing only what the cells it crosses hold. One template
 // for the 3D scene and the lecture's 2D pictures.
+#include "raystep/accel/dda.h"
 #include "raystep/accel/query.h"
 #include "raystep/base/progress.h"
-#include "raystep/accel/dda.h"
-#include "raystep/trace/events.h"
 #include "raystep/scene/prims.h"
+#include "raystep/scene/scene2d.h"
+#include "raystep/trace/events.h"
 
 #include <array>
 #include <cstddef>
@@ -35,20 +36,13 @@ struct GridOptions {
 };
 
 template <typename Prims>
-class UniformGridT {
+class UniformGridT : public Queries<UniformGridT<Prims>, Prims> {
   public:
     static constexpr int N = Prims::N;
     using RayT = typename Prims::RayT;
     using HitT = typename Prims::HitT;
 
     UniformGridT(Prims prims, const GridOptions& options);
-
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const;
-    bool occluded(RayT ray, TraversalCounters& counters) const;
-    /// The same queries, recording the DDA's set-up, every cell, test and mailbox skip.
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                  std::uint32_t rayId) const;
-    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const;
 
     const Prims& primitives() const { return prims_; }
     const KernelOptions& kernels() const { return prims_.kernels(); }
@@ -61,6 +55,12 @@ class UniformGridT {
     std::span<const std::uint32_t> cell(const IVecN<N>& c) const;
 
   private:
+    friend class Queries<UniformGridT, Prims>;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> query(RayT ray, TraversalCounters& counters, Rec& rec,
+                              std::uint32_t rayId) const {
+        return walk<AnyHit>(ray, counters, rec, rayId);
+    }
     template <bool AnyHit, typename Rec>
     std::optional<HitT> walk(RayT ray, TraversalCounters& counters, Rec& rec,
                              std::uint32_t rayId) const;
@@ -75,5 +75,9 @@ class UniformGridT {
 };
 
 using UniformGrid = UniformGridT<ScenePrims>;
+
+// Instantiated beside the traversal (grid.cpp).
+extern template class Queries<UniformGridT<ScenePrims>, ScenePrims>;
+extern template class Queries<UniformGridT<Scene2DPrims>, Scene2DPrims>;
 
 }  // namespace raystep

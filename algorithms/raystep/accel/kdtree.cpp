@@ -2,6 +2,7 @@
 // the traversal. The fast binned build (--kd-build fast, --bin-above) is kdtree_fast.cpp; what the
 // builds share (nodes, leaves, clipping, split events) is kdtree_build.h.
 #include "raystep/accel/kdtree.h"
+#include "raystep/accel/query_impl.h"
 
 #include "raystep/accel/kdtree_build.h"
 #include "raystep/accel/mailbox.h"
@@ -436,30 +437,12 @@ auto KdTree<Prims>::testTree(RayT ray, TraversalCounters& counters, Rec& rec,
     return closest;
 }
 
-template <typename Prims>
-auto KdTree<Prims>::intersect(RayT ray, TraversalCounters& counters) const -> std::optional<HitT> {
-    NullRecorder rec;
-    return testTree<false>(ray, counters, rec, kNoId);
-}
-template <typename Prims>
-bool KdTree<Prims>::occluded(RayT ray, TraversalCounters& counters) const {
-    NullRecorder rec;
-    return testTree<true>(ray, counters, rec, kNoId).has_value();
-}
-template <typename Prims>
-auto KdTree<Prims>::intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                              std::uint32_t rayId) const -> std::optional<HitT> {
-    return testTree<false>(ray, counters, log, rayId);
-}
-template <typename Prims>
-bool KdTree<Prims>::occluded(RayT ray, TraversalCounters& counters, EventLog& log,
-                             std::uint32_t rayId) const {
-    return testTree<true>(ray, counters, log, rayId).has_value();
-}
-
 template class KdTree<ScenePrims>;
 template class KdTree<Scene2DPrims>;
 template class KdTree<FloatScenePrims>;
+template class Queries<KdTree<ScenePrims>, ScenePrims>;
+template class Queries<KdTree<Scene2DPrims>, Scene2DPrims>;
+template class Queries<KdTree<FloatScenePrims>, FloatScenePrims>;
 
 namespace kdbuild {
 template class SahSweep<ScenePrims, NullRecorder>;

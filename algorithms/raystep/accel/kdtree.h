@@ -9,7 +9,9 @@
 #include "raystep/accel/query.h"
 #include "raystep/accel/sah.h"
 #include "raystep/base/progress.h"
+#include "raystep/scene/fast_prims.h"
 #include "raystep/scene/prims.h"
+#include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
 #include <cstdint>
@@ -60,7 +62,7 @@ struct KdNode {
 };
 
 template <typename Prims>
-class KdTree {
+class KdTree : public Queries<KdTree<Prims>, Prims> {
   public:
     static constexpr int N = Prims::N;
     using RayT = typename Prims::RayT;
@@ -69,15 +71,6 @@ class KdTree {
     KdTree(Prims prims, const KdTreeOptions& options);
     /// The same build, recording every node, candidate and decision into `log`.
     KdTree(Prims prims, const KdTreeOptions& options, EventLog& log);
-
-    /// Nearest hit in (ray.tMin, ray.tMax).
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters) const;
-    /// Any hit in (ray.tMin, ray.tMax).
-    bool occluded(RayT ray, TraversalCounters& counters) const;
-    /// The same queries, recording every node, test and skip of ray `rayId` into `log`.
-    std::optional<HitT> intersect(RayT ray, TraversalCounters& counters, EventLog& log,
-                                  std::uint32_t rayId) const;
-    bool occluded(RayT ray, TraversalCounters& counters, EventLog& log, std::uint32_t rayId) const;
 
     const Prims& primitives() const { return prims_; }
     const KernelOptions& kernels() const { return prims_.kernels(); }
@@ -107,6 +100,12 @@ class KdTree {
     int maxDepthLimit() const { return maxDepth_; }
 
   private:
+    friend class Queries<KdTree, Prims>;
+    template <bool AnyHit, typename Rec>
+    std::optional<HitT> query(RayT ray, TraversalCounters& counters, Rec& rec,
+                              std::uint32_t rayId) const {
+        return testTree<AnyHit>(ray, counters, rec, rayId);
+    }
     template <typename Rec>
     void build(Rec& rec);
     template <bool AnyHit, typename Rec>
@@ -123,5 +122,10 @@ class KdTree {
     std::vector<std::uint32_t> primIds_;
     TreeStats stats_;
 };
+
+// Instantiated beside the traversal (kdtree.cpp).
+extern template class Queries<KdTree<ScenePrims>, ScenePrims>;
+extern template class Queries<KdTree<Scene2DPrims>, Scene2DPrims>;
+extern template class Queries<KdTree<FloatScenePrims>, FloatScenePrims>;
 
 }  // namespace raystep

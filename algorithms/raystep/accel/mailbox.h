@@ -3,8 +3,8 @@
 // once per ray. Each primitive's box holds the id of the last ray that tested it.
 #include "raystep/accel/query.h"
 #include "raystep/base/progress.h"
-#include "raystep/trace/events.h"
 #include "raystep/scene/prims.h"
+#include "raystep/trace/events.h"
 
 #include <cstdint>
 #include <optional>

@@ -30,8 +30,8 @@ struct DdaSetup {
     std::array<std::int8_t, 3> step;
     std::uint8_t dims;
     std::array<double, 3> tDelta;
-    // Where the ray enters and leaves the grid (Dda::tGridExit, not a cell's exit).
-    double tEnter, tExit;
+    // Where the ray enters and leaves the grid (not a cell's exit: Dda::tCellExit).
+    double tEnter, tGridExit;
 };
 /// The DDA is in a new cell: the first cell (axes = the grid face it came in through, 0 from
 /// inside) or a step (axes = the axis taken; several on an exact tie). tMax after the step.

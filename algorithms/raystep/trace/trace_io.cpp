@@ -24,7 +24,7 @@ void fields(RayBegin& e, F&& f) {
 template <typename F>
 void fields(DdaSetup& e, F&& f) {
     f("ray", e.ray), f("dims", e.dims), f("step", e.step), f("tDelta", e.tDelta);
-    f("t_enter", e.tEnter), f("t_exit", e.tExit);
+    f("t_enter", e.tEnter), f("t_exit", e.tGridExit);
 }
 template <typename F>
 void fields(DdaCell& e, F&& f) {
