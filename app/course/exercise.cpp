@@ -4,6 +4,9 @@
 
 #include "feedback_text.h"
 
+#include "raystep/base/format.h"
+#include "raystep/trace/event_text.h"
+
 #include "course/lesson_trace.h"
 
 #include "raystep/base/math.h"
@@ -70,12 +73,6 @@ std::optional<E> previousEvent(const EventLog& log, std::size_t before) {
     return std::nullopt;
 }
 
-int dimsOf(const EventLog& log, std::size_t at) {
-    if (auto s = previousEvent<DdaSetup>(log, at + 1)) return s->dims;
-    if (auto s = nextEvent<DdaSetup>(log, 0)) return s->second.dims;
-    return 3;
-}
-
 struct Context {
     const Exercise& ex;
     const EventLog& log;
@@ -103,7 +100,7 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
         case ExerciseKind::NextCell: {
             const auto next = nextEvent<DdaCell>(log, c.at);
             if (!next) c.fail("no DDA cell follows its position in the trace");
-            const int dims = dimsOf(log, next->first);
+            const int dims = log.dims();
             for (int i = 0; i < dims; ++i) a.numbers.push_back(next->second.cell[i]);
             why = feedback::nextCell(lang, previousEvent<DdaCell>(log, next->first), next->second,
                                      dims);
@@ -117,7 +114,7 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                 const auto e = nextEvent<DdaCell>(log, c.at);
                 if (!e) c.fail("no DDA cell follows its position");
                 v = e->second.tMax[static_cast<int>(q) - static_cast<int>(Quantity::TMaxX)];
-                source = "dda_cell " + feedback::cell(e->second.cell, dimsOf(log, e->first));
+                source = "dda_cell " + cellText(e->second.cell, log.dims());
             } else if (q >= Quantity::TDeltaX && q <= Quantity::TExit) {
                 const auto e = nextEvent<DdaSetup>(log, c.at);
                 if (!e) c.fail("no DDA set-up follows its position");
@@ -155,9 +152,9 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
                     : q == Quantity::CandidatePR ? s.pr
                                                  : s.sahCost;
                 source = std::string("split_candidate ") + axisName(s.axis) + " = " +
-                         feedback::number(s.position) + " (NL " + std::to_string(s.nl) + ", NR " +
-                         std::to_string(s.nr) + ", P(L|C) " + feedback::number(s.pl) + ", P(R|C) " +
-                         feedback::number(s.pr) + ", cost " + feedback::number(s.sahCost) + ")";
+                         formatNumber(s.position) + " (NL " + std::to_string(s.nl) + ", NR " +
+                         std::to_string(s.nr) + ", P(L|C) " + formatNumber(s.pl) + ", P(R|C) " +
+                         formatNumber(s.pr) + ", cost " + formatNumber(s.sahCost) + ")";
             }
             if (!std::isfinite(v))
                 c.fail("the trace's value is not finite (the ray never crosses)");
@@ -310,17 +307,17 @@ std::string formatAnswer(const Exercise& ex, const Answer& a) {
             return s;
         }
         case ExerciseKind::Value:
-            return a.numbers.empty() ? "" : feedback::number(a.numbers[0]);
+            return a.numbers.empty() ? "" : formatNumber(a.numbers[0]);
         case ExerciseKind::Count:
             return a.numbers.empty() ? "" : std::to_string(static_cast<long long>(a.numbers[0]));
         case ExerciseKind::PickSplit:
             return a.numbers.size() < 2 ? ""
                                         : std::string(axisName(static_cast<int>(a.numbers[0]))) +
-                                              "=" + feedback::number(a.numbers[1]);
+                                              "=" + formatNumber(a.numbers[1]);
         case ExerciseKind::HitOrMiss:
             if (!a.hit) return "";
             if (!*a.hit) return "miss";
-            return a.numbers.empty() ? "hit" : "hit " + feedback::number(a.numbers[0]);
+            return a.numbers.empty() ? "hit" : "hit " + formatNumber(a.numbers[0]);
     }
     return "";
 }

@@ -4,8 +4,10 @@
 
 #include "course/lesson_trace.h"
 
+#include "raystep/base/format.h"
+#include "raystep/trace/event_text.h"
+
 #include <cmath>
-#include <sstream>
 
 namespace raystep::feedback {
 
@@ -16,28 +18,7 @@ std::string tr2(Language lang, const std::string& en, const std::string& it) {
     return lang == Language::It ? it : en;
 }
 
-std::string axesText(unsigned axes) {
-    std::string s;
-    for (int i = 0; i < 3; ++i)
-        if (axes & (1u << i)) s += "XYZ"[i];
-    return s;
-}
-
 }  // namespace
-
-std::string number(double v) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
-
-std::string cell(const std::array<std::int32_t, 3>& c, int dims) {
-    std::string s = "(";
-    for (int i = 0; i < dims; ++i) s += (i ? ", " : "") + std::to_string(c[i]);
-    return s + ")";
-}
 
 const char* axisName(int a) {
     return a == 0 ? "x" : a == 1 ? "y" : "z";
@@ -48,46 +29,48 @@ std::string nextCell(Language lang, const std::optional<DdaCell>& before, const 
     if (!before)
         return tr2(lang,
                    "The walk starts in the cell that contains the ray's entry point (t_enter): " +
-                       cell(next.cell, dims) + ".",
+                       cellText(next.cell, dims) + ".",
                    "La visita comincia dalla cella che contiene il punto d'ingresso del raggio "
                    "(t_enter): " +
-                       cell(next.cell, dims) + ".");
+                       cellText(next.cell, dims) + ".");
     std::string tmax;
     for (int i = 0; i < dims; ++i)
-        tmax += std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " + number(before->tMax[i]);
+        tmax +=
+            std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " + formatNumber(before->tMax[i]);
     const std::string axes = axesText(next.axes);
     return tr2(lang,
-               "In cell " + cell(before->cell, dims) + " the DDA compares " + tmax +
+               "In cell " + cellText(before->cell, dims) + " the DDA compares " + tmax +
                    ": the smallest is along " + axes + ", so it steps in " + axes + " to " +
-                   cell(next.cell, dims) +
+                   cellText(next.cell, dims) +
                    (axes.size() > 1 ? " (a tie: the ray passes through a corner)" : "") + ".",
-               "Nella cella " + cell(before->cell, dims) + " il DDA confronta " + tmax +
+               "Nella cella " + cellText(before->cell, dims) + " il DDA confronta " + tmax +
                    ": il minore è lungo " + axes + ", quindi avanza in " + axes + " fino a " +
-                   cell(next.cell, dims) +
+                   cellText(next.cell, dims) +
                    (axes.size() > 1 ? " (pareggio: il raggio passa per un vertice)" : "") + ".");
 }
 
 std::string value(Language lang, Quantity q, double v, const std::string& source) {
     return tr2(lang,
-               "The trace records " + std::string(quantityName(q)) + " = " + number(v) +
+               "The trace records " + std::string(quantityName(q)) + " = " + formatNumber(v) +
                    " in the event " + source + ".",
-               "La traccia registra " + std::string(quantityName(q)) + " = " + number(v) +
+               "La traccia registra " + std::string(quantityName(q)) + " = " + formatNumber(v) +
                    " nell'evento " + source + ".");
 }
 
 std::string pickSplit(Language lang, int count, std::uint32_t node, const SplitCandidate& best) {
-    const std::string formula = "C_trav + C_isect (" + number(best.pl) + " x " +
-                                std::to_string(best.nl) + " + " + number(best.pr) + " x " +
+    const std::string formula = "C_trav + C_isect (" + formatNumber(best.pl) + " x " +
+                                std::to_string(best.nl) + " + " + formatNumber(best.pr) + " x " +
                                 std::to_string(best.nr) + ")";
-    return tr2(lang,
-               "Of the " + std::to_string(count) + " candidates of node " + std::to_string(node) +
-                   ", the cheapest is " + axisName(best.axis) + " = " + number(best.position) +
-                   ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) +
-                   ", cost " + formula + " = " + number(best.sahCost) + ".",
-               "Tra i " + std::to_string(count) + " candidati del nodo " + std::to_string(node) +
-                   ", il meno costoso è " + axisName(best.axis) + " = " + number(best.position) +
-                   ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) +
-                   ", costo " + formula + " = " + number(best.sahCost) + ".");
+    return tr2(
+        lang,
+        "Of the " + std::to_string(count) + " candidates of node " + std::to_string(node) +
+            ", the cheapest is " + axisName(best.axis) + " = " + formatNumber(best.position) +
+            ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) + ", cost " +
+            formula + " = " + formatNumber(best.sahCost) + ".",
+        "Tra i " + std::to_string(count) + " candidati del nodo " + std::to_string(node) +
+            ", il meno costoso è " + axisName(best.axis) + " = " + formatNumber(best.position) +
+            ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) + ", costo " +
+            formula + " = " + formatNumber(best.sahCost) + ".");
 }
 
 std::string count(Language lang, std::size_t n, const std::string& what, const ReplayPosition& from,
@@ -104,9 +87,9 @@ std::string hitOrMiss(Language lang, const PrimitiveTest& test) {
     const std::string prim = std::to_string(test.prim);
     if (test.hit)
         return tr2(lang,
-                   "The test of primitive " + prim + " hits at t = " + number(test.t) +
+                   "The test of primitive " + prim + " hits at t = " + formatNumber(test.t) +
                        " (the smallest root inside the ray's interval).",
-                   "Il test della primitiva " + prim + " colpisce a t = " + number(test.t) +
+                   "Il test della primitiva " + prim + " colpisce a t = " + formatNumber(test.t) +
                        " (la radice più piccola nell'intervallo del raggio).");
     return tr2(lang,
                "The test of primitive " + prim +

@@ -1,7 +1,8 @@
 #pragma once
 // Private to the course library: the sentences that explain a reference answer from the trace,
-// one function per exercise kind, and the number, cell and axis text they share with the
-// answers' own formatting (exercise.cpp).
+// one function per exercise kind, and the axis names they share with the answers'
+// own formatting (exercise.cpp); numbers and cells are written by base/format.h and
+// trace/event_text.h, as everywhere.
 #include "course/lesson.h"
 
 #include "raystep/trace/events.h"
@@ -14,10 +15,6 @@
 
 namespace raystep::feedback {
 
-/// A number as the feedback and the answers show it: 6 significant digits, "inf" for infinity.
-std::string number(double v);
-/// "(2, 1)" or "(2, 1, 0)": the first `dims` indices of a cell.
-std::string cell(const std::array<std::int32_t, 3>& c, int dims);
 const char* axisName(int a);  // "x", "y", "z"
 
 /// NextCell: where the walk starts (no cell `before`), or which tMax was smallest in `before`.

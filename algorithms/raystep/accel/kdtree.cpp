@@ -150,6 +150,8 @@ void SahSweep<Prims, Rec>::build(std::vector<SplitEvent> events, std::uint32_t n
     // of the plane and nr right of it.
     const double areaC = box.area();
     const double costAsLeaf = leafCost(opt.cIsect, n);
+    // The costs in locals: the sweep reads them at every event.
+    const double cTrav = opt.cTrav, cIsect = opt.cIsect, emptyBonus = opt.emptyBonus;
     double bestCost = kInfinity, bestPos = 0.0;
     int bestAxis = -1;
     bool bestPlanarLeft = true;
@@ -175,10 +177,8 @@ void SahSweep<Prims, Rec>::build(std::vector<SplitEvent> events, std::uint32_t n
                 const double pl = out_.areaWithWidth(box, axis, p - box.lo[axis]) / areaC;
                 const double pr = out_.areaWithWidth(box, axis, box.hi[axis] - p) / areaC;
                 // Primitives lying in the plane go to whichever side is cheaper.
-                const double costL =
-                    sahCost(opt.cTrav, opt.cIsect, opt.emptyBonus, pl, pr, nl + planars, nr);
-                const double costR =
-                    sahCost(opt.cTrav, opt.cIsect, opt.emptyBonus, pl, pr, nl, nr + planars);
+                const double costL = sahCost(cTrav, cIsect, emptyBonus, pl, pr, nl + planars, nr);
+                const double costR = sahCost(cTrav, cIsect, emptyBonus, pl, pr, nl, nr + planars);
                 const bool planarLeft = costL <= costR;
                 const double cost = planarLeft ? costL : costR;
                 const std::uint32_t nlChosen = planarLeft ? nl + planars : nl;

@@ -327,7 +327,8 @@ class SahBinned {
             const simd::Float4 x = (e - lo) * scale;
             return simd::shiftRight<kMerge>(simd::truncate(simd::min(simd::max(x, zero), top)));
         }
-        void add(const Ref& r) {
+        // Always inlined: one call per reference per level, and GCC left it out of line.
+        [[gnu::always_inline]] void add(const Ref& r) {
             alignas(16) std::array<std::int32_t, 8> bin;
             for (int v = 0; v < kLoads; ++v) {
                 const simd::Float4 e = simd::load(&r.edge[kLoadAt[v]]);
@@ -466,7 +467,10 @@ class SahBinned {
         if (out_.leafByCount(id, n, depth, nodePrims)) return;
 
         const double areaC = box.area();
-        const double leafCost = out_.opt.cIsect * n;
+        // The costs in locals: the candidate loop below reads them ~50 times a node.
+        const double cTrav = out_.opt.cTrav, cIsect = out_.opt.cIsect;
+        const double emptyBonus = out_.opt.emptyBonus;
+        const double costAsLeaf = raystep::leafCost(cIsect, n);
         double bestCost = kInfinity, bestPos = 0.0;
         int bestAxis = -1;
         // Only the planes at the primitives' extent (emptySide) leave a side with none.
@@ -512,28 +516,26 @@ class SahBinned {
                 // Planes that leave primitives on both sides, strictly inside their extent
                 // (the empty space beyond it is cut at its edge, below).
                 if (nl == 0 || nr == 0 || !(pos > minLo && pos < maxHi)) return;
-                // sahCost inline (no side is empty, so no bonus): this runs ~50 times a node.
+                // No side is empty, so no bonus: the split's cost as it is.
                 const auto [pl, pr] = probabilities(pos);
-                offer(axis, pos, nl, nr, pl, pr,
-                      out_.opt.cTrav + out_.opt.cIsect * (pl * nl + pr * nr));
+                offer(axis, pos, nl, nr, pl, pr, splitCost(cTrav, cIsect, pl, pr, nl, nr));
             });
             // The empty space on either side, cut at the primitives' edge (with the bonus).
             const auto emptySide = [&](double pos, std::uint32_t nl, std::uint32_t nr) {
                 const auto [pl, pr] = probabilities(pos);
-                offer(
-                    axis, pos, nl, nr, pl, pr,
-                    sahCost(out_.opt.cTrav, out_.opt.cIsect, out_.opt.emptyBonus, pl, pr, nl, nr));
+                offer(axis, pos, nl, nr, pl, pr,
+                      sahCost(cTrav, cIsect, emptyBonus, pl, pr, nl, nr));
             };
             const double minSlab = kMinEmptySlab * (hi - lo);
             if (minLo - lo >= minSlab && minLo < hi) emptySide(minLo, 0, n);
             if (hi - maxHi >= minSlab && maxHi > lo) emptySide(maxHi, n, 0);
         }
         if (bestAxis < 0) return out_.makeLeaf(id, LeafReason::NoSplit, depth, nodePrims);
-        if (!(bestCost < leafCost))
+        if (!(bestCost < costAsLeaf))
             return out_.makeLeaf(id, LeafReason::SahCheaper, depth, nodePrims);
         if (bestEmpty != Empty::None &&
             cutEmptySpace(refs, n, bins, box, depth, id, bestAxis, bestPos,
-                          bestEmpty == Empty::Left, bestCost, leafCost))
+                          bestEmpty == Empty::Left, bestCost, costAsLeaf))
             return;
 
         // The partition counts each child's bins on the way, while the reference is at hand.
@@ -650,7 +652,7 @@ class SahBinned {
             right = left + n;
             partition(refs, refs + n, left, right, nl, nr, binsL, binsR);
         }
-        out_.makeInterior(id, bestAxis, bestPos, bestCost, leafCost);
+        out_.makeInterior(id, bestAxis, bestPos, bestCost, costAsLeaf);
         const double fl = double(nl) / double(nl + nr);
         const auto nL = static_cast<std::uint32_t>(nl), nR = static_cast<std::uint32_t>(nr);
         constexpr std::size_t kParallelAbove = 4096;

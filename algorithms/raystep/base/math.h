@@ -42,11 +42,12 @@ struct BoxN {
     V lo{kInfinity};
     V hi{-kInfinity};
 
-    void extend(const V& p) {
+    // Always inlined: the builds call these in their innermost loops, and GCC left some calls.
+    [[gnu::always_inline]] void extend(const V& p) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    void extend(const BoxN& b) {
+    [[gnu::always_inline]] void extend(const BoxN& b) {
         lo = glm::min(lo, b.lo);
         hi = glm::max(hi, b.hi);
     }

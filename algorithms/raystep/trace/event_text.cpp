@@ -1,6 +1,8 @@
 // Events as text: the lecture's wording of each event kind, and its numbers.
 #include "raystep/trace/event_text.h"
 
+#include "raystep/base/format.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -25,24 +27,11 @@ std::string axisLetter(std::uint8_t axis) {
 std::string nameText(std::string_view name) {
     return std::string(name);
 }
-/// Whether v lies exactly halfway between two 6-digit numbers (34.28125): printf rounds those to
-/// even, the app has always shown them rounded away from zero (34.2813), as by hand.
-bool halfwayAtSixthDigit(double v) {
-    char exact[64];  // printf writes a double's digits exactly: "-3.4281250000...e+01"
-    std::snprintf(exact, sizeof exact, "%.40e", std::fabs(v));
-    const std::string_view after(exact + 2);  // the digits after "d."
-    return after[5] == '5' && after.substr(6, 34).find_first_not_of('0') == std::string_view::npos;
-}
 }  // namespace
 
 std::string numberText(double v) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     if (std::isnan(v)) return "nan";
-    if (v == 0.0) return "0";  // -0 too: a sign on nothing would only puzzle
-    if (halfwayAtSixthDigit(v)) v = std::nextafter(v, v > 0 ? HUGE_VAL : -HUGE_VAL);
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
+    return formatNumber(v + 0.0);  // + 0.0: -0 reads "0", a sign on nothing would only puzzle
 }
 
 std::string cellText(const std::array<std::int32_t, 3>& cell, int dims) {

@@ -9,7 +9,8 @@
 
 namespace raystep {
 
-/// A number with 6 significant digits (printf's %g), "inf" or "-inf" for an infinity.
+/// A number as the lecture's texts show it: formatNumber (6 significant digits, printf's %g,
+/// "inf" for an infinity), with -0 as "0".
 std::string numberText(double v);
 /// The first `dims` coordinates in brackets: "(2, 1)" in 2D, "(2, 1, 0)" in 3D.
 std::string cellText(const std::array<std::int32_t, 3>& cell, int dims);
