@@ -66,14 +66,9 @@ int runBuild(const BuildArgs& a) {
     if (const auto* s3 = std::get_if<Scene>(&any))
         if (auto problem = checkKernelRange(a.scene, *s3, choice)) return fail(*problem);
     const SceneInfo scene = infoOf(any);
-    if (const auto* s2 = std::get_if<Scene2D>(&any)) {
-        summary = summarize(buildAccelerator2D(*s2, choice.kind, choice.options, record));
-    } else {
-        const Scene& s3 = std::get<Scene>(any);
-        summary = summarize(
-            record ? buildAccelerator(s3, choice.kind, choice.kernels, choice.options, log)
-                   : buildAccelerator(s3, choice.kind, choice.kernels, choice.options));
-    }
+    const AnyStructure built =
+        buildStructure(any, choice.kind, choice.kernels, choice.options, record);
+    summary = built.in2D ? summarize(*built.in2D) : summarize(*built.in3D);
     bar.finish();
     if (choice.kind != AccelKind::Grid) summary.description = describeAccel(choice);
     if (!a.events.empty()) {

@@ -32,10 +32,7 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
     };
     switch (t.kind) {
         case LessonTrace::Kind::Build:
-            if (s2)
-                buildAccelerator2D(*s2, lesson.accel, lesson.options, log.get());
-            else
-                buildAccelerator(*s3, lesson.accel, {}, lesson.options, *log);
+            buildStructure(scene, lesson.accel, {}, lesson.options, log.get());
             break;
         case LessonTrace::Kind::ExampleRay:
         case LessonTrace::Kind::Ray2D: {
@@ -62,11 +59,9 @@ LessonRun runLesson(const Lesson& lesson) {
     } catch (const SceneError& e) {
         throw LessonError(lesson.file, 0, "scene", e.what());
     }
-    if (const auto* s2 = std::get_if<Scene2D>(run.scene.get()))
-        run.accel2D = buildAccelerator2D(*s2, lesson.accel, lesson.options);
-    else
-        run.accel3D =
-            buildAccelerator(std::get<Scene>(*run.scene), lesson.accel, {}, lesson.options);
+    AnyStructure built = buildStructure(*run.scene, lesson.accel, {}, lesson.options);
+    run.accel2D = std::move(built.in2D);
+    run.accel3D = std::move(built.in3D);
     run.log = recordLessonTrace(lesson, *run.scene, run.accel3D ? &*run.accel3D : nullptr,
                                 run.accel2D ? &*run.accel2D : nullptr);
     return run;

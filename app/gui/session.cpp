@@ -10,10 +10,9 @@ namespace raystep::gui {
 namespace {
 /// The structure of a scene built in place (it points into the scene, which must not move).
 void buildIn(LoadedScene& l, const AccelOptions& options) {
-    if (const auto* s2 = std::get_if<Scene2D>(&l.scene))
-        l.accel2D = buildAccelerator2D(*s2, l.kind, options);
-    else
-        l.accel3D = buildAccelerator(std::get<Scene>(l.scene), l.kind, {}, options);
+    AnyStructure built = buildStructure(l.scene, l.kind, {}, options);
+    l.accel2D = std::move(built.in2D);
+    l.accel3D = std::move(built.in3D);
     // The progress callback belonged to this build only.
     l.options.setProgress(nullptr);
 }
@@ -44,10 +43,7 @@ LogRef Session::recordBuild(const SceneRef& scene, const ProgressFn& progress) {
     auto log = std::make_shared<EventLog>();
     AccelOptions options = scene->options;
     options.setProgress(progress);
-    if (const Scene2D* s2 = std::get_if<Scene2D>(&scene->scene))
-        buildAccelerator2D(*s2, scene->kind, options, log.get());
-    else
-        buildAccelerator(std::get<Scene>(scene->scene), scene->kind, {}, options, *log);
+    buildStructure(scene->scene, scene->kind, {}, options, log.get());
     return log;
 }
 

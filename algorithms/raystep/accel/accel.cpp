@@ -81,6 +81,19 @@ Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions k
                              const AccelOptions& options, EventLog& log) {
     return build(ScenePrims(scene, kernels), kind, options, &log);
 }
+AnyStructure buildStructure(const std::variant<Scene, Scene2D>& scene, AccelKind kind,
+                            const KernelOptions& kernels, const AccelOptions& options,
+                            EventLog* log) {
+    AnyStructure built;
+    if (const auto* s2 = std::get_if<Scene2D>(&scene))
+        built.in2D = buildAccelerator2D(*s2, kind, options, log);
+    else if (log)
+        built.in3D = buildAccelerator(std::get<Scene>(scene), kind, kernels, options, *log);
+    else
+        built.in3D = buildAccelerator(std::get<Scene>(scene), kind, kernels, options);
+    return built;
+}
+
 Accelerator2D buildAccelerator2D(const Scene2D& scene, AccelKind kind, const AccelOptions& options,
                                  EventLog* log) {
     AccelOptions o = options;

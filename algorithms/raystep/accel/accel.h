@@ -59,6 +59,18 @@ Accelerator buildAccelerator(const Scene& scene, AccelKind kind, KernelOptions k
 Accelerator2D buildAccelerator2D(const Scene2D& scene, AccelKind kind,
                                  const AccelOptions& options = {}, EventLog* log = nullptr);
 
+/// A structure over a scene of either kind: a 3D scene's, or one of the lecture's 2D pictures'.
+struct AnyStructure {
+    std::optional<Accelerator> in3D;
+    std::optional<Accelerator2D> in2D;
+};
+/// Builds `kind` over `scene`, 3D or 2D (which must outlive it and not move), recording the
+/// build into `log` if given: the one place the app, the lessons and the CLI choose between the
+/// two builds.
+AnyStructure buildStructure(const std::variant<Scene, Scene2D>& scene, AccelKind kind,
+                            const KernelOptions& kernels, const AccelOptions& options,
+                            EventLog* log = nullptr);
+
 /// The kernels and precision the structure tests primitives with.
 inline const KernelOptions& kernelsOf(const Accelerator& accel) {
     return std::visit([](const auto& a) -> const KernelOptions& { return a.kernels(); }, accel);
