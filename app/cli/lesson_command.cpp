@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -54,12 +55,20 @@ int list() {
     return 0;
 }
 
-int show(const Lesson& l, Language lang) {
+int show(Lesson l, Language lang) {
+    // Steps with a computed note (the slides' DDA loop beside the exact walk) need the lesson run.
+    if (std::any_of(l.steps.begin(), l.steps.end(),
+                    [](const LessonStep& s) { return s.textbookDda; })) {
+        const LessonRun run = raystep::runLesson(l);  // the course's, not this command's
+        addStepNotes(l, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
+    }
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
-    for (std::size_t i = 0; i < l.steps.size(); ++i)
+    for (std::size_t i = 0; i < l.steps.size(); ++i) {
         std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
                     describePosition(l.steps[i].at, lang).c_str(),
                     l.steps[i].text.in(lang).c_str());
+        if (!l.steps[i].note.en.empty()) std::printf("\n> %s\n", l.steps[i].note.in(lang).c_str());
+    }
     for (const Exercise& ex : l.exercises)
         std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",
                     ex.id.c_str(), std::string(exerciseKindName(ex.kind)).c_str(),

@@ -24,6 +24,8 @@ void validateLesson(const Lesson& lesson) {
             throw LessonError(lesson.file, s.line, "steps",
                               "its position (" + describePosition(s.at) + ") is not in the trace");
     for (const Exercise& ex : lesson.exercises) referenceAnswer(ex, *run.log, lesson.file);
+    Lesson noted = lesson;  // the steps' notes can be made from this lesson's run
+    addStepNotes(noted, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
     const bool is2D = std::holds_alternative<Scene2D>(*run.scene);
     for (const LessonView v : lesson.views)
         if ((v == LessonView::View2D) != is2D)

@@ -301,7 +301,7 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
 
 LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
     r.requireObject(j, path);
-    r.checkKeys(j, path, {"text", "at", "filter", "camera"});
+    r.checkKeys(j, path, {"text", "at", "filter", "camera", "textbook_dda"});
     LessonStep s;
     s.line = r.lines().lineOf(path);
     if (!j.contains("text")) r.fail(path, "a step needs its \"text\"");
@@ -310,6 +310,10 @@ LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
               [&](const json& v, const std::string& p) { s.at = readPosition(r, v, p); });
     ifPresent(j, path, "filter",
               [&](const json& v, const std::string& p) { s.filter = r.string(v, p); });
+    ifPresent(j, path, "textbook_dda", [&](const json& v, const std::string& p) {
+        if (!v.is_boolean()) r.fail(p, "expected true or false");
+        s.textbookDda = v.get<bool>();
+    });
     ifPresent(j, path, "camera", [&](const json& v, const std::string& p) {
         r.requireObject(v, p);
         r.checkKeys(v, p, {"azimuth", "elevation", "zoom"});

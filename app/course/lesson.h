@@ -57,6 +57,10 @@ struct LessonStep {
     ReplayPosition at;
     std::string filter;  // what the event list shows (its filter text), empty = everything
     std::optional<LessonCamera> camera;
+    // "textbook_dda": the step sets the slides' own DDA loop (ddaTextbook) beside the exact walk
+    // for the lesson's 2D ray; `note` holds that comparison once the lesson has run (addStepNotes).
+    bool textbookDda = false;
+    LocalText note;
     int line = 0;  // in the lesson file, for messages
 };
 

@@ -2,6 +2,9 @@
 // replay positions its steps and exercises name in that trace.
 #include "course/lesson_trace.h"
 
+#include "raystep/accel/dda_textbook.h"
+#include "raystep/trace/event_text.h"
+
 #include "raystep/render/tracer.h"
 #include "raystep/scene/resources.h"
 #include "raystep/scene/scene_loader.h"
@@ -65,6 +68,72 @@ LessonRun runLesson(const Lesson& lesson) {
     run.log = recordLessonTrace(lesson, *run.scene, run.accel3D ? &*run.accel3D : nullptr,
                                 run.accel2D ? &*run.accel2D : nullptr);
     return run;
+}
+
+namespace {
+/// Cells as the lesson's text writes them, the first `shown` of them.
+std::string cellsText(const std::vector<IVecN<2>>& cells, std::size_t shown) {
+    std::string s;
+    for (std::size_t k = 0; k < std::min(cells.size(), shown); ++k)
+        s += (k ? " " : "") + cellText({cells[k].x, cells[k].y, 0}, 2);
+    return s + (cells.size() > shown ? " ..." : "");
+}
+
+/// The slides' loop beside the exact walk, for `ray` through `grid`, in both languages.
+LocalText textbookNote(const GridSpec<2, double>& grid, const Ray2& ray) {
+    std::vector<IVecN<2>> loop, exact;
+    for (const auto& c : ddaTextbook(grid, ray.origin, ray.dir)) loop.push_back(c.cell);
+    Dda<2> walk(grid, ray.origin, ray.dir);
+    for (bool in = walk.valid(); in; in = walk.next()) exact.push_back(walk.cell());
+    std::size_t part = 0;  // the first cell where the two walks differ
+    while (part < loop.size() && part < exact.size() && loop[part] == exact[part]) ++part;
+    const std::size_t shown = std::max<std::size_t>(6, part + 2);
+    const std::string l = cellsText(loop, shown), e = cellsText(exact, shown);
+    LocalText note;
+    note.en =
+        "The slides' loop (`tMax += tDelta`; X when tMaxX < tMaxY, else Y) walks this ray "
+        "through " +
+        l + "; the exact walk through " + e + ". ";
+    note.it =
+        "Il ciclo delle slide (`tMax += tDelta`; X se tMaxX < tMaxY, altrimenti Y) porta "
+        "questo raggio per " +
+        l + "; il cammino esatto per " + e + ". ";
+    if (part == loop.size() && part == exact.size()) {
+        note.en += "Both visit the same " + std::to_string(part) + " cells.";
+        note.it += "Visitano le stesse " + std::to_string(part) + " celle.";
+    } else {
+        const auto at = [&](const std::vector<IVecN<2>>& cells, const char* none) {
+            return part < cells.size() ? cellText({cells[part].x, cells[part].y, 0}, 2)
+                                       : std::string(none);
+        };
+        const std::string nth = std::to_string(part + 1);
+        note.en += "They part at cell " + nth + ": the loop enters " + at(loop, "no cell") +
+                   ", the exact walk " + at(exact, "no cell") + ".";
+        note.it += "Si separano alla cella " + nth + ": il ciclo entra in " +
+                   at(loop, "nessuna cella") + ", il cammino esatto in " +
+                   at(exact, "nessuna cella") + ".";
+    }
+    return note;
+}
+}  // namespace
+
+void addStepNotes(Lesson& lesson, const std::variant<Scene, Scene2D>& scene,
+                  const Accelerator2D* accel2D) {
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        LessonStep& step = lesson.steps[i];
+        if (!step.textbookDda) continue;
+        const auto* s2 = std::get_if<Scene2D>(&scene);
+        const auto* grid = accel2D ? std::get_if<UniformGridT<Scene2DPrims>>(accel2D) : nullptr;
+        const LessonTrace& t = lesson.trace;
+        const bool hasRay = t.kind == LessonTrace::Kind::Ray2D ||
+                            (t.kind == LessonTrace::Kind::ExampleRay && s2 && s2->exampleRay);
+        if (!s2 || !grid || !hasRay)
+            throw LessonError(lesson.file, step.line,
+                              "steps[" + std::to_string(i) + "].textbook_dda",
+                              "needs a 2D scene, a grid (setup.accel) and a 2D ray (trace)");
+        step.note = textbookNote(grid->spec(),
+                                 t.kind == LessonTrace::Kind::Ray2D ? t.ray : *s2->exampleRay);
+    }
 }
 
 std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const EventLog& log) {

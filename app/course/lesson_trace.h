@@ -33,6 +33,12 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
                                             const Accelerator* accel3D,
                                             const Accelerator2D* accel2D);
 
+/// Fills the notes of the steps that ask for one ("textbook_dda": the slides' DDA loop beside the
+/// exact walk for the lesson's 2D ray), from the lesson's scene and structure. Throws a
+/// LessonError naming the step when the lesson is not a 2D ray through a grid.
+void addStepNotes(Lesson& lesson, const std::variant<Scene, Scene2D>& scene,
+                  const Accelerator2D* accel2D);
+
 /// The cursor a position stands for in `log`; nullopt when the log has no such event.
 std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const EventLog& log);
 std::string describePosition(const ReplayPosition& at, Language lang = Language::En);

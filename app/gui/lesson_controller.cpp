@@ -28,6 +28,8 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
     o.trace =
         recordLessonTrace(lesson, o.scene->scene, o.scene->accel3D ? &*o.scene->accel3D : nullptr,
                           o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+    o.lesson = lesson;
+    addStepNotes(o.lesson, o.scene->scene, o.scene->accel2D ? &*o.scene->accel2D : nullptr);
     return o;
 }
 

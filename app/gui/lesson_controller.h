@@ -27,6 +27,7 @@ class LessonController : public QObject {
     struct Opened {
         SceneRef scene;
         LogRef trace;
+        Lesson lesson;  // the lesson with its steps' computed notes (addStepNotes)
     };
     /// Loads the lesson's scene, builds its structure and records its trace; any thread.
     static Opened prepare(const Lesson& lesson, const ProgressFn& progress);

@@ -211,6 +211,9 @@ void LessonPanel::refreshText() {
                   .arg(step_ + 1)
                   .arg(lesson_.steps.size())
                   .arg(q(lesson_.steps[step_].text.in(lang_)));
+        // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
+        if (const LocalText& note = lesson_.steps[step_].note; !note.en.empty())
+            md += QStringLiteral("\n> %1\n").arg(q(note.in(lang_)));
         stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));
         prevStep_->setEnabled(step_ > 0);
         nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));

@@ -397,7 +397,7 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             session_.showLog(o.trace, LessonController::logKind(lesson));
             showViews(shows(LessonView::View2D), shows(LessonView::View3D),
                       shows(LessonView::Image));
-            lessons_->show(lesson, o.trace);
+            lessons_->show(o.lesson, o.trace);
             setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
             finishOpen(true, {});
         });

@@ -257,6 +257,39 @@ TEST(Lessons, ABadLessonFileNamesLineAndKey) {
                       "version 1");
 }
 
+TEST(Lessons, TheRobustnessLessonSetsTheSlidesLoopBesideTheExactWalk) {
+    Lesson l = loadLesson("robustness");
+    const LessonRun run = runLesson(l);
+    addStepNotes(l, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
+    const LessonStep* noted = nullptr;
+    for (const LessonStep& s : l.steps)
+        if (s.textbookDda) noted = &s;
+    ASSERT_NE(noted, nullptr);
+    // By hand: (0.5, 0.5) + t (1, 1) over unit cells meets a vertex at every cell. The slides'
+    // loop finds tMaxX < tMaxY false at each tie and steps Y alone, then X; the exact walk steps
+    // both axes at once.
+    const std::string& en = noted->note.en;
+    EXPECT_NE(en.find("through (0, 0) (0, 1) (1, 1) (1, 2) (2, 2)"), std::string::npos) << en;
+    EXPECT_NE(en.find("the exact walk through (0, 0) (1, 1) (2, 2)"), std::string::npos) << en;
+    EXPECT_NE(en.find("They part at cell 2: the loop enters (0, 1), the exact walk (1, 1)."),
+              std::string::npos)
+        << en;
+    EXPECT_NE(noted->note.it.find("Si separano alla cella 2"), std::string::npos) << noted->note.it;
+    // Only a 2D ray through a grid has such a walk: validation names the step that asks anyway.
+    Lesson pixel = loadLesson("1");
+    pixel.steps.at(0).textbookDda = true;
+    try {
+        validateLesson(pixel);
+        ADD_FAILURE() << "a 3D lesson's textbook_dda step was accepted";
+    } catch (const LessonError& e) {
+        EXPECT_NE(std::string(e.what()).find("steps[0].textbook_dda"), std::string::npos)
+            << e.what();
+    }
+    expectLessonError(
+        lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\"}, \"textbook_dda\": 1}]"), 11,
+        "steps[0].textbook_dda", "expected true or false");
+}
+
 TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
     const Lesson l = loadLesson("6");
     const LessonRun run = runLesson(l);

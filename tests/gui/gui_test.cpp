@@ -107,6 +107,29 @@ TEST(App, SteppingTheSlidesDdaShowsTheBoardsValues) {
     EXPECT_TRUE(std::holds_alternative<DdaCell>(s.log().events()[s.cursor() - 1]));
 }
 
+TEST(App, TheRobustnessLessonShowsTheSlidesLoopBesideTheExactWalk) {
+    MainWindow w;
+    w.resize(1500, 900);
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    ASSERT_TRUE(openLesson(w, "robustness"));
+    auto* text = w.lessonPanel()->findChild<QTextBrowser*>();
+    ASSERT_NE(text, nullptr);
+    // Page Down to the third step, as a lecturer would.
+    for (int k = 0; k < 2; ++k) w.lessonPanel()->goToStep(k + 1);
+    QApplication::processEvents();
+    const QString shown = text->toPlainText();
+    // The cells by hand: the loop steps Y alone at each vertex tie, the exact walk both axes.
+    EXPECT_TRUE(shown.contains("(0, 0) (0, 1) (1, 1) (1, 2)")) << shown.toStdString();
+    EXPECT_TRUE(shown.contains("the exact walk through (0, 0) (1, 1) (2, 2)"))
+        << shown.toStdString();
+    // The first step has no such note.
+    w.lessonPanel()->goToStep(0);
+    QApplication::processEvents();
+    EXPECT_FALSE(text->toPlainText().contains("exact walk through"))
+        << text->toPlainText().toStdString();
+}
+
 TEST(App, ClickingAPixelRecordsAndReplaysIt) {
     MainWindow w;
     w.resize(1400, 860);
