@@ -35,9 +35,10 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
                     "kd-tree SAH: nodes of more primitives pick among 256 bins per axis "
                     "(default: the exact event sweep everywhere)")
         ->transform(wholeNumber(1, INT_MAX));
-    cmd->add_option("--kd-build", a.kdBuild,
-                    "kd-tree SAH build: exact (every split event, perfect splits) or fast (32 bins "
-                    "per axis, all cores)")
+    cmd->add_option(
+           "--kd-build", a.kdBuild,
+           "kd-tree SAH build: exact (every split event, perfect splits) or fast (16-32 bins "
+           "per axis, all cores)")
         ->capture_default_str();
     cmd->add_option(
            "--grid-lambda", a.gridLambda,

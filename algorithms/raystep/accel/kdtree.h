@@ -25,7 +25,7 @@ namespace raystep {
 /// How the SAH tree is built. Exact (the default): Wald & Havran's sweep over every split event,
 /// straddling triangles clipped to each side (perfect splits), one thread. Fast: the SAH over
 /// 16-32 bins per axis at every node (still perfect splits), float bounds rounded outward, big
-/// nodes and subtrees on all cores: a tree 3-23% dearer on the knot meshes (cheaper on the
+/// nodes and subtrees on all cores: a tree 2-23% dearer on the knot meshes (cheaper on the
 /// stadium: the greedy sweep is not optimal), built 11-20x faster from 262K triangles up
 /// (docs/performance.md).
 enum class KdBuild { Exact, Fast };
