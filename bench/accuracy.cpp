@@ -6,11 +6,11 @@
 #include "exact.h"
 
 #include "raystep/accel/accel.h"
-#include "raystep/render/image.h"
-#include "raystep/geometry/kernels.h"
 #include "raystep/base/rng.h"
-#include "raystep/scene/scene_loader.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/render/image.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,8 +3,8 @@
 // (scripts/measure_build.sh plots the scaling into docs/images/build-scaling.png).
 #include "meshes.h"
 #include "raystep/accel/accel.h"
-#include "raystep/scene/scene_loader.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,8 +4,8 @@
 // Run: build/bench/raystep_bench_embree
 #include "meshes.h"
 #include "raystep/accel/accel.h"
-#include "raystep/scene/fast_prims.h"
 #include "raystep/base/rng.h"
+#include "raystep/scene/fast_prims.h"
 
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>

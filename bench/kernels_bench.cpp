@@ -2,8 +2,8 @@
 // The same 4096 (ray, primitive) pairs for every kernel. `rays_reused:1` gives every test its own
 // ray (the worst case for the per-ray set-up of the watertight test); `rays_reused:16` tests each
 // ray against 16 triangles in a row, as brute force and tree leaves do.
-#include "raystep/geometry/kernels.h"
 #include "raystep/base/rng.h"
+#include "raystep/geometry/kernels.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 // Whole renders: the figures of docs/performance.md. Run: build/bench/raystep_bench_render
-#include "raystep/scene/scene_loader.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 

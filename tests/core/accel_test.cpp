@@ -3,8 +3,8 @@
 #include "raystep/accel/accel.h"
 #include "meshes.h"
 #include "raystep/base/rng.h"
-#include "raystep/scene/scene_loader.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

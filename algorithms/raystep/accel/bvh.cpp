@@ -242,8 +242,9 @@ double bvhSahCost(const std::vector<BvhNode<N>>& nodes, std::uint32_t id, const 
     if (node.leaf()) return leafCost(opt.cIsect, node.count);
     const double area = node.bounds.area();
     if (!(area > 0)) return opt.cTrav;
-    return interiorCost(opt.cTrav, area, nodes[id + 1].bounds.area(), bvhSahCost(nodes, id + 1, opt),
-                        nodes[node.index].bounds.area(), bvhSahCost(nodes, node.index, opt));
+    return interiorCost(opt.cTrav, area, nodes[id + 1].bounds.area(),
+                        bvhSahCost(nodes, id + 1, opt), nodes[node.index].bounds.area(),
+                        bvhSahCost(nodes, node.index, opt));
 }
 
 template <typename Prims>
