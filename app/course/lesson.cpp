@@ -336,12 +336,6 @@ constexpr std::string_view kLessonFolder = "lessons/";
 
 }  // namespace
 
-std::optional<Language> parseLanguage(std::string_view code) {
-    if (code == "en") return Language::En;
-    if (code == "it") return Language::It;
-    return std::nullopt;
-}
-
 std::string_view exerciseKindName(ExerciseKind k) {
     return nameOf(kExerciseKinds, k);
 }

@@ -8,6 +8,7 @@
 
 #include "raystep/accel/accel.h"
 #include "raystep/base/file_error.h"
+#include "raystep/base/i18n.h"
 #include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
@@ -18,9 +19,6 @@
 #include <vector>
 
 namespace raystep {
-
-enum class Language { En, It };
-std::optional<Language> parseLanguage(std::string_view code);  // "en", "it"
 
 /// A text in both languages (Italian falls back to English where a lesson leaves it out).
 struct LocalText {
