@@ -84,6 +84,17 @@ TEST(ComputeExercises, TheSphereByHand) {
     } catch (const LessonError& e) {
         EXPECT_TRUE(has(e.what(), "misses the sphere")) << e.what();
     }
+    // A sphere behind the ray: the roots are t0 = -6, t1 = -4, and no t lies ahead.
+    const std::string behind =
+        "{\"ray\": {\"o\": [0, 0, -5], \"d\": [0, 0, -1]}, \"sphere\": {\"c\": [0, 0, 0], \"r\": "
+        "1}}";
+    EXPECT_EQ(answerOf(compute(behind, "t0")), -6.0);
+    try {
+        computeAnswer(compute(behind, "t"), "c.json");
+        ADD_FAILURE();
+    } catch (const LessonError& e) {
+        EXPECT_TRUE(has(e.what(), "behind the origin")) << e.what();
+    }
 }
 
 TEST(ComputeExercises, TheSpheresSlipsAreNamedWithTheStudentsNumber) {
