@@ -75,7 +75,7 @@ QString describeState(const Session& s) {
                          .arg(num(c.position));
             lines << QStringLiteral("  NL = %1   NR = %2").arg(c.nl).arg(c.nr);
             lines << QStringLiteral("  P(L|C) = %1   P(R|C) = %2").arg(num(c.pl), num(c.pr));
-            lines << QStringLiteral("  sahCost = %1").arg(num(c.sahCost));
+            lines << Inspector::tr("  sahCost = %1").arg(num(c.sahCost));
             const auto best =
                 std::min_element(st.candidates.begin(), st.candidates.end(),
                                  [](const SplitCandidate& a, const SplitCandidate& b) {
