@@ -18,6 +18,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QHeaderView>
@@ -221,6 +222,17 @@ TEST(ItalianInterface, TheInspectorAndTheEventListAreItalianAtEveryStep) {
         s.recordBuild();
     });
     expectItalian(enB, itB);
+}
+
+TEST(ItalianInterface, QtsOwnDialogsSpeakItalianToo) {
+    // The buttons of Qt's message boxes and file dialogs come from Qt's qtbase_it, not ours.
+    setInterfaceLanguage(Language::It);
+    const QString discard = QCoreApplication::translate("QPlatformTheme", "Discard");
+    const QString apply = QCoreApplication::translate("QPlatformTheme", "Apply");
+    setInterfaceLanguage(Language::En);
+    EXPECT_NE(discard, QStringLiteral("Discard"));
+    EXPECT_NE(apply, QStringLiteral("Apply"));
+    EXPECT_EQ(QCoreApplication::translate("QPlatformTheme", "Discard"), QStringLiteral("Discard"));
 }
 
 TEST(ItalianInterface, SameWordsAreAllowedOnlyFromTheShortList) {
