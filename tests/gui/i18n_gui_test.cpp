@@ -7,7 +7,10 @@
 #include "event_list.h"
 #include "inspector.h"
 #include "language.h"
+#include "lesson_panel.h"
 #include "main_window.h"
+
+#include "course/lesson.h"
 
 #include "raystep/scene/scene_loader.h"
 
@@ -172,6 +175,38 @@ TEST(ItalianInterface, TheCompareWindowAndTheBuildReplayAreItalian) {
         return texts;
     });
     expectItalian(en, it);
+}
+
+TEST(ItalianInterface, EveryLessonsStepsAndExercisesAreItalian) {
+    // What a lesson's panel shows at each step and each exercise: the lesson's own Italian
+    // (English shows where a lesson leaves it out) and the panel's words.
+    for (const Lesson& lesson : builtinLessons()) {
+        SCOPED_TRACE(lesson.id);
+        const auto [en, it] = inBothLanguages([&](Language lang) {
+            MainWindow w;
+            w.setLanguage(lang);
+            w.openLesson(QString::fromStdString(lesson.id), /*quiet=*/true);
+            EXPECT_TRUE(waitOpen(w));
+            w.tasks().cancel(TaskKind::Render);  // the image is not what is checked
+            std::vector<Shown> texts;
+            const auto keep = [&](const QString& where) {
+                for (Shown& s : textsOf(w.lessonPanel())) {
+                    s.where = where + s.where;
+                    texts.push_back(std::move(s));
+                }
+            };
+            for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+                w.lessonPanel()->goToStep(static_cast<int>(i));
+                keep(QStringLiteral("step %1: ").arg(i + 1));
+            }
+            for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
+                w.lessonPanel()->selectExercise(static_cast<int>(i));
+                keep(QStringLiteral("exercise %1: ").arg(i + 1));
+            }
+            return texts;
+        });
+        expectItalian(en, it);
+    }
 }
 
 /// The inspector's lines and the event list's rows at every step of what `record` replays.
