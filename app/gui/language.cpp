@@ -38,8 +38,10 @@ void setInterfaceLanguage(Language lang) {
     gCatalogue.reset();
     gQtBase.reset();
     gLanguage = lang;
+    // Qt's widgets (spin boxes, dialogs) write numbers the Italian way too; English keeps the
+    // system's locale, as before there was a choice.
     QLocale::setDefault(lang == Language::It ? QLocale(QLocale::Italian, QLocale::Italy)
-                                             : QLocale(QLocale::English, QLocale::UnitedStates));
+                                             : QLocale::system());
     if (lang == Language::En) return;
     gCatalogue = std::make_unique<CatalogueTranslator>(lang);
     QCoreApplication::installTranslator(gCatalogue.get());
