@@ -1,6 +1,8 @@
 // The event list: the log's lines (event_text.h), filtered, following the replay's cursor.
 #include "event_list.h"
 
+#include "language.h"
+
 #include "raystep/trace/event_text.h"
 
 #include <QLineEdit>
@@ -25,7 +27,7 @@ QVariant EventListModel::data(const QModelIndex& index, int role) const {
     if (role != Qt::DisplayRole || !index.isValid()) return {};
     return QStringLiteral("%1  %2")
         .arg(index.row() + 1)
-        .arg(QString::fromStdString(eventText(s_.log().events()[index.row()], s_.log().dims())));
+        .arg(QString::fromStdString(eventText(s_.log(), index.row(), interfaceLanguage())));
 }
 
 EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s) {

@@ -2,6 +2,7 @@
 #include "lesson_controller.h"
 
 #include "event_list.h"
+#include "language.h"
 #include "lesson_panel.h"
 #include "vtk_view.h"
 
@@ -189,18 +190,19 @@ void LessonController::fillLessonsMenu() {
 
 void LessonController::showSceneIntro() {
     const bool twoD = session_.is2D();
-    lesson_->showText(lectureText(twoD ? QStringLiteral("scene_2d") : QStringLiteral("scene_3d"))
-                          .arg(QString::fromStdString(session_.name()),
-                               QString::fromStdString(twoD ? session_.scene2D()->description
-                                                           : session_.scene3D()->description)));
+    lesson_->showText(
+        lectureText(twoD ? QStringLiteral("scene_2d") : QStringLiteral("scene_3d"))
+            .arg(QString::fromStdString(session_.name()),
+                 QString::fromStdString(sceneDescription(twoD ? session_.scene2D()->description
+                                                              : session_.scene3D()->description))));
 }
 
 void LessonController::showReplayText() {
     if (lesson_->hasLesson()) {
         lesson_->setReplayNote(replayDescription());
     } else if (session_.showingBuild()) {
-        lesson_->showText(lectureText(QStringLiteral("building"))
-                              .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+        lesson_->showText(
+            lectureText(QStringLiteral("building")).arg(structureName(session_.kind())));
     }
 }
 
@@ -216,8 +218,7 @@ QString LessonController::replayDescription() const {
         case LogKind::ExampleRay:
             return tr("the scene's example ray");
         case LogKind::Build:
-            return tr("the construction of the %1")
-                .arg(QString::fromUtf8(accelKindName(session_.kind()).data()));
+            return tr("the construction of the %1").arg(structureName(session_.kind()));
         default:
             return tr("another trace");
     }

@@ -1,5 +1,7 @@
 #include "lesson_panel.h"
 
+#include "language.h"
+
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -247,11 +249,10 @@ void LessonPanel::refreshExercise() {
             candidates_->addItem(
                 QStringLiteral("%1 = %2   (NL %3, NR %4, P(L|C) %5, P(R|C) %6)")
                     .arg(QChar("xyz"[c.axis]))
-                    .arg(c.position, 0, 'g', 6)
+                    .arg(numberText(c.position, 'g', 6))
                     .arg(c.nl)
                     .arg(c.nr)
-                    .arg(c.pl, 0, 'g', 4)
-                    .arg(c.pr, 0, 'g', 4),
+                    .arg(numberText(c.pl, 'g', 4), numberText(c.pr, 'g', 4)),
                 QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(c.position, 0, 'g', 17));
     }
     switch (ex.kind) {
@@ -372,13 +373,13 @@ void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
         const GridSweepRow& row = rows[r];
         const QStringList cells = {QString::number(row.resolution),
-                                   QString::number(row.testsPerRay, 'f', 1),
-                                   QString::number(row.cellsPerRay, 'f', 1),
-                                   QString::number(row.traceMs, 'f', 1),
+                                   numberText(row.testsPerRay, 'f', 1),
+                                   numberText(row.cellsPerRay, 'f', 1),
+                                   numberText(row.traceMs, 'f', 1),
                                    QString::number(row.cells),
                                    QString::number(row.references),
-                                   QString::number(row.buildMs, 'f', 1),
-                                   QString::number(row.skipsPerRay, 'f', 1)};
+                                   numberText(row.buildMs, 'f', 1),
+                                   numberText(row.skipsPerRay, 'f', 1)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

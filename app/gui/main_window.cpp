@@ -5,6 +5,7 @@
 #include "event_list.h"
 #include "image_view.h"
 #include "inspector.h"
+#include "language.h"
 #include "lesson_controller.h"
 #include "lesson_panel.h"
 #include "timeline.h"
@@ -242,8 +243,7 @@ void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
     lastOpenOk_.reset();
     const bool started = runner_.start<SceneRef>(
         TaskKind::Scene,
-        tr("Loading %1 and building its %2...")
-            .arg(nameOrPath, QString::fromUtf8(accelKindName(kind).data())),
+        tr("Loading %1 and building its %2...").arg(nameOrPath, structureName(kind)),
         [path = nameOrPath.toStdString(), kind, base](const ProgressFn& progress) {
             AccelOptions options = base;
             options.setProgress(progress);
@@ -419,14 +419,13 @@ void MainWindow::replayBuild() {
     if (!Session::hasBuild(session_.kind())) {
         statusBar()->showMessage(
             tr("A %1 has no construction to replay: B replays how a kd-tree or a BVH is built.")
-                .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));
+                .arg(structureName(session_.kind())));
         return;
     }
     const std::uint64_t generation = generation_;
     runner_.start<LogRef>(
         TaskKind::Build,
-        tr("Recording the construction of the %1...")
-            .arg(QString::fromUtf8(accelKindName(session_.kind()).data())),
+        tr("Recording the construction of the %1...").arg(structureName(session_.kind())),
         [ref = session_.sceneRef()](const ProgressFn& progress) {
             return Session::recordBuild(ref, progress);
         },

@@ -40,6 +40,7 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     play_ = button(QStringLiteral(">"), tr("Play / pause (Space)"), [this] { togglePlay(); });
     button(QStringLiteral(">|"), tr("Step forward (Right)"), [this] { stepForward(); });
     kindCombo_ = new QComboBox;
+    // i18n: the kinds' names are marked with QT_TRANSLATE_NOOP in kJumpKinds.
     for (const auto& [name, kind] : kJumpKinds) kindCombo_->addItem(tr(name));
     tl->addWidget(kindCombo_);
     button(tr("next"), tr("Jump to the next event of this kind (N)"),

@@ -1,5 +1,7 @@
 #include "view2d.h"
 
+#include "language.h"
+
 #include <QMouseEvent>
 
 #include <QPainter>
@@ -260,8 +262,8 @@ void View2D::paintEvent(QPaintEvent*) {
                 g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), 2));
                 g.drawLine(a, b);
                 g.drawText(a + QPointF(4, -4),
-                           axis == 0 ? QStringLiteral("tMaxX = %1").arg(t, 0, 'g', 4)
-                                     : QStringLiteral("tMaxY = %1").arg(t, 0, 'g', 4));
+                           (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
+                               .arg(numberText(t, 'g', 4)));
                 // tDelta: the stretch of ray between two boundaries of this axis, drawn as a
                 // bracket ending at tMax, on the axis's side of the ray.
                 if (st.ddaSetup && std::isfinite(st.ddaSetup->tDelta[axis])) {
@@ -286,8 +288,8 @@ void View2D::paintEvent(QPaintEvent*) {
     if (build) drawCostChart(g, st);
     g.setPen(QColor(60, 60, 60));
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-               QString::fromStdString(session_.name() + "  -  " +
-                                      std::string(accelKindName(session_.kind()))));
+               QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
+                   structureName(session_.kind()));
 }
 
 void View2D::drawPrimitive(QPainter& painter, std::uint32_t p) const {
