@@ -1,5 +1,6 @@
 #include "lesson_panel.h"
 
+#include <QButtonGroup>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -9,6 +10,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QTextTable>
 #include <QVBoxLayout>
 
 namespace raystep::gui {
@@ -36,7 +38,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_->setOpenExternalLinks(true);
     layout->addWidget(text_, 1);
 
-    // Shown while the replay is not the lesson's trace: the exercises still grade against it.
+    // Shown while the student explores (a pixel click, R, B): the one way back to the lesson.
     noteRow_ = new QWidget;
     noteRow_->setObjectName("replayNote");
     noteRow_->setStyleSheet(QStringLiteral("#replayNote { background: #fff4d6; }"));
@@ -45,8 +47,9 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     note_ = new QLabel;
     note_->setWordWrap(true);
     note_->setStyleSheet(QStringLiteral("color: #5a4300"));
-    auto* back = new QPushButton(tr("Back to the lesson's trace"));
+    auto* back = new QPushButton(tr("Back to the lesson (Esc)"));
     back->setObjectName("backToLesson");
+    back->setToolTip(tr("The lesson's own trace, its steps and its exercises"));
     nr->addWidget(note_);
     nr->addWidget(back, 0, Qt::AlignRight);
     connect(back, &QPushButton::clicked, this, &LessonPanel::lessonTraceRequested);
@@ -72,20 +75,47 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(stepRow_);
 
     exerciseBox_ = new QGroupBox(tr("Exercise"));
+    exerciseBox_->setObjectName("exerciseBox");
     auto* el = new QVBoxLayout(exerciseBox_);
-    auto* er = new QHBoxLayout;
+    exerciseHeader_ = new QWidget;
+    auto* er = new QHBoxLayout(exerciseHeader_);
+    er->setContentsMargins(0, 0, 0, 0);
     auto* prevEx = new QPushButton(QStringLiteral("<"));
     auto* nextEx = new QPushButton(QStringLiteral(">"));
+    prevEx->setToolTip(tr("Previous exercise"));
+    nextEx->setToolTip(tr("Next exercise"));
     prevEx->setMaximumWidth(30);
     nextEx->setMaximumWidth(30);
     exerciseLabel_ = new QLabel;
     exerciseLabel_->setAlignment(Qt::AlignCenter);
+    // An exercise is open while the student works on it: the replay then stops at its position.
+    openButton_ = new QPushButton;
+    openButton_->setObjectName("openExercise");
     er->addWidget(prevEx);
     er->addWidget(exerciseLabel_, 1);
     er->addWidget(nextEx);
-    el->addLayout(er);
+    er->addWidget(openButton_);
+    el->addWidget(exerciseHeader_);
     connect(prevEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ - 1); });
     connect(nextEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ + 1); });
+    connect(openButton_, &QPushButton::clicked, this, [this] {
+        if (exerciseOpen_)
+            closeExercise();
+        else
+            selectExercise(exercise_);
+    });
+    exploreNote_ = new QLabel(
+        tr("The exercises are about the lesson's own trace, not what you are exploring: go "
+           "back to the lesson to answer them."));
+    exploreNote_->setObjectName("exploreNote");
+    exploreNote_->setWordWrap(true);
+    exploreNote_->setStyleSheet(QStringLiteral("color: #5a4300"));
+    el->addWidget(exploreNote_);
+    exerciseBody_ = new QWidget;
+    auto* body = new QVBoxLayout(exerciseBody_);
+    body->setContentsMargins(0, 0, 0, 0);
+    el->addWidget(exerciseBody_);
+    el = body;  // the prompt, the answer and the feedback go in the body
     prompt_ = new QLabel;
     prompt_->setWordWrap(true);
     prompt_->setTextFormat(Qt::MarkdownText);
@@ -108,6 +138,12 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     connect(answer_, &QLineEdit::returnPressed, this, [this] { check(); });
     connect(hintButton_, &QPushButton::clicked, this, [this] { hint(); });
     connect(revealButton_, &QPushButton::clicked, this, [this] { revealAnswer(); });
+    hints_ = new QLabel;
+    hints_->setObjectName("hints");
+    hints_->setWordWrap(true);
+    hints_->setTextFormat(Qt::MarkdownText);
+    hints_->setStyleSheet(QStringLiteral("color: #1f4e99"));
+    el->addWidget(hints_);
     feedback_ = new QLabel;
     feedback_->setObjectName("feedback");
     feedback_->setWordWrap(true);
@@ -139,6 +175,7 @@ void LessonPanel::syncPicker() {
 void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
+    exploring_ = exerciseOpen_ = false;
     noteRow_->hide();
     freeText_ = markdown;
     text_->setMarkdown(markdown);
@@ -147,6 +184,7 @@ void LessonPanel::showText(const QString& markdown) {
     sweepButton_->hide();
     sweepTable_->hide();
     picker_->setCurrentIndex(0);
+    emit quizChanged();
 }
 
 void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress) {
@@ -154,6 +192,9 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     log_ = std::move(log);
     noteRow_->hide();
     hasLesson_ = true;
+    exploring_ = false;
+    // A lesson opens on its text and steps; an exercise opens when the student turns to it.
+    exerciseOpen_ = false;
     ownProgress_ = {};
     progress_ = progress ? progress : &ownProgress_;
     picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
@@ -165,17 +206,18 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     exercise_ = 0;
     refreshText();
     refreshExercise();
+    emit quizChanged();
 }
 
 void LessonPanel::setReplayNote(const QString& what) {
-    if (!hasLesson_ || what.isEmpty()) {
-        noteRow_->hide();
-        return;
-    }
-    note_->setText(tr("The replay shows %1. The steps and exercises are about the lesson's "
-                      "own trace.")
-                       .arg(what));
-    noteRow_->show();
+    exploring_ = hasLesson_ && !what.isEmpty();
+    if (exploring_)
+        note_->setText(tr("You are exploring %1. The lesson's steps and exercises are about its "
+                          "own trace: they wait until you go back.")
+                           .arg(what));
+    noteRow_->setVisible(exploring_);
+    stepRow_->setEnabled(!exploring_);
+    if (hasLesson_) updateExerciseBox();
 }
 
 QString LessonPanel::replayNote() const {
@@ -185,6 +227,12 @@ QString LessonPanel::replayNote() const {
 void LessonPanel::setLecturerMode(bool on) {
     lecturer_ = on;
     if (hasLesson_) refreshExercise();
+    emit quizChanged();
+}
+
+void LessonPanel::setShowErrata(bool on) {
+    showErrata_ = on;
+    if (hasLesson_) refreshText();
 }
 
 void LessonPanel::goToStep(int index) {
@@ -197,45 +245,111 @@ void LessonPanel::goToStep(int index) {
 void LessonPanel::selectExercise(int index) {
     if (!hasLesson_ || lesson_.exercises.empty()) return;
     exercise_ = std::clamp(index, 0, static_cast<int>(lesson_.exercises.size()) - 1);
+    exerciseOpen_ = true;
     refreshExercise();
+    emit quizChanged();
     emit exerciseShown(exercise_);
 }
 
+void LessonPanel::closeExercise() {
+    if (!exerciseOpen_) return;
+    exerciseOpen_ = false;
+    updateExerciseBox();
+    emit quizChanged();
+}
+
+std::optional<int> LessonPanel::quizExercise() const {
+    if (!hasLesson_ || !exerciseOpen_ || lecturer_ || lesson_.exercises.empty() ||
+        solved(exercise_))
+        return std::nullopt;
+    return exercise_;
+}
+
+void LessonPanel::appendErrata(QTextCursor& at, const std::vector<Erratum>& errata) {
+    if (!showErrata_) return;
+    for (const Erratum& e : errata) {
+        // A marked box: what the slide says, what is right, and why.
+        at.movePosition(QTextCursor::End);
+        QTextTableFormat box;
+        box.setBackground(QColor(0xff, 0xf4, 0xd6));
+        box.setBorder(1);
+        box.setBorderBrush(QColor(0xe0, 0xc0, 0x70));
+        box.setBorderStyle(QTextFrameFormat::BorderStyle_Solid);
+        box.setCellPadding(6);
+        box.setCellSpacing(0);
+        box.setTopMargin(6);
+        box.setBottomMargin(6);
+        box.setWidth(QTextLength(QTextLength::PercentageLength, 100));
+        QTextTable* table = at.insertTable(1, 1, box);
+        QTextCursor cell = table->cellAt(0, 0).firstCursorPosition();
+        cell.insertMarkdown(QStringLiteral("**%1**\n\n%2 *%3*\n\n%4 %5\n\n%6")
+                                .arg(q(erratumHeading(lang_)), tr("The slide:"),
+                                     q(e.slide.in(lang_)), tr("Correct:"),
+                                     q(e.correct.in(lang_)), q(e.why.in(lang_))));
+        at.movePosition(QTextCursor::End);
+    }
+}
+
 void LessonPanel::refreshText() {
-    QString md = QStringLiteral("# %1. %2\n\n%3\n")
-                     .arg(lesson_.number)
-                     .arg(q(lesson_.title.in(lang_)), q(lesson_.text.in(lang_)));
+    text_->setMarkdown(QStringLiteral("# %1. %2\n\n%3\n")
+                           .arg(lesson_.number)
+                           .arg(q(lesson_.title.in(lang_)), q(lesson_.text.in(lang_))));
+    QTextCursor at(text_->document());
+    at.movePosition(QTextCursor::End);
+    appendErrata(at, lesson_.errata);
     if (!lesson_.steps.empty()) {
-        md += QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
-                  .arg(tr("Step"))
-                  .arg(step_ + 1)
-                  .arg(lesson_.steps.size())
-                  .arg(q(lesson_.steps[step_].text.in(lang_)));
+        const LessonStep& step = lesson_.steps[step_];
+        QString md = QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
+                         .arg(tr("Step"))
+                         .arg(step_ + 1)
+                         .arg(lesson_.steps.size())
+                         .arg(q(step.text.in(lang_)));
         // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
-        if (const LocalText& note = lesson_.steps[step_].note; !note.en.empty())
-            md += QStringLiteral("\n> %1\n").arg(q(note.in(lang_)));
+        if (!step.note.en.empty()) md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
+        at.movePosition(QTextCursor::End);
+        at.insertBlock();
+        at.insertMarkdown(md);
+        appendErrata(at, step.errata);
         stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));
         prevStep_->setEnabled(step_ > 0);
         nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));
     }
-    text_->setMarkdown(md);
     // The step's text is what the lecturer points at: keep it in sight.
     text_->moveCursor(QTextCursor::End);
     text_->ensureCursorVisible();
 }
 
-void LessonPanel::refreshExercise() {
+void LessonPanel::updateExerciseBox() {
     if (lesson_.exercises.empty()) return;
-    const Exercise& ex = lesson_.exercises[exercise_];
     exerciseLabel_->setText(tr("Exercise %1 / %2%3")
                                 .arg(exercise_ + 1)
                                 .arg(lesson_.exercises.size())
                                 .arg(solved(exercise_) ? tr(" (solved)") : QString()));
+    openButton_->setText(exerciseOpen_ ? tr("Put away") : tr("Try it"));
+    openButton_->setToolTip(exerciseOpen_
+                                ? tr("Put the exercise away: the replay may then go anywhere")
+                                : tr("Open the exercise: the replay stops at its position "
+                                     "until you answer"));
+    exerciseBody_->setVisible(exerciseOpen_);
+    // While exploring, the exercises wait: they are graded against the lesson's own trace.
+    exerciseHeader_->setEnabled(!exploring_);
+    exerciseBody_->setEnabled(!exploring_);
+    exploreNote_->setVisible(exploring_);
+}
+
+void LessonPanel::refreshExercise() {
+    if (lesson_.exercises.empty()) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    updateExerciseBox();
     prompt_->setText(q(ex.prompt.in(lang_)));
     answer_->clear();
     feedback_->clear();
     feedback_->setStyleSheet({});
-    hintButton_->setEnabled(!ex.hint.en.empty());
+    hintsShown_ = 0;
+    hints_->clear();
+    hints_->hide();
+    hintButton_->setEnabled(!ex.hints.empty());
+    hintButton_->setText(tr("Hint"));
     revealButton_->setVisible(lecturer_);
     const bool split = ex.kind == ExerciseKind::PickSplit;
     candidates_->setVisible(split);
@@ -274,19 +388,23 @@ void LessonPanel::refreshExercise() {
 }
 
 void LessonPanel::fillCell(int x, int y) {
-    if (!hasLesson_ || lesson_.exercises.empty() || !answer_->isVisible()) return;
+    if (!hasLesson_ || exploring_ || !exerciseOpen_ || lesson_.exercises.empty() ||
+        !answer_->isVisible())
+        return;
     if (lesson_.exercises[exercise_].kind != ExerciseKind::NextCell) return;
     answer_->setText(QStringLiteral("%1,%2").arg(x).arg(y));
     check();
 }
 
 bool LessonPanel::submit(const QString& answer) {
+    if (!hasLesson_ || lesson_.exercises.empty()) return false;
     if (lesson_.exercises[exercise_].kind == ExerciseKind::PickSplit) {
         const int i = candidates_->findData(answer);
         if (i >= 0) candidates_->setCurrentIndex(i);
     } else {
         answer_->setText(answer);
     }
+    feedback_->setProperty("correct", false);
     check();
     return feedback_->property("correct").toBool();
 }
@@ -297,9 +415,24 @@ QString LessonPanel::feedback() const {
 QString LessonPanel::exerciseText() const {
     return prompt_->text();
 }
+QString LessonPanel::hintsText() const {
+    return hints_->text();
+}
 
 void LessonPanel::check() {
     if (!hasLesson_ || !log_ || lesson_.exercises.empty()) return;
+    // While exploring, the exercises wait (their box is disabled; a script may still call).
+    if (exploring_) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(exploreNote_->text());
+        return;
+    }
+    if (!exerciseOpen_) {
+        exerciseOpen_ = true;  // answering an exercise is working on it
+        updateExerciseBox();
+        emit quizChanged();
+    }
     const Exercise& ex = lesson_.exercises[exercise_];
     const QString typed = ex.kind == ExerciseKind::PickSplit ? candidates_->currentData().toString()
                                                              : answer_->text();
@@ -313,6 +446,7 @@ void LessonPanel::check() {
     }
     const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file);
     LessonProgress::ExerciseRecord& rec = record(exercise_);
+    const bool wasSolved = rec.correct;
     ++rec.attempts;
     rec.correct = rec.correct || v.correct;
     rec.answer = typed.toStdString();
@@ -321,6 +455,10 @@ void LessonPanel::check() {
     if (v.correct) {
         feedback_->setStyleSheet(QStringLiteral("color: #1a7f37"));
         feedback_->setText(tr("Right. %1").arg(q(v.feedback)));
+    } else if (wasSolved) {
+        // Solved before: the attempt is not counted against the student.
+        feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
+        feedback_->setText(tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback)));
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
         feedback_->setText(
@@ -330,11 +468,10 @@ void LessonPanel::check() {
                      "inspector, or ask for a hint.")
                       .arg(rec.attempts));
     }
-    exerciseLabel_->setText(tr("Exercise %1 / %2%3")
-                                .arg(exercise_ + 1)
-                                .arg(lesson_.exercises.size())
-                                .arg(solved(exercise_) ? tr(" (solved)") : QString()));
+    updateExerciseBox();
     emit answered(q(ex.id), v.correct, typed);
+    // Answered right: the replay may go past the exercise now.
+    if (v.correct && !wasSolved) emit quizChanged();
 }
 
 LessonProgress::ExerciseRecord& LessonPanel::record(int exercise) {
@@ -347,9 +484,21 @@ bool LessonPanel::solved(int exercise) const {
 }
 
 void LessonPanel::hint() {
+    // One more hint each press: a nudge, then the formula, then the worked first step.
     const Exercise& ex = lesson_.exercises[exercise_];
-    feedback_->setStyleSheet({});
-    feedback_->setText(tr("Hint: %1").arg(q(ex.hint.in(lang_))));
+    if (hintsShown_ >= static_cast<int>(ex.hints.size())) return;
+    ++hintsShown_;
+    QStringList shown;
+    for (int k = 0; k < hintsShown_; ++k)
+        shown << tr("**Hint %1 of %2.** %3")
+                     .arg(k + 1)
+                     .arg(ex.hints.size())
+                     .arg(q(ex.hints[k].in(lang_)));
+    hints_->setText(shown.join(QStringLiteral("\n\n")));
+    hints_->show();
+    const bool more = hintsShown_ < static_cast<int>(ex.hints.size());
+    hintButton_->setEnabled(more);
+    hintButton_->setText(more ? tr("Next hint") : tr("No more hints"));
 }
 
 void LessonPanel::revealAnswer() {

@@ -37,6 +37,9 @@ class View2D : public QWidget {
     QPointF toScreen(const Vec2& p) const;
     Vec2 toWorld(QPointF p) const;
     void drawCostChart(QPainter& g, const ReplayState& st) const;
+    /// The colour roles of the picture (the palette's), top right.
+    void drawLegend(QPainter& g, bool build) const;
+    double legendWidth() const;
     void fit() const;  // the scene-to-widget mapping for the current size
 
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
