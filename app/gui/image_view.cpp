@@ -138,9 +138,16 @@ void ImageView::paintEvent(QPaintEvent*) {
         }
     }
     if (marked_.x() >= 0 && !r.isEmpty()) {
+        // The pixel being explored: its square and a ring around it, in red over dark.
         const double s = r.width() / size_.width();
-        g.setPen(QPen(QColor(255, 80, 60), 2));
-        g.drawRect(QRectF(r.x() + marked_.x() * s - 3, r.y() + marked_.y() * s - 3, s + 6, s + 6));
+        const QPointF c(r.x() + (marked_.x() + 0.5) * s, r.y() + (marked_.y() + 0.5) * s);
+        g.setRenderHint(QPainter::Antialiasing);
+        g.setBrush(Qt::NoBrush);
+        for (const QPen& pen : {QPen(QColor(0, 0, 0, 200), 4.5), QPen(QColor(255, 80, 60), 2)}) {
+            g.setPen(pen);
+            g.drawRect(QRectF(c.x() - s / 2 - 3, c.y() - s / 2 - 3, s + 6, s + 6));
+            g.drawEllipse(c, s / 2 + 10, s / 2 + 10);
+        }
     }
     if (const QPointF c = lessonMarkCentre(); !c.isNull()) {
         // The lesson's pixel: a ring and a cross-hair with a gap, dark under light, so it reads

@@ -133,7 +133,6 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     br->addWidget(checkButton_);
     br->addWidget(hintButton_);
     br->addWidget(revealButton_);
-    el->addLayout(br);
     connect(checkButton_, &QPushButton::clicked, this, [this] { check(); });
     connect(answer_, &QLineEdit::returnPressed, this, [this] { check(); });
     connect(hintButton_, &QPushButton::clicked, this, [this] { hint(); });
@@ -149,6 +148,9 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     feedback_->setWordWrap(true);
     feedback_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     el->addWidget(feedback_);
+    // The buttons last: the box grows upwards as hints and feedback come, and the buttons stay
+    // where the student's mouse is (Hint pressed again reveals the next one).
+    el->addLayout(br);
     layout->addWidget(exerciseBox_);
 
     sweepButton_ = new QPushButton(tr("Run the sweep"));
