@@ -112,6 +112,9 @@ void LessonController::backToLesson() {
                                         session_.log());
         if (at) session_.setCursor(*at);
         updateQuizLimit();
+        if (!lesson_->lesson().steps.empty())
+            events_->setFilter(
+                QString::fromStdString(lesson_->lesson().steps[lesson_->step()].filter));
     } else {
         applyStep(lesson_->step());
     }
@@ -241,7 +244,11 @@ void LessonController::showSceneIntro() {
 
 void LessonController::showReplayText() {
     if (lesson_->hasLesson()) {
-        lesson_->setReplayNote(replayDescription());
+        const QString exploring = replayDescription();
+        // The step's filter is about the lesson's trace: exploring shows every event (going
+        // back to the lesson sets the step's filter again).
+        if (!exploring.isEmpty() && !lesson_->exploring()) events_->setFilter({});
+        lesson_->setReplayNote(exploring);
     } else if (session_.showingBuild()) {
         lesson_->showText(lectureText(QStringLiteral("building"))
                               .arg(QString::fromUtf8(accelKindName(session_.kind()).data())));

@@ -226,20 +226,25 @@ TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     EXPECT_GT(pixelsNear(shot, 255, 235, 60, 10), 60);  // a mark, not a dot
 
     LessonPanel* p = w.lessonPanel();
-    p->goToStep(1);
+    p->goToStep(0);  // its filter shows the primitive tests
+    ASSERT_FALSE(p->lesson().steps[0].filter.empty());
     const std::size_t stepCursor = w.session().cursor();
     const LogRef lessonLog = p->lessonLog();
     QTest::mouseClick(image, Qt::LeftButton, {}, QPoint(image->width() / 4, image->height() / 3));
     EXPECT_EQ(w.session().logKind(), LogKind::Pixel);
     EXPECT_TRUE(p->exploring());
     EXPECT_TRUE(w.backToLessonAction()->isEnabled());
+    // The step's filter is about the lesson's trace: the explored one shows every event.
+    EXPECT_TRUE(w.eventList()->filter().isEmpty());
+    EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(w.session().size()));
     // The steps wait as the exercises do.
     for (QPushButton* b : p->findChildren<QPushButton*>())
         if (b->text() == "< Step") EXPECT_FALSE(b->isEnabled());
     QTest::keyClick(&w, Qt::Key_Escape);
     EXPECT_EQ(w.session().logRef(), lessonLog);
     EXPECT_EQ(w.session().cursor(), stepCursor);
-    EXPECT_EQ(p->step(), 1);
+    EXPECT_EQ(p->step(), 0);
+    EXPECT_EQ(w.eventList()->filter().toStdString(), p->lesson().steps[0].filter);
     EXPECT_FALSE(p->exploring());
     EXPECT_FALSE(w.backToLessonAction()->isEnabled());
     w.tasks().cancel(TaskKind::Render);
