@@ -87,7 +87,7 @@ void LessonController::show(const Lesson& lesson, const LogRef& trace) {
 }
 
 std::optional<std::size_t> LessonController::lessonEventKind(const Lesson& lesson,
-                                                            const EventLog& log) {
+                                                             const EventLog& log) {
     std::vector<const ReplayPosition*> positions;
     for (const LessonStep& s : lesson.steps) positions.push_back(&s.at);
     for (const Exercise& e : lesson.exercises) positions.push_back(&e.at);
@@ -108,8 +108,8 @@ void LessonController::backToLesson() {
     showLessonTrace();
     // Where the student was in the lesson: the open exercise's position, else the step's.
     if (lesson_->exerciseOpen()) {
-        const auto at = resolvePosition(lesson_->lesson().exercises[lesson_->exercise()].at,
-                                        session_.log());
+        const auto at =
+            resolvePosition(lesson_->lesson().exercises[lesson_->exercise()].at, session_.log());
         if (at) session_.setCursor(*at);
         updateQuizLimit();
         if (!lesson_->lesson().steps.empty())

@@ -126,6 +126,30 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     candidates_->setObjectName("candidates");
     el->addWidget(answer_);
     el->addWidget(candidates_);
+    choiceBox_ = new QWidget;
+    choiceBox_->setObjectName("choices");
+    new QVBoxLayout(choiceBox_);
+    choiceBox_->layout()->setContentsMargins(0, 0, 0, 0);
+    choiceGroup_ = new QButtonGroup(this);
+    el->addWidget(choiceBox_);
+    sweepPicker_ = new QComboBox;
+    sweepPicker_->setObjectName("sweepPicker");
+    el->addWidget(sweepPicker_);
+    clearButton_ = new QPushButton(tr("Clear the cells"));
+    clearButton_->setObjectName("clearSequence");
+    clearButton_->setToolTip(tr("Start the order again"));
+    el->addWidget(clearButton_, 0, Qt::AlignRight);
+    connect(clearButton_, &QPushButton::clicked, this, [this] {
+        sequence_.clear();
+        answer_->clear();
+        emit sequenceChanged(sequence_);
+    });
+    // Typing a sequence replaces the clicked cells (the typed text is the answer).
+    connect(answer_, &QLineEdit::textEdited, this, [this] {
+        if (sequence_.isEmpty()) return;
+        sequence_.clear();
+        emit sequenceChanged(sequence_);
+    });
     auto* br = new QHBoxLayout;
     checkButton_ = new QPushButton(tr("Check"));
     hintButton_ = new QPushButton(tr("Hint"));
@@ -286,8 +310,8 @@ void LessonPanel::appendErrata(QTextCursor& at, const std::vector<Erratum>& erra
         QTextCursor cell = table->cellAt(0, 0).firstCursorPosition();
         cell.insertMarkdown(QStringLiteral("**%1**\n\n%2 *%3*\n\n%4 %5\n\n%6")
                                 .arg(q(erratumHeading(lang_)), tr("The slide:"),
-                                     q(e.slide.in(lang_)), tr("Correct:"),
-                                     q(e.correct.in(lang_)), q(e.why.in(lang_))));
+                                     q(e.slide.in(lang_)), tr("Correct:"), q(e.correct.in(lang_)),
+                                     q(e.why.in(lang_))));
         at.movePosition(QTextCursor::End);
     }
 }
@@ -356,7 +380,15 @@ void LessonPanel::refreshExercise() {
     const bool split = ex.kind == ExerciseKind::PickSplit;
     candidates_->setVisible(split);
     answer_->setVisible(!split);
+    answer_->setValidator(nullptr);
     candidates_->clear();
+    choiceBox_->hide();
+    sweepPicker_->hide();
+    clearButton_->hide();
+    if (!sequence_.isEmpty()) {
+        sequence_.clear();
+        emit sequenceChanged(sequence_);
+    }
     if (split && log_) {
         // The candidates without their cost: computing it is the exercise.
         for (const SplitCandidate& c : splitCandidates(ex, *log_))

@@ -9,6 +9,8 @@
 #include "course/lesson.h"
 #include "course/progress.h"
 
+#include <QList>
+#include <QPoint>
 #include <QTextCursor>
 #include <QWidget>
 
@@ -94,6 +96,8 @@ class LessonPanel : public QWidget {
     /// An answer was checked and recorded in the progress: the main window saves it.
     void answered(const QString& exerciseId, bool correct, const QString& answer);
     void sweepRequested();
+    /// The cells of a sequence answer so far (the 2D view numbers them); empty when none.
+    void sequenceChanged(const QList<QPoint>& cells);
 
   private:
     void refreshText();
@@ -142,6 +146,11 @@ class LessonPanel : public QWidget {
     QLabel* prompt_ = nullptr;
     QLineEdit* answer_ = nullptr;
     QComboBox* candidates_ = nullptr;
+    QWidget* choiceBox_ = nullptr;  // a choice exercise's radio buttons
+    QButtonGroup* choiceGroup_ = nullptr;
+    QPushButton* clearButton_ = nullptr;  // a sequence answer: start again
+    QComboBox* sweepPicker_ = nullptr;    // a sweep_pick exercise: the sweep's resolutions
+    QList<QPoint> sequence_;              // cells clicked for a sequence answer, in order
     QPushButton* checkButton_ = nullptr;
     QPushButton* hintButton_ = nullptr;
     QPushButton* revealButton_ = nullptr;

@@ -90,6 +90,7 @@ void MainWindow::createViews() {
             tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
     });
     connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
+    connect(lesson_, &LessonPanel::sequenceChanged, view2D_, &View2D::setSequence);
 }
 
 void MainWindow::createTimeline() {
@@ -214,9 +215,8 @@ void MainWindow::createActions() {
     a.backToLesson = action(tr("&Back to the lesson"), QKeySequence(Qt::Key_Escape),
                             [this] { lessons_->backToLesson(); });
     a.backToLesson->setEnabled(false);
-    connect(&session_, &Session::logChanged, this, [this] {
-        actions_.backToLesson->setEnabled(lesson_->exploring());
-    });
+    connect(&session_, &Session::logChanged, this,
+            [this] { actions_.backToLesson->setEnabled(lesson_->exploring()); });
     // The slides' errata under the texts: a lecturer may hide them; remembered.
     a.showErrata = new QAction(tr("Show &notes on the slides"), this);
     a.showErrata->setCheckable(true);
@@ -418,8 +418,8 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             lessons_->show(o.lesson, o.trace);
             // The pixel the lesson traces, marked on the image in the lesson's own image size.
             if (lesson.trace.kind == LessonTrace::Kind::Pixel)
-                imageView_->setLessonPixel(QRect(lesson.trace.x, lesson.trace.y,
-                                                 lesson.trace.width, lesson.trace.height));
+                imageView_->setLessonPixel(
+                    QRect(lesson.trace.x, lesson.trace.y, lesson.trace.width, lesson.trace.height));
             else
                 imageView_->setLessonPixel(std::nullopt);
             setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));

@@ -14,10 +14,10 @@ namespace raystep::gui {
 namespace {
 // Event kinds the timeline can jump to (N), by variant index, in the order the combo lists them.
 const std::size_t kJumpKinds[] = {
-    variantIndex<DdaCell>(),        variantIndex<PrimitiveTest>(), variantIndex<MailboxSkip>(),
-    variantIndex<NodeEnter>(),      variantIndex<RayBegin>(),      variantIndex<RayHit>(),
-    variantIndex<SplitChosen>(),    variantIndex<SplitCandidate>(), variantIndex<BuildNode>(),
-    variantIndex<LeafMade>(),       variantIndex<DdaSetup>(),      variantIndex<NodeSkip>(),
+    variantIndex<DdaCell>(),     variantIndex<PrimitiveTest>(),  variantIndex<MailboxSkip>(),
+    variantIndex<NodeEnter>(),   variantIndex<RayBegin>(),       variantIndex<RayHit>(),
+    variantIndex<SplitChosen>(), variantIndex<SplitCandidate>(), variantIndex<BuildNode>(),
+    variantIndex<LeafMade>(),    variantIndex<DdaSetup>(),       variantIndex<NodeSkip>(),
     variantIndex<ShadingTerm>(),
 };
 

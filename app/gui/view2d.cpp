@@ -33,13 +33,20 @@ const QColor kRay = colourOf(rayColour(RayKind::Primary));
 
 static QString roleLabel(PaletteRole r) {
     switch (r) {
-        case PaletteRole::Visited: return View2D::tr("visited cell");
-        case PaletteRole::Current: return View2D::tr("current cell or node");
-        case PaletteRole::Tested: return View2D::tr("tested primitive");
-        case PaletteRole::Skipped: return View2D::tr("skipped (mailbox)");
-        case PaletteRole::Hit: return View2D::tr("nearest hit");
-        case PaletteRole::Candidate: return View2D::tr("candidate plane");
-        case PaletteRole::Chosen: return View2D::tr("chosen plane");
+        case PaletteRole::Visited:
+            return View2D::tr("visited cell");
+        case PaletteRole::Current:
+            return View2D::tr("current cell or node");
+        case PaletteRole::Tested:
+            return View2D::tr("tested primitive");
+        case PaletteRole::Skipped:
+            return View2D::tr("skipped (mailbox)");
+        case PaletteRole::Hit:
+            return View2D::tr("nearest hit");
+        case PaletteRole::Candidate:
+            return View2D::tr("candidate plane");
+        case PaletteRole::Chosen:
+            return View2D::tr("chosen plane");
     }
     return {};
 }
@@ -112,6 +119,11 @@ QPointF View2D::cellCentre(int x, int y) const {
     const auto& spec = grid->spec();
     return toScreen(
         Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0), spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
+}
+
+void View2D::setSequence(const QList<QPoint>& cells) {
+    sequence_ = cells;
+    update();
 }
 
 void View2D::mousePressEvent(QMouseEvent* e) {
@@ -309,6 +321,26 @@ void View2D::paintEvent(QPaintEvent*) {
         }
     }
     if (build) drawCostChart(g, st);
+    if (grid && !build) {
+        // A sequence answer: each clicked cell with its place in the order, over the picture.
+        g.setFont([&] {
+            QFont f = g.font();
+            f.setBold(true);
+            f.setPointSizeF(f.pointSizeF() * 1.3);
+            return f;
+        }());
+        for (int k = 0; k < sequence_.size(); ++k) {
+            const QRectF cell = cellRect({sequence_[k].x(), sequence_[k].y(), 0}).normalized();
+            const double r = std::min(cell.width(), cell.height()) * 0.22;
+            const QPointF c = cell.center() + QPointF(cell.width() * 0.25, -cell.height() * 0.25);
+            g.setPen(QPen(QColor(30, 30, 30), 1.5));
+            g.setBrush(QColor(255, 255, 255, 230));
+            g.drawEllipse(c, r, r);
+            g.drawText(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r), Qt::AlignCenter,
+                       QString::number(k + 1));
+        }
+        g.setFont(font());
+    }
     drawLegend(g, build);
     g.setPen(QColor(60, 60, 60));
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,

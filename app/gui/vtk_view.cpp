@@ -49,11 +49,16 @@ struct Rgb {
 
 QString rayKindLabel(RayKind kind) {
     switch (kind) {
-        case RayKind::Primary: return VtkView::tr("primary");
-        case RayKind::Shadow: return VtkView::tr("shadow");
-        case RayKind::Reflection: return VtkView::tr("reflection");
-        case RayKind::Refraction: return VtkView::tr("refraction");
-        case RayKind::Diffuse: return VtkView::tr("diffuse");
+        case RayKind::Primary:
+            return VtkView::tr("primary");
+        case RayKind::Shadow:
+            return VtkView::tr("shadow");
+        case RayKind::Reflection:
+            return VtkView::tr("reflection");
+        case RayKind::Refraction:
+            return VtkView::tr("refraction");
+        case RayKind::Diffuse:
+            return VtkView::tr("diffuse");
     }
     return {};
 }

@@ -595,9 +595,10 @@ TEST(AppLifetimes, ExploringDisablesTheExercisesAndEscReturnsToTheLesson) {
             EXPECT_FALSE(openButton->isEnabled());
             EXPECT_TRUE(p->findChild<QLabel*>("exploreNote")->isVisible());
             const Exercise& first = p->lesson().exercises[0];
-            EXPECT_FALSE(p->submit(
-                typedAnswer(first, referenceAnswer(first, *run.log, p->lesson().file))));
-            EXPECT_TRUE(p->feedback().contains("lesson's own trace")) << p->feedback().toStdString();
+            EXPECT_FALSE(
+                p->submit(typedAnswer(first, referenceAnswer(first, *run.log, p->lesson().file))));
+            EXPECT_TRUE(p->feedback().contains("lesson's own trace"))
+                << p->feedback().toStdString();
             // One key back: the lesson's trace, its exercises enabled again.
             QTest::keyClick(&w, Qt::Key_Escape);
             EXPECT_EQ(w.session().logRef(), lessonLog);
