@@ -127,8 +127,9 @@ void LessonController::updateQuizLimit() {
         session_.setLimit(nullptr, std::nullopt);
         return;
     }
-    // The exercise's own position: what lies after it holds its answer.
-    session_.setLimit(log, resolvePosition(lesson_->lesson().exercises[*quiz].at, *log));
+    // The exercise's own position: what lies after it holds its answer (course/exercise.h;
+    // none for the kinds whose answer is not in the trace).
+    session_.setLimit(log, quizLimit(lesson_->lesson().exercises[*quiz], *log));
 }
 
 void LessonController::applyStep(int index) {

@@ -8,6 +8,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
+#include <QRegularExpressionValidator>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QTextTable>
@@ -222,6 +224,7 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     // A lesson opens on its text and steps; an exercise opens when the student turns to it.
     exerciseOpen_ = false;
     ownProgress_ = {};
+    sweepRows_.clear();
     progress_ = progress ? progress : &ownProgress_;
     picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
     stepRow_->setVisible(!lesson.steps.empty());
@@ -402,9 +405,51 @@ void LessonPanel::refreshExercise() {
                     .arg(c.pr, 0, 'g', 4),
                 QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(c.position, 0, 'g', 17));
     }
+    // A choice: one radio button an option, lettered as the student may also type them.
+    for (QAbstractButton* b : choiceGroup_->buttons()) {
+        choiceGroup_->removeButton(b);
+        delete b;
+    }
+    if (ex.kind == ExerciseKind::Choice) {
+        for (std::size_t k = 0; k < ex.choices.size(); ++k) {
+            auto* b = new QRadioButton(QStringLiteral("%1) %2")
+                                           .arg(QChar('a' + static_cast<int>(k)))
+                                           .arg(q(ex.choices[k].text.in(lang_))));
+            b->setObjectName(QStringLiteral("choice%1").arg(k));
+            choiceGroup_->addButton(b, static_cast<int>(k));
+            choiceBox_->layout()->addWidget(b);
+        }
+        choiceBox_->show();
+        answer_->hide();
+    }
+    if (ex.kind == ExerciseKind::SweepPick) {
+        sweepPicker_->clear();
+        if (lesson_.sweep)
+            for (int r : lesson_.sweep->resolutions)
+                sweepPicker_->addItem(tr("%1 cells per axis").arg(r), r);
+        sweepPicker_->show();
+        answer_->hide();
+    }
     switch (ex.kind) {
         case ExerciseKind::NextCell:
             answer_->setPlaceholderText(tr("X,Y (or click the cell in the 2D view)"));
+            break;
+        case ExerciseKind::Sequence:
+            answer_->setPlaceholderText(
+                ex.ofNodes ? tr("node ids in order, e.g. 0 1 4")
+                           : tr("cells in order, e.g. 0,0; 1,0 (or click them in the 2D view)"));
+            clearButton_->setVisible(!ex.ofNodes);
+            break;
+        case ExerciseKind::Compute: {
+            answer_->setPlaceholderText(tr("your result, a number (e.g. -2.5 or 0,75)"));
+            // A number box: digits, one sign, a decimal point or comma, an exponent.
+            static const QRegularExpression number(
+                QStringLiteral("[-+]?[0-9]*([.,][0-9]*)?([eE][-+]?[0-9]*)?"));
+            answer_->setValidator(new QRegularExpressionValidator(number, answer_));
+            break;
+        }
+        case ExerciseKind::Choice:
+        case ExerciseKind::SweepPick:
             break;
         case ExerciseKind::Value:
             answer_->setPlaceholderText(tr("a number, e.g. 1.25"));
@@ -425,16 +470,37 @@ void LessonPanel::fillCell(int x, int y) {
     if (!hasLesson_ || exploring_ || !exerciseOpen_ || lesson_.exercises.empty() ||
         !answer_->isVisible())
         return;
-    if (lesson_.exercises[exercise_].kind != ExerciseKind::NextCell) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    if (ex.kind == ExerciseKind::Sequence && !ex.ofNodes) {
+        // The cells in the order clicked; checked when the student says so.
+        sequence_.append(QPoint(x, y));
+        QStringList cells;
+        for (const QPoint& c : sequence_) cells << QStringLiteral("%1,%2").arg(c.x()).arg(c.y());
+        answer_->setText(cells.join(QStringLiteral("; ")));
+        emit sequenceChanged(sequence_);
+        return;
+    }
+    if (ex.kind != ExerciseKind::NextCell) return;
     answer_->setText(QStringLiteral("%1,%2").arg(x).arg(y));
     check();
 }
 
 bool LessonPanel::submit(const QString& answer) {
     if (!hasLesson_ || lesson_.exercises.empty()) return false;
-    if (lesson_.exercises[exercise_].kind == ExerciseKind::PickSplit) {
+    const ExerciseKind kind = lesson_.exercises[exercise_].kind;
+    if (kind == ExerciseKind::PickSplit) {
         const int i = candidates_->findData(answer);
         if (i >= 0) candidates_->setCurrentIndex(i);
+    } else if (kind == ExerciseKind::Choice) {
+        // "b" or "2": the radio button a student would click.
+        const QString a = answer.trimmed().toLower();
+        bool number = false;
+        const int n = a.toInt(&number);
+        const int i = number ? n - 1 : (a.size() == 1 ? a[0].unicode() - 'a' : -1);
+        if (QAbstractButton* b = choiceGroup_->button(i)) b->setChecked(true);
+    } else if (kind == ExerciseKind::SweepPick) {
+        const int i = sweepPicker_->findData(answer.trimmed().toInt());
+        if (i >= 0) sweepPicker_->setCurrentIndex(i);
     } else {
         answer_->setText(answer);
     }
@@ -468,17 +534,31 @@ void LessonPanel::check() {
         emit quizChanged();
     }
     const Exercise& ex = lesson_.exercises[exercise_];
-    const QString typed = ex.kind == ExerciseKind::PickSplit ? candidates_->currentData().toString()
-                                                             : answer_->text();
+    const QString typed = typedAnswer();
+    if (typed.isEmpty() && (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::SweepPick)) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(tr("Pick one of the options first."));
+        return;
+    }
+    if (ex.kind == ExerciseKind::SweepPick && !sweepRows()) {
+        // Graded from the sweep's table: run it first (in the background).
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(tr("The answer is graded from the sweep's table: the sweep runs now; "
+                              "check again when its table is shown."));
+        emit sweepRequested();
+        return;
+    }
     std::string why;
-    const auto answer = parseAnswer(ex, typed.toStdString(), &why);
+    const auto answer = parseAnswer(ex, typed.toStdString(), &why, lang_);
     if (!answer) {
         feedback_->setProperty("correct", false);
         feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
         feedback_->setText(tr("Cannot read that answer: %1.").arg(q(why)));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file);
+    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
     LessonProgress::ExerciseRecord& rec = record(exercise_);
     const bool wasSolved = rec.correct;
     ++rec.attempts;
@@ -495,12 +575,14 @@ void LessonPanel::check() {
         feedback_->setText(tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback)));
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
+        // A slip the answer betrays is named at once, with the student's own numbers.
         feedback_->setText(
             rec.attempts >= 3 || lecturer_
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
-                : tr("Not right yet (try %1 of 3). Step the replay and look at the "
-                     "inspector, or ask for a hint.")
-                      .arg(rec.attempts));
+            : v.slip.empty() ? tr("Not right yet (try %1 of 3). Step the replay and look at the "
+                                  "inspector, or ask for a hint.")
+                                   .arg(rec.attempts)
+                             : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(q(v.slip)));
     }
     updateExerciseBox();
     emit answered(q(ex.id), v.correct, typed);
@@ -535,15 +617,42 @@ void LessonPanel::hint() {
     hintButton_->setText(more ? tr("Next hint") : tr("No more hints"));
 }
 
+QString LessonPanel::typedAnswer() const {
+    const Exercise& ex = lesson_.exercises[exercise_];
+    switch (ex.kind) {
+        case ExerciseKind::PickSplit:
+            return candidates_->currentData().toString();
+        case ExerciseKind::Choice:
+            return choiceGroup_->checkedId() < 0 ? QString()
+                                                 : QString::number(choiceGroup_->checkedId() + 1);
+        case ExerciseKind::SweepPick:
+            return sweepPicker_->currentIndex() < 0
+                       ? QString()
+                       : QString::number(sweepPicker_->currentData().toInt());
+        default:
+            return answer_->text();
+    }
+}
+
+const std::vector<GridSweepRow>* LessonPanel::sweepRows() const {
+    return sweepRows_.empty() ? nullptr : &sweepRows_;
+}
+
 void LessonPanel::revealAnswer() {
     if (!log_) return;
     const Exercise& ex = lesson_.exercises[exercise_];
-    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file);
+    if (ex.kind == ExerciseKind::SweepPick && !sweepRows()) {
+        feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
+        feedback_->setText(tr("Run the sweep to see the answer: it is read from its table."));
+        return;
+    }
+    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
 }
 
 void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
+    sweepRows_ = rows;
     // What the lesson is about first (the panel is narrow): tests against cells against time.
     const QStringList headers = {tr("cells/axis"), tr("tests/ray"), tr("cells/ray"),
                                  tr("trace ms"),   tr("cells"),     tr("refs"),

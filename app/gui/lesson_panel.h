@@ -105,6 +105,10 @@ class LessonPanel : public QWidget {
     void check();
     void hint();
     void revealAnswer();
+    /// What the student answered, as text parseAnswer reads ("" when nothing is chosen yet).
+    QString typedAnswer() const;
+    /// The sweep's rows for grading a sweep_pick, or null before the sweep has run.
+    const std::vector<GridSweepRow>* sweepRows() const;
     /// The exercise box's parts, enabled and shown for the exercise's state.
     void updateExerciseBox();
     /// The lesson's or a step's slide errata, as marked boxes at the end of the text.
@@ -151,6 +155,7 @@ class LessonPanel : public QWidget {
     QPushButton* clearButton_ = nullptr;  // a sequence answer: start again
     QComboBox* sweepPicker_ = nullptr;    // a sweep_pick exercise: the sweep's resolutions
     QList<QPoint> sequence_;              // cells clicked for a sequence answer, in order
+    std::vector<GridSweepRow> sweepRows_;  // the sweep's table, once run (sweep_pick grades it)
     QPushButton* checkButton_ = nullptr;
     QPushButton* hintButton_ = nullptr;
     QPushButton* revealButton_ = nullptr;

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -31,6 +32,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
@@ -451,6 +453,163 @@ TEST(Inspector, ATriangleHitShowsItsBarycentricUV) {
         << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("v = %1").arg(hit->v, 0, 'g', 6)))
         << text.toStdString();
+    w.tasks().cancel(TaskKind::Render);
+}
+
+/// A lesson over the lecture grid and its example ray o = (0.4, 0.4), d = (1, 0.75), with a
+/// choice, a sequence of cells and a compute exercise.
+QString lessonWithNewKinds(const QTemporaryDir& dir) {
+    const QByteArray text = R"({
+"format": "raystep-lesson", "version": 1, "id": "new-kinds", "number": 98,
+"title": {"en": "New kinds"}, "text": {"en": "The slides' grid."},
+"scene": "lecture-grid", "setup": {"accel": "grid"}, "views": ["2d"],
+"trace": {"ray": "example"},
+"exercises": [
+ {"id": "why", "type": "choice", "prompt": {"en": "Why a grid?"},
+  "choices": [{"text": {"en": "It sorts the primitives"}, "why": {"en": "It does not sort them."}},
+              {"text": {"en": "A ray visits few cells"}, "why": {"en": "Yes: only its cells."}},
+              {"text": {"en": "It makes the image sharper"}, "why": {"en": "Sharpness is the camera's."}}],
+  "answer": 1},
+ {"id": "order", "type": "sequence", "of": "dda_cell", "at": {"before": "dda_cell", "nth": 2},
+  "length": 3, "prompt": {"en": "The next three cells, in order."}},
+ {"id": "t0", "type": "compute", "quantity": "t0",
+  "given": {"ray": {"o": [1, 2, 10], "d": [0, 0, -2]}, "sphere": {"c": [1, 1, 0], "r": 3}},
+  "prompt": {"en": "o = (1, 2, 10), d = (0, 0, -2), c = (1, 1, 0), R = 3: the smaller root t0?",
+             "it": "o = (1, 2, 10), d = (0, 0, -2), c = (1, 1, 0), R = 3: la radice minore t0?"}}
+]})";
+    const QString path = dir.filePath("new-kinds.json");
+    QFile out(path);
+    EXPECT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(text);
+    return path;
+}
+
+QPushButton* buttonNamed(QWidget* in, const QString& text) {
+    for (QPushButton* b : in->findChildren<QPushButton*>())
+        if (b->text() == text && b->isVisible()) return b;
+    return nullptr;
+}
+
+// A choice answered with its radio buttons: the chosen option's why, and no quiz limit (its
+// answer is not in the trace). A sequence answered by clicking cells in order in the 2D view,
+// with Clear to start again; it stops the replay where the order starts. A compute exercise in
+// a number box (a letter cannot be typed), graded with the slip a wrong number betrays.
+TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
+    QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                  "/progress.json");
+    QTemporaryDir dir;
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, lessonWithNewKinds(dir))) << w.lastOpenError().toStdString();
+    LessonPanel* p = w.lessonPanel();
+    Session& s = w.session();
+
+    // Choice: three radio buttons; c) is wrong, b) is right.
+    p->selectExercise(0);
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), s.size());  // nothing of the trace gives a concept away
+    auto* c = p->findChild<QAbstractButton*>("choice2");
+    auto* b = p->findChild<QAbstractButton*>("choice1");
+    ASSERT_TRUE(c && b);
+    EXPECT_TRUE(b->isVisible());
+    EXPECT_TRUE(b->text().contains("A ray visits few cells"));
+    QTest::mouseClick(c, Qt::LeftButton, {}, QPoint(8, c->height() / 2));
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().startsWith("Not right")) << p->feedback().toStdString();
+    QTest::mouseClick(b, Qt::LeftButton, {}, QPoint(8, b->height() / 2));
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+    EXPECT_TRUE(p->feedback().contains("only its cells")) << p->feedback().toStdString();
+
+    // Sequence: the cells after (0, 0), by hand: tMax (0.6, 0.8) steps X to (1, 0); then
+    // (1.6, 0.8) steps Y to (1, 1); then (1.6, 2.133) steps X to (2, 1).
+    p->selectExercise(1);
+    const std::size_t limit = indexOfNth<DdaCell>(s.log(), 2);
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), limit);
+    auto* answer = p->findChild<QLineEdit*>("answer");
+    ASSERT_NE(answer, nullptr);
+    View2D* view = w.view2D();
+    const QImage before = grab(view);
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->cellCentre(1, 0).toPoint());
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->cellCentre(2, 0).toPoint());
+    EXPECT_EQ(answer->text(), "1,0; 2,0");
+    EXPECT_NE(grab(view), before);  // the clicked cells are numbered on the grid
+    QTest::mouseClick(buttonNamed(p, "Clear the cells"), Qt::LeftButton);
+    EXPECT_TRUE(answer->text().isEmpty());
+    EXPECT_EQ(grab(view), before);
+    for (const QPoint cell : {QPoint(1, 0), QPoint(1, 1), QPoint(2, 1)})
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->cellCentre(cell.x(), cell.y()).toPoint());
+    EXPECT_EQ(answer->text(), "1,0; 1,1; 2,1");
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), s.size());  // answered: the rest of the walk shows
+
+    // Compute: f = o - c = (0, 1, 10); A = 4, B = -40, C = 101 - 9 = 92; disc = 1600 - 1472 =
+    // 128; t0 = (40 - sqrt 128) / 8 = 3.5858, t1 = 6.4142.
+    p->selectExercise(2);
+    answer->setFocus();
+    QTest::keyClicks(answer, "x6,4142");
+    EXPECT_EQ(answer->text(), "6,4142");  // a number box: the letter is refused
+    QTest::keyClick(answer, Qt::Key_Return);
+    EXPECT_TRUE(p->feedback().startsWith("Not right yet")) << p->feedback().toStdString();
+    EXPECT_TRUE(p->feedback().contains("other root")) << p->feedback().toStdString();
+    answer->clear();
+    QTest::keyClicks(answer, "3,5858");
+    QTest::keyClick(answer, Qt::Key_Return);
+    EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+}
+
+// A sweep_pick is graded from the sweep's table: checked before the sweep has run, it starts
+// it; then the resolution with the fewest tests per ray (read from the table the app shows) is
+// right, and another one is not.
+TEST(NewKinds, ASweepPickIsGradedFromTheSweepsTable) {
+    QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                  "/progress.json");
+    QFile in(QStringLiteral(RAYSTEP_SOURCE_DIR "/lessons/09-voxel-size.json"));
+    ASSERT_TRUE(in.open(QIODevice::ReadOnly));
+    QJsonObject lesson = QJsonDocument::fromJson(in.readAll()).object();
+    lesson["id"] = "sweep-pick";
+    lesson["number"] = 97;
+    lesson["exercises"] = QJsonArray{QJsonObject{
+        {"id", "fewest-tests"},
+        {"type", "sweep_pick"},
+        {"metric", "tests_per_ray"},
+        {"prompt", QJsonObject{{"en", "Which resolution gives the fewest tests per ray?"}}}}};
+    QTemporaryDir dir;
+    const QString path = dir.filePath("sweep-pick.json");
+    QFile out(path);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(lesson).toJson());
+    out.close();
+
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, path)) << w.lastOpenError().toStdString();
+    LessonPanel* p = w.lessonPanel();
+    p->selectExercise(0);
+    auto* picker = p->findChild<QComboBox*>("sweepPicker");
+    ASSERT_NE(picker, nullptr);
+    ASSERT_TRUE(picker->isVisible());
+    EXPECT_EQ(picker->count(), static_cast<int>(p->lesson().sweep->resolutions.size()));
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().contains("sweep")) << p->feedback().toStdString();
+    ASSERT_TRUE(w.waitUntilIdle());
+    auto* table = p->findChild<QTableWidget*>();
+    ASSERT_NE(table, nullptr);
+    ASSERT_EQ(table->rowCount(), picker->count());
+    int best = 0;
+    for (int r = 1; r < table->rowCount(); ++r)
+        if (table->item(r, 1)->text().toDouble() < table->item(best, 1)->text().toDouble())
+            best = r;
+    const int other = best == 0 ? 1 : 0;
+    picker->setCurrentIndex(other);
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().startsWith("Not right")) << p->feedback().toStdString();
+    picker->setCurrentIndex(picker->findData(table->item(best, 0)->text().toInt()));
+    QTest::mouseClick(buttonNamed(p, "Check"), Qt::LeftButton);
+    EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
     w.tasks().cancel(TaskKind::Render);
 }
 
