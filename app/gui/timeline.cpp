@@ -3,6 +3,7 @@
 
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QSlider>
 #include <QSpinBox>
@@ -40,8 +41,13 @@ QString jumpKindLabel(std::size_t kind) {
 }  // namespace
 
 Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
-    auto* tl = new QHBoxLayout(this);
-    tl->setContentsMargins(6, 2, 6, 2);
+    // The controls in a row; the quiz cue under them, only while an exercise stops the replay
+    // (beside them it squeezed the scrubber to nothing at 1366 pixels).
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(6, 2, 6, 2);
+    rows->setSpacing(2);
+    auto* tl = new QHBoxLayout;
+    rows->addLayout(tl);
     const auto button = [&](const QString& text, const QString& tip, auto slot) {
         auto* b = new QToolButton;
         b->setText(text);
@@ -78,7 +84,7 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
         QStringLiteral("#quizCue { background: #fff4d6; color: #5a4300; padding: 2px 6px; "
                        "border: 1px solid #e0c070; border-radius: 3px; }"));
     quizCue_->hide();
-    tl->addWidget(quizCue_);
+    rows->addWidget(quizCue_, 0, Qt::AlignRight);
     connect(scrubber_, &QSlider::valueChanged, this,
             [this](int v) { session_.setCursor(static_cast<std::size_t>(v)); });
 
