@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace raystep {
@@ -78,6 +79,26 @@ TEST(Lessons3D, TheIntersectionLessonsSceneValuesEqualAHandComputation) {
     EXPECT_EQ(referenceOf(l, run, "triangle-test").hit, std::optional<bool>(true));
     EXPECT_NEAR(referenceOf(l, run, "barycentric-u").numbers.at(0), 0.324586, 1e-4);
     EXPECT_NEAR(referenceOf(l, run, "barycentric-v").numbers.at(0), 0.444075, 1e-4);
+}
+
+// The hand computations on round data, by hand in fractions: A = 4, B = -28, C = 50 - 9 = 41,
+// 784 - 656 = 128, t = (28 - sqrt(128)) / 8 = 3.5 - sqrt(2); moved up, C = 56 and 784 - 896;
+// the plane y = 1: t = (1 - 19) / -5; the triangle's p = (1, 2, 0): u = 1/5, v = 2/5.
+TEST(Lessons3D, TheIntersectionLessonsHandComputationsEqualFractions) {
+    const Lesson l = loadLesson("intersections");
+    const LessonRun run = runLesson(l);
+    const auto value = [&](const std::string& id) {
+        const Answer a = referenceOf(l, run, id);
+        return a.numbers.empty() ? kInfinity : a.numbers[0];
+    };
+    EXPECT_DOUBLE_EQ(value("sphere-b"), -28.0);
+    EXPECT_DOUBLE_EQ(value("sphere-c"), 41.0);
+    EXPECT_DOUBLE_EQ(value("sphere-discriminant"), 128.0);
+    EXPECT_NEAR(value("sphere-t"), 3.5 - std::sqrt(2.0), 1e-12);
+    EXPECT_DOUBLE_EQ(value("sphere-miss"), -112.0);
+    EXPECT_NEAR(value("plane-t"), 3.6, 1e-12);
+    EXPECT_NEAR(value("triangle-u"), 0.2, 1e-12);
+    EXPECT_NEAR(value("triangle-v"), 0.4, 1e-12);
 }
 
 }  // namespace
