@@ -698,19 +698,21 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
     write("key.json", key.out);
     const CliRun full = run("lesson check 6 --answers key.json");
     ASSERT_EQ(full.code, 0) << full.err;
-    EXPECT_NE(full.out.find(": 3 / 3"), std::string::npos) << full.out;
+    EXPECT_NE(full.out.find(": 9 / 9"), std::string::npos) << full.out;
+    // By hand (o = (0.4, 0.4), d = (0.8, 0.4), cells of 1): tDeltaY = 1 / 0.4 = 2.5; in (2, 1)
+    // tMaxX = (3 - 0.4) / 0.8 = 3.25 < tMaxY = (2 - 0.4) / 0.4 = 4, so the next cell is (3, 1).
     std::ofstream(dir / "sheet.json") << R"({"lesson": "grid-2d-dda", "student": "ada",
-               "answers": {"tdelta-y": "1,3333", "tmax-x-after-step": 2.6, "next-cell": [3, 1]}})";
+               "answers": {"tdelta-y": "2,5", "tmax-x-after-step": 2, "next-cell": [2, 2]}})";
     const CliRun graded = run("lesson check grid-2d-dda --answers sheet.json --json");
     ASSERT_EQ(graded.code, 0) << graded.err;
     const auto j = nlohmann::json::parse(graded.out);
     EXPECT_EQ(j["score"], 1);
-    EXPECT_EQ(j["out_of"], 3);
+    EXPECT_EQ(j["out_of"], 9);
     EXPECT_EQ(j["exercises"][0]["correct"], true);
-    EXPECT_EQ(j["exercises"][1]["correct"], false);
-    EXPECT_EQ(j["exercises"][1]["expected"], "1.6");
-    EXPECT_EQ(j["exercises"][2]["expected"], "2,2");
-    EXPECT_NE(j["exercises"][2]["feedback"].get<std::string>().find("steps in Y"),
+    EXPECT_EQ(j["exercises"][2]["correct"], false);
+    EXPECT_EQ(j["exercises"][2]["expected"], "3.25");
+    EXPECT_EQ(j["exercises"][3]["expected"], "3,1");
+    EXPECT_NE(j["exercises"][3]["feedback"].get<std::string>().find("steps in X"),
               std::string::npos);
 }
 

@@ -31,7 +31,8 @@ constexpr const char* kMinimal = R"({"objects": [{"type": "sphere", "radius": 1}
 
 TEST(SceneLoader, EveryBuiltinSceneLoads) {
     const auto names = builtinSceneNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"cornell", "default", "stadium", "whitted"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"cornell", "default", "lecture-dda3d", "stadium",
+                                               "whitted"}));
     for (const auto& name : names) {
         const Scene s = loadBuiltinScene(name);
         EXPECT_EQ(s.name, name);
