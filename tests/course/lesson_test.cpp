@@ -371,10 +371,15 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
     EXPECT_EQ(rec.attempts, 3);
     EXPECT_EQ(rec.answer, "2,2");
     const std::string report = progressReport(back, builtinLessons(), Language::En);
-    EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | 3 | 1 | 1 | 3 |"),
+    // Each row: the lesson's exercises, then done, right, attempts from p.
+    const auto exercises = [](const char* id) { return std::to_string(loadLesson(id).exercises.size()); };
+    EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | " + exercises("6") +
+                          " | 1 | 1 | 3 |"),
               std::string::npos)
         << report;
-    EXPECT_NE(report.find("| 8. Mailboxing | 2 | 1 | 0 | 1 |"), std::string::npos) << report;
+    EXPECT_NE(report.find("| 8. Mailboxing | " + exercises("8") + " | 1 | 0 | 1 |"),
+              std::string::npos)
+        << report;
     try {
         parseProgress("{\"format\": \"raystep-progress\",\n \"lessons\": {\"a\": {\"step\": -1}}}",
                       "p.json");
@@ -386,7 +391,7 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
 }
 
 // One cell holds every primitive: each ray of the fan (all start inside the grid) walks that one
-// cell and tests all 11 primitives; 8 x 8 cells test fewer and walk more.
+// cell and tests all 13 primitives (5 circles, 8 segments); 8 x 8 cells test fewer and walk more.
 TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
     const auto scene = loadAnyScene("lecture-grid");
     GridSweepSpec spec;
@@ -402,7 +407,7 @@ TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_EQ(last, 1.0);
     EXPECT_EQ(rows[0].cells, 1u);
-    EXPECT_EQ(rows[0].testsPerRay, 11.0);
+    EXPECT_EQ(rows[0].testsPerRay, 13.0);
     EXPECT_EQ(rows[0].cellsPerRay, 1.0);
     EXPECT_EQ(rows[1].cells, 64u);
     EXPECT_LT(rows[1].testsPerRay, rows[0].testsPerRay);
