@@ -125,7 +125,7 @@ int check(const Lesson& l, const std::string& answersPath, Language lang, bool j
         std::printf("  %-16s %-14s", i.exercise.c_str(), mark);
         // The answer is the student's text: escaped, so it cannot forge a line of the report.
         if (i.answered)
-            std::printf(" %s: %s", it ? "data" : "given", printable(i.given, 200).c_str());
+            std::printf(" %s: %s", it ? "risposta" : "given", printable(i.given, 200).c_str());
         std::printf("\n      %s\n", printable(i.feedback, 2000).c_str());
     }
     return 0;
