@@ -847,7 +847,8 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 v.slip = sequenceSlip(c, answer, ref, lang);
                 break;
             case ExerciseKind::Choice: {
-                const auto& chosen = ex.choices.at(static_cast<std::size_t>(given));
+                if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;
+                const auto& chosen = ex.choices[static_cast<std::size_t>(given)];
                 v.slip = trf(
                     lang, "%1) %2: %3",
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});

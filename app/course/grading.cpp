@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace raystep {
@@ -254,6 +255,106 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
         g.items.push_back(std::move(item));
     }
     return g;
+}
+
+ClassTable classTable(const Lesson& lesson, const EventLog& log,
+                      const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
+                      const std::vector<GridSweepRow>* sweep) {
+    ClassTable table;
+    table.sheets = static_cast<int>(sheets.size());
+    // Per exercise: each wrong answer as it reads (its canonical form), its first spelling, count.
+    struct Wrong {
+        std::string firstSpelling;
+        int count = 0;
+        std::size_t firstSeen = 0;
+    };
+    std::vector<std::map<std::string, Wrong>> wrongs(lesson.exercises.size());
+    for (const Exercise& ex : lesson.exercises) {
+        table.rows.emplace_back();
+        table.rows.back().exercise = ex.id;
+    }
+    std::size_t seen = 0;
+    for (const auto& [file, sheet] : sheets) {
+        const Grade g = gradeAnswers(lesson, log, sheet, Language::En, file, sweep);
+        for (std::size_t i = 0; i < g.items.size(); ++i) {
+            const Grade::Item& item = g.items[i];
+            ClassTable::Row& row = table.rows[i];
+            if (!item.answered) {
+                ++row.notAnswered;
+            } else if (item.correct) {
+                ++row.right;
+            } else {
+                ++row.wrong;
+                const auto parsed = parseAnswer(lesson.exercises[i], item.given, nullptr);
+                const std::string key = parsed ? formatAnswer(lesson.exercises[i], *parsed)
+                                               : "\x01" + item.given;  // unreadable: as typed
+                Wrong& w = wrongs[i][key];
+                if (w.count++ == 0) {
+                    w.firstSpelling = item.given;
+                    w.firstSeen = seen++;
+                }
+            }
+        }
+    }
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+        const Wrong* best = nullptr;
+        for (const auto& [key, w] : wrongs[i])
+            if (!best || w.count > best->count ||
+                (w.count == best->count && w.firstSeen < best->firstSeen))
+                best = &w;
+        if (best) {
+            table.rows[i].commonWrong = best->firstSpelling;
+            table.rows[i].commonWrongCount = best->count;
+        }
+    }
+    return table;
+}
+
+namespace {
+/// A student's answer inside a Markdown table cell: one line, no cell break.
+std::string markdownCell(const std::string& text) {
+    std::string out;
+    for (const char c : printable(text, 80)) {
+        if (c == '|') out += '\\';
+        out += c;
+    }
+    return out;
+}
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    return out + "\"";
+}
+}  // namespace
+
+std::string classTableMarkdown(const Lesson& lesson, const ClassTable& table, Language lang) {
+    std::string out =
+        trf(lang, "Lesson %1. %2: %3 answer sheets",
+            {std::to_string(lesson.number), lesson.title.in(lang), std::to_string(table.sheets)}) +
+        "\n\n| " + tr(lang, "exercise") + " | " + tr(lang, "right answers") + " | " +
+        tr(lang, "wrong answers") + " | " + tr(lang, "not answered") + " | " +
+        tr(lang, "most common wrong answer") + " | " + tr(lang, "how many") +
+        " |\n|---|---:|---:|---:|---|---:|\n";
+    for (const ClassTable::Row& r : table.rows)
+        out += "| " + r.exercise + " | " + std::to_string(r.right) + " | " +
+               std::to_string(r.wrong) + " | " + std::to_string(r.notAnswered) + " | " +
+               (r.commonWrongCount ? markdownCell(r.commonWrong) : "") + " | " +
+               (r.commonWrongCount ? std::to_string(r.commonWrongCount) : "") + " |\n";
+    return out;
+}
+
+std::string classTableCsv(const ClassTable& table) {
+    std::string out = "exercise,right,wrong,not_answered,most_common_wrong,how_many\n";
+    for (const ClassTable::Row& r : table.rows)
+        out += csvField(r.exercise) + "," + std::to_string(r.right) + "," +
+               std::to_string(r.wrong) + "," + std::to_string(r.notAnswered) + "," +
+               (r.commonWrongCount ? csvField(r.commonWrong) : "") + "," +
+               (r.commonWrongCount ? std::to_string(r.commonWrongCount) : "") + "\n";
+    return out;
 }
 
 }  // namespace raystep

@@ -62,4 +62,26 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
                    Language lang, const std::string& sheetFile,
                    const std::vector<GridSweepRow>* sweep = nullptr);
 
+/// A class's answers to one lesson, per exercise (`raystep-cli lesson check --answers FOLDER`):
+/// how many were right, wrong (an unreadable answer is wrong) or not answered, and the most common
+/// wrong answer (answers that read the same, "1,5" and "1.5", count as one) with how many gave it.
+struct ClassTable {
+    struct Row {
+        std::string exercise;
+        int right = 0, wrong = 0, notAnswered = 0;
+        std::string commonWrong;  // as the first student who gave it wrote it
+        int commonWrongCount = 0;
+    };
+    std::vector<Row> rows;
+    int sheets = 0;
+};
+/// Grades every sheet (`sheets`: file name and sheet) against the lesson; throws the first
+/// sheet's LessonError (naming its file, line and key).
+ClassTable classTable(const Lesson& lesson, const EventLog& log,
+                      const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
+                      const std::vector<GridSweepRow>* sweep = nullptr);
+/// The table as Markdown (a heading line, then the table) or as CSV (RFC 4180 quoting).
+std::string classTableMarkdown(const Lesson& lesson, const ClassTable& table, Language lang);
+std::string classTableCsv(const ClassTable& table);
+
 }  // namespace raystep
