@@ -279,22 +279,24 @@ TEST_F(Cli, TraceRecordsAPixelsRayTree) {
 }
 
 TEST_F(Cli, TwoDimensionalLectureScenes) {
-    // The slides' DDA example: cells (0,0) (1,0) (1,1) (2,1) ..., and the nearest hit found in
-    // cell (3,3) after a farther hit in cell (3,2): t = 2.204 / 0.63 on the short segment.
+    // The slides' DDA example: cells (0,0) (1,0) (1,1) (2,1) (3,1) ..., and the nearest hit found
+    // in cell (4,2) after a farther hit in cell (3,2): by hand, the small circle (4.3, 2.3) r 0.25
+    // at t = (3.88 - sqrt(0.0484)) / 0.8 = 4.575.
     const CliRun r = run("trace lecture-grid --accel grid -o g.json");
     ASSERT_EQ(r.code, 0) << r.err;
     const auto t = nlohmann::json::parse(slurp(dir / "g.json"));
     std::vector<std::vector<int>> cells;
     for (const auto& e : t["events"])
         if (e["type"] == "dda_cell") cells.push_back({e["cell"][0], e["cell"][1]});
-    ASSERT_GE(cells.size(), 4u);
+    ASSERT_GE(cells.size(), 5u);
     EXPECT_EQ(cells[0], (std::vector<int>{0, 0}));
     EXPECT_EQ(cells[1], (std::vector<int>{1, 0}));
     EXPECT_EQ(cells[2], (std::vector<int>{1, 1}));
     EXPECT_EQ(cells[3], (std::vector<int>{2, 1}));
-    EXPECT_EQ(cells.back(), (std::vector<int>{3, 3}));
+    EXPECT_EQ(cells[4], (std::vector<int>{3, 1}));
+    EXPECT_EQ(cells.back(), (std::vector<int>{4, 2}));
     EXPECT_EQ(t["events"].back()["type"], "ray_hit");
-    EXPECT_NEAR(t["events"].back()["t"].get<double>(), 2.204 / 0.63, 1e-12);
+    EXPECT_NEAR(t["events"].back()["t"].get<double>(), 4.575, 1e-12);
     const CliRun b = run("build lecture-kdtree --split sah --json");
     ASSERT_EQ(b.code, 0) << b.err;
     EXPECT_EQ(nlohmann::json::parse(b.out)["dimensions"], 2);
@@ -698,19 +700,24 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
     write("key.json", key.out);
     const CliRun full = run("lesson check 6 --answers key.json");
     ASSERT_EQ(full.code, 0) << full.err;
-    EXPECT_NE(full.out.find(": 3 / 3"), std::string::npos) << full.out;
+    // Every exercise of the lesson has an answer in the key.
+    const std::size_t exercises = nlohmann::json::parse(key.out)["answers"].size();
+    const std::string all = std::to_string(exercises);
+    EXPECT_NE(full.out.find(": " + all + " / " + all), std::string::npos) << full.out;
+    // By hand (o = (0.4, 0.4), d = (0.8, 0.4), cells of 1): tDeltaY = 1 / 0.4 = 2.5; in (2, 1)
+    // tMaxX = (3 - 0.4) / 0.8 = 3.25 < tMaxY = (2 - 0.4) / 0.4 = 4, so the next cell is (3, 1).
     std::ofstream(dir / "sheet.json") << R"({"lesson": "grid-2d-dda", "student": "ada",
-               "answers": {"tdelta-y": "1,3333", "tmax-x-after-step": 2.6, "next-cell": [3, 1]}})";
+               "answers": {"tdelta-y": "2,5", "tmax-x-after-step": 2, "next-cell": [2, 2]}})";
     const CliRun graded = run("lesson check grid-2d-dda --answers sheet.json --json");
     ASSERT_EQ(graded.code, 0) << graded.err;
     const auto j = nlohmann::json::parse(graded.out);
     EXPECT_EQ(j["score"], 1);
-    EXPECT_EQ(j["out_of"], 3);
+    EXPECT_EQ(j["out_of"], exercises);
     EXPECT_EQ(j["exercises"][0]["correct"], true);
-    EXPECT_EQ(j["exercises"][1]["correct"], false);
-    EXPECT_EQ(j["exercises"][1]["expected"], "1.6");
-    EXPECT_EQ(j["exercises"][2]["expected"], "2,2");
-    EXPECT_NE(j["exercises"][2]["feedback"].get<std::string>().find("steps in Y"),
+    EXPECT_EQ(j["exercises"][2]["correct"], false);
+    EXPECT_EQ(j["exercises"][2]["expected"], "3.25");
+    EXPECT_EQ(j["exercises"][3]["expected"], "3,1");
+    EXPECT_NE(j["exercises"][3]["feedback"].get<std::string>().find("steps in X"),
               std::string::npos);
 }
 
@@ -929,7 +936,8 @@ TEST_F(CliReaders, AnswersFileThatIsAFolderOrMissing) {
 }
 
 TEST_F(CliReaders, ALessonNumberInTheAnswersFile) {
-    write("a.json", "{\"lesson\": 6, \"answers\": {\"next-cell\": [2, 2]}}");
+    // In (2, 1) tMaxX = 3.25 < tMaxY = 4 (lesson 6 by hand): the next cell is (3, 1).
+    write("a.json", "{\"lesson\": 6, \"answers\": {\"next-cell\": [3, 1]}}");
     const CliRun r = run("lesson check 6 --answers a.json --json");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["score"], 1);

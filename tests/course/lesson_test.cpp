@@ -132,33 +132,37 @@ TEST(Lessons, EveryStepReplaysAndEveryExerciseChecksItsOwnReference) {
     }
 }
 
-// The slides' DDA example by hand: o = (0.4, 0.4), d = (1, 0.75), cells of 1 x 1.
+// The slides' DDA example by hand: o = (0.4, 0.4), d = (0.8, 0.4), cells of 1 x 1.
 TEST(Lessons, TheGridLessonsReferencesEqualAHandComputation) {
     const Lesson l = loadLesson("grid-2d-dda");
     const LessonRun run = runLesson(l);
     const auto ref = [&](const char* id) {
         return referenceAnswer(*l.exercise(id), *run.log, l.file);
     };
-    EXPECT_NEAR(ref("tdelta-y").numbers[0], 1.0 / 0.75, 1e-15);
-    // After the step in X: tMaxX = 0.6 + tDeltaX = 1.6.
-    EXPECT_NEAR(ref("tmax-x-after-step").numbers[0], 1.6, 1e-15);
-    // In (2, 1): tMaxX = (3 - 0.4) / 1 = 2.6 > tMaxY = (2 - 0.4) / 0.75 = 2.133: a step in Y.
-    EXPECT_EQ(ref("next-cell").numbers, (std::vector<double>{2, 2}));
+    EXPECT_NEAR(ref("tdelta-y").numbers[0], 1.0 / 0.4, 1e-15);
+    // In (0, 0): tMaxY = (1 - 0.4) / 0.4 = 1.5.
+    EXPECT_NEAR(ref("tmax-y-start").numbers[0], 1.5, 1e-15);
+    // In (2, 1), after X, Y, X: tMaxX = (3 - 0.4) / 0.8 = 3.25.
+    EXPECT_NEAR(ref("tmax-x-after-step").numbers[0], 3.25, 1e-15);
+    // In (2, 1): tMaxX = 3.25 < tMaxY = (2 - 0.4) / 0.4 = 4: a step in X, as on the slides.
+    EXPECT_EQ(ref("next-cell").numbers, (std::vector<double>{3, 1}));
+    // The small circle (4.3, 2.3), r 0.25: (3.88 - sqrt(0.0484)) / 0.8 = 4.575 (see replay_test).
+    EXPECT_NEAR(ref("nearest-hit").numbers[0], 4.575, 1e-12);
     std::string why;
-    const auto near = parseAnswer(*l.exercise("tdelta-y"), "1,333", &why);  // Italian comma
+    const auto near = parseAnswer(*l.exercise("tdelta-y"), "2,49", &why);  // Italian comma
     ASSERT_TRUE(near) << why;
     EXPECT_TRUE(
         checkAnswer(*l.exercise("tdelta-y"), *run.log, *near, Language::It, l.file).correct);
     EXPECT_FALSE(
-        checkAnswer(*l.exercise("tdelta-y"), *run.log, Answer{{1.3}, {}}, Language::En, l.file)
+        checkAnswer(*l.exercise("tdelta-y"), *run.log, Answer{{1.25}, {}}, Language::En, l.file)
             .correct);
 }
 
-// The mailboxing ray (1, 3.45) + t (1, 0.03) stays in row 3, cells x = 1..5. The wall
-// y = 3.7, x in [1.2, 5.8] is listed in those five cells: tested once, skipped four times. The
-// circle (4.2, 2.9) r 0.3 reaches row 3 in cells 3 and 4: tested once, skipped once. The short
+// The mailboxing ray (1, 3.6) + t (1, 0.02) stays in row 3, cells x = 1..5. The wall
+// y = 3.8, x in [1.2, 5.8] is listed in those five cells: tested once, skipped four times. The
+// circle (4.1, 3.25) r 0.2 lies in row 3, cells 3 and 4: tested once, skipped once. The short
 // segment (3.7, 3.5)-(3.9, 3.02) lies in cell (3, 3) only. So 5 skips and 3 tests, all misses
-// (the ray passes 0.65 from the circle's centre and above the segment's top).
+// (the ray passes 0.41 from the circle's centre and above the segment's top).
 TEST(Lessons, TheMailboxLessonSavesFiveTestsByHand) {
     const Lesson l = loadLesson("mailboxing");
     const LessonRun run = runLesson(l);
@@ -166,13 +170,13 @@ TEST(Lessons, TheMailboxLessonSavesFiveTestsByHand) {
     EXPECT_EQ(referenceAnswer(*l.exercise("tests"), *run.log, l.file).numbers[0], 3.0);
 }
 
-// The ray (0.5, 0.5) + t (1, 1) meets x = 1 and y = 1 both at t = 0.5: the DDA steps diagonally.
+// The ray (0.4, 0.4) + t (1, 1) meets x = 1 and y = 1 both at t = 0.6: the DDA steps diagonally.
 TEST(Lessons, TheRobustnessLessonsTieGoesThroughTheCorner) {
     const Lesson l = loadLesson("robustness");
     const LessonRun run = runLesson(l);
     EXPECT_EQ(referenceAnswer(*l.exercise("tie-cell"), *run.log, l.file).numbers,
               (std::vector<double>{1, 1}));
-    EXPECT_EQ(referenceAnswer(*l.exercise("tie-tmax"), *run.log, l.file).numbers[0], 0.5);
+    EXPECT_NEAR(referenceAnswer(*l.exercise("tie-tmax"), *run.log, l.file).numbers[0], 0.6, 1e-15);
     const Verdict v =
         checkAnswer(*l.exercise("tie-cell"), *run.log, Answer{{1, 0}, {}}, Language::En, l.file);
     EXPECT_FALSE(v.correct);
@@ -299,7 +303,7 @@ TEST(Lessons, TheRobustnessLessonSetsTheSlidesLoopBesideTheExactWalk) {
     for (const LessonStep& s : l.steps)
         if (s.textbookDda) noted = &s;
     ASSERT_NE(noted, nullptr);
-    // By hand: (0.5, 0.5) + t (1, 1) over unit cells meets a vertex at every cell. The slides'
+    // By hand: (0.4, 0.4) + t (1, 1) over unit cells meets a vertex at every cell. The slides'
     // loop finds tMaxX < tMaxY false at each tie and steps Y alone, then X; the exact walk steps
     // both axes at once.
     const std::string& en = noted->note.en;
@@ -328,17 +332,17 @@ TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
     const Lesson l = loadLesson("6");
     const LessonRun run = runLesson(l);
     const AnswerSheet sheet = loadAnswerSheet(
-        "{\"lesson\": \"grid-2d-dda\",\n \"answers\": {\n  \"tdelta-y\": 1.3333,\n"
-        "  \"next-cell\": [3, 1]\n }}",
+        "{\"lesson\": \"grid-2d-dda\",\n \"answers\": {\n  \"tdelta-y\": 2.5,\n"
+        "  \"next-cell\": [2, 2]\n }}",
         "answers.json");
     const Grade g = gradeAnswers(l, *run.log, sheet, Language::En, "answers.json");
     EXPECT_EQ(g.score, 1);
-    ASSERT_EQ(g.items.size(), 3u);
+    ASSERT_EQ(g.items.size(), l.exercises.size());
     EXPECT_TRUE(g.items[0].correct);
     EXPECT_FALSE(g.items[1].answered);
-    EXPECT_TRUE(g.items[2].answered);
-    EXPECT_FALSE(g.items[2].correct);
-    EXPECT_EQ(g.items[2].expected, "2,2");
+    EXPECT_TRUE(g.items[3].answered);  // next-cell: (3, 1) by hand, see above
+    EXPECT_FALSE(g.items[3].correct);
+    EXPECT_EQ(g.items[3].expected, "3,1");
     try {
         gradeAnswers(l, *run.log,
                      loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"x\": 1}}", "a.json"),
@@ -401,10 +405,15 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
     EXPECT_EQ(rec.attempts, 3);
     EXPECT_EQ(rec.answer, "2,2");
     const std::string report = progressReport(back, builtinLessons(), Language::En);
-    EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | 3 | 1 | 1 | 3 |"),
+    // Each row: the lesson's exercises, then done, right, attempts from p.
+    const auto exercises = [](const char* id) { return std::to_string(loadLesson(id).exercises.size()); };
+    EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | " + exercises("6") +
+                          " | 1 | 1 | 3 |"),
               std::string::npos)
         << report;
-    EXPECT_NE(report.find("| 8. Mailboxing | 2 | 1 | 0 | 1 |"), std::string::npos) << report;
+    EXPECT_NE(report.find("| 8. Mailboxing | " + exercises("8") + " | 1 | 0 | 1 |"),
+              std::string::npos)
+        << report;
     try {
         parseProgress("{\"format\": \"raystep-progress\",\n \"lessons\": {\"a\": {\"step\": -1}}}",
                       "p.json");
@@ -416,7 +425,7 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
 }
 
 // One cell holds every primitive: each ray of the fan (all start inside the grid) walks that one
-// cell and tests all 11 primitives; 8 x 8 cells test fewer and walk more.
+// cell and tests all 13 primitives (5 circles, 8 segments); 8 x 8 cells test fewer and walk more.
 TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
     const auto scene = loadAnyScene("lecture-grid");
     GridSweepSpec spec;
@@ -432,7 +441,7 @@ TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_EQ(last, 1.0);
     EXPECT_EQ(rows[0].cells, 1u);
-    EXPECT_EQ(rows[0].testsPerRay, 11.0);
+    EXPECT_EQ(rows[0].testsPerRay, 13.0);
     EXPECT_EQ(rows[0].cellsPerRay, 1.0);
     EXPECT_EQ(rows[1].cells, 64u);
     EXPECT_LT(rows[1].testsPerRay, rows[0].testsPerRay);
