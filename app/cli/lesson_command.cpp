@@ -55,6 +55,15 @@ int list() {
     return 0;
 }
 
+/// Errata as a quoted block under the text they belong to.
+void printErrata(const std::vector<Erratum>& errata, Language lang) {
+    for (const Erratum& e : errata)
+        std::printf("\n> **%s**\n>\n> %s %s\n>\n> %s %s\n>\n> %s\n", erratumHeading(lang).c_str(),
+                    tr(lang, "Slide:").c_str(), e.slide.in(lang).c_str(),
+                    tr(lang, "Correct:").c_str(), e.correct.in(lang).c_str(),
+                    e.why.in(lang).c_str());
+}
+
 int show(Lesson l, Language lang) {
     // Steps with a computed note (the slides' DDA loop beside the exact walk) need the lesson run.
     if (std::any_of(l.steps.begin(), l.steps.end(),
@@ -63,11 +72,13 @@ int show(Lesson l, Language lang) {
         addStepNotes(l, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
     }
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
+    printErrata(l.errata, lang);
     for (std::size_t i = 0; i < l.steps.size(); ++i) {
         std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
                     describePosition(l.steps[i].at, lang).c_str(),
                     l.steps[i].text.in(lang).c_str());
         if (!l.steps[i].note.en.empty()) std::printf("\n> %s\n", l.steps[i].note.in(lang).c_str());
+        printErrata(l.steps[i].errata, lang);
     }
     for (const Exercise& ex : l.exercises)
         std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",

@@ -7,6 +7,7 @@
 
 #include "raystep/base/json_reader.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace raystep {
@@ -19,10 +20,22 @@ void validateLesson(const Lesson& lesson) {
     const LessonRun run = runLesson(lesson);
     if (run.log->events().empty())
         throw LessonError(lesson.file, 0, "trace", "the trace recorded no events");
-    for (const LessonStep& s : lesson.steps)
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& s = lesson.steps[i];
+        const std::string key = "steps[" + std::to_string(i) + "]";
         if (!resolvePosition(s.at, *run.log))
-            throw LessonError(lesson.file, s.line, "steps",
+            throw LessonError(lesson.file, s.line, key,
                               "its position (" + describePosition(s.at) + ") is not in the trace");
+        // A filter that shows nothing leaves the student an empty event list.
+        const auto& events = run.log->events();
+        if (!s.filter.empty() && std::none_of(events.begin(), events.end(), [&](const Event& e) {
+                return eventMatchesFilter(e, run.log->dims(), s.filter);
+            }))
+            throw LessonError(lesson.file, s.line, key + ".filter",
+                              "the filter '" + printable(s.filter) +
+                                  "' matches no event of the trace (filter by an event kind: " +
+                                  "dda_cell, primitive_test, ray_begin, ...)");
+    }
     for (const Exercise& ex : lesson.exercises) referenceAnswer(ex, *run.log, lesson.file);
     Lesson noted = lesson;  // the steps' notes can be made from this lesson's run
     addStepNotes(noted, *run.scene, run.accel2D ? &*run.accel2D : nullptr);

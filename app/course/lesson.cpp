@@ -3,6 +3,7 @@
 #include "course/lesson.h"
 
 #include "course/embedded_lessons.h"
+#include "course/palette.h"
 
 #include "raystep/base/json_reader.h"
 #include "raystep/base/names.h"
@@ -58,27 +59,88 @@ std::string eventKindList() {
 
 // ---- reading lesson files ----
 
-LocalText readText(const Reader& r, const json& j, const std::string& path) {
-    // A string, or an array of lines (easier to write and review than one long string).
-    const auto one = [&](const json& v, const std::string& p) {
-        if (v.is_string()) return v.get<std::string>();
-        if (!v.is_array())
-            r.fail(p, "expected a string or an array of lines, got " + Reader::typeName(v));
-        std::string s;
+/// One language's text: a string, or an array of lines (easier to write and review than one long
+/// string), with its {colour:NAME}s replaced by the palette's name in `lang`.
+std::string readOneText(const Reader& r, const json& v, const std::string& p, Language lang) {
+    std::string s;
+    if (v.is_string()) {
+        s = v.get<std::string>();
+    } else if (v.is_array()) {
         for (std::size_t i = 0; i < v.size(); ++i) {
             if (i) s += '\n';
             s += r.string(v[i], JsonLineMap::element(p, i));
         }
-        return s;
-    };
+    } else {
+        r.fail(p, "expected a string or an array of lines, got " + Reader::typeName(v));
+    }
+    std::string unknown;
+    auto expanded = expandColourNames(s, lang, &unknown);
+    if (!expanded) {
+        std::string keys;
+        for (const PaletteColour& c : paletteColours())
+            keys += (keys.empty() ? "" : ", ") + std::string(c.key);
+        r.fail(p, "unknown colour {colour:" + printable(unknown, 40) + "} (the palette has " +
+                      keys + ")");
+    }
+    return std::move(*expanded);
+}
+
+/// TEXT: {"en": ..., "it": ...}; with `plainAllowed`, also one string for both languages (a
+/// slide's line, quoted as written).
+LocalText readText(const Reader& r, const json& j, const std::string& path,
+                   bool plainAllowed = false) {
+    if (plainAllowed && (j.is_string() || j.is_array())) {
+        LocalText t;
+        t.en = readOneText(r, j, path, Language::En);
+        t.it = readOneText(r, j, path, Language::It);
+        if (t.en.empty()) r.fail(path, "must not be empty");
+        return t;
+    }
     r.requireObject(j, path);
     r.checkKeys(j, path, {"en", "it"});
     if (!j.contains("en")) r.fail(path, "the English text \"en\" is required");
     LocalText t;
-    t.en = one(j["en"], JsonLineMap::child(path, "en"));
-    ifPresent(j, path, "it", [&](const json& v, const std::string& p) { t.it = one(v, p); });
+    t.en = readOneText(r, j["en"], JsonLineMap::child(path, "en"), Language::En);
+    ifPresent(j, path, "it", [&](const json& v, const std::string& p) {
+        t.it = readOneText(r, v, p, Language::It);
+    });
     if (t.en.empty()) r.fail(JsonLineMap::child(path, "en"), "must not be empty");
     return t;
+}
+
+/// "hint": one TEXT, or an array of TEXTs shown one at a time.
+std::vector<LocalText> readHints(const Reader& r, const json& j, const std::string& path) {
+    std::vector<LocalText> hints;
+    if (j.is_array()) {
+        if (j.empty()) r.fail(path, "expected a hint {\"en\": ..., \"it\": ...} or a list of them");
+        for (std::size_t i = 0; i < j.size(); ++i)
+            hints.push_back(readText(r, j[i], JsonLineMap::element(path, i)));
+    } else {
+        hints.push_back(readText(r, j, path));
+    }
+    return hints;
+}
+
+/// "errata": [{"slide": TEXT, "correct": TEXT, "why": TEXT}, ...].
+std::vector<Erratum> readErrata(const Reader& r, const json& j, const std::string& path) {
+    if (!j.is_array())
+        r.fail(path, "expected a list of {\"slide\": ..., \"correct\": ..., \"why\": ...}");
+    std::vector<Erratum> errata;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const std::string p = JsonLineMap::element(path, i);
+        r.requireObject(j[i], p);
+        r.checkKeys(j[i], p, {"slide", "correct", "why"});
+        for (const char* key : {"slide", "correct", "why"})
+            if (!j[i].contains(key)) r.fail(p, std::string("\"") + key + "\" is required");
+        Erratum e;
+        e.line = r.lines().lineOf(p);
+        // The slide is quoted as written: its Italian original may stand for both languages.
+        e.slide = readText(r, j[i]["slide"], JsonLineMap::child(p, "slide"), true);
+        e.correct = readText(r, j[i]["correct"], JsonLineMap::child(p, "correct"), true);
+        e.why = readText(r, j[i]["why"], JsonLineMap::child(p, "why"));
+        errata.push_back(std::move(e));
+    }
+    return errata;
 }
 
 ReplayPosition readPosition(const Reader& r, const json& j, const std::string& path) {
@@ -239,7 +301,7 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
     ex.kind = *kind;
     ex.prompt = readText(r, j["prompt"], JsonLineMap::child(path, "prompt"));
     ifPresent(j, path, "hint",
-              [&](const json& v, const std::string& p) { ex.hint = readText(r, v, p); });
+              [&](const json& v, const std::string& p) { ex.hints = readHints(r, v, p); });
     ifPresent(j, path, "at",
               [&](const json& v, const std::string& p) { ex.at = readPosition(r, v, p); });
     ifPresent(j, path, "tolerance", [&](const json& v, const std::string& p) {
@@ -301,7 +363,7 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
 
 LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
     r.requireObject(j, path);
-    r.checkKeys(j, path, {"text", "at", "filter", "camera", "textbook_dda"});
+    r.checkKeys(j, path, {"text", "at", "filter", "camera", "textbook_dda", "errata"});
     LessonStep s;
     s.line = r.lines().lineOf(path);
     if (!j.contains("text")) r.fail(path, "a step needs its \"text\"");
@@ -310,6 +372,8 @@ LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
               [&](const json& v, const std::string& p) { s.at = readPosition(r, v, p); });
     ifPresent(j, path, "filter",
               [&](const json& v, const std::string& p) { s.filter = r.string(v, p); });
+    ifPresent(j, path, "errata",
+              [&](const json& v, const std::string& p) { s.errata = readErrata(r, v, p); });
     ifPresent(j, path, "textbook_dda", [&](const json& v, const std::string& p) {
         if (!v.is_boolean()) r.fail(p, "expected true or false");
         s.textbookDda = v.get<bool>();
@@ -336,10 +400,8 @@ constexpr std::string_view kLessonFolder = "lessons/";
 
 }  // namespace
 
-std::optional<Language> parseLanguage(std::string_view code) {
-    if (code == "en") return Language::En;
-    if (code == "it") return Language::It;
-    return std::nullopt;
+std::string erratumHeading(Language lang) {
+    return tr(lang, "Note on the slides");
 }
 
 std::string_view exerciseKindName(ExerciseKind k) {
@@ -369,7 +431,7 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     r.requireObject(root, "");
     r.checkKeys(root, "",
                 {"format", "version", "id", "number", "title", "text", "scene", "setup", "views",
-                 "trace", "sweep", "steps", "exercises"});
+                 "trace", "sweep", "steps", "exercises", "errata"});
     if (root.value("format", json()) != "raystep-lesson")
         r.fail("format", "a lesson file starts with \"format\": \"raystep-lesson\"");
     if (!root.contains("version")) r.fail("", "\"version\" is required (1)");
@@ -385,6 +447,8 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     l.number = r.integer(root["number"], "number", 1, 999);
     l.title = readText(r, root["title"], "title");
     l.text = readText(r, root["text"], "text");
+    ifPresent(root, "", "errata",
+              [&](const json& v, const std::string& p) { l.errata = readErrata(r, v, p); });
     l.scene = r.string(root["scene"], "scene");
     if (l.scene.empty()) r.fail("scene", "must name a built-in scene or a scene file");
     ifPresent(root, "", "setup",

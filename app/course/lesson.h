@@ -8,6 +8,7 @@
 
 #include "raystep/accel/accel.h"
 #include "raystep/base/file_error.h"
+#include "raystep/base/i18n.h"
 #include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
@@ -19,14 +20,21 @@
 
 namespace raystep {
 
-enum class Language { En, It };
-std::optional<Language> parseLanguage(std::string_view code);  // "en", "it"
-
 /// A text in both languages (Italian falls back to English where a lesson leaves it out).
 struct LocalText {
     std::string en, it;
     const std::string& in(Language l) const { return l == Language::It && !it.empty() ? it : en; }
 };
+
+/// A slip in the slides, pointed out: the slide's line as written, the right one, and why. The
+/// app shows it as a marked box, "Note on the slides" (erratumHeading), under the lesson's or
+/// the step's text.
+struct Erratum {
+    LocalText slide, correct, why;
+    int line = 0;
+};
+/// "Note on the slides" in `lang`: the heading of an erratum's box.
+std::string erratumHeading(Language lang);
 
 /// A lesson, answers or progress file that cannot be used: file, line, key and why.
 class LessonError : public FileError {
@@ -61,6 +69,7 @@ struct LessonStep {
     // for the lesson's 2D ray; `note` holds that comparison once the lesson has run (addStepNotes).
     bool textbookDda = false;
     LocalText note;
+    std::vector<Erratum> errata;
     int line = 0;  // in the lesson file, for messages
 };
 
@@ -103,7 +112,9 @@ std::string_view quantityName(Quantity q);
 struct Exercise {
     std::string id;
     ExerciseKind kind = ExerciseKind::Value;
-    LocalText prompt, hint;
+    LocalText prompt;
+    // Revealed one at a time: a nudge, then the formula, then the worked first step.
+    std::vector<LocalText> hints;
     ReplayPosition at;
     Quantity quantity = Quantity::TMaxX;  // Value
     std::size_t countKind = 0;            // Count: variant index of the events counted
@@ -127,8 +138,9 @@ struct Lesson {
     std::optional<GridSweepSpec> sweep;
     std::vector<LessonStep> steps;
     std::vector<Exercise> exercises;
-    std::string file;      // where it was read from (messages)
-    bool builtin = false;  // embedded in raystep (its scene is a built-in name)
+    std::vector<Erratum> errata;  // the lesson's own, shown under its text
+    std::string file;             // where it was read from (messages)
+    bool builtin = false;         // embedded in raystep (its scene is a built-in name)
 
     const Exercise* exercise(std::string_view exerciseId) const;
 };

@@ -74,8 +74,11 @@ namespace {
 /// Cells as the lesson's text writes them, the first `shown` of them.
 std::string cellsText(const std::vector<IVecN<2>>& cells, std::size_t shown) {
     std::string s;
-    for (std::size_t k = 0; k < std::min(cells.size(), shown); ++k)
-        s += (k ? " " : "") + cellText({cells[k].x, cells[k].y, 0}, 2);
+    for (std::size_t k = 0; k < std::min(cells.size(), shown); ++k) {
+        // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on " " + string here.
+        if (k) s += ' ';
+        s += cellText({cells[k].x, cells[k].y, 0}, 2);
+    }
     return s + (cells.size() > shown ? " ..." : "");
 }
 
@@ -176,6 +179,23 @@ std::string describePosition(const ReplayPosition& at, Language lang) {
         }
     }
     return "?";
+}
+
+namespace {
+std::string lowerAscii(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return out;
+}
+}  // namespace
+
+bool eventMatchesFilter(const Event& e, int dims, std::string_view filter) {
+    if (filter.empty()) return true;
+    const std::string f = lowerAscii(filter);
+    // The event list filters case-insensitively (QSortFilterProxyModel), so does this.
+    return lowerAscii(kEventNames[e.index()]).find(f) != std::string::npos ||
+           lowerAscii(eventText(e, dims)).find(f) != std::string::npos;
 }
 
 }  // namespace raystep

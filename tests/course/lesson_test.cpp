@@ -32,8 +32,8 @@ TEST(Lessons, ThirteenInTheLecturesOrderEachInBothLanguages) {
         for (const LessonStep& s : l.steps) EXPECT_FALSE(s.text.it.empty());
         for (const Exercise& e : l.exercises) {
             EXPECT_FALSE(e.prompt.it.empty()) << e.id;
-            EXPECT_FALSE(e.hint.en.empty()) << e.id << ": every exercise has a hint";
-            EXPECT_FALSE(e.hint.it.empty()) << e.id;
+            ASSERT_FALSE(e.hints.empty()) << e.id << ": every exercise has a hint";
+            for (const LocalText& h : e.hints) EXPECT_FALSE(h.it.empty()) << e.id;
         }
         // By id, by number, the same lesson.
         EXPECT_EQ(loadLesson(l.id).number, l.number);
