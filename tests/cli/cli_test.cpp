@@ -714,6 +714,131 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
               std::string::npos);
 }
 
+// A class of four sheets for lesson 6 (tDeltaY = 1/0.75, tMaxX after the step = 1.6, next cell
+// (2, 2), by hand as in the course tests): per exercise, right, wrong, not answered and the most
+// common wrong answer; "-1,3333" and "-1.3333" read the same and count as one.
+TEST_F(Cli, LessonCheckOverAFolderGivesTheClassTable) {
+    fs::create_directories(dir / "class");
+    write("class/ada.json", R"({"lesson": "6", "answers": {"tdelta-y": "1.3333",
+        "tmax-x-after-step": "1.6", "next-cell": "2,2"}})");
+    write("class/bo.json", R"({"lesson": "6", "answers": {"tdelta-y": "-1,3333",
+        "next-cell": "3,1"}})");
+    write("class/cy.json", R"({"lesson": "grid-2d-dda", "answers": {"tdelta-y": "-1.3333",
+        "tmax-x-after-step": "0,6", "next-cell": [3, 1]}})");
+    write("class/di.json", R"({"lesson": 6, "answers": {"tdelta-y": "0.75",
+        "tmax-x-after-step": "1,6", "next-cell": "2|2"}})");
+    write("class/notes.txt", "not a sheet: only *.json files are read");
+    const CliRun md = run("lesson check 6 --answers class");
+    ASSERT_EQ(md.code, 0) << md.err;
+    EXPECT_NE(md.out.find(": 4 answer sheets"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| exercise | right | wrong | not answered | most common wrong answer | "
+                          "how many |"),
+              std::string::npos)
+        << md.out;
+    EXPECT_NE(md.out.find("| tdelta-y | 1 | 3 | 0 | -1,3333 | 2 |"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| tmax-x-after-step | 2 | 1 | 1 | 0,6 | 1 |"), std::string::npos)
+        << md.out;
+    EXPECT_NE(md.out.find("| next-cell | 1 | 3 | 0 | 3,1 | 2 |"), std::string::npos) << md.out;
+    const CliRun csv = run("lesson check 6 --answers class --format csv");
+    ASSERT_EQ(csv.code, 0) << csv.err;
+    EXPECT_EQ(csv.out,
+              "exercise,right,wrong,not_answered,most_common_wrong,how_many\n"
+              "tdelta-y,1,3,0,\"-1,3333\",2\n"
+              "tmax-x-after-step,2,1,1,\"0,6\",1\n"
+              "next-cell,1,3,0,\"3,1\",2\n");
+    const CliRun it = run("lesson check 6 --answers class --lang it");
+    ASSERT_EQ(it.code, 0) << it.err;
+    EXPECT_NE(it.out.find("| esercizio | giuste | sbagliate | senza risposta |"), std::string::npos)
+        << it.out;
+    // One sheet as a table, too.
+    const CliRun one = run("lesson check 6 --answers class/bo.json --format csv");
+    ASSERT_EQ(one.code, 0) << one.err;
+    EXPECT_NE(one.out.find("tmax-x-after-step,0,0,1,,\n"), std::string::npos) << one.out;
+}
+
+// A bad sheet anywhere in the folder: one line naming its file, line and key, exit 2, and no
+// table at all (nothing half written).
+TEST_F(Cli, LessonCheckOverAFolderStopsAtABadSheet) {
+    fs::create_directories(dir / "class");
+    write("class/a.json", R"({"lesson": "6", "answers": {"next-cell": "2,2"}})");
+    write("class/b.json", "{\"lesson\": \"6\",\n \"answers\": {\n \"next-cel\": [2, 2]}}");
+    write("class/c.json", R"({"lesson": "6", "answers": {"next-cell": "3,1"}})");
+    const CliRun r = run("lesson check 6 --answers class");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("class/b.json:3: key 'answers.next-cel': lesson grid-2d-dda has no "
+                         "exercise"),
+              std::string::npos)
+        << r.err;
+    write("class/b.json", "{\"lesson\": \"6\",\n \"answers\": {\"next-cell\": {}}}");
+    const CliRun parse = run("lesson check 6 --answers class --format csv");
+    EXPECT_EQ(parse.code, 2);
+    EXPECT_EQ(parse.out, "");
+    EXPECT_NE(parse.err.find("class/b.json:2: key 'answers.next-cell'"), std::string::npos)
+        << parse.err;
+    write("class/b.json", R"({"lesson": "7", "answers": {}})");
+    const CliRun other = run("lesson check 6 --answers class");
+    EXPECT_EQ(other.code, 2);
+    EXPECT_NE(other.err.find("class/b.json:1: key 'lesson'"), std::string::npos) << other.err;
+    const CliRun format = run("lesson check 6 --answers class/a.json --format html");
+    EXPECT_NE(format.code, 0);
+    EXPECT_EQ(format.out, "");
+}
+
+// A lesson file with errata and the new kinds: show prints the errata as a quoted block and the
+// options; key and check grade them. By hand: the sphere c = (0, 0, 0), R = 1 from o = (0, 0, 5)
+// along (0, 0, -1): A = 1, B = -10, C = 24, disc = 4, t = (10 - 2) / 2 = 4.
+TEST_F(Cli, ALessonWithErrataAndTheNewKinds) {
+    write("new.json", R"({
+        "format": "raystep-lesson", "version": 1, "id": "new", "number": 41,
+        "title": {"en": "New", "it": "Nuova"}, "text": {"en": "Text.", "it": "Testo."},
+        "errata": [{"slide": "C = ||dir - c||^2", "correct": "C = |o - c|^2 - R^2",
+                    "why": {"en": "The origin, not the direction.", "it": "L'origine."}}],
+        "scene": "lecture-grid", "setup": {"accel": "grid"}, "trace": {"ray": "example"},
+        "steps": [{"text": {"en": "The {colour:primary} ray.", "it": "Il raggio {colour:primary}."},
+                   "filter": "dda_cell"}],
+        "exercises": [
+          {"id": "disc", "type": "compute", "quantity": "discriminant",
+           "prompt": {"en": "o = (0, 0, 5), d = (0, 0, -1), c = (0, 0, 0), R = 1: the discriminant?",
+                      "it": "o = (0; 0; 5), d = (0; 0; -1), c = (0; 0; 0), R = 1: il discriminante?"},
+           "given": {"ray": {"o": [0, 0, 5], "d": [0, 0, -1]}, "sphere": {"c": [0, 0, 0], "r": 1}}},
+          {"id": "why", "type": "choice", "prompt": {"en": "Which?", "it": "Quale?"},
+           "choices": [{"text": {"en": "One", "it": "Uno"}, "why": {"en": "No.", "it": "No."}},
+                       {"text": {"en": "Two", "it": "Due"}, "why": {"en": "Yes.", "it": "Sì."}}],
+           "answer": 1}]})");
+    const CliRun v = run("lesson validate new.json");
+    ASSERT_EQ(v.code, 0) << v.err;
+    const CliRun show = run("lesson show new.json --lang it");
+    ASSERT_EQ(show.code, 0) << show.err;
+    EXPECT_NE(show.out.find("> **Nota sulle slide**"), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("> Slide: C = ||dir - c||^2"), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("> L'origine."), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("Il raggio rosso."), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("a) Uno\nb) Due"), std::string::npos) << show.out;
+    const CliRun key = run("lesson key new.json");
+    ASSERT_EQ(key.code, 0) << key.err;
+    const auto j = nlohmann::json::parse(key.out);
+    EXPECT_EQ(j["answers"]["disc"], "4");
+    EXPECT_EQ(j["answers"]["why"], "b");
+    write("sheet.json", R"({"lesson": "new", "answers": {"disc": "2", "why": "a"}})");
+    const CliRun graded = run("lesson check new.json --answers sheet.json --lang it");
+    ASSERT_EQ(graded.code, 0) << graded.err;
+    EXPECT_NE(graded.out.find("0 / 2"), std::string::npos) << graded.out;
+    EXPECT_NE(graded.out.find("Δ = B² − 4AC = (-10)² − 4 · 1 · 24 = 4"), std::string::npos)
+        << graded.out;
+    // The prompt must state the data: drop R = 1 from the Italian and validation names it.
+    std::string text = slurp(dir / "new.json");
+    text.replace(text.find("c = (0; 0; 0), R = 1"), 20, "c = (0; 0; 0)");
+    write("new.json", text);
+    const CliRun bad = run("lesson validate new.json");
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.err.find("key 'exercises[0].prompt.it': the prompt does not state the given "
+                           "number 1"),
+              std::string::npos)
+        << bad.err;
+}
+
 // A lecturer's own lesson beside its own scene file: the scene path is relative to the lesson.
 TEST_F(Cli, ALessonFileWithItsOwnScene) {
     fs::create_directories(dir / "course");
@@ -770,8 +895,9 @@ class CliReaders : public Cli {
 
 TEST_F(CliReaders, AnswersFileThatIsAFolderOrMissing) {
     fs::create_directories(dir / "answers");
+    // A folder is a class's sheets: one without any is named.
     expectOneLine("lesson check 6 --answers answers",
-                  "answers: cannot read the answers file: it is a folder");
+                  "answers: no answer sheets (*.json files) in the folder");
     expectOneLine("lesson check 6 --answers none.json",
                   "none.json: cannot read the answers file: no such file");
 }
