@@ -231,6 +231,9 @@ TEST(Lessons, TheVoxelSizeSweepIsCheapestAtEightCellsPerAxis) {
         rows.begin(), rows.end(),
         [&](const GridSweepRow& a, const GridSweepRow& b) { return cost(a) < cost(b); });
     EXPECT_EQ(best->resolution, 8);
+    EXPECT_EQ(referenceAnswer(*l.exercise("cheapest-resolution"), *runLesson(l).log, l.file, &rows)
+                  .numbers,
+              (std::vector<double>{8}));
 }
 
 // Lesson 10's midpoint tree by hand: the ray (0.2, 7.6) + t (1, -0.55) is in the root box
@@ -252,6 +255,12 @@ TEST(Lessons, TheHierarchiesLessonsTestTreeEntersFourNodesByHand) {
             entered.push_back(n->node);
         }
     EXPECT_EQ(entered, (std::vector<std::uint32_t>{0, 1, 2, 14}));
+    EXPECT_EQ(referenceAnswer(*l.exercise("nodes-in-order"), *run.log, l.file).numbers,
+              (std::vector<double>{0, 1, 2, 14}));
+    // Leaf 14's box [4.095, 7.69] x [4, 7.5]: the x slab [3.895, 7.49], the y slab
+    // [(7.5 - 7.6) / -0.55, (4 - 7.6) / -0.55] = [0.18, 72/11]; the exit is 72/11 = 6.545.
+    EXPECT_NEAR(referenceAnswer(*l.exercise("leaf-exit"), *run.log, l.file).numbers[0],
+                72.0 / 11.0, 1e-12);
     const Answer first = referenceAnswer(*l.exercise("first-leaf-test"), *run.log, l.file);
     ASSERT_TRUE(first.hit.has_value());
     EXPECT_FALSE(*first.hit);
@@ -286,6 +295,14 @@ TEST(Lessons, TheKdTreeLessonsCandidatesEqualAHandComputation) {
     EXPECT_TRUE(sawBest);
     const double p = 2119.0 / 2838.0;
     EXPECT_NEAR(sahCost(1.0, 5.0, 0.5, p, p, 4, 12), 86179.0 / 1419.0, 1e-9);
+    // The compute exercises: x = 2.0's P(L|C), the midpoint's and the median's costs (x = 6.4,
+    // N_L 9, N_R 10: cells 5.9 x 7 and 1.29 x 7, 1 + 5 (9 x 10/11 + 10 x 829/1419) = 100919/1419).
+    const auto ref = [&](const char* id) {
+        return referenceAnswer(*l.exercise(id), *run.log, l.file).numbers[0];
+    };
+    EXPECT_NEAR(ref("area-ratio"), 850.0 / 1419.0, 1e-12);
+    EXPECT_NEAR(ref("midpoint-cost"), 86179.0 / 1419.0, 1e-9);
+    EXPECT_NEAR(ref("median-cost"), 100919.0 / 1419.0, 1e-9);
 }
 
 TEST(Lessons, PickSplitFeedbackRecomputesTheWinnersCost) {
