@@ -83,16 +83,15 @@ int show(Lesson l, Language lang) {
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
     printErrata(l.errata, lang);
     for (std::size_t i = 0; i < l.steps.size(); ++i) {
-        std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
+        std::printf("\n## %s %zu (%s)\n\n%s\n", tr(lang, "Step").c_str(), i + 1,
                     describePosition(l.steps[i].at, lang).c_str(),
                     l.steps[i].text.in(lang).c_str());
         if (!l.steps[i].note.en.empty()) std::printf("\n> %s\n", l.steps[i].note.in(lang).c_str());
         printErrata(l.steps[i].errata, lang);
     }
     for (const Exercise& ex : l.exercises) {
-        std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",
-                    ex.id.c_str(), std::string(exerciseKindName(ex.kind)).c_str(),
-                    ex.prompt.in(lang).c_str());
+        std::printf("\n## %s %s (%s)\n\n%s\n", tr(lang, "Exercise").c_str(), ex.id.c_str(),
+                    std::string(exerciseKindName(ex.kind)).c_str(), ex.prompt.in(lang).c_str());
         for (std::size_t i = 0; i < ex.choices.size(); ++i)
             std::printf("%s%c) %s\n", i ? "" : "\n", static_cast<char>('a' + i),
                         ex.choices[i].text.in(lang).c_str());
@@ -160,17 +159,18 @@ int check(const Lesson& l, const LessonArgs& a, Language lang) {
         std::printf("%s\n", out.dump(2).c_str());
         return 0;
     }
-    const bool it = lang == Language::It;
-    std::printf("%s %d. %s: %d / %zu\n", it ? "Lezione" : "Lesson", l.number,
-                l.title.in(lang).c_str(), g.score, g.items.size());
+    std::printf("%s\n", trf(lang, "Lesson %1. %2: %3 / %4",
+                            {std::to_string(l.number), l.title.in(lang), std::to_string(g.score),
+                             std::to_string(g.items.size())})
+                            .c_str());
     for (const auto& i : g.items) {
-        const char* mark = !i.answered ? (it ? "senza risposta" : "not answered")
-                           : i.correct ? (it ? "giusto" : "right")
-                                       : (it ? "sbagliato" : "wrong");
-        std::printf("  %-16s %-14s", i.exercise.c_str(), mark);
+        const std::string mark = !i.answered ? tr(lang, "no answer")
+                                 : i.correct ? tr(lang, "right")
+                                             : tr(lang, "wrong");
+        std::printf("  %-16s %-14s", i.exercise.c_str(), mark.c_str());
         // The answer is the student's text: escaped, so it cannot forge a line of the report.
         if (i.answered)
-            std::printf(" %s: %s", it ? "risposta" : "given", printable(i.given, 200).c_str());
+            std::printf(" %s: %s", tr(lang, "given").c_str(), printable(i.given, 200).c_str());
         std::printf("\n      %s\n", printable(i.feedback, 2000).c_str());
     }
     return 0;

@@ -335,9 +335,10 @@ std::string classTableMarkdown(const Lesson& lesson, const ClassTable& table, La
     std::string out =
         trf(lang, "Lesson %1. %2: %3 answer sheets",
             {std::to_string(lesson.number), lesson.title.in(lang), std::to_string(table.sheets)}) +
-        "\n\n| " + tr(lang, "exercise") + " | " + tr(lang, "right") + " | " + tr(lang, "wrong") +
-        " | " + tr(lang, "not answered") + " | " + tr(lang, "most common wrong answer") + " | " +
-        tr(lang, "how many") + " |\n|---|---:|---:|---:|---|---:|\n";
+        "\n\n| " + tr(lang, "exercise") + " | " + tr(lang, "right answers") + " | " +
+        tr(lang, "wrong answers") + " | " + tr(lang, "not answered") + " | " +
+        tr(lang, "most common wrong answer") + " | " + tr(lang, "how many") +
+        " |\n|---|---:|---:|---:|---|---:|\n";
     for (const ClassTable::Row& r : table.rows)
         out += "| " + r.exercise + " | " + std::to_string(r.right) + " | " +
                std::to_string(r.wrong) + " | " + std::to_string(r.notAnswered) + " | " +
