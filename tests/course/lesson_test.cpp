@@ -257,10 +257,11 @@ TEST(Lessons, TheHierarchiesLessonsTestTreeEntersFourNodesByHand) {
     EXPECT_EQ(entered, (std::vector<std::uint32_t>{0, 1, 2, 14}));
     EXPECT_EQ(referenceAnswer(*l.exercise("nodes-in-order"), *run.log, l.file).numbers,
               (std::vector<double>{0, 1, 2, 14}));
-    // Leaf 14's box [4.095, 7.69] x [4, 7.5]: the x slab [3.895, 7.49], the y slab
-    // [(7.5 - 7.6) / -0.55, (4 - 7.6) / -0.55] = [0.18, 72/11]; the exit is 72/11 = 6.545.
-    EXPECT_NEAR(referenceAnswer(*l.exercise("leaf-exit"), *run.log, l.file).numbers[0],
-                72.0 / 11.0, 1e-12);
+    // The box [0.8, 2.6] x [3.5, 6.5] around the big circle and the segment below it: the x slab
+    // [0.6, 2.4], the y slab [(6.5 - 7.6) / -0.55, (3.5 - 7.6) / -0.55] = [2, 7.45]; the exit is
+    // 2.4 (and the entry 2: the ray crosses the box, yet meets neither primitive).
+    EXPECT_NEAR(referenceAnswer(*l.exercise("box-exit"), *run.log, l.file).numbers[0], 2.4,
+                1e-12);
     const Answer first = referenceAnswer(*l.exercise("first-leaf-test"), *run.log, l.file);
     ASSERT_TRUE(first.hit.has_value());
     EXPECT_FALSE(*first.hit);
