@@ -723,11 +723,15 @@ std::string formatAnswer(const Exercise& ex, const Answer& a, Language lang) {
             return a.numbers.size() < 2 ? ""
                                         : std::string(axisName(static_cast<int>(a.numbers[0]))) +
                                               "=" + formatNumber(a.numbers[1], lang);
-        case ExerciseKind::HitOrMiss:
+        case ExerciseKind::HitOrMiss: {
             if (!a.hit) return "";
-            if (!*a.hit) return tr(lang, "miss");
-            return a.numbers.empty() ? tr(lang, "hit")
-                                     : tr(lang, "hit") + " " + formatNumber(a.numbers[0], lang);
+            // The answer's keywords, which parseAnswer reads in either language: a grammar, not
+            // a translation (the catalogue's "hit" is the event list's noun, "intersezione").
+            const bool it = lang == Language::It;
+            if (!*a.hit) return it ? "mancata" : "miss";
+            const std::string word = it ? "colpita" : "hit";
+            return a.numbers.empty() ? word : word + " " + formatNumber(a.numbers[0], lang);
+        }
         case ExerciseKind::Choice:
             return a.numbers.empty() ? "" : letter(static_cast<int>(a.numbers[0]));
         case ExerciseKind::Sequence: {
@@ -847,7 +851,8 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 v.slip = sequenceSlip(c, answer, ref, lang);
                 break;
             case ExerciseKind::Choice: {
-                const auto& chosen = ex.choices.at(static_cast<std::size_t>(given));
+                if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;
+                const auto& chosen = ex.choices[static_cast<std::size_t>(given)];
                 v.slip = trf(
                     lang, "%1) %2: %3",
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
