@@ -104,14 +104,15 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     EXPECT_EQ(s.cursor(), s.size());
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
 
-    // Open the third exercise with the ">" button, twice (each opens the one it shows).
+    // Open the fourth exercise (the next cell after (2, 1)) with the ">" button, three times
+    // (each opens the one it shows).
     QPushButton* next = nullptr;
     for (QPushButton* b : p->findChildren<QPushButton*>())
         if (b->text() == ">") next = b;
     ASSERT_NE(next, nullptr);
-    QTest::mouseClick(next, Qt::LeftButton);
-    QTest::mouseClick(next, Qt::LeftButton);
-    ASSERT_EQ(p->exercise(), 2);
+    for (int i = 0; i < 3; ++i) QTest::mouseClick(next, Qt::LeftButton);
+    ASSERT_EQ(p->exercise(), 3);
+    ASSERT_EQ(p->lesson().exercises[3].kind, ExerciseKind::NextCell);
     ASSERT_TRUE(p->exerciseOpen());
     EXPECT_EQ(s.cursor(), limit);
     EXPECT_EQ(w.timeline()->quizCue(), "Answer the exercise to see what comes next");
@@ -156,7 +157,8 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     EXPECT_EQ(grab(w.view2D()), atLimit);
 
     // Answered right (clicking the cell, as a student does): the limit lifts.
-    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(2, 2).toPoint());
+    // In (2, 1) tMaxX = 3.25 < tMaxY = 4 (o = (0.4, 0.4), d = (0.8, 0.4)): the walk steps X.
+    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(3, 1).toPoint());
     ASSERT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
     QTest::keyClick(&w, Qt::Key_End);
@@ -165,7 +167,7 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     EXPECT_NE(grab(w.view2D()), atLimit);  // the rest of the walk is drawn
 }
 
-// The second exercise (tMaxX after the step from (0, 0) to (1, 0)) sits before the 2nd
+// The third exercise (tMaxX in (2, 1), after the step from (1, 1)) sits before the 4th
 // dda_cell: lecturer mode (Ctrl+L) lifts its limit, and turning it off puts it back; putting
 // the exercise away lifts it too.
 TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
@@ -176,8 +178,8 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
     LessonPanel* p = w.lessonPanel();
     Session& s = w.session();
-    const std::size_t limit = indexOfNth<DdaCell>(s.log(), 2);
-    p->selectExercise(1);
+    const std::size_t limit = indexOfNth<DdaCell>(s.log(), 4);
+    p->selectExercise(2);
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), limit);
     // The event holding the answer (tMaxX after the step) is not in the list.
@@ -198,12 +200,12 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), s.size());
     // A step past the exercise, with the exercise open again, stops at the exercise.
-    p->selectExercise(1);
+    p->selectExercise(2);
     p->goToStep(static_cast<int>(p->lesson().steps.size()) - 1);  // the last step: the end
     EXPECT_EQ(s.cursor(), limit);
 }
 
-// Lesson 12 traces pixel (160, 120) of a 320 x 240 image: a ring and cross-hair in yellow
+// Lesson 12 traces one pixel of a 320 x 240 image: a ring and cross-hair in yellow
 // (255, 235, 60) mark it where the image view draws that pixel; a click elsewhere explores that
 // pixel, and Esc comes back to the lesson's trace, step and exercises.
 TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
@@ -215,8 +217,10 @@ TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     ASSERT_EQ(image->state(), ImageView::State::Done);
     // Where pixel (160, 120) is drawn, by hand: the image scaled to fit, centred.
     const double scale = std::min(image->width() / 320.0, image->height() / 240.0);
-    const QPointF centre((image->width() - 320 * scale) / 2 + 160.5 * scale,
-                         (image->height() - 240 * scale) / 2 + 120.5 * scale);
+    const auto& traced = w.lessonPanel()->lesson().trace;
+    ASSERT_EQ(traced.kind, LessonTrace::Kind::Pixel);
+    const QPointF centre((image->width() - 320 * scale) / 2 + (traced.x + 0.5) * scale,
+                         (image->height() - 240 * scale) / 2 + (traced.y + 0.5) * scale);
     EXPECT_NEAR(image->lessonMarkCentre().x(), centre.x(), 0.5);
     EXPECT_NEAR(image->lessonMarkCentre().y(), centre.y(), 0.5);
     const QImage shot = grab(image);
@@ -434,13 +438,13 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
     EXPECT_GT(pixelsNear(two, hit.r, hit.g, hit.b, 2), 100);
 }
 
-// Lesson 12's second step stops after the third hit: the reflection of the mirror sphere on
+// Lesson 12's third step stops after the second hit: the reflection of the mirror sphere on
 // the floor's triangle; the inspector shows that hit's barycentric u and v, as the event has.
 TEST(Inspector, ATriangleHitShowsItsBarycentricUV) {
     Window win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, "intersections"));
-    w.lessonPanel()->goToStep(1);
+    w.lessonPanel()->goToStep(2);
     const Session& s = w.session();
     ASSERT_GT(s.cursor(), 0u);
     const auto* hit = std::get_if<RayHit>(&s.log().events()[s.cursor() - 1]);
