@@ -858,6 +858,26 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
                 break;
             }
+            case ExerciseKind::PickSplit: {
+                if (answer.numbers.size() != 2) break;
+                const auto candidates = splitCandidates(ex, log);
+                const std::string plane = std::string(axisName(static_cast<int>(given))) + " = " +
+                                          formatNumber(answer.numbers[1], lang);
+                const SplitCandidate* mine = nullptr;
+                for (const SplitCandidate& s : candidates)
+                    if (s.axis == given && close(answer.numbers[1], s.position, 1e-9)) mine = &s;
+                if (!mine) {
+                    v.slip = trf(lang, "%1 is not one of the candidates listed.", {plane});
+                    break;
+                }
+                const auto n = [&](double x) { return formatNumber(x, lang); };
+                v.slip = trf(lang,
+                             "%1 costs C_trav + C_isect (%2 · %3 + %4 · %5) = %6, more than the "
+                             "cheapest.",
+                             {plane, n(mine->pl), std::to_string(mine->nl), n(mine->pr),
+                              std::to_string(mine->nr), n(mine->sahCost)});
+                break;
+            }
             case ExerciseKind::HitOrMiss:
                 if (answer.hit == ref.hit && ref.hit == true && !ref.numbers.empty())
                     v.slip = trf(lang, "It is an intersection, but not at t = %1.",

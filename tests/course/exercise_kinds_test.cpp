@@ -537,6 +537,35 @@ TEST(Slips, TheFartherHitOfTheSlidesBreakAndTDeltaWithoutAbs) {
     EXPECT_TRUE(has(sign.slip, "wrong sign")) << sign.slip;
 }
 
+// A dearer plane is named with its own cost, as the trace's candidate event records it; a plane
+// that is not a candidate is named as such.
+TEST(Slips, ADearerSplitIsNamedWithItsCost) {
+    const Lesson l = loadLessonText(
+        "{\"format\": \"raystep-lesson\", \"version\": 1, \"id\": \"t\", \"number\": 1,\n"
+        "\"title\": {\"en\": \"T\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"lecture-grid\",\n"
+        "\"setup\": {\"accel\": \"kdtree\", \"split\": \"sah\"}, \"trace\": {\"build\": true},\n"
+        "\"exercises\": [{\"id\": \"p\", \"type\": \"pick_split\", \"prompt\": {\"en\": "
+        "\"?\"}}]}",
+        "p.json");
+    const LessonRun run = runLesson(l);
+    const Exercise& ex = l.exercises[0];
+    const auto candidates = splitCandidates(ex, *run.log);
+    ASSERT_GT(candidates.size(), 2u);
+    double best = candidates[0].sahCost;
+    for (const SplitCandidate& c : candidates) best = std::min(best, c.sahCost);
+    const SplitCandidate* dear = nullptr;
+    for (const SplitCandidate& c : candidates)
+        if (c.sahCost > best * 1.01) dear = &c;
+    ASSERT_NE(dear, nullptr);
+    const Verdict v = checkAnswer(ex, *run.log, Answer{{double(dear->axis), dear->position}, {}},
+                                  Language::En, l.file);
+    EXPECT_FALSE(v.correct);
+    EXPECT_TRUE(has(v.slip, " = " + formatNumber(dear->sahCost) + ", more than the cheapest"))
+        << v.slip;
+    const Verdict none = checkAnswer(ex, *run.log, Answer{{0, -1234.5}, {}}, Language::It, l.file);
+    EXPECT_TRUE(has(none.slip, "x = -1234,5 non è uno dei candidati")) << none.slip;
+}
+
 TEST(Quiz, TheReplayLimitIsTheExercisesPosition) {
     const Lesson l = loadLesson("grid-2d-dda");
     const LessonRun run = runLesson(l);
