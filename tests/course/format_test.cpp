@@ -152,6 +152,11 @@ TEST(LessonFormat, AFilterMatchesAKindNameOrTheEventsLine) {
     EXPECT_EQ(count(""), static_cast<int>(run.log->events().size()));
     EXPECT_EQ(count("split_chosen"), 0);
     EXPECT_GT(count("ray_begin"), 0);
+    // The line the app shows, in its language: the Italian word matches it, the kind name too.
+    const Event& first = run.log->events().front();
+    EXPECT_TRUE(eventMatchesFilter(first, "il raggio 0 inizia", "RAGGIO"));
+    EXPECT_TRUE(eventMatchesFilter(first, "il raggio 0 inizia", "ray_begin"));
+    EXPECT_FALSE(eventMatchesFilter(first, "il raggio 0 inizia", "cella"));
 }
 
 TEST(LessonFormat, ValidationRefusesAFilterThatShowsNothing) {
