@@ -858,6 +858,19 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
                 break;
             }
+            case ExerciseKind::SweepPick: {
+                std::string list;
+                bool listed = false;
+                for (const GridSweepRow& row : *sweep) {
+                    list += (list.empty() ? "" : ", ") + std::to_string(row.resolution);
+                    listed = listed || row.resolution == given;
+                }
+                v.slip = listed ? trf(lang, "At %1 the metric is higher than at %2.",
+                                      {formatNumber(given, lang), v.expected})
+                                : trf(lang, "%1 is not one of the sweep's resolutions (%2).",
+                                      {formatNumber(given, lang), list});
+                break;
+            }
             case ExerciseKind::PickSplit: {
                 if (answer.numbers.size() != 2) break;
                 const auto candidates = splitCandidates(ex, log);

@@ -428,6 +428,10 @@ TEST(NewKinds, ASweepPickIsGradedFromTheSweepsRows) {
     const Verdict v = checkAnswer(ex, log, Answer{{16}, {}}, Language::En, "s.json", &rows);
     EXPECT_FALSE(v.correct);
     EXPECT_TRUE(has(v.feedback, "16: 20.7")) << v.feedback;
+    EXPECT_TRUE(has(v.slip, "At 16 the metric is higher than at 8")) << v.slip;
+    const Verdict off = checkAnswer(ex, log, Answer{{5}, {}}, Language::It, "s.json", &rows);
+    EXPECT_TRUE(has(off.slip, "5 non è una delle risoluzioni della scansione (1, 2, 8, 16)"))
+        << off.slip;
     EXPECT_THROW(referenceAnswer(ex, log, "s.json"), LessonError) << "no rows, no grade";
     expectLessonError(lessonWith(",\n\"exercises\": [{\"id\": \"s\", \"type\": \"sweep_pick\", "
                                  "\"prompt\": {\"en\": \"?\"}}]"),
