@@ -93,13 +93,14 @@ TEST(LessonFormat, AHintIsOneTextOrSeveralRevealedInTurn) {
 
 TEST(LessonFormat, ColourNamesComeFromThePalette) {
     const Lesson l = loadLessonText(
-        lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"Primary rays are {colour:primary}, shadow "
-                   "rays {colour:shadow}.\",\n \"it\": [\"I raggi primari sono {colour:primary},\","
-                   " \"quelli d'ombra {colour:shadow}.\"]}}]"),
+        lessonWith(
+            ",\n\"steps\": [{\"text\": {\"en\": \"Primary rays are {colour:primary}, shadow "
+            "rays {colour:shadow}.\",\n \"it\": [\"I raggi primari sono in {colour:primary},\","
+            " \"quelli d'ombra in {colour:shadow}.\"]}}]"),
         "c.json");
     // The names as the palette's table gives them, written here by hand.
     EXPECT_EQ(l.steps[0].text.en, "Primary rays are red, shadow rays yellow.");
-    EXPECT_EQ(l.steps[0].text.it, "I raggi primari sono rosso,\nquelli d'ombra giallo.");
+    EXPECT_EQ(l.steps[0].text.it, "I raggi primari sono in rosso,\nquelli d'ombra in giallo.");
     expectLessonError(
         lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\",\n \"it\": \"{colour:mauve}\"}}]"), 12,
         "steps[0].text.it", "unknown colour {colour:mauve}");
