@@ -570,6 +570,35 @@ TEST(Slips, ADearerSplitIsNamedWithItsCost) {
     EXPECT_TRUE(has(none.slip, "x = -1234,5 non è uno dei candidati")) << none.slip;
 }
 
+// A 3D miss, named from the scene. The ray (0, 0, 5) + t (0, 0, -1): sphere 0 at (3, 0, 0), r 1:
+// f = (-3, 0, 5), B = -10, C = 33, B^2 - 4AC = 100 - 132 = -32. Triangle 1, (1, 1, 0) (2, 1, 0)
+// (1, 2, 0): the plane z = 0 at t = 5, the point (0, 0, 0) = a - (b - a) - (c - a): u = v = -1.
+TEST(Slips, AMissIn3DNamesItsCause) {
+    Scene scene;
+    scene.spheres.push_back({Vec3(3, 0, 0), 1.0, 0});
+    scene.triangles.push_back({Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2, 0), 0});
+    EventLog log;
+    const std::uint32_t ray =
+        log.beginRay(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, RayKind::Primary, 0, kNoId);
+    log(PrimitiveTest{ray, 0, false, kInfinity});
+    log(PrimitiveTest{ray, 1, false, kInfinity});
+    Exercise ex;
+    ex.kind = ExerciseKind::HitOrMiss;
+    ex.at = ReplayPosition{ReplayPosition::Mode::Cursor, 1};
+    const LessonScene withScene = scene;
+    const Verdict sphere =
+        checkAnswer(ex, log, Answer{{}, true}, Language::En, "m.json", nullptr, &withScene);
+    EXPECT_TRUE(has(sphere.feedback, "B² − 4AC = -32 is negative")) << sphere.feedback;
+    ex.at.cursor = 2;
+    const Verdict tri =
+        checkAnswer(ex, log, Answer{{}, true}, Language::It, "m.json", nullptr, &withScene);
+    EXPECT_TRUE(has(tri.feedback, "fuori dal triangolo: u = -1, v = -1")) << tri.feedback;
+    // Without the scene, the general reasons.
+    const Verdict general = checkAnswer(ex, log, Answer{{}, true}, Language::En, "m.json");
+    EXPECT_TRUE(has(general.feedback, "a negative discriminant, an intersection behind"))
+        << general.feedback;
+}
+
 TEST(Quiz, TheReplayLimitIsTheExercisesPosition) {
     const Lesson l = loadLesson("grid-2d-dda");
     const LessonRun run = runLesson(l);
