@@ -261,6 +261,75 @@ TEST(ComputeExercises, ExtremeDataGiveAnAnswerOrAnError) {
     }
 }
 
+// Every new key with a value of the wrong kind: a LessonError naming that key, never a crash.
+TEST(NewKinds, EveryNewKeyOfTheWrongKindIsNamed) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": 3, "
+         "\"answer\": 0}",
+         "exercises[0].choices"},
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": "
+         "[{\"text\": {\"en\": \"a\"}}, {\"text\": {\"en\": \"b\"}, \"why\": {\"en\": \"w\"}}], "
+         "\"answer\": 0}",
+         "exercises[0].choices[0]"},
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": "
+         "[{\"text\": {\"en\": \"a\"}, \"why\": {\"en\": \"w\"}}, {\"text\": {\"en\": \"b\"}, "
+         "\"why\": {\"en\": \"w\"}}], \"answer\": \"b\"}",
+         "exercises[0].answer"},
+        {"{\"id\": \"a\", \"type\": \"sequence\", \"of\": \"ray_hit\", \"prompt\": {\"en\": "
+         "\"?\"}}",
+         "exercises[0].of"},
+        {"{\"id\": \"a\", \"type\": \"sequence\", \"of\": \"dda_cell\", \"length\": 0, "
+         "\"prompt\": {\"en\": \"?\"}}",
+         "exercises[0].length"},
+        {"{\"id\": \"a\", \"type\": \"value\", \"quantity\": \"hit.t\", \"of\": \"dda_cell\", "
+         "\"prompt\": {\"en\": \"?\"}}",
+         "exercises[0].of"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": []}",
+         "exercises[0].given"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": {\"ray\": {\"o\": [0, 0, 0], \"d\": [0, 0, 1]}, \"sphere\": {\"c\": [0, 0, "
+         "5], \"r\": -1}}}",
+         "exercises[0].given.sphere.r"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": {\"ray\": {\"o\": [0, 0, 0], \"d\": [0, 0, 1]}, \"triangle\": [[0, 0, 0], "
+         "[1, 0, 0]]}}",
+         "exercises[0].given.triangle"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"tMax.x\", \"prompt\": {\"en\": "
+         "\"?\"}, \"given\": {\"ray\": {\"o\": [0, 0], \"d\": [1, 1]}, \"grid\": {\"min\": [0, 0], "
+         "\"cell\": [0, 1]}}}",
+         "exercises[0].given.grid.cell"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"tMax.x\", \"prompt\": {\"en\": "
+         "\"?\"}, \"given\": {\"ray\": {\"o\": [0, 0], \"d\": [1, 1]}, \"grid\": {\"min\": [0, 0], "
+         "\"cell\": [1, 1], \"res\": [4]}}}",
+         "exercises[0].given.grid.res"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"pL\", \"prompt\": {\"en\": "
+         "\"?\"}, "
+         "\"given\": {\"node\": {\"min\": [0, 0], \"max\": [1, 1]}, \"plane\": {\"axis\": \"z\", "
+         "\"at\": 0.5}, \"nl\": 1, \"nr\": 1}}",
+         "exercises[0].given.plane.axis"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"pL\", \"prompt\": {\"en\": "
+         "\"?\"}, "
+         "\"given\": {\"node\": {\"min\": [0, 0], \"max\": [1, 1]}, \"plane\": {\"axis\": \"x\", "
+         "\"at\": 0.5}, \"nl\": -1, \"nr\": 1}}",
+         "exercises[0].given.nl"},
+        {"{\"id\": \"a\", \"type\": \"sweep_pick\", \"metric\": \"trace_ms\", \"prompt\": {\"en\": "
+         "\"?\"}}",
+         "exercises[0].metric"},
+    };
+    for (const auto& [exercise, key] : cases) {
+        try {
+            loadLessonText(lessonWith(",\n\"sweep\": {\"grid_res\": [1, 2]},\n\"exercises\": [" +
+                                      exercise + "]"),
+                           "k.json");
+            ADD_FAILURE() << "accepted: " << exercise;
+        } catch (const LessonError& e) {
+            EXPECT_EQ(e.key(), key) << e.what();
+            EXPECT_GT(e.line(), 0) << e.what();
+        }
+    }
+}
+
 TEST(ComputeExercises, ThePromptMustStateEveryGivenNumberInBothLanguages) {
     const auto lesson = [](const std::string& en, const std::string& it) {
         return loadLessonText(
