@@ -6,10 +6,11 @@ RAYSTEP_BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev libboost-dev
 )
-# The replay app: Qt6 widgets, VTK (its config needs MPI's C target: mpi-default-dev comes with it),
-# and what runs it without a screen (xvfb-run) with Mesa's software OpenGL.
+# The replay app: Qt6 widgets, Qt's own Italian for its dialogs (qtbase_it), VTK (its config needs
+# MPI's C target: mpi-default-dev comes with it), and what runs it without a screen (xvfb-run) with
+# Mesa's software OpenGL.
 RAYSTEP_GUI_PACKAGES=(
-  qt6-base-dev qt6-l10n-tools libvtk9-dev xvfb xauth libgl1-mesa-dri
+  qt6-base-dev qt6-translations-l10n libvtk9-dev xvfb xauth libgl1-mesa-dri
 )
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev

@@ -1,5 +1,6 @@
 #include "compare_window.h"
 
+#include "language.h"
 #include "view2d.h"
 #include "vtk_view.h"
 
@@ -31,6 +32,8 @@ CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKi
 CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : QWidget(parent) {
     setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
     const AccelKind kind = prepared[0]->kind;
+    // kSplits' names, as the columns and the table say them.
+    const QStringList splitNames = {tr("midpoint"), tr("median"), tr("SAH")};
     auto* views = new QHBoxLayout;
     int longest = 0;
     for (int i = 0; i < 3; ++i) {
@@ -42,9 +45,8 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
             sessions_[i]->tracePixel(pixel.x, pixel.y, pixel.width, pixel.height);
         longest = std::max(longest, static_cast<int>(sessions_[i]->size()));
         auto* column = new QVBoxLayout;
-        auto* title = new QLabel(QStringLiteral("<b>%1 %2</b>")
-                                     .arg(QString::fromUtf8(accelKindName(kind).data()),
-                                          QString::fromUtf8(name(kSplits[i]).data())));
+        auto* title =
+            new QLabel(QStringLiteral("<b>%1 %2</b>").arg(structureName(kind), splitNames[i]));
         column->addWidget(title);
         if (sessions_[i]->is2D())
             views_[i] = new View2D(*sessions_[i]);
@@ -65,7 +67,7 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
         tr("ray: events")};
     table_ = new QTableWidget(rows.size(), 3);
     table_->setVerticalHeaderLabels(rows);
-    table_->setHorizontalHeaderLabels({tr("midpoint"), tr("median"), tr("SAH")});
+    table_->setHorizontalHeaderLabels(splitNames);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     for (int i = 0; i < 3; ++i) {
@@ -75,12 +77,12 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
             tests += std::holds_alternative<PrimitiveTest>(e);
             visits += std::holds_alternative<NodeEnter>(e);
         }
-        const QStringList values = {QString::number(b.stats.buildMs, 'f', 2),
+        const QStringList values = {numberText(b.stats.buildMs, 'f', 2),
                                     QString::number(b.stats.nodes),
                                     QString::number(b.stats.leaves),
                                     QString::number(b.stats.maxDepth),
                                     QString::number(b.stats.references),
-                                    QString::number(b.stats.sahCost, 'g', 5),
+                                    numberText(b.stats.sahCost, 'g', 5),
                                     QString::number(tests),
                                     QString::number(visits),
                                     QString::number(sessions_[i]->size())};

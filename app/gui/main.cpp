@@ -1,6 +1,7 @@
 // raystep: the replay app. It opens on lesson 1 unless told otherwise. Options for slides and
 // tests: --lesson, --scene, --accel, --step, --screenshot.
 #include "compare_window.h"
+#include "language.h"
 #include "main_window.h"
 #include "session.h"
 
@@ -9,7 +10,6 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTimer>
-#include <QTranslator>
 
 #include <cstdio>
 
@@ -53,16 +53,11 @@ int main(int argc, char** argv) {
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
-    // The Italian interface: the translation compiled next to the binary (app/gui/i18n).
+    // The interface's language, before any widget takes its texts (language.h).
     const QString lang = parser.value(langOpt);
-    QTranslator translator;
-    if (lang == "it") {
-        const QString qm = QCoreApplication::applicationDirPath() + "/raystep_it.qm";
-        if (!translator.load(qm)) return fail("--lang it: cannot load " + qm);
-        QApplication::installTranslator(&translator);
-    } else if (lang != "en") {
-        return fail("--lang " + lang + ": expected en or it");
-    }
+    const auto language = raystep::parseLanguage(lang.toStdString());
+    if (!language) return fail("--lang " + lang + ": expected en or it");
+    raystep::gui::setInterfaceLanguage(*language);
     const auto kind = raystep::parseAccelKind(parser.value(accelOpt).toStdString());
     if (!kind)
         return fail("--accel " + parser.value(accelOpt) +
@@ -86,7 +81,7 @@ int main(int argc, char** argv) {
         return fail("--lesson and --scene: give one of them");
 
     raystep::gui::MainWindow window;
-    window.setLanguage(lang == "it" ? raystep::Language::It : raystep::Language::En);
+    window.setLanguage(*language);
     window.setLecturerMode(parser.isSet(lecturerOpt));
     // Slides are made at one size; otherwise the user's own size, or one that fits the screen.
     if (!shot.isEmpty())

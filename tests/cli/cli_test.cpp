@@ -991,7 +991,7 @@ TEST_F(Cli, ControlCharactersInOptionsStayOneLine) {
 // Numbers at the extremes: the grid's lambda, the DDA's crossing times, the kernels' range.
 
 TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
-    // lambda is cells a primitive: more lambda, never fewer cells, never past the cap (a huge
+    // lambda is cells per primitive: more lambda, never fewer cells, never past the cap (a huge
     // lambda used to wrap through int to a one-cell grid).
     long last = 0;
     for (const char* lambda : {"0.001", "1", "4", "1e6", "2147483648", "1e300", "1.7e308"}) {
@@ -1007,8 +1007,9 @@ TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
     }
     EXPECT_GT(last, 1L << 20);
     const CliRun help = run("render --help");
-    EXPECT_NE(help.out.find("cells a primitive"), std::string::npos) << help.out;
+    EXPECT_NE(help.out.find("cells per primitive"), std::string::npos) << help.out;
     EXPECT_EQ(help.out.find("primitives a cell"), std::string::npos) << help.out;
+    EXPECT_EQ(help.out.find("primitives per cell"), std::string::npos) << help.out;
 }
 
 TEST_F(Cli, GridRenderOfAHugeSceneIsRefusedByItsObject) {

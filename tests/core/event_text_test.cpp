@@ -75,6 +75,96 @@ TEST(EventText, OneLinePerEvent) {
               "diffuse term (0.5, 0.25, 0)");
     EXPECT_EQ(eventText(PixelResult{160, 120, {1.0, 0.5, 0.125}}, 3),
               "pixel (160, 120) = (1, 0.5, 0.125)");
+    // A blocked shadow ray's any-hit query has no hit of its own to report (t = infinity): it
+    // read "ray 2 hits primitive - at t = inf".
+    EXPECT_EQ(eventText(RayHit{2, kNoId, kInf, 0.0, 0.0}, 3),
+              "shadow ray 2 blocked: the point is in shadow");
+}
+
+TEST(EventText, ItalianUsesTheSlidesTermsAndDecimalCommas) {
+    constexpr Language it = Language::It;
+    EXPECT_EQ(numberText(4.0 / 3.0, it), "1,33333");
+    EXPECT_EQ(numberText(-0.0, it), "0");
+    // A comma is the decimal sign, so a tuple's items are parted by semicolons.
+    EXPECT_EQ(tupleText({0.6, 0.8, 0.0}, 2, it), "(0,6; 0,8)");
+    EXPECT_EQ(eventText(RayBegin{4, 0, RayKind::Shadow, 1}, 3, it),
+              "inizia il raggio 4: raggio d'ombra, profondità 1");
+    EXPECT_EQ(eventText(RayBegin{5, 0, RayKind::Refraction, 1}, 3, it),
+              "inizia il raggio 5: raggio di trasparenza, profondità 1");
+    EXPECT_EQ(eventText(DdaSetup{0, {1, 1, 0}, 2, {1.0, 4.0 / 3.0, 0.0}, 0.0, 5.0}, 2, it),
+              "inizializzazione del DDA: step (1, 1), tDelta (1; 1,33333)");
+    EXPECT_EQ(eventText(DdaCell{0, 0, {0, 0, 0}, {0.6, 0.8, 0.0}}, 2, it),
+              "cella (0, 0) (prima cella), tMax (0,6; 0,8)");
+    EXPECT_EQ(eventText(DdaCell{0, 1, {1, 0, 0}, {1.6, 0.8, 0.0}}, 2, it),
+              "cella (1, 0) (passo lungo X), tMax (1,6; 0,8)");
+    EXPECT_EQ(eventText(PrimitiveTest{0, 3, true, 2.25}, 2, it),
+              "test della primitiva 3: intersezione a t = 2,25");
+    EXPECT_EQ(eventText(PrimitiveTest{0, 4, false, kInf}, 2, it),
+              "test della primitiva 4: nessuna intersezione");
+    EXPECT_EQ(eventText(MailboxSkip{0, 7}, 2, it),
+              "mailboxing: primitiva 7 già testata, test saltato");
+    EXPECT_EQ(eventText(NodeEnter{0, 5, 0.5, kInf}, 3, it), "entra nel nodo 5 [0,5; inf]");
+    EXPECT_EQ(eventText(SplitCandidate{1, 0, 4, 8, 2.5, 0.25, 0.75, 10.5}, 2, it),
+              "piano candidato X = 2,5: NL 4, NR 8; costo 10,5");
+    EXPECT_EQ(eventText(SplitChosen{1, 1, 3.2, 33.65625, 40.0}, 2, it),
+              "piano di taglio scelto Y = 3,2 (costo 33,6562; foglia 40)");
+    EXPECT_EQ(eventText(RayHit{0, 3, 2.25, 0.0, 0.0}, 3, it),
+              "raggio 0: intersezione con la primitiva 3 a t = 2,25");
+    EXPECT_EQ(eventText(RayMiss{2}, 3, it), "raggio 2: nessuna intersezione");
+    EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::Diffuse, 0, {0.5, 0.25, 0.0}}, 3, it),
+              "termine diffuso (0,5; 0,25; 0)");
+    // No internal name (sah_cheaper, diffuse_bounce) reaches an Italian line.
+    for (auto reason : {LeafReason::FewPrimitives, LeafReason::MaxDepth, LeafReason::SahCheaper,
+                        LeafReason::NoSplit, LeafReason::NoProgress}) {
+        const std::string line = eventText(LeafMade{2, reason, 3, 2, 12.0}, 2, it);
+        EXPECT_EQ(line.rfind("foglia 2: 3 primitive (", 0), 0u) << line;
+        EXPECT_EQ(line.find('_'), std::string::npos) << line;
+    }
+    EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::DiffuseBounce, kNoId, {}}, 3, it),
+              "termine dei rimbalzi diffusi (0; 0; 0)");
+}
+
+TEST(EventText, ABlockedShadowRayNamesWhatBlocksIt) {
+    // A shadow ray of ray 0: it tests primitive 6 (miss), then 4, which blocks it at t = 0.5.
+    EventLog log;
+    const std::uint32_t primary = log.beginRay(Ray{}, RayKind::Primary, 0, kNoId);
+    log(RayHit{primary, 2, 3.0, 0.0, 0.0});
+    const std::uint32_t shadow = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    log(PrimitiveTest{shadow, 6, false, kInf});
+    log(PrimitiveTest{shadow, 4, true, 0.5});
+    log(RayHit{shadow, kNoId, kInf, 0.0, 0.0});
+    const std::uint32_t lit = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    log(PrimitiveTest{lit, 6, false, kInf});
+    log(RayMiss{lit});
+    ASSERT_EQ(log.events().size(), 9u);
+    EXPECT_EQ(eventText(log, 5),
+              "shadow ray 1 blocked by primitive 4 at t = 0.5: the point is in shadow");
+    EXPECT_EQ(eventText(log, 5, Language::It),
+              "raggio d'ombra 1 bloccato dalla primitiva 4 a t = 0,5: il punto è in ombra");
+    EXPECT_EQ(eventText(log, 8),
+              "shadow ray 2 misses: nothing lies between the point and the light");
+    // Every other event reads as it does alone.
+    EXPECT_EQ(eventText(log, 1), "ray 0 hits primitive 2 at t = 3");
+    EXPECT_EQ(eventText(log, 4, Language::It), "test della primitiva 4: intersezione a t = 0,5");
+}
+
+TEST(EventText, EveryBlockedShadowRayOfARealTraceNamesAPrimitive) {
+    // The Cornell box's floor under the tall block: its shadow rays are blocked by the block.
+    const Scene s = std::get<Scene>(loadAnyScene("cornell"));
+    const Accelerator grid = buildAccelerator(s, AccelKind::Grid);
+    int blocked = 0;
+    for (int y = 150; y < 240; y += 6)
+        for (int x = 0; x < 320; x += 8) {
+            EventLog log;
+            tracePixelEvents(s, grid, x, y, 320, 240, log);
+            for (std::size_t i = 0; i < log.events().size(); ++i) {
+                const std::string line = eventText(log, i);
+                EXPECT_EQ(line.find("inf:"), std::string::npos) << line;
+                EXPECT_EQ(line.find("primitive -"), std::string::npos) << line;
+                if (line.find("blocked by primitive") != std::string::npos) ++blocked;
+            }
+        }
+    EXPECT_GT(blocked, 0);
 }
 
 TEST(EventText, TheRecorderSaysTheLogsDimension) {

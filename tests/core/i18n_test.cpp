@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace raystep {
 namespace {
@@ -42,8 +44,15 @@ TEST(I18n, LanguagesByCode) {
 
 TEST(I18n, EveryCatalogueFileLoadsWithoutDuplicates) {
     std::size_t total = 0;
-    for (const auto& [file, entries] : catalogueFiles(Language::It)) total += entries.size();
-    // A key in two files would be translated by whichever loads first: refuse it.
+    std::map<std::string, std::string> fileOf;
+    for (const auto& [file, entries] : catalogueFiles(Language::It)) {
+        total += entries.size();
+        // A key in two files would be translated by whichever loads first: refuse it, named.
+        for (const auto& [english, italian] : entries)
+            if (const auto [at, fresh] = fileOf.emplace(english, file); !fresh)
+                ADD_FAILURE() << "\"" << english << "\" is in both i18n/it/" << at->second
+                              << " and i18n/it/" << file << ": keep it in one";
+    }
     EXPECT_EQ(total, catalogue(Language::It).size());
 }
 

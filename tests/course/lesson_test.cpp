@@ -8,11 +8,13 @@
 #include "course/lesson_trace.h"
 #include "course/progress.h"
 
+#include "raystep/accel/sah.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/replay.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -181,6 +183,131 @@ TEST(Lessons, TheRobustnessLessonsTieGoesThroughTheCorner) {
         checkAnswer(*l.exercise("tie-cell"), *run.log, Answer{{1, 0}, {}}, Language::En, l.file);
     EXPECT_FALSE(v.correct);
     EXPECT_NE(v.feedback.find("tie"), std::string::npos) << v.feedback;
+}
+
+// Lesson 9's centre ray, by hand: the rule gives 2 cbrt(4 * 30 / 8) = 4.93, so 5 cells of 0.4 per
+// axis over [-1, 1]^3. The ray from (0, 0, 3.6) runs almost along -z in the middle column
+// (x, y within 0.012 of 0), enters at z = 1 and meets the tall box's face at z = -0.507: the z
+// layers 4, 3, 2 and 1, four cells.
+TEST(Lessons, TheVoxelSizeLessonsCentreRayWalksFourCellsByHand) {
+    const Lesson l = loadLesson("voxel-size");
+    const LessonRun run = runLesson(l);
+    EXPECT_EQ(referenceAnswer(*l.exercise("cells-walked"), *run.log, l.file).numbers[0], 4.0);
+    int cells = 0;
+    for (const Event& e : run.log->events()) {
+        if (const auto* c = std::get_if<DdaCell>(&e)) {
+            EXPECT_EQ(c->cell[0], 2);
+            EXPECT_EQ(c->cell[1], 2);
+            EXPECT_EQ(c->cell[2], 4 - cells);
+            ++cells;
+        }
+        if (std::holds_alternative<RayHit>(e)) break;
+    }
+    EXPECT_EQ(cells, 4);
+}
+
+// Lesson 9's sweep against a walk written in Python (wt17-ctree-calc/l09_sweep.py: bounding-box
+// listing, the DDA, the mailbox, the stop before the cell's far side; Moller-Trumbore, so a ray
+// through an edge may count differently): tests and cells per ray agree to 0.003, and the cost
+// 1 x cells + 5 x tests is lowest at 8 cells per axis (19.98, against 20.96 at 16 and 26.05 at
+// the rule's 5), the answer of the lesson's sweep_pick.
+TEST(Lessons, TheVoxelSizeSweepIsCheapestAtEightCellsPerAxis) {
+    const Lesson l = loadLesson("voxel-size");
+    ASSERT_TRUE(l.sweep.has_value());
+    const auto rows = runGridSweep(loadAnyScene(lessonScenePath(l)), *l.sweep);
+    struct Hand {
+        int res;
+        double tests, cells;
+    };
+    const Hand hand[] = {{1, 25.125, 0.8375},         {2, 11.919375, 1.243958},
+                         {4, 5.688854, 2.348646},     {5, 4.631458, 2.895},
+                         {8, 3.069271, 4.633385},     {16, 2.347396, 9.219427}};
+    for (const Hand& h : hand) {
+        SCOPED_TRACE(h.res);
+        const auto row = std::find_if(rows.begin(), rows.end(),
+                                      [&](const GridSweepRow& r) { return r.resolution == h.res; });
+        ASSERT_NE(row, rows.end());
+        EXPECT_NEAR(row->testsPerRay, h.tests, 3e-3);
+        EXPECT_NEAR(row->cellsPerRay, h.cells, 3e-3);
+    }
+    const auto cost = [](const GridSweepRow& r) { return r.cellsPerRay + 5.0 * r.testsPerRay; };
+    const auto best = std::min_element(
+        rows.begin(), rows.end(),
+        [&](const GridSweepRow& a, const GridSweepRow& b) { return cost(a) < cost(b); });
+    EXPECT_EQ(best->resolution, 8);
+    EXPECT_EQ(referenceAnswer(*l.exercise("cheapest-resolution"), *runLesson(l).log, l.file, &rows)
+                  .numbers,
+              (std::vector<double>{8}));
+}
+
+// Lesson 10's midpoint tree by hand: the ray (0.2, 7.6) + t (1, -0.55) is in the root box
+// [0.5, 7.69] x [0.5, 7.5] for t in [0.3, 7.49] (x slab [0.3, 7.49], y slab [0.18, 12.9]). The
+// root is cut at x = 4.095 (t = 3.895): leaf 1, then node 2, cut at y = 4 (t = 6.545); the origin
+// is above, so leaf 14 [3.895, 6.545] comes first and holds the segment (4.2, 3.6)-(4.6, 5.4), met
+// at t = 440/101 = 4.356: node 3 is skipped. The first test, circle (1.5, 6) r 0.5, is a miss
+// (the line passes 0.775 from its centre).
+TEST(Lessons, TheHierarchiesLessonsTestTreeEntersFourNodesByHand) {
+    const Lesson l = loadLesson("hierarchies");
+    const LessonRun run = runLesson(l);
+    std::vector<std::uint32_t> entered;
+    for (const Event& e : run.log->events())
+        if (const auto* n = std::get_if<NodeEnter>(&e)) {
+            if (entered.empty()) {
+                EXPECT_NEAR(n->tNear, 0.3, 1e-12);
+                EXPECT_NEAR(n->tFar, 7.49, 1e-12);
+            }
+            entered.push_back(n->node);
+        }
+    EXPECT_EQ(entered, (std::vector<std::uint32_t>{0, 1, 2, 14}));
+    EXPECT_EQ(referenceAnswer(*l.exercise("nodes-in-order"), *run.log, l.file).numbers,
+              (std::vector<double>{0, 1, 2, 14}));
+    // The box [0.8, 2.6] x [3.5, 6.5] around the big circle and the segment below it: the x slab
+    // [0.6, 2.4], the y slab [(6.5 - 7.6) / -0.55, (3.5 - 7.6) / -0.55] = [2, 7.45]; the exit is
+    // 2.4 (and the entry 2: the ray crosses the box, yet meets neither primitive).
+    EXPECT_NEAR(referenceAnswer(*l.exercise("box-exit"), *run.log, l.file).numbers[0], 2.4,
+                1e-12);
+    const Answer first = referenceAnswer(*l.exercise("first-leaf-test"), *run.log, l.file);
+    ASSERT_TRUE(first.hit.has_value());
+    EXPECT_FALSE(*first.hit);
+}
+
+// Lesson 11's numbers by hand (fractions): the root box [0.5, 7.69] x [0.5, 7.5] has perimeter
+// 28.38; the plane x = 2.0 leaves a left cell 1.5 x 7, P(L|C) = 17 / 28.38 = 850/1419; the
+// midpoint x = 4.095 (N_L 4, N_R 12) gives two halves 3.595 x 7, P = 2119/2838 each, cost
+// 1 + 5 x 16 x 2119/2838 = 86179/1419 = 60.73; the SAH's best is y = 2.96 (N_L 11, N_R 4), cost
+// 77954/1419 = 54.94, below the leaf's 75.
+TEST(Lessons, TheKdTreeLessonsCandidatesEqualAHandComputation) {
+    const Lesson l = loadLesson("building-kdtree");
+    const LessonRun run = runLesson(l);
+    bool sawX2 = false, sawBest = false;
+    for (const Event& e : run.log->events()) {
+        const auto* c = std::get_if<SplitCandidate>(&e);
+        if (!c || c->node != 0) continue;
+        if (c->axis == 0 && c->position == 2.0) {
+            sawX2 = true;
+            EXPECT_EQ(c->nl, 3u);
+            EXPECT_EQ(c->nr, 14u);
+            EXPECT_NEAR(c->pl, 850.0 / 1419.0, 1e-12);
+        }
+        if (c->axis == 1 && std::abs(c->position - 2.96) < 1e-12) {
+            sawBest = true;
+            EXPECT_EQ(c->nl, 11u);
+            EXPECT_EQ(c->nr, 4u);
+            EXPECT_NEAR(c->sahCost, 77954.0 / 1419.0, 1e-9);
+        }
+    }
+    EXPECT_TRUE(sawX2);
+    EXPECT_TRUE(sawBest);
+    const double p = 2119.0 / 2838.0;
+    EXPECT_NEAR(sahCost(1.0, 5.0, 0.5, p, p, 4, 12), 86179.0 / 1419.0, 1e-9);
+    // The compute exercises: x = 1.5's P(L|C) (a cell 1 x 7: 16 / 28.38), the midpoint's and the median's costs (x = 6.4,
+    // N_L 9, N_R 10: cells 5.9 x 7 and 1.29 x 7, 1 + 5 (9 x 10/11 + 10 x 829/1419) = 100919/1419).
+    const auto ref = [&](const char* id) {
+        return referenceAnswer(*l.exercise(id), *run.log, l.file).numbers[0];
+    };
+    EXPECT_NEAR(ref("area-ratio"), 800.0 / 1419.0, 1e-12);
+    EXPECT_NEAR(ref("midpoint-cost"), 86179.0 / 1419.0, 1e-9);
+    EXPECT_NEAR(ref("median-cost"), 100919.0 / 1419.0, 1e-9);
 }
 
 TEST(Lessons, PickSplitFeedbackRecomputesTheWinnersCost) {

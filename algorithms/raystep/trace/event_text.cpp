@@ -1,4 +1,6 @@
-// Events as text: the lecture's wording of each event kind, and its numbers.
+// Events as text: the lecture's wording of each event kind, and its numbers. Each line is one
+// whole sentence of the catalogue (i18n/it/core.json), never pieced together from words, so the
+// Italian can put its words in its own order.
 #include "raystep/trace/event_text.h"
 
 #include "raystep/base/format.h"
@@ -9,37 +11,95 @@
 namespace raystep {
 
 namespace {
-template <typename T>
-std::string bracketed(const std::array<T, 3>& v, int dims, std::string (*text)(T)) {
-    std::string s = "(";
-    for (int i = 0; i < dims; ++i) s += (i ? ", " : "") + text(v[i]);
-    return s + ")";
-}
 std::string intText(std::int32_t v) {
     return std::to_string(v);
 }
-std::string primText(std::uint32_t p) {
-    return p == kNoId ? "-" : std::to_string(p);
+std::string id(std::uint32_t v) {
+    return v == kNoId ? "-" : std::to_string(v);
 }
 std::string axisLetter(std::uint8_t axis) {
     return std::string(1, "XYZ"[axis]);
 }
-std::string nameText(std::string_view name) {
-    return std::string(name);
+
+std::string rayBeginText(const RayBegin& e, Language lang) {
+    const std::string ray = id(e.ray), depth = std::to_string(e.depth);
+    switch (e.kind) {
+        case RayKind::Primary:
+            return trf(lang, "ray %1 begins: primary, depth %2", {ray, depth});
+        case RayKind::Shadow:
+            return trf(lang, "ray %1 begins: shadow, depth %2", {ray, depth});
+        case RayKind::Reflection:
+            return trf(lang, "ray %1 begins: reflection, depth %2", {ray, depth});
+        case RayKind::Refraction:
+            return trf(lang, "ray %1 begins: refraction, depth %2", {ray, depth});
+        case RayKind::Diffuse:
+            return trf(lang, "ray %1 begins: diffuse, depth %2", {ray, depth});
+    }
+    return trf(lang, "ray %1 begins: primary, depth %2", {ray, depth});
+}
+
+std::string leafText(const LeafMade& e, Language lang) {
+    const std::string node = id(e.node), prims = std::to_string(e.prims);
+    switch (e.reason) {
+        case LeafReason::FewPrimitives:
+            return trf(lang, "leaf %1: %2 primitives (few_primitives)", {node, prims});
+        case LeafReason::MaxDepth:
+            return trf(lang, "leaf %1: %2 primitives (max_depth)", {node, prims});
+        case LeafReason::SahCheaper:
+            return trf(lang, "leaf %1: %2 primitives (sah_cheaper)", {node, prims});
+        case LeafReason::NoSplit:
+            return trf(lang, "leaf %1: %2 primitives (no_split)", {node, prims});
+        case LeafReason::NoProgress:
+            return trf(lang, "leaf %1: %2 primitives (no_progress)", {node, prims});
+    }
+    return trf(lang, "leaf %1: %2 primitives (few_primitives)", {node, prims});
+}
+
+std::string termText(const ShadingTerm& e, Language lang) {
+    const std::string rgb = tupleText(e.rgb, 3, lang);
+    switch (e.term) {
+        case ShadingTermKind::Ambient:
+            return trf(lang, "ambient term %1", {rgb});
+        case ShadingTermKind::Diffuse:
+            return trf(lang, "diffuse term %1", {rgb});
+        case ShadingTermKind::Specular:
+            return trf(lang, "specular term %1", {rgb});
+        case ShadingTermKind::Reflected:
+            return trf(lang, "reflected term %1", {rgb});
+        case ShadingTermKind::Transmitted:
+            return trf(lang, "transmitted term %1", {rgb});
+        case ShadingTermKind::DiffuseBounce:
+            return trf(lang, "diffuse_bounce term %1", {rgb});
+    }
+    return trf(lang, "ambient term %1", {rgb});
+}
+
+/// A shadow ray's any-hit query records no hit of its own (RayHit with t = infinity): the
+/// blocker is the last primitive test of that ray that hit (the query stops there).
+std::string blockedText(std::uint32_t ray, const PrimitiveTest* blocker, Language lang) {
+    if (!blocker) return trf(lang, "shadow ray %1 blocked: the point is in shadow", {id(ray)});
+    return trf(lang, "shadow ray %1 blocked by primitive %2 at t = %3: the point is in shadow",
+               {id(ray), id(blocker->prim), numberText(blocker->t, lang)});
 }
 }  // namespace
 
-std::string numberText(double v) {
+std::string numberText(double v, Language lang) {
     if (std::isnan(v)) return "nan";
-    return formatNumber(v + 0.0);  // + 0.0: -0 reads "0", a sign on nothing would only puzzle
+    return formatNumber(v + 0.0, lang);  // + 0.0: -0 reads "0", a sign on nothing would only puzzle
 }
 
 std::string cellText(const std::array<std::int32_t, 3>& cell, int dims) {
-    return bracketed(cell, dims, intText);
+    std::string s = "(";
+    for (int i = 0; i < dims; ++i) s += (i ? ", " : "") + intText(cell[i]);
+    return s + ")";
 }
 
-std::string tupleText(const std::array<double, 3>& v, int dims) {
-    return bracketed(v, dims, numberText);
+std::string tupleText(const std::array<double, 3>& v, int dims, Language lang) {
+    // A comma already separates an Italian number's decimals: the items are parted by "; ".
+    const char* separator = lang == Language::It ? "; " : ", ";
+    std::string s = "(";
+    for (int i = 0; i < dims; ++i) s += (i ? separator : "") + numberText(v[i], lang);
+    return s + ")";
 }
 
 std::string axesText(unsigned axes) {
@@ -49,59 +109,77 @@ std::string axesText(unsigned axes) {
     return s;
 }
 
-std::string eventText(const Event& event, int dims) {
+std::string eventText(const Event& event, int dims, Language lang) {
     return std::visit(
-        [dims](const auto& e) -> std::string {
+        [dims, lang](const auto& e) -> std::string {
             using E = std::decay_t<decltype(e)>;
+            const auto num = [lang](double v) { return numberText(v, lang); };
             if constexpr (std::is_same_v<E, RayBegin>)
-                return "ray " + std::to_string(e.ray) +
-                       " begins: " + nameText(kRayKindNames[static_cast<int>(e.kind)]) +
-                       ", depth " + std::to_string(e.depth);
+                return rayBeginText(e, lang);
             else if constexpr (std::is_same_v<E, DdaSetup>)
-                return "DDA set-up: step " +
-                       cellText({e.step[0], e.step[1], e.step[2]}, e.dims == 3 ? 3 : 2) +
-                       ", tDelta " + tupleText(e.tDelta, e.dims == 3 ? 3 : 2);
+                return trf(lang, "DDA set-up: step %1, tDelta %2",
+                           {cellText({e.step[0], e.step[1], e.step[2]}, e.dims == 3 ? 3 : 2),
+                            tupleText(e.tDelta, e.dims == 3 ? 3 : 2, lang)});
             else if constexpr (std::is_same_v<E, DdaCell>)
-                return "cell " + cellText(e.cell, dims) +
-                       (e.axes ? " by " + axesText(e.axes) : " (first cell)") + ", tMax " +
-                       tupleText(e.tMax, dims);
+                return e.axes ? trf(lang, "cell %1 by %2, tMax %3",
+                                    {cellText(e.cell, dims), axesText(e.axes),
+                                     tupleText(e.tMax, dims, lang)})
+                              : trf(lang, "cell %1 (first cell), tMax %2",
+                                    {cellText(e.cell, dims), tupleText(e.tMax, dims, lang)});
             else if constexpr (std::is_same_v<E, MailboxSkip>)
-                return "mailbox: primitive " + std::to_string(e.prim) + " already tested";
+                return trf(lang, "mailbox: primitive %1 already tested", {id(e.prim)});
             else if constexpr (std::is_same_v<E, PrimitiveTest>)
-                return "test primitive " + std::to_string(e.prim) +
-                       (e.hit ? ": hit at t = " + numberText(e.t) : ": miss");
+                return e.hit ? trf(lang, "test primitive %1: hit at t = %2", {id(e.prim), num(e.t)})
+                             : trf(lang, "test primitive %1: miss", {id(e.prim)});
             else if constexpr (std::is_same_v<E, NodeEnter>)
-                return "enter node " + std::to_string(e.node) + " [" + numberText(e.tNear) + ", " +
-                       numberText(e.tFar) + "]";
+                return trf(lang, "enter node %1 [%2, %3]", {id(e.node), num(e.tNear), num(e.tFar)});
             else if constexpr (std::is_same_v<E, NodeSkip>)
-                return "skip node " + std::to_string(e.node);
+                return trf(lang, "skip node %1", {id(e.node)});
             else if constexpr (std::is_same_v<E, BuildNode>)
-                return "build node " + std::to_string(e.node) + ": " + std::to_string(e.prims) +
-                       " primitives, depth " + std::to_string(e.depth);
+                return trf(lang, "build node %1: %2 primitives, depth %3",
+                           {id(e.node), std::to_string(e.prims), std::to_string(e.depth)});
             else if constexpr (std::is_same_v<E, SplitCandidate>)
-                return "candidate " + axisLetter(e.axis) + " = " + numberText(e.position) +
-                       ": NL " + std::to_string(e.nl) + ", NR " + std::to_string(e.nr) + ", cost " +
-                       numberText(e.sahCost);
+                return trf(lang, "candidate %1 = %2: NL %3, NR %4, cost %5",
+                           {axisLetter(e.axis), num(e.position), std::to_string(e.nl),
+                            std::to_string(e.nr), num(e.sahCost)});
             else if constexpr (std::is_same_v<E, SplitChosen>)
-                return "split " + axisLetter(e.axis) + " = " + numberText(e.position) + " (cost " +
-                       numberText(e.sahCost) + ", leaf " + numberText(e.leafCost) + ")";
+                return trf(lang, "split %1 = %2 (cost %3, leaf %4)",
+                           {axisLetter(e.axis), num(e.position), num(e.sahCost), num(e.leafCost)});
             else if constexpr (std::is_same_v<E, LeafMade>)
-                return "leaf " + std::to_string(e.node) + ": " + std::to_string(e.prims) +
-                       " primitives (" + nameText(kLeafReasonNames[static_cast<int>(e.reason)]) +
-                       ")";
+                return leafText(e, lang);
             else if constexpr (std::is_same_v<E, RayHit>)
-                return "ray " + std::to_string(e.ray) + " hits primitive " + primText(e.prim) +
-                       " at t = " + numberText(e.t);
+                return std::isinf(e.t) ? blockedText(e.ray, nullptr, lang)
+                                       : trf(lang, "ray %1 hits primitive %2 at t = %3",
+                                             {id(e.ray), id(e.prim), num(e.t)});
             else if constexpr (std::is_same_v<E, RayMiss>)
-                return "ray " + std::to_string(e.ray) + " misses";
+                return trf(lang, "ray %1 misses", {id(e.ray)});
             else if constexpr (std::is_same_v<E, ShadingTerm>)
-                return nameText(kShadingTermNames[static_cast<int>(e.term)]) + " term " +
-                       tupleText(e.rgb, 3);
+                return termText(e, lang);
             else
-                return "pixel (" + std::to_string(e.x) + ", " + std::to_string(e.y) +
-                       ") = " + tupleText(e.rgb, 3);
+                return trf(lang, "pixel (%1, %2) = %3",
+                           {std::to_string(e.x), std::to_string(e.y), tupleText(e.rgb, 3, lang)});
         },
         event);
+}
+
+std::string eventText(const EventLog& log, std::size_t index, Language lang) {
+    const Event& event = log.events().at(index);
+    if (const auto* hit = std::get_if<RayHit>(&event); hit && std::isinf(hit->t)) {
+        // Back to the ray's own start: its last test that hit is what stopped the query.
+        for (std::size_t i = index; i-- > 0;) {
+            const Event& before = log.events()[i];
+            if (const auto* b = std::get_if<RayBegin>(&before); b && b->ray == hit->ray) break;
+            if (const auto* t = std::get_if<PrimitiveTest>(&before);
+                t && t->ray == hit->ray && t->hit)
+                return blockedText(hit->ray, t, lang);
+        }
+        return blockedText(hit->ray, nullptr, lang);
+    }
+    if (const auto* miss = std::get_if<RayMiss>(&event);
+        miss && miss->ray < log.rays().size() && log.rays()[miss->ray].kind == RayKind::Shadow)
+        return trf(lang, "shadow ray %1 misses: nothing lies between the point and the light",
+                   {id(miss->ray)});
+    return eventText(event, log.dims(), lang);
 }
 
 }  // namespace raystep

@@ -1,0 +1,86 @@
+// The interface's language (language.h): Qt's translation machinery, fed by raystep's catalogue.
+#include "language.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+
+#include <memory>
+
+namespace raystep::gui {
+
+namespace {
+Language gLanguage = Language::En;
+// Installed for the life of the application (Qt keeps only a pointer).
+std::unique_ptr<CatalogueTranslator> gCatalogue;
+std::unique_ptr<QTranslator> gQtBase;
+}  // namespace
+
+CatalogueTranslator::CatalogueTranslator(Language lang, QObject* parent)
+    : QTranslator(parent), lang_(lang) {}
+
+QString CatalogueTranslator::translate(const char*, const char* sourceText, const char*,
+                                       int) const {
+    if (!sourceText) return {};
+    const auto& table = catalogue(lang_);
+    const auto it = table.find(std::string_view(sourceText));
+    // A null string tells Qt "not mine": it then shows the English text.
+    return it == table.end() ? QString() : QString::fromStdString(it->second);
+}
+
+bool CatalogueTranslator::isEmpty() const {
+    return catalogue(lang_).empty();
+}
+
+void setInterfaceLanguage(Language lang) {
+    if (gCatalogue) QCoreApplication::removeTranslator(gCatalogue.get());
+    if (gQtBase) QCoreApplication::removeTranslator(gQtBase.get());
+    gCatalogue.reset();
+    gQtBase.reset();
+    gLanguage = lang;
+    // Qt's widgets (spin boxes, dialogs) write numbers the Italian way too; English keeps the
+    // system's locale, as before there was a choice.
+    QLocale::setDefault(lang == Language::It ? QLocale(QLocale::Italian, QLocale::Italy)
+                                             : QLocale::system());
+    if (lang == Language::En) return;
+    gCatalogue = std::make_unique<CatalogueTranslator>(lang);
+    QCoreApplication::installTranslator(gCatalogue.get());
+    // Qt's own dialogs (file dialogs, message boxes' buttons): Debian's qt6-translations-l10n.
+    gQtBase = std::make_unique<QTranslator>();
+    if (gQtBase->load(QLocale(QLocale::Italian), QStringLiteral("qtbase"), QStringLiteral("_"),
+                      QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QCoreApplication::installTranslator(gQtBase.get());
+    else
+        gQtBase.reset();
+}
+
+Language interfaceLanguage() {
+    return gLanguage;
+}
+
+QString numberText(double v, char format, int precision) {
+    QString text = QString::number(v, format, precision);
+    if (gLanguage == Language::It) text.replace(QLatin1Char('.'), QLatin1Char(','));
+    return text;
+}
+
+std::string sceneDescription(const std::string& english) {
+    // i18n: the built-in scenes' descriptions (scenes/*.json), checked by the catalogue test.
+    return tr(gLanguage, english);
+}
+
+QString structureName(AccelKind kind) {
+    switch (kind) {
+        case AccelKind::BruteForce:
+            return QCoreApplication::translate("raystep", "brute force");
+        case AccelKind::Grid:
+            return QCoreApplication::translate("raystep", "grid");
+        case AccelKind::KdTree:
+            return QCoreApplication::translate("raystep", "kd-tree");
+        case AccelKind::Bvh:
+            return QCoreApplication::translate("raystep", "BVH");
+    }
+    return QString::fromUtf8(accelKindName(kind).data());
+}
+
+}  // namespace raystep::gui
