@@ -486,6 +486,12 @@ void MainWindow::openCompare() {
         statusBar()->showMessage(tr("No scene is open: nothing to compare."));
         return;
     }
+    // Compare mode replays whole traces: not while an exercise stops the replay (quiz mode).
+    if (session_.limit()) {
+        statusBar()->showMessage(
+            tr("Compare mode shows whole traces: answer the exercise first, or put it away."));
+        return;
+    }
     const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
     // 3D: the pixel being replayed (clicked, or a lesson's, in the lesson's image size), else
     // the image's centre.
