@@ -594,9 +594,7 @@ TEST(AppLifetimes, ExploringDisablesTheExercisesAndEscReturnsToTheLesson) {
             ASSERT_NE(openButton, nullptr);
             EXPECT_FALSE(openButton->isEnabled());
             EXPECT_TRUE(p->findChild<QLabel*>("exploreNote")->isVisible());
-            const Exercise& first = p->lesson().exercises[0];
-            EXPECT_FALSE(
-                p->submit(typedAnswer(first, referenceAnswer(first, *run.log, p->lesson().file))));
+            EXPECT_FALSE(p->submit("1"));
             EXPECT_TRUE(p->feedback().contains("lesson's own trace"))
                 << p->feedback().toStdString();
             // One key back: the lesson's trace, its exercises enabled again.
@@ -607,6 +605,8 @@ TEST(AppLifetimes, ExploringDisablesTheExercisesAndEscReturnsToTheLesson) {
             EXPECT_TRUE(openButton->isEnabled());
             for (std::size_t e = 0; e < l.exercises.size(); ++e) {
                 const Exercise& ex = p->lesson().exercises[e];
+                // Graded from the sweep's table, which takes its own run (lesson_gui_test.cpp).
+                if (ex.kind == ExerciseKind::SweepPick) continue;
                 p->selectExercise(static_cast<int>(e));
                 const Answer ref = referenceAnswer(ex, *run.log, p->lesson().file);
                 EXPECT_TRUE(p->submit(typedAnswer(ex, ref)))
