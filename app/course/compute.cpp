@@ -64,7 +64,10 @@ Evaluation evaluate(const ComputeGiven& g) {
                 intersectSphereTextbook<double>(o, d, vec(g.center), g.radius, 0.0, kInf, log);
             for (const auto& s : log.steps) e.q[s.name] = s.v[0];
             if (t) e.q["t"] = *t;
-            if (!e.q.count("t0")) e.undefinedWhy = "the ray misses the sphere (discriminant < 0)";
+            if (!e.q.count("t0"))
+                e.undefinedWhy = "the ray misses the sphere (discriminant < 0)";
+            else if (!t)
+                e.undefinedWhy = "both roots lie behind the origin (the sphere is behind the ray)";
             break;
         }
         case Shape::Triangle: {

@@ -723,11 +723,15 @@ std::string formatAnswer(const Exercise& ex, const Answer& a, Language lang) {
             return a.numbers.size() < 2 ? ""
                                         : std::string(axisName(static_cast<int>(a.numbers[0]))) +
                                               "=" + formatNumber(a.numbers[1], lang);
-        case ExerciseKind::HitOrMiss:
+        case ExerciseKind::HitOrMiss: {
             if (!a.hit) return "";
-            if (!*a.hit) return tr(lang, "miss");
-            return a.numbers.empty() ? tr(lang, "hit")
-                                     : tr(lang, "hit") + " " + formatNumber(a.numbers[0], lang);
+            // The answer's keywords, which parseAnswer reads in either language: a grammar, not
+            // a translation (the catalogue's "hit" is the event list's noun, "intersezione").
+            const bool it = lang == Language::It;
+            if (!*a.hit) return it ? "mancata" : "miss";
+            const std::string word = it ? "colpita" : "hit";
+            return a.numbers.empty() ? word : word + " " + formatNumber(a.numbers[0], lang);
+        }
         case ExerciseKind::Choice:
             return a.numbers.empty() ? "" : letter(static_cast<int>(a.numbers[0]));
         case ExerciseKind::Sequence: {
@@ -847,10 +851,31 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 v.slip = sequenceSlip(c, answer, ref, lang);
                 break;
             case ExerciseKind::Choice: {
-                const auto& chosen = ex.choices.at(static_cast<std::size_t>(given));
+                if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;
+                const auto& chosen = ex.choices[static_cast<std::size_t>(given)];
                 v.slip = trf(
                     lang, "%1) %2: %3",
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
+                break;
+            }
+            case ExerciseKind::PickSplit: {
+                if (answer.numbers.size() != 2) break;
+                const auto candidates = splitCandidates(ex, log);
+                const std::string plane = std::string(axisName(static_cast<int>(given))) + " = " +
+                                          formatNumber(answer.numbers[1], lang);
+                const SplitCandidate* mine = nullptr;
+                for (const SplitCandidate& s : candidates)
+                    if (s.axis == given && close(answer.numbers[1], s.position, 1e-9)) mine = &s;
+                if (!mine) {
+                    v.slip = trf(lang, "%1 is not one of the candidates listed.", {plane});
+                    break;
+                }
+                const auto n = [&](double x) { return formatNumber(x, lang); };
+                v.slip = trf(lang,
+                             "%1 costs C_trav + C_isect (%2 · %3 + %4 · %5) = %6, more than the "
+                             "cheapest.",
+                             {plane, n(mine->pl), std::to_string(mine->nl), n(mine->pr),
+                              std::to_string(mine->nr), n(mine->sahCost)});
                 break;
             }
             case ExerciseKind::HitOrMiss:

@@ -714,76 +714,100 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
               std::string::npos);
 }
 
-// A class of four sheets for lesson 6 (tDeltaY = 1/0.75, tMaxX after the step = 1.6, next cell
-// (2, 2), by hand as in the course tests): per exercise, right, wrong, not answered and the most
-// common wrong answer; "-1,3333" and "-1.3333" read the same and count as one.
+// A lesson of its own, so the class tests do not follow the built-in lessons' edits: 4 x 4 unit
+// cells (the walls x = 0 and y = 0 give the bounds), the ray (0.5, 0.5) + t (1, 0.5). By hand:
+// tDeltaY = 1 / 0.5 = 2; in (0, 0) tMaxX = 0.5 < tMaxY = 1, so the second cell is (1, 0); the walk
+// (0, 0) (1, 0) (1, 1) (2, 1) (3, 1) (3, 2) leaves at x = 4 (t = 3.5): 6 cells.
+void writeClassLesson(const fs::path& dir) {
+    std::ofstream(dir / "room.json")
+        << R"({"dimensions": 2, "grid": [4, 4], "ray": {"origin": [0.5, 0.5], "dir": [1, 0.5]},
+               "segments": [{"from": [0, 0], "to": [4, 0]}, {"from": [0, 4], "to": [0, 0]}]})";
+    std::ofstream(dir / "walk.json") << R"({
+        "format": "raystep-lesson", "version": 1, "id": "walk", "number": 42,
+        "title": {"en": "Walk", "it": "Cammino"}, "text": {"en": "A walk.", "it": "Un cammino."},
+        "scene": "room.json", "setup": {"accel": "grid"}, "trace": {"ray": "example"},
+        "exercises": [
+          {"id": "tdelta-y", "type": "value", "quantity": "tDelta.y", "prompt": {"en": "?"}},
+          {"id": "next-cell", "type": "next_cell", "at": {"before": "dda_cell", "nth": 2},
+           "prompt": {"en": "?"}},
+          {"id": "cells", "type": "count", "count": "dda_cell", "prompt": {"en": "?"}}]})";
+}
+
+// A class of four sheets: per exercise, right, wrong, not answered and the most common wrong
+// answer; "-2" and "-2,0" read the same and count as one, "1|0" cannot be read and is wrong.
 TEST_F(Cli, LessonCheckOverAFolderGivesTheClassTable) {
+    writeClassLesson(dir);
+    const CliRun key = run("lesson key walk.json");
+    ASSERT_EQ(key.code, 0) << key.err;
+    const auto j = nlohmann::json::parse(key.out);
+    EXPECT_EQ(j["answers"]["tdelta-y"], "2");
+    EXPECT_EQ(j["answers"]["next-cell"], "1,0");
+    EXPECT_EQ(j["answers"]["cells"], "6");
     fs::create_directories(dir / "class");
-    write("class/ada.json", R"({"lesson": "6", "answers": {"tdelta-y": "1.3333",
-        "tmax-x-after-step": "1.6", "next-cell": "2,2"}})");
-    write("class/bo.json", R"({"lesson": "6", "answers": {"tdelta-y": "-1,3333",
-        "next-cell": "3,1"}})");
-    write("class/cy.json", R"({"lesson": "grid-2d-dda", "answers": {"tdelta-y": "-1.3333",
-        "tmax-x-after-step": "0,6", "next-cell": [3, 1]}})");
-    write("class/di.json", R"({"lesson": 6, "answers": {"tdelta-y": "0.75",
-        "tmax-x-after-step": "1,6", "next-cell": "2|2"}})");
+    write("class/ada.json", R"({"lesson": "walk", "answers": {"tdelta-y": "2",
+        "next-cell": "1,0", "cells": 6}})");
+    write("class/bo.json", R"({"lesson": "walk", "answers": {"tdelta-y": "-2",
+        "next-cell": "0,1"}})");
+    write("class/cy.json", R"({"lesson": "walk", "answers": {"tdelta-y": "-2,0",
+        "next-cell": [0, 1], "cells": "5"}})");
+    write("class/di.json", R"({"lesson": 42, "answers": {"tdelta-y": "0.5",
+        "next-cell": "1|0", "cells": "6"}})");
     write("class/notes.txt", "not a sheet: only *.json files are read");
-    const CliRun md = run("lesson check 6 --answers class");
+    const CliRun md = run("lesson check walk.json --answers class");
     ASSERT_EQ(md.code, 0) << md.err;
-    EXPECT_NE(md.out.find(": 4 answer sheets"), std::string::npos) << md.out;
-    EXPECT_NE(
-        md.out.find("| exercise | right answers | wrong answers | not answered | most common wrong "
-                    "answer | how many |"),
-        std::string::npos)
+    EXPECT_NE(md.out.find("Lesson 42. Walk: 4 answer sheets"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| exercise | right answers | wrong answers | not answered | most "
+                          "common wrong answer | how many |"),
+              std::string::npos)
         << md.out;
-    EXPECT_NE(md.out.find("| tdelta-y | 1 | 3 | 0 | -1,3333 | 2 |"), std::string::npos) << md.out;
-    EXPECT_NE(md.out.find("| tmax-x-after-step | 2 | 1 | 1 | 0,6 | 1 |"), std::string::npos)
-        << md.out;
-    EXPECT_NE(md.out.find("| next-cell | 1 | 3 | 0 | 3,1 | 2 |"), std::string::npos) << md.out;
-    const CliRun csv = run("lesson check 6 --answers class --format csv");
+    EXPECT_NE(md.out.find("| tdelta-y | 1 | 3 | 0 | -2 | 2 |"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| next-cell | 1 | 3 | 0 | 0,1 | 2 |"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| cells | 2 | 1 | 1 | 5 | 1 |"), std::string::npos) << md.out;
+    const CliRun csv = run("lesson check walk.json --answers class --format csv");
     ASSERT_EQ(csv.code, 0) << csv.err;
     EXPECT_EQ(csv.out,
               "exercise,right,wrong,not_answered,most_common_wrong,how_many\n"
-              "tdelta-y,1,3,0,\"-1,3333\",2\n"
-              "tmax-x-after-step,2,1,1,\"0,6\",1\n"
-              "next-cell,1,3,0,\"3,1\",2\n");
-    const CliRun it = run("lesson check 6 --answers class --lang it");
+              "tdelta-y,1,3,0,-2,2\n"
+              "next-cell,1,3,0,\"0,1\",2\n"
+              "cells,2,1,1,5,1\n");
+    const CliRun it = run("lesson check walk.json --answers class --lang it");
     ASSERT_EQ(it.code, 0) << it.err;
+    EXPECT_NE(it.out.find("Lezione 42. Cammino: 4 fogli di risposte"), std::string::npos) << it.out;
     EXPECT_NE(it.out.find("| esercizio | risposte giuste | risposte sbagliate | senza risposta |"),
               std::string::npos)
         << it.out;
     // One sheet as a table, too.
-    const CliRun one = run("lesson check 6 --answers class/bo.json --format csv");
+    const CliRun one = run("lesson check walk.json --answers class/bo.json --format csv");
     ASSERT_EQ(one.code, 0) << one.err;
-    EXPECT_NE(one.out.find("tmax-x-after-step,0,0,1,,\n"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("cells,0,0,1,,\n"), std::string::npos) << one.out;
 }
 
 // A bad sheet anywhere in the folder: one line naming its file, line and key, exit 2, and no
 // table at all (nothing half written).
 TEST_F(Cli, LessonCheckOverAFolderStopsAtABadSheet) {
+    writeClassLesson(dir);
     fs::create_directories(dir / "class");
-    write("class/a.json", R"({"lesson": "6", "answers": {"next-cell": "2,2"}})");
-    write("class/b.json", "{\"lesson\": \"6\",\n \"answers\": {\n \"next-cel\": [2, 2]}}");
-    write("class/c.json", R"({"lesson": "6", "answers": {"next-cell": "3,1"}})");
-    const CliRun r = run("lesson check 6 --answers class");
+    write("class/a.json", R"({"lesson": "walk", "answers": {"next-cell": "1,0"}})");
+    write("class/b.json", "{\"lesson\": \"walk\",\n \"answers\": {\n \"next-cel\": [1, 0]}}");
+    write("class/c.json", R"({"lesson": "walk", "answers": {"next-cell": "0,1"}})");
+    const CliRun r = run("lesson check walk.json --answers class");
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find("class/b.json:3: key 'answers.next-cel': lesson grid-2d-dda has no "
-                         "exercise"),
+    EXPECT_NE(r.err.find("class/b.json:3: key 'answers.next-cel': lesson walk has no exercise"),
               std::string::npos)
         << r.err;
-    write("class/b.json", "{\"lesson\": \"6\",\n \"answers\": {\"next-cell\": {}}}");
-    const CliRun parse = run("lesson check 6 --answers class --format csv");
+    write("class/b.json", "{\"lesson\": \"walk\",\n \"answers\": {\"next-cell\": {}}}");
+    const CliRun parse = run("lesson check walk.json --answers class --format csv");
     EXPECT_EQ(parse.code, 2);
     EXPECT_EQ(parse.out, "");
     EXPECT_NE(parse.err.find("class/b.json:2: key 'answers.next-cell'"), std::string::npos)
         << parse.err;
     write("class/b.json", R"({"lesson": "7", "answers": {}})");
-    const CliRun other = run("lesson check 6 --answers class");
+    const CliRun other = run("lesson check walk.json --answers class");
     EXPECT_EQ(other.code, 2);
     EXPECT_NE(other.err.find("class/b.json:1: key 'lesson'"), std::string::npos) << other.err;
-    const CliRun format = run("lesson check 6 --answers class/a.json --format html");
+    const CliRun format = run("lesson check walk.json --answers class/a.json --format html");
     EXPECT_NE(format.code, 0);
     EXPECT_EQ(format.out, "");
 }

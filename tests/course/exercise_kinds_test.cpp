@@ -84,6 +84,17 @@ TEST(ComputeExercises, TheSphereByHand) {
     } catch (const LessonError& e) {
         EXPECT_TRUE(has(e.what(), "misses the sphere")) << e.what();
     }
+    // A sphere behind the ray: the roots are t0 = -6, t1 = -4, and no t lies ahead.
+    const std::string behind =
+        "{\"ray\": {\"o\": [0, 0, -5], \"d\": [0, 0, -1]}, \"sphere\": {\"c\": [0, 0, 0], \"r\": "
+        "1}}";
+    EXPECT_EQ(answerOf(compute(behind, "t0")), -6.0);
+    try {
+        computeAnswer(compute(behind, "t"), "c.json");
+        ADD_FAILURE();
+    } catch (const LessonError& e) {
+        EXPECT_TRUE(has(e.what(), "behind the origin")) << e.what();
+    }
 }
 
 TEST(ComputeExercises, TheSpheresSlipsAreNamedWithTheStudentsNumber) {
@@ -216,6 +227,38 @@ TEST(ComputeExercises, BadGivenDataNameLineAndKey) {
              "\"r\": 1}}",
              "u"),
         14, "exercises[0].quantity", "this shape's quantities are a, b, c");
+}
+
+// Data at the ends of double's range: a finite answer or the lecturer's error, never a crash,
+// an infinity or a NaN passed on as an answer.
+TEST(ComputeExercises, ExtremeDataGiveAnAnswerOrAnError) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"{\"ray\": {\"o\": [1e300, 0, 0], \"d\": [-1e-300, 0, 0]}, \"sphere\": {\"c\": [0, 0, 0], "
+         "\"r\": 1e300}}",
+         "t"},
+        {"{\"ray\": {\"o\": [0, 0], \"d\": [1e-300, 1]}, \"grid\": {\"min\": [0, 0], \"cell\": "
+         "[1e300, 1e300], \"res\": [1000000, 1000000]}}",
+         "tMax.x"},
+        {"{\"ray\": {\"o\": [-1e308, 0, 0], \"d\": [1e308, 1, 1]}, \"box\": {\"min\": [0, 0, 0], "
+         "\"max\": [1e308, 1e308, 1e308]}}",
+         "t_exit"},
+        {"{\"node\": {\"min\": [-1e308, 0, 0], \"max\": [1e308, 1, 1]}, \"plane\": {\"axis\": "
+         "\"x\", \"at\": 0}, \"nl\": 1, \"nr\": 1}",
+         "sahCost"},
+        {"{\"ray\": {\"o\": [0, 0, 0], \"d\": [1e-320, 0, 0]}, \"plane\": {\"n\": [1e-320, 0, 0], "
+         "\"k\": 1e308}}",
+         "t"}};
+    for (const auto& [given, quantity] : cases) {
+        const Exercise ex = compute(given, quantity);
+        try {
+            const double v = computeAnswer(ex, "c.json");
+            EXPECT_TRUE(std::isfinite(v)) << given;
+            EXPECT_FALSE(computeWorking(ex, Language::It).empty());
+            computeSlip(ex, v + 1.0, Language::En);
+        } catch (const LessonError& e) {
+            EXPECT_TRUE(has(e.what(), "is not defined for these data")) << e.what();
+        }
+    }
 }
 
 TEST(ComputeExercises, ThePromptMustStateEveryGivenNumberInBothLanguages) {
@@ -492,6 +535,35 @@ TEST(Slips, TheFartherHitOfTheSlidesBreakAndTDeltaWithoutAbs) {
     const Verdict sign =
         checkAnswer(up.exercises[0], *upRun.log, Answer{{-4.0 / 3}, {}}, Language::En, up.file);
     EXPECT_TRUE(has(sign.slip, "wrong sign")) << sign.slip;
+}
+
+// A dearer plane is named with its own cost, as the trace's candidate event records it; a plane
+// that is not a candidate is named as such.
+TEST(Slips, ADearerSplitIsNamedWithItsCost) {
+    const Lesson l = loadLessonText(
+        "{\"format\": \"raystep-lesson\", \"version\": 1, \"id\": \"t\", \"number\": 1,\n"
+        "\"title\": {\"en\": \"T\"}, \"text\": {\"en\": \"x\"}, \"scene\": \"lecture-grid\",\n"
+        "\"setup\": {\"accel\": \"kdtree\", \"split\": \"sah\"}, \"trace\": {\"build\": true},\n"
+        "\"exercises\": [{\"id\": \"p\", \"type\": \"pick_split\", \"prompt\": {\"en\": "
+        "\"?\"}}]}",
+        "p.json");
+    const LessonRun run = runLesson(l);
+    const Exercise& ex = l.exercises[0];
+    const auto candidates = splitCandidates(ex, *run.log);
+    ASSERT_GT(candidates.size(), 2u);
+    double best = candidates[0].sahCost;
+    for (const SplitCandidate& c : candidates) best = std::min(best, c.sahCost);
+    const SplitCandidate* dear = nullptr;
+    for (const SplitCandidate& c : candidates)
+        if (c.sahCost > best * 1.01) dear = &c;
+    ASSERT_NE(dear, nullptr);
+    const Verdict v = checkAnswer(ex, *run.log, Answer{{double(dear->axis), dear->position}, {}},
+                                  Language::En, l.file);
+    EXPECT_FALSE(v.correct);
+    EXPECT_TRUE(has(v.slip, " = " + formatNumber(dear->sahCost) + ", more than the cheapest"))
+        << v.slip;
+    const Verdict none = checkAnswer(ex, *run.log, Answer{{0, -1234.5}, {}}, Language::It, l.file);
+    EXPECT_TRUE(has(none.slip, "x = -1234,5 non è uno dei candidati")) << none.slip;
 }
 
 TEST(Quiz, TheReplayLimitIsTheExercisesPosition) {
