@@ -467,6 +467,8 @@ void MainWindow::replayBuild() {
 
 void MainWindow::setLanguage(Language lang) {
     lessons_->setLanguage(lang);
+    view2D_->setLanguage(lang);
+    view3D_->setLanguage(lang);
 }
 
 void MainWindow::setLecturerMode(bool on) {
