@@ -484,6 +484,9 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
         SCOPED_TRACE(std::string(c.key));
         EXPECT_GT(pixelsNear(three, c.r, c.g, c.b, 2), 30);  // at least its legend stroke
     }
+    // The legend names the colours as the lessons' {colour:KEY} do, in the app's language.
+    EXPECT_TRUE(rayKindLabel(RayKind::Shadow, Language::En).endsWith("(yellow)"));
+    EXPECT_TRUE(rayKindLabel(RayKind::Shadow, Language::It).endsWith("(giallo)"));
     // The primary ray is drawn in the primary's colour beyond the legend: more such pixels
     // with the rays than before any ray began.
     const PaletteColour& primary = rayColour(RayKind::Primary);
