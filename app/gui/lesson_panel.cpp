@@ -563,7 +563,16 @@ void LessonPanel::check() {
         feedback_->setText(tr("Cannot read that answer: %1.").arg(q(why)));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
+    Verdict v;
+    try {
+        v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
+    } catch (const LessonError& e) {
+        // A lesson whose trace lacks what the exercise asks about: say so, grade nothing.
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(q(e.what()));
+        return;
+    }
     LessonProgress::ExerciseRecord& rec = record(exercise_);
     const bool wasSolved = rec.correct;
     ++rec.attempts;
@@ -652,7 +661,14 @@ void LessonPanel::revealAnswer() {
         feedback_->setText(tr("Run the sweep to see the answer: it is read from its table."));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
+    Verdict v;
+    try {
+        v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
+    } catch (const LessonError& e) {
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(q(e.what()));
+        return;
+    }
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
 }

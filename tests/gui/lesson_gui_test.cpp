@@ -637,6 +637,15 @@ TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
     QTest::keyClicks(answer, "3,5858");
     QTest::keyClick(answer, Qt::Key_Return);
     EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+
+    // Lecturer mode shows each kind's answer: b), the three cells, t0.
+    w.setLecturerMode(true);
+    const char* answers[] = {"b", "1,0; 1,1; 2,1", "3.58579"};
+    for (int e = 0; e < 3; ++e) {
+        p->selectExercise(e);
+        EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
+        EXPECT_TRUE(p->feedback().contains(answers[e])) << p->feedback().toStdString();
+    }
 }
 
 // A sweep_pick is graded from the sweep's table: checked before the sweep has run, it starts
