@@ -144,7 +144,7 @@ int check(const Lesson& l, const LessonArgs& a, Language lang) {
     const std::string& answersPath = a.answers;
     const bool json = a.json;
     const AnswerSheet& sheet = sheets.front().second;
-    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath, &sweep);
+    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath, &sweep, run.scene.get());
     if (json) {
         nlohmann::ordered_json items = nlohmann::ordered_json::array();
         for (const auto& i : g.items)

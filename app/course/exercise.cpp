@@ -4,6 +4,7 @@
 #include "course/exercise.h"
 
 #include "feedback_text.h"
+#include "miss_cause.h"
 
 #include "course/compute.h"
 #include "course/lesson_trace.h"
@@ -96,6 +97,7 @@ struct Context {
     const std::string& file;
     std::size_t at;
     const std::vector<GridSweepRow>* sweep;
+    const LessonScene* scene = nullptr;
     [[noreturn]] void fail(const std::string& message) const {
         throw LessonError(file, ex.line, "exercises." + ex.id, message);
     }
@@ -348,7 +350,11 @@ Reference reference(const Context& c, Language lang) {
             if (!t) c.fail("no primitive test follows its position");
             a.hit = t->second.hit;
             if (t->second.hit && c.ex.withT) a.numbers.push_back(t->second.t);
-            why = feedback::hitOrMiss(lang, t->second);
+            const std::string cause =
+                c.scene ? feedback::missCause(*c.scene, log, t->first, lang) : std::string();
+            why = cause.empty() ? feedback::hitOrMiss(lang, t->second)
+                                : trf(lang, "The test of primitive %1 fails. %2",
+                                      {std::to_string(t->second.prim), cause});
             ref.source = t->first;
             break;
         }
@@ -780,8 +786,10 @@ std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log) {
 }
 
 Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answer, Language lang,
-                    const std::string& lessonFile, const std::vector<GridSweepRow>* sweep) {
-    const Context c = contextOf(ex, log, lessonFile, sweep);
+                    const std::string& lessonFile, const std::vector<GridSweepRow>* sweep,
+                    const LessonScene* scene) {
+    Context c = contextOf(ex, log, lessonFile, sweep);
+    c.scene = scene;
     const Reference r = reference(c, lang);
     const Answer& ref = r.answer;
     Verdict v;
@@ -856,6 +864,19 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 v.slip = trf(
                     lang, "%1) %2: %3",
                     {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
+                break;
+            }
+            case ExerciseKind::SweepPick: {
+                std::string list;
+                bool listed = false;
+                for (const GridSweepRow& row : *sweep) {
+                    list += (list.empty() ? "" : ", ") + std::to_string(row.resolution);
+                    listed = listed || row.resolution == given;
+                }
+                v.slip = listed ? trf(lang, "At %1 the metric is higher than at %2.",
+                                      {formatNumber(given, lang), v.expected})
+                                : trf(lang, "%1 is not one of the sweep's resolutions (%2).",
+                                      {formatNumber(given, lang), list});
                 break;
             }
             case ExerciseKind::PickSplit: {

@@ -6,11 +6,14 @@
 #include "course/grid_sweep.h"
 #include "course/lesson.h"
 
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace raystep {
@@ -41,6 +44,9 @@ std::vector<SplitCandidate> splitCandidates(const Exercise& ex, const EventLog& 
 Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
                        const std::vector<GridSweepRow>* sweep = nullptr);
 
+/// The lesson's scene, when the caller has it: a missed test's feedback then names the cause.
+using LessonScene = std::variant<Scene, Scene2D>;
+
 struct Verdict {
     bool correct = false;
     std::string expected;  // the reference answer, as text in the verdict's language
@@ -48,8 +54,8 @@ struct Verdict {
     std::string slip;      // the slip the wrong answer betrays, with the student's numbers
 };
 Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answer, Language lang,
-                    const std::string& lessonFile,
-                    const std::vector<GridSweepRow>* sweep = nullptr);
+                    const std::string& lessonFile, const std::vector<GridSweepRow>* sweep = nullptr,
+                    const LessonScene* scene = nullptr);
 
 /// Quiz mode: while `ex` is open (not yet answered right), the replay must not pass this cursor
 /// (its `at`, resolved in `log`). nullopt for the kinds whose answer is not in the trace (choice,

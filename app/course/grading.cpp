@@ -225,7 +225,8 @@ AnswerSheet loadAnswerSheetFile(const std::string& path) {
 
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile,
-                   const std::vector<GridSweepRow>* sweep) {
+                   const std::vector<GridSweepRow>* sweep,
+                   const std::variant<Scene, Scene2D>* scene) {
     if (sheet.lesson != lesson.id && sheet.lesson != std::to_string(lesson.number))
         throw LessonError(sheetFile, sheet.lessonLine, "lesson",
                           "the answers are for lesson '" + printable(sheet.lesson) + "', not '" +
@@ -247,7 +248,8 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
             item.given = it->second;
             given = parseAnswer(ex, it->second, &why, lang);
         }
-        const Verdict v = checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file, sweep);
+        const Verdict v =
+            checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file, sweep, scene);
         item.correct = given.has_value() && v.correct;
         item.expected = v.expected;
         item.feedback = item.answered && !given ? why + ". " + v.feedback : v.feedback;

@@ -60,7 +60,8 @@ struct Grade {
 };
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile,
-                   const std::vector<GridSweepRow>* sweep = nullptr);
+                   const std::vector<GridSweepRow>* sweep = nullptr,
+                   const std::variant<Scene, Scene2D>* scene = nullptr);
 
 /// A class's answers to one lesson, per exercise (`raystep-cli lesson check --answers FOLDER`):
 /// how many were right, wrong (an unreadable answer is wrong) or not answered, and the most common

@@ -129,19 +129,20 @@ struct ChoiceOption {
 struct ComputeGiven {
     enum class Shape { Sphere, Triangle, Plane, Box, Grid, Node };
     Shape shape = Shape::Sphere;
-    int dims = 3;                                // Grid and Node: 2 or 3, by the vectors' length
-    std::array<double, 3> o{}, d{};              // the ray (all but Node)
-    std::array<double, 3> center{};              // Sphere
-    double radius = 0.0;                         //
+    int dims = 3;                    // Grid and Node: 2 or 3, by the vectors' length
+    std::array<double, 3> o{}, d{};  // the ray (all but Node)
+    std::array<double, 3> center{};  // Sphere: centre and radius
+    double radius = 0.0;
     std::array<std::array<double, 3>, 3> tri{};  // Triangle: a, b, c
-    std::array<double, 3> normal{};              // Plane: points p with p.n = k
-    double k = 0.0;                              //
-    std::array<double, 3> lo{}, hi{};            // Box, Node: min and max; Grid: min and cell size
-    std::array<int, 3> res{0, 0, 0};             // Grid: cells per axis (0: as many as needed)
-    int axis = 0;                                // Node: the plane's axis and position
-    double at = 0.0;                             //
-    int nl = 0, nr = 0;                          // Node: primitives left and right
-    double cTrav = 1.0, cIsect = 5.0, emptyBonus = 0.5;  // Node: the lesson's setup
+    std::array<double, 3> normal{};              // Plane: the points p with p.n = k
+    double k = 0.0;
+    std::array<double, 3> lo{}, hi{};  // Box, Node: min and max; Grid: min and cell size
+    std::array<int, 3> res{0, 0, 0};   // Grid: cells per axis (0: 1024)
+    int axis = 0;                      // Node: the plane's axis and position
+    double at = 0.0;
+    int nl = 0, nr = 0;  // Node: primitives left and right
+    // Node's SAH and SweepPick's cost: the lesson's setup (c_trav, c_isect, empty_bonus).
+    double cTrav = 1.0, cIsect = 5.0, emptyBonus = 0.5;
     std::vector<double> numbers;  // every number given, as written, for the prompt check
 };
 

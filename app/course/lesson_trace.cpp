@@ -182,12 +182,16 @@ std::string lowerAscii(std::string_view s) {
 }
 }  // namespace
 
-bool eventMatchesFilter(const Event& e, int dims, std::string_view filter) {
+bool eventMatchesFilter(const Event& e, std::string_view shownLine, std::string_view filter) {
     if (filter.empty()) return true;
     const std::string f = lowerAscii(filter);
     // The event list filters case-insensitively (QSortFilterProxyModel), so does this.
     return lowerAscii(kEventNames[e.index()]).find(f) != std::string::npos ||
-           lowerAscii(eventText(e, dims)).find(f) != std::string::npos;
+           lowerAscii(shownLine).find(f) != std::string::npos;
+}
+
+bool eventMatchesFilter(const Event& e, int dims, std::string_view filter) {
+    return eventMatchesFilter(e, eventText(e, dims), filter);
 }
 
 }  // namespace raystep

@@ -812,6 +812,43 @@ TEST_F(Cli, LessonCheckOverAFolderStopsAtABadSheet) {
     EXPECT_EQ(format.out, "");
 }
 
+// Why a test misses, named from the scene. By hand, the ray (0.5, 0.5) + t (1, 0) through brute
+// force, primitives in id order: circle 0 at (2, 0.5), r 0.5, is hit at t = 1; circle 1 at
+// (4.5, 0.5), r 0.2, at t = 3.8, beyond it; circle 2 at (2.5, 3), r 0.5: B^2 - 4AC = 16 - 40 =
+// -24; segment 3 (x = 1.5, y 1 to 2) is met at y = 0.5, s = -0.5; segment 4 (x = 0.2) at
+// t = -0.3, behind the origin.
+TEST_F(Cli, AMissedTestNamesItsCause) {
+    write("misses.json", R"({"dimensions": 2, "grid": [4, 2],
+        "ray": {"origin": [0.5, 0.5], "dir": [1, 0]},
+        "circles": [{"center": [2, 0.5], "radius": 0.5}, {"center": [4.5, 0.5], "radius": 0.2},
+                    {"center": [2.5, 3], "radius": 0.5}],
+        "segments": [{"from": [1.5, 1], "to": [1.5, 2]}, {"from": [0.2, 0], "to": [0.2, 1]}]})");
+    std::string exercises;
+    for (int k = 2; k <= 5; ++k)
+        exercises += std::string(k > 2 ? "," : "") + R"({"id": "t)" + std::to_string(k) +
+                     R"(", "type": "hit_or_miss", "at": {"before": "primitive_test", "nth": )" +
+                     std::to_string(k) + R"(}, "prompt": {"en": "?"}})";
+    write("m.json", R"({"format": "raystep-lesson", "version": 1, "id": "m", "number": 43,
+        "title": {"en": "M"}, "text": {"en": "M."}, "scene": "misses.json",
+        "trace": {"ray": "example"}, "exercises": [)" +
+                        exercises + "]}");
+    write("a.json", R"({"lesson": "m", "answers": {"t2": "hit", "t3": "hit", "t4": "hit",
+        "t5": "hit"}})");
+    const CliRun r = run("lesson check m.json --answers a.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("Its intersection, t = 3.8, lies beyond the nearest one found so far "
+                         "(t = 1)."),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("The discriminant B² − 4AC = -24 is negative"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("outside the segment (at s = -0.5 of it"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("behind the origin (t = -0.3)"), std::string::npos) << r.out;
+    const CliRun it = run("lesson check m.json --answers a.json --lang it");
+    EXPECT_NE(it.out.find("Il discriminante B² − 4AC = -24 è negativo"), std::string::npos)
+        << it.out;
+}
+
 // A lesson file with errata and the new kinds: show prints the errata as a quoted block and the
 // options; key and check grade them. By hand: the sphere c = (0, 0, 0), R = 1 from o = (0, 0, 5)
 // along (0, 0, -1): A = 1, B = -10, C = 24, disc = 4, t = (10 - 2) / 2 = 4.

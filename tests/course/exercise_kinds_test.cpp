@@ -261,6 +261,75 @@ TEST(ComputeExercises, ExtremeDataGiveAnAnswerOrAnError) {
     }
 }
 
+// Every new key with a value of the wrong kind: a LessonError naming that key, never a crash.
+TEST(NewKinds, EveryNewKeyOfTheWrongKindIsNamed) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": 3, "
+         "\"answer\": 0}",
+         "exercises[0].choices"},
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": "
+         "[{\"text\": {\"en\": \"a\"}}, {\"text\": {\"en\": \"b\"}, \"why\": {\"en\": \"w\"}}], "
+         "\"answer\": 0}",
+         "exercises[0].choices[0]"},
+        {"{\"id\": \"a\", \"type\": \"choice\", \"prompt\": {\"en\": \"?\"}, \"choices\": "
+         "[{\"text\": {\"en\": \"a\"}, \"why\": {\"en\": \"w\"}}, {\"text\": {\"en\": \"b\"}, "
+         "\"why\": {\"en\": \"w\"}}], \"answer\": \"b\"}",
+         "exercises[0].answer"},
+        {"{\"id\": \"a\", \"type\": \"sequence\", \"of\": \"ray_hit\", \"prompt\": {\"en\": "
+         "\"?\"}}",
+         "exercises[0].of"},
+        {"{\"id\": \"a\", \"type\": \"sequence\", \"of\": \"dda_cell\", \"length\": 0, "
+         "\"prompt\": {\"en\": \"?\"}}",
+         "exercises[0].length"},
+        {"{\"id\": \"a\", \"type\": \"value\", \"quantity\": \"hit.t\", \"of\": \"dda_cell\", "
+         "\"prompt\": {\"en\": \"?\"}}",
+         "exercises[0].of"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": []}",
+         "exercises[0].given"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": {\"ray\": {\"o\": [0, 0, 0], \"d\": [0, 0, 1]}, \"sphere\": {\"c\": [0, 0, "
+         "5], \"r\": -1}}}",
+         "exercises[0].given.sphere.r"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"t\", \"prompt\": {\"en\": \"?\"}, "
+         "\"given\": {\"ray\": {\"o\": [0, 0, 0], \"d\": [0, 0, 1]}, \"triangle\": [[0, 0, 0], "
+         "[1, 0, 0]]}}",
+         "exercises[0].given.triangle"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"tMax.x\", \"prompt\": {\"en\": "
+         "\"?\"}, \"given\": {\"ray\": {\"o\": [0, 0], \"d\": [1, 1]}, \"grid\": {\"min\": [0, 0], "
+         "\"cell\": [0, 1]}}}",
+         "exercises[0].given.grid.cell"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"tMax.x\", \"prompt\": {\"en\": "
+         "\"?\"}, \"given\": {\"ray\": {\"o\": [0, 0], \"d\": [1, 1]}, \"grid\": {\"min\": [0, 0], "
+         "\"cell\": [1, 1], \"res\": [4]}}}",
+         "exercises[0].given.grid.res"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"pL\", \"prompt\": {\"en\": "
+         "\"?\"}, "
+         "\"given\": {\"node\": {\"min\": [0, 0], \"max\": [1, 1]}, \"plane\": {\"axis\": \"z\", "
+         "\"at\": 0.5}, \"nl\": 1, \"nr\": 1}}",
+         "exercises[0].given.plane.axis"},
+        {"{\"id\": \"a\", \"type\": \"compute\", \"quantity\": \"pL\", \"prompt\": {\"en\": "
+         "\"?\"}, "
+         "\"given\": {\"node\": {\"min\": [0, 0], \"max\": [1, 1]}, \"plane\": {\"axis\": \"x\", "
+         "\"at\": 0.5}, \"nl\": -1, \"nr\": 1}}",
+         "exercises[0].given.nl"},
+        {"{\"id\": \"a\", \"type\": \"sweep_pick\", \"metric\": \"trace_ms\", \"prompt\": {\"en\": "
+         "\"?\"}}",
+         "exercises[0].metric"},
+    };
+    for (const auto& [exercise, key] : cases) {
+        try {
+            loadLessonText(lessonWith(",\n\"sweep\": {\"grid_res\": [1, 2]},\n\"exercises\": [" +
+                                      exercise + "]"),
+                           "k.json");
+            ADD_FAILURE() << "accepted: " << exercise;
+        } catch (const LessonError& e) {
+            EXPECT_EQ(e.key(), key) << e.what();
+            EXPECT_GT(e.line(), 0) << e.what();
+        }
+    }
+}
+
 TEST(ComputeExercises, ThePromptMustStateEveryGivenNumberInBothLanguages) {
     const auto lesson = [](const std::string& en, const std::string& it) {
         return loadLessonText(
@@ -428,6 +497,10 @@ TEST(NewKinds, ASweepPickIsGradedFromTheSweepsRows) {
     const Verdict v = checkAnswer(ex, log, Answer{{16}, {}}, Language::En, "s.json", &rows);
     EXPECT_FALSE(v.correct);
     EXPECT_TRUE(has(v.feedback, "16: 20.7")) << v.feedback;
+    EXPECT_TRUE(has(v.slip, "At 16 the metric is higher than at 8")) << v.slip;
+    const Verdict off = checkAnswer(ex, log, Answer{{5}, {}}, Language::It, "s.json", &rows);
+    EXPECT_TRUE(has(off.slip, "5 non è una delle risoluzioni della scansione (1, 2, 8, 16)"))
+        << off.slip;
     EXPECT_THROW(referenceAnswer(ex, log, "s.json"), LessonError) << "no rows, no grade";
     expectLessonError(lessonWith(",\n\"exercises\": [{\"id\": \"s\", \"type\": \"sweep_pick\", "
                                  "\"prompt\": {\"en\": \"?\"}}]"),
@@ -564,6 +637,35 @@ TEST(Slips, ADearerSplitIsNamedWithItsCost) {
         << v.slip;
     const Verdict none = checkAnswer(ex, *run.log, Answer{{0, -1234.5}, {}}, Language::It, l.file);
     EXPECT_TRUE(has(none.slip, "x = -1234,5 non è uno dei candidati")) << none.slip;
+}
+
+// A 3D miss, named from the scene. The ray (0, 0, 5) + t (0, 0, -1): sphere 0 at (3, 0, 0), r 1:
+// f = (-3, 0, 5), B = -10, C = 33, B^2 - 4AC = 100 - 132 = -32. Triangle 1, (1, 1, 0) (2, 1, 0)
+// (1, 2, 0): the plane z = 0 at t = 5, the point (0, 0, 0) = a - (b - a) - (c - a): u = v = -1.
+TEST(Slips, AMissIn3DNamesItsCause) {
+    Scene scene;
+    scene.spheres.push_back({Vec3(3, 0, 0), 1.0, 0});
+    scene.triangles.push_back({Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2, 0), 0});
+    EventLog log;
+    const std::uint32_t ray =
+        log.beginRay(Ray{Vec3(0, 0, 5), Vec3(0, 0, -1)}, RayKind::Primary, 0, kNoId);
+    log(PrimitiveTest{ray, 0, false, kInfinity});
+    log(PrimitiveTest{ray, 1, false, kInfinity});
+    Exercise ex;
+    ex.kind = ExerciseKind::HitOrMiss;
+    ex.at = ReplayPosition{ReplayPosition::Mode::Cursor, 1};
+    const LessonScene withScene = scene;
+    const Verdict sphere =
+        checkAnswer(ex, log, Answer{{}, true}, Language::En, "m.json", nullptr, &withScene);
+    EXPECT_TRUE(has(sphere.feedback, "B² − 4AC = -32 is negative")) << sphere.feedback;
+    ex.at.cursor = 2;
+    const Verdict tri =
+        checkAnswer(ex, log, Answer{{}, true}, Language::It, "m.json", nullptr, &withScene);
+    EXPECT_TRUE(has(tri.feedback, "fuori dal triangolo: u = -1, v = -1")) << tri.feedback;
+    // Without the scene, the general reasons.
+    const Verdict general = checkAnswer(ex, log, Answer{{}, true}, Language::En, "m.json");
+    EXPECT_TRUE(has(general.feedback, "a negative discriminant, an intersection behind"))
+        << general.feedback;
 }
 
 TEST(Quiz, TheReplayLimitIsTheExercisesPosition) {

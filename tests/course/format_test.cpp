@@ -93,13 +93,14 @@ TEST(LessonFormat, AHintIsOneTextOrSeveralRevealedInTurn) {
 
 TEST(LessonFormat, ColourNamesComeFromThePalette) {
     const Lesson l = loadLessonText(
-        lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"Primary rays are {colour:primary}, shadow "
-                   "rays {colour:shadow}.\",\n \"it\": [\"I raggi primari sono {colour:primary},\","
-                   " \"quelli d'ombra {colour:shadow}.\"]}}]"),
+        lessonWith(
+            ",\n\"steps\": [{\"text\": {\"en\": \"Primary rays are {colour:primary}, shadow "
+            "rays {colour:shadow}.\",\n \"it\": [\"I raggi primari sono in {colour:primary},\","
+            " \"quelli d'ombra in {colour:shadow}.\"]}}]"),
         "c.json");
     // The names as the palette's table gives them, written here by hand.
     EXPECT_EQ(l.steps[0].text.en, "Primary rays are red, shadow rays yellow.");
-    EXPECT_EQ(l.steps[0].text.it, "I raggi primari sono rosso,\nquelli d'ombra giallo.");
+    EXPECT_EQ(l.steps[0].text.it, "I raggi primari sono in rosso,\nquelli d'ombra in giallo.");
     expectLessonError(
         lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\",\n \"it\": \"{colour:mauve}\"}}]"), 12,
         "steps[0].text.it", "unknown colour {colour:mauve}");
@@ -152,6 +153,11 @@ TEST(LessonFormat, AFilterMatchesAKindNameOrTheEventsLine) {
     EXPECT_EQ(count(""), static_cast<int>(run.log->events().size()));
     EXPECT_EQ(count("split_chosen"), 0);
     EXPECT_GT(count("ray_begin"), 0);
+    // The line the app shows, in its language: the Italian word matches it, the kind name too.
+    const Event& first = run.log->events().front();
+    EXPECT_TRUE(eventMatchesFilter(first, "il raggio 0 inizia", "RAGGIO"));
+    EXPECT_TRUE(eventMatchesFilter(first, "il raggio 0 inizia", "ray_begin"));
+    EXPECT_FALSE(eventMatchesFilter(first, "il raggio 0 inizia", "cella"));
 }
 
 TEST(LessonFormat, ValidationRefusesAFilterThatShowsNothing) {
