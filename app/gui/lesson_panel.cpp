@@ -120,6 +120,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     el->addWidget(exerciseBody_);
     el = body;  // the prompt, the answer and the feedback go in the body
     prompt_ = new QLabel;
+    prompt_->setObjectName("prompt");
     prompt_->setWordWrap(true);
     prompt_->setTextFormat(Qt::MarkdownText);
     el->addWidget(prompt_);
@@ -360,8 +361,10 @@ void LessonPanel::updateExerciseBox() {
                                 ? tr("Put the exercise away: the replay may then go anywhere")
                                 : tr("Open the exercise: the replay stops at its position "
                                      "until you answer"));
-    exerciseBody_->setVisible(exerciseOpen_);
-    // While exploring, the exercises wait: they are graded against the lesson's own trace.
+    // While exploring, the exercises wait: they are graded against the lesson's own trace, and
+    // the open one's prompt is put aside (the explored trace may hold its answer); Back to the
+    // lesson shows it again, with its limit.
+    exerciseBody_->setVisible(exerciseOpen_ && !exploring_);
     exerciseHeader_->setEnabled(!exploring_);
     exerciseBody_->setEnabled(!exploring_);
     exploreNote_->setVisible(exploring_);
@@ -535,7 +538,8 @@ void LessonPanel::check() {
     }
     const Exercise& ex = lesson_.exercises[exercise_];
     const QString typed = typedAnswer();
-    if (typed.isEmpty() && (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::SweepPick)) {
+    if (typed.isEmpty() &&
+        (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::SweepPick)) {
         feedback_->setProperty("correct", false);
         feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
         feedback_->setText(tr("Pick one of the options first."));
@@ -545,8 +549,9 @@ void LessonPanel::check() {
         // Graded from the sweep's table: run it first (in the background).
         feedback_->setProperty("correct", false);
         feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
-        feedback_->setText(tr("The answer is graded from the sweep's table: the sweep runs now; "
-                              "check again when its table is shown."));
+        feedback_->setText(
+            tr("The answer is graded from the sweep's table: the sweep runs now; "
+               "check again when its table is shown."));
         emit sweepRequested();
         return;
     }
@@ -558,7 +563,16 @@ void LessonPanel::check() {
         feedback_->setText(tr("Cannot read that answer: %1.").arg(q(why)));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
+    Verdict v;
+    try {
+        v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
+    } catch (const LessonError& e) {
+        // A lesson whose trace lacks what the exercise asks about: say so, grade nothing.
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(q(e.what()));
+        return;
+    }
     LessonProgress::ExerciseRecord& rec = record(exercise_);
     const bool wasSolved = rec.correct;
     ++rec.attempts;
@@ -579,10 +593,11 @@ void LessonPanel::check() {
         feedback_->setText(
             rec.attempts >= 3 || lecturer_
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
-            : v.slip.empty() ? tr("Not right yet (try %1 of 3). Step the replay and look at the "
-                                  "inspector, or ask for a hint.")
-                                   .arg(rec.attempts)
-                             : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(q(v.slip)));
+            : v.slip.empty()
+                ? tr("Not right yet (try %1 of 3). Step the replay and look at the "
+                     "inspector, or ask for a hint.")
+                      .arg(rec.attempts)
+                : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(q(v.slip)));
     }
     updateExerciseBox();
     emit answered(q(ex.id), v.correct, typed);
@@ -646,7 +661,14 @@ void LessonPanel::revealAnswer() {
         feedback_->setText(tr("Run the sweep to see the answer: it is read from its table."));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
+    Verdict v;
+    try {
+        v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
+    } catch (const LessonError& e) {
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(q(e.what()));
+        return;
+    }
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
 }

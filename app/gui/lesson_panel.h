@@ -152,9 +152,9 @@ class LessonPanel : public QWidget {
     QComboBox* candidates_ = nullptr;
     QWidget* choiceBox_ = nullptr;  // a choice exercise's radio buttons
     QButtonGroup* choiceGroup_ = nullptr;
-    QPushButton* clearButton_ = nullptr;  // a sequence answer: start again
-    QComboBox* sweepPicker_ = nullptr;    // a sweep_pick exercise: the sweep's resolutions
-    QList<QPoint> sequence_;              // cells clicked for a sequence answer, in order
+    QPushButton* clearButton_ = nullptr;   // a sequence answer: start again
+    QComboBox* sweepPicker_ = nullptr;     // a sweep_pick exercise: the sweep's resolutions
+    QList<QPoint> sequence_;               // cells clicked for a sequence answer, in order
     std::vector<GridSweepRow> sweepRows_;  // the sweep's table, once run (sweep_pick grades it)
     QPushButton* checkButton_ = nullptr;
     QPushButton* hintButton_ = nullptr;

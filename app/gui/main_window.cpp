@@ -466,6 +466,8 @@ void MainWindow::replayBuild() {
 
 void MainWindow::setLanguage(Language lang) {
     lessons_->setLanguage(lang);
+    view2D_->setLanguage(lang);
+    view3D_->setLanguage(lang);
 }
 
 void MainWindow::setLecturerMode(bool on) {
@@ -483,6 +485,12 @@ QString MainWindow::progressPath() const {
 void MainWindow::openCompare() {
     if (!session_.hasScene()) {
         statusBar()->showMessage(tr("No scene is open: nothing to compare."));
+        return;
+    }
+    // Compare mode replays whole traces: not while an exercise stops the replay (quiz mode).
+    if (session_.limit()) {
+        statusBar()->showMessage(
+            tr("Compare mode shows whole traces: answer the exercise first, or put it away."));
         return;
     }
     const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;

@@ -32,7 +32,7 @@ const QColor kHit = role(PaletteRole::Hit);
 const QColor kRay = colourOf(rayColour(RayKind::Primary));
 }  // namespace
 
-static QString roleLabel(PaletteRole r) {
+static QString roleName(PaletteRole r) {
     switch (r) {
         case PaletteRole::Visited:
             return View2D::tr("visited cell");
@@ -50,6 +50,13 @@ static QString roleLabel(PaletteRole r) {
             return View2D::tr("chosen plane");
     }
     return {};
+}
+
+/// A role as the legend shows it, with its colour's name as the lessons write it.
+static QString roleLabel(PaletteRole r, Language lang) {
+    const std::string_view colour = roleColour(r).name(lang);
+    return QStringLiteral("%1 (%2)").arg(roleName(r),
+                                         QString::fromUtf8(colour.data(), colour.size()));
 }
 
 View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
@@ -352,7 +359,7 @@ void View2D::paintEvent(QPaintEvent*) {
 double View2D::legendWidth() const {
     double w = 0;
     for (int r = 0; r < kPaletteRoleCount; ++r)
-        w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r))));
+        w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r), lang_)));
     return w + 14 + 16;
 }
 
@@ -360,15 +367,17 @@ void View2D::drawLegend(QPainter& g, bool build) const {
     // The colour roles this picture uses, from the palette (the lessons name the same colours).
     std::vector<std::pair<QColor, QString>> rows;
     if (build) {
-        rows = {{role(PaletteRole::Current), roleLabel(PaletteRole::Current)},
-                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate)},
-                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen)}};
+        rows = {{role(PaletteRole::Current), roleLabel(PaletteRole::Current, lang_)},
+                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
+                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
     } else {
-        rows = {{kRay, tr("the ray")}};
-        rows.emplace_back(kVisited, roleLabel(PaletteRole::Visited));
-        rows.emplace_back(kCurrent, roleLabel(PaletteRole::Current));
+        rows = {{kRay, QStringLiteral("%1 (%2)").arg(
+                           tr("the ray"),
+                           QString::fromUtf8(rayColour(RayKind::Primary).name(lang_).data()))}};
+        rows.emplace_back(kVisited, roleLabel(PaletteRole::Visited, lang_));
+        rows.emplace_back(kCurrent, roleLabel(PaletteRole::Current, lang_));
         for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
-            rows.emplace_back(role(r), roleLabel(r));
+            rows.emplace_back(role(r), roleLabel(r, lang_));
     }
     const QFontMetrics fm(g.font());
     const double row = fm.height() + 2, swatch = 14;

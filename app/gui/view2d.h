@@ -4,6 +4,8 @@
 // skips and the nearest hit so far.
 #include "session.h"
 
+#include "raystep/base/i18n.h"
+
 #include <QPainter>
 #include <QPixmap>
 #include <QWidget>
@@ -22,6 +24,11 @@ class View2D : public QWidget {
     QSize sizeHint() const override { return {640, 440}; }
     /// The grid cell under a widget point, if the structure is a grid and the point is on it.
     std::optional<std::array<int, 2>> cellAt(QPointF widgetPoint) const;
+    /// The legend's language (its colour names are the lessons').
+    void setLanguage(Language lang) {
+        lang_ = lang;
+        update();
+    }
     /// Where the centre of grid cell (x, y) is drawn (tests click there).
     QPointF cellCentre(int x, int y) const;
 
@@ -55,6 +62,7 @@ class View2D : public QWidget {
 
     Session& session_;
     QList<QPoint> sequence_;  // a sequence answer's cells, in the order clicked
+    Language lang_ = Language::En;
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;

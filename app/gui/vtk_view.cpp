@@ -47,7 +47,15 @@ struct Rgb {
 };
 }  // namespace
 
-QString rayKindLabel(RayKind kind) {
+QString rayKindName(RayKind kind);
+
+QString rayKindLabel(RayKind kind, Language lang) {
+    const std::string_view colour = rayColour(kind).name(lang);
+    return QStringLiteral("%1 (%2)").arg(rayKindName(kind),
+                                         QString::fromUtf8(colour.data(), colour.size()));
+}
+
+QString rayKindName(RayKind kind) {
     switch (kind) {
         case RayKind::Primary:
             return VtkView::tr("primary");
@@ -63,13 +71,13 @@ QString rayKindLabel(RayKind kind) {
     return {};
 }
 
-void drawRayLegend(QPainter& g, QPointF topLeft, bool dark) {
+void drawRayLegend(QPainter& g, QPointF topLeft, bool dark, Language lang) {
     // One row a kind: a stroke in the ray's colour (the palette's) and its name.
     const QFontMetrics fm(g.font());
     const double row = fm.height() + 2, swatch = 22;
     double width = 0;
     for (int k = 0; k < kRayKindCount; ++k)
-        width = std::max<double>(width, fm.horizontalAdvance(rayKindLabel(RayKind(k))));
+        width = std::max<double>(width, fm.horizontalAdvance(rayKindLabel(RayKind(k), lang)));
     const QRectF box(topLeft, QSizeF(swatch + 18 + width, row * kRayKindCount + 8));
     g.save();
     g.setRenderHint(QPainter::Antialiasing);
@@ -83,7 +91,7 @@ void drawRayLegend(QPainter& g, QPointF topLeft, bool dark) {
         g.drawLine(QPointF(box.left() + 6, y), QPointF(box.left() + 6 + swatch, y));
         g.setPen(dark ? QColor(235, 235, 235) : QColor(40, 40, 40));
         g.drawText(QRectF(box.left() + 12 + swatch, y - row / 2, width + 4, row),
-                   Qt::AlignLeft | Qt::AlignVCenter, rayKindLabel(RayKind(k)));
+                   Qt::AlignLeft | Qt::AlignVCenter, rayKindLabel(RayKind(k), lang));
     }
     g.restore();
 }
@@ -356,7 +364,7 @@ void VtkView::paintEvent(QPaintEvent*) {
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
                tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
     // Which colour is which kind of ray (the lessons name the same colours).
-    if (!session_.showingBuild()) drawRayLegend(g, QPointF(8, 28), /*dark=*/true);
+    if (!session_.showingBuild()) drawRayLegend(g, QPointF(8, 28), /*dark=*/true, lang_);
     dirty_ = false;
 }
 

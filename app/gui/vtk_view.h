@@ -5,6 +5,8 @@
 // and the current ray's visited voxels (grid) or the kd-tree node it is in.
 #include "session.h"
 
+#include "raystep/base/i18n.h"
+
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
@@ -18,10 +20,11 @@ class vtkRenderer;
 
 namespace raystep::gui {
 
-/// The name of a kind of ray as the legend shows it ("primary", "shadow", ...).
-QString rayKindLabel(RayKind kind);
+/// A kind of ray as the legend shows it, with its colour's name as the lessons write it:
+/// "primary (red)".
+QString rayKindLabel(RayKind kind, Language lang);
 /// The legend of the ray colours (the palette's), with its top left corner at `topLeft`.
-void drawRayLegend(QPainter& g, QPointF topLeft, bool dark);
+void drawRayLegend(QPainter& g, QPointF topLeft, bool dark, Language lang);
 
 class VtkView : public QWidget {
     Q_OBJECT
@@ -29,6 +32,11 @@ class VtkView : public QWidget {
     explicit VtkView(Session& session, QWidget* parent = nullptr);
     ~VtkView() override;
     QSize sizeHint() const override { return {480, 360}; }
+    /// The legend's language (its colour names are the lessons').
+    void setLanguage(Language lang) {
+        lang_ = lang;
+        update();
+    }
     /// Back to the scene's own camera.
     void resetCamera();
     /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
@@ -55,6 +63,7 @@ class VtkView : public QWidget {
     vtkSmartPointer<vtkActor> raysActor_;
     vtkSmartPointer<vtkActor> markersActor_;  // visited voxels or the current node; hit points
     bool dirty_ = true;
+    Language lang_ = Language::En;
 };
 
 }  // namespace raystep::gui

@@ -32,6 +32,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -83,17 +84,50 @@ struct Window {
     }
 };
 
-// Lesson 6's third exercise asks for the cell after (2, 1): its position is just before the
-// 5th dda_cell event, which holds the answer. Opened with the mouse, it stops the timeline's
+/// Writes a lesson file in `dir` (lessons of the test's own, so that the content helpers'
+/// edits of the built-in lessons do not change what these tests check).
+QString writeLesson(const QTemporaryDir& dir, const QString& name, const QByteArray& json) {
+    const QString path = dir.filePath(name);
+    QFile out(path);
+    EXPECT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(json);
+    return path;
+}
+
+/// The slides' 2D example: the lecture grid (unit cells) and the ray o = (0.4, 0.4),
+/// d = (1, 0.75), with mailboxing; a first step at the start, a last one at the end; two
+/// exercises: tMaxX after the step to (1, 0), before the 2nd dda_cell, and the cell after
+/// (2, 1), before the 5th.
+const QByteArray kQuizLesson = R"({
+"format": "raystep-lesson", "version": 1, "id": "quiz", "number": 96,
+"title": {"en": "Quiz"}, "text": {"en": "The slides' grid."},
+"scene": "lecture-grid", "setup": {"accel": "grid", "mailbox": true}, "views": ["2d"],
+"trace": {"ray": [0.4, 0.4, 1, 0.75]},
+"steps": [{"at": {"after": "dda_setup", "nth": 1}, "text": {"en": "The set-up."}},
+          {"at": {"after": "dda_cell", "nth": 1}, "text": {"en": "The first cell."}, "filter": "dda_cell"},
+          {"at": "end", "text": {"en": "The end."}}],
+"exercises": [
+ {"id": "tmax", "type": "value", "quantity": "tMax.x", "at": {"before": "dda_cell", "nth": 2},
+  "prompt": {"en": "The DDA steps in X to (1, 0): tMaxX after the step?"},
+  "hint": [{"en": "A nudge: what grows by tDeltaX?"}, {"en": "The formula: tMaxX + tDeltaX."},
+           {"en": "The first step: tDeltaX = 1 / |dx|."}]},
+ {"id": "next", "type": "next_cell", "at": {"before": "dda_cell", "nth": 5},
+  "prompt": {"en": "The ray is in (2, 1): which cell comes next?"}}
+]})";
+
+// The quiz lesson's second exercise asks for the cell after (2, 1): its position is just before
+// the 5th dda_cell event, which holds the answer. Opened with the mouse, it stops the timeline's
 // buttons, the keys (Right, End, N, Space), the scrubber and the event list at that position;
 // the event list has no row past it, the inspector counts only up to it, and the timeline says
 // why.
 TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
+    QTemporaryDir dir;
     Window win;
     MainWindow& w = win.w;
-    ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)))
+        << w.lastOpenError().toStdString();
     LessonPanel* p = w.lessonPanel();
     Session& s = w.session();
     const std::size_t limit = indexOfNth<DdaCell>(s.log(), 5);
@@ -104,15 +138,13 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     EXPECT_EQ(s.cursor(), s.size());
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
 
-    // Open the fourth exercise (the next cell after (2, 1)) with the ">" button, three times
-    // (each opens the one it shows).
+    // Open the second exercise with the ">" button (it opens the one it shows).
     QPushButton* next = nullptr;
     for (QPushButton* b : p->findChildren<QPushButton*>())
         if (b->text() == ">") next = b;
     ASSERT_NE(next, nullptr);
-    for (int i = 0; i < 3; ++i) QTest::mouseClick(next, Qt::LeftButton);
-    ASSERT_EQ(p->exercise(), 3);
-    ASSERT_EQ(p->lesson().exercises[3].kind, ExerciseKind::NextCell);
+    QTest::mouseClick(next, Qt::LeftButton);
+    ASSERT_EQ(p->exercise(), 1);
     ASSERT_TRUE(p->exerciseOpen());
     EXPECT_EQ(s.cursor(), limit);
     EXPECT_EQ(w.timeline()->quizCue(), "Answer the exercise to see what comes next");
@@ -151,14 +183,19 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     // The inspector counts the events it may show.
     EXPECT_TRUE(w.inspectorText().contains(QStringLiteral("step %1 of %1").arg(limit)))
         << w.inspectorText().toStdString();
+    // Compare mode (C) would replay whole traces: refused while the exercise is open.
+    QTest::keyClick(&w, Qt::Key_C);
+    EXPECT_TRUE(w.waitUntilIdle());
+    EXPECT_EQ(w.compareWindow(), nullptr);
+    EXPECT_TRUE(w.statusBar()->currentMessage().contains("answer the exercise first"))
+        << w.statusBar()->currentMessage().toStdString();
     // The 2D view at the limit is the picture of the limit, whatever the keys asked.
     const QImage atLimit = grab(w.view2D());
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(grab(w.view2D()), atLimit);
 
     // Answered right (clicking the cell, as a student does): the limit lifts.
-    // In (2, 1) tMaxX = 3.25 < tMaxY = 4 (o = (0.4, 0.4), d = (0.8, 0.4)): the walk steps X.
-    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(3, 1).toPoint());
+    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(2, 2).toPoint());
     ASSERT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
     QTest::keyClick(&w, Qt::Key_End);
@@ -167,19 +204,20 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     EXPECT_NE(grab(w.view2D()), atLimit);  // the rest of the walk is drawn
 }
 
-// The third exercise (tMaxX in (2, 1), after the step from (1, 1)) sits before the 4th
+// The first exercise (tMaxX after the step from (0, 0) to (1, 0)) sits before the 2nd
 // dda_cell: lecturer mode (Ctrl+L) lifts its limit, and turning it off puts it back; putting
 // the exercise away lifts it too.
 TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
+    QTemporaryDir dir;
     Window win;
     MainWindow& w = win.w;
-    ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
     LessonPanel* p = w.lessonPanel();
     Session& s = w.session();
-    const std::size_t limit = indexOfNth<DdaCell>(s.log(), 4);
-    p->selectExercise(2);
+    const std::size_t limit = indexOfNth<DdaCell>(s.log(), 2);
+    p->selectExercise(0);
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), limit);
     // The event holding the answer (tMaxX after the step) is not in the list.
@@ -200,27 +238,42 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), s.size());
     // A step past the exercise, with the exercise open again, stops at the exercise.
-    p->selectExercise(2);
+    p->selectExercise(0);
     p->goToStep(static_cast<int>(p->lesson().steps.size()) - 1);  // the last step: the end
     EXPECT_EQ(s.cursor(), limit);
 }
 
-// Lesson 12 traces one pixel of a 320 x 240 image: a ring and cross-hair in yellow
-// (255, 235, 60) mark it where the image view draws that pixel; a click elsewhere explores that
-// pixel, and Esc comes back to the lesson's trace, step and exercises.
+// A pixel lesson of the test's own: pixel (200, 150) of a 320 x 240 image of the whitted
+// scene, a step whose filter shows the primitive tests, and an exercise before the first test.
+const QByteArray kPixelLesson = R"({
+"format": "raystep-lesson", "version": 1, "id": "pixel", "number": 95,
+"title": {"en": "Pixel"}, "text": {"en": "A pixel's ray tree."},
+"scene": "whitted", "setup": {"accel": "grid"}, "views": ["3d", "image"],
+"trace": {"pixel": [200, 150], "image": [320, 240]},
+"steps": [{"at": {"after": "ray_begin", "nth": 1}, "text": {"en": "The primary ray."},
+           "filter": "primitive_test"},
+          {"at": "end", "text": {"en": "The end."}}],
+"exercises": [{"id": "first", "type": "hit_or_miss", "at": {"before": "primitive_test", "nth": 1},
+               "prompt": {"en": "Does the primary ray's first test hit?"}}]
+})";
+
+// The lesson's pixel: a ring and cross-hair in yellow (255, 235, 60) where the image view draws
+// that pixel. A click elsewhere explores that pixel: the steps and exercises wait, the open
+// exercise's prompt is put aside, the event list shows every event; Esc comes back to the
+// lesson's trace, exercise and filter.
 TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
+    QTemporaryDir dir;
     Window win;
     MainWindow& w = win.w;
-    ASSERT_TRUE(openLesson(w, "intersections"));
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "pixel.json", kPixelLesson)))
+        << w.lastOpenError().toStdString();
     ASSERT_TRUE(w.waitUntilIdle());
     ImageView* image = w.imageView();
     ASSERT_EQ(image->state(), ImageView::State::Done);
-    // Where pixel (160, 120) is drawn, by hand: the image scaled to fit, centred.
+    // Where pixel (200, 150) is drawn, by hand: the 320 x 240 image scaled to fit, centred.
     const double scale = std::min(image->width() / 320.0, image->height() / 240.0);
-    const auto& traced = w.lessonPanel()->lesson().trace;
-    ASSERT_EQ(traced.kind, LessonTrace::Kind::Pixel);
-    const QPointF centre((image->width() - 320 * scale) / 2 + (traced.x + 0.5) * scale,
-                         (image->height() - 240 * scale) / 2 + (traced.y + 0.5) * scale);
+    const QPointF centre((image->width() - 320 * scale) / 2 + 200.5 * scale,
+                         (image->height() - 240 * scale) / 2 + 150.5 * scale);
     EXPECT_NEAR(image->lessonMarkCentre().x(), centre.x(), 0.5);
     EXPECT_NEAR(image->lessonMarkCentre().y(), centre.y(), 0.5);
     const QImage shot = grab(image);
@@ -232,37 +285,47 @@ TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     EXPECT_GT(pixelsNear(shot, 255, 235, 60, 10), 60);  // a mark, not a dot
 
     LessonPanel* p = w.lessonPanel();
-    p->goToStep(0);  // its filter shows the primitive tests
-    ASSERT_FALSE(p->lesson().steps[0].filter.empty());
-    const std::size_t stepCursor = w.session().cursor();
     const LogRef lessonLog = p->lessonLog();
+    p->selectExercise(0);
+    auto* prompt = p->findChild<QLabel*>("prompt");
+    ASSERT_NE(prompt, nullptr);
+    EXPECT_TRUE(prompt->isVisible());
+    QTest::keyClick(&w, Qt::Key_Escape);  // not exploring: Esc changes nothing
+    EXPECT_EQ(w.session().logRef(), lessonLog);
+    p->goToStep(0);
+    EXPECT_EQ(w.eventList()->filter(), "primitive_test");
+    const std::size_t exerciseAt = indexOfNth<PrimitiveTest>(*lessonLog, 1);
+    EXPECT_EQ(w.session().cursor(), 1u);  // after the first event, the primary's ray_begin
+    ASSERT_GT(exerciseAt, 1u);
     QTest::mouseClick(image, Qt::LeftButton, {}, QPoint(image->width() / 4, image->height() / 3));
     EXPECT_EQ(w.session().logKind(), LogKind::Pixel);
     EXPECT_TRUE(p->exploring());
     EXPECT_TRUE(w.backToLessonAction()->isEnabled());
+    // The open exercise's prompt is put aside while exploring (the explored trace may hold
+    // its answer).
+    EXPECT_FALSE(prompt->isVisible());
     // The step's filter is about the lesson's trace: the explored one shows every event.
     EXPECT_TRUE(w.eventList()->filter().isEmpty());
     EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(w.session().size()));
     // The steps wait as the exercises do.
     for (QPushButton* b : p->findChildren<QPushButton*>())
-        if (b->text() == "< Step") EXPECT_FALSE(b->isEnabled());
+        if (b->text() == "< Step" || b->text() == "Step >") EXPECT_FALSE(b->isEnabled());
     QTest::keyClick(&w, Qt::Key_Escape);
     EXPECT_EQ(w.session().logRef(), lessonLog);
-    EXPECT_EQ(w.session().cursor(), stepCursor);
+    EXPECT_EQ(w.session().cursor(), exerciseAt);
     EXPECT_EQ(p->step(), 0);
-    EXPECT_EQ(w.eventList()->filter().toStdString(), p->lesson().steps[0].filter);
+    EXPECT_TRUE(prompt->isVisible());
+    EXPECT_FALSE(w.timeline()->quizCue().isEmpty());
+    EXPECT_EQ(w.eventList()->filter(), "primitive_test");
     EXPECT_FALSE(p->exploring());
     EXPECT_FALSE(w.backToLessonAction()->isEnabled());
     w.tasks().cancel(TaskKind::Render);
 }
 
-/// Lesson 6 as a file of its own, with the slides' errata (lesson and step 1) and three hints.
+/// The quiz lesson with the slides' errata (lesson and its first step).
 QString lessonWithErrata(const QTemporaryDir& dir) {
-    QFile in(QStringLiteral(RAYSTEP_SOURCE_DIR "/lessons/06-grid-2d-dda.json"));
-    EXPECT_TRUE(in.open(QIODevice::ReadOnly));
-    QJsonObject lesson = QJsonDocument::fromJson(in.readAll()).object();
+    QJsonObject lesson = QJsonDocument::fromJson(kQuizLesson).object();
     lesson["id"] = "errata-test";
-    lesson["number"] = 99;
     const auto erratum = [](const char* slide, const char* correct, const char* why) {
         return QJsonObject{{"slide", QJsonObject{{"en", slide}}},
                            {"correct", QJsonObject{{"en", correct}}},
@@ -276,18 +339,7 @@ QString lessonWithErrata(const QTemporaryDir& dir) {
         erratum("while (X != outX)", "while (t < tExit)", "The loop must stop at the grid's end.")};
     steps[0] = first;
     lesson["steps"] = steps;
-    QJsonArray exercises = lesson["exercises"].toArray();
-    QJsonObject ex = exercises[0].toObject();
-    ex["hint"] = QJsonArray{QJsonObject{{"en", "A nudge: how far along the ray is one cell?"}},
-                            QJsonObject{{"en", "The formula: cell height over |dy|."}},
-                            QJsonObject{{"en", "The first step: |dy| = 0.75."}}};
-    exercises[0] = ex;
-    lesson["exercises"] = exercises;
-    const QString path = dir.filePath("errata.json");
-    QFile out(path);
-    EXPECT_TRUE(out.open(QIODevice::WriteOnly));
-    out.write(QJsonDocument(lesson).toJson());
-    return path;
+    return writeLesson(dir, "errata.json", QJsonDocument(lesson).toJson());
 }
 
 // The slides' errata: a marked box under the lesson's text and one under the step's, headed
@@ -329,11 +381,12 @@ TEST(Lesson, ErrataBoxesShowAndHideAndHintsComeOneAPress) {
         QTest::mouseClick(hint, Qt::LeftButton);
         EXPECT_TRUE(p->hintsText().contains("A nudge"));
         EXPECT_FALSE(p->hintsText().contains("The formula"));
+        EXPECT_TRUE(hint->isEnabled());
         QTest::mouseClick(hint, Qt::LeftButton);
         EXPECT_TRUE(p->hintsText().contains("The formula"));
         EXPECT_FALSE(p->hintsText().contains("The first step"));
         QTest::mouseClick(hint, Qt::LeftButton);
-        EXPECT_TRUE(p->hintsText().contains("The first step: |dy| = 0.75."));
+        EXPECT_TRUE(p->hintsText().contains("The first step: tDeltaX = 1 / |dx|."));
         EXPECT_FALSE(hint->isEnabled());  // no more
         // Another exercise starts from no hint.
         p->selectExercise(1);
@@ -384,14 +437,24 @@ TEST(EventListFilter, MatchesKindNamesAndTheHighlightFollowsTheCursor) {
     }
 }
 
-// N jumps to the kind the lesson is about, not always "DDA step": lesson 11 (building a
-// kd-tree) to the next built node, lesson 10 (hierarchies) to the next node entered.
+// N jumps to the kind the lesson is about, not always "DDA step": a build lesson to the next
+// built node; the quiz lesson (first step after its one dda_setup) to the next DDA step.
 TEST(TimelineKind, FollowsTheLesson) {
+    QTemporaryDir dir;
     Window win;
     MainWindow& w = win.w;
     auto* combo = w.timeline()->findChild<QComboBox*>("jumpKind");
     ASSERT_NE(combo, nullptr);
-    ASSERT_TRUE(openLesson(w, "building-kdtree"));
+    combo->setCurrentIndex(combo->findText("hit"));  // whatever the user had before
+    const QByteArray build = R"({
+"format": "raystep-lesson", "version": 1, "id": "build", "number": 94,
+"title": {"en": "Build"}, "text": {"en": "A build."},
+"scene": "lecture-kdtree", "setup": {"accel": "kdtree", "split": "sah"}, "views": ["2d"],
+"trace": {"build": true},
+"steps": [{"at": {"after": "build_node", "nth": 2}, "text": {"en": "The second node."}}]
+})";
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "build.json", build)))
+        << w.lastOpenError().toStdString();
     EXPECT_EQ(w.timeline()->jumpKind(), variantIndex<BuildNode>());
     EXPECT_EQ(combo->currentText(), "build node");
     Session& s = w.session();
@@ -399,36 +462,42 @@ TEST(TimelineKind, FollowsTheLesson) {
     QTest::keyClick(&w, Qt::Key_N);
     QTest::keyClick(&w, Qt::Key_N);
     EXPECT_EQ(s.cursor(), indexOfNth<BuildNode>(s.log(), 2) + 1);
-    ASSERT_TRUE(openLesson(w, "hierarchies"));
-    EXPECT_EQ(w.timeline()->jumpKind(), variantIndex<NodeEnter>());
-    ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
     EXPECT_EQ(w.timeline()->jumpKind(), variantIndex<DdaCell>());  // not its one dda_setup
 }
 
 // The legend on the 3D view shows each kind of ray in the palette's colour, and the rays drawn
-// are in those colours; the 2D view's tested primitives and legend use the palette's roles.
+// are in those colours; the 2D view's tested, skipped and hit primitives use the palette's roles.
 TEST(Palette, TheViewsAndTheLegendUseThePalette) {
+    QTemporaryDir dir;
     Window win;
     MainWindow& w = win.w;
-    ASSERT_TRUE(openLesson(w, "ray-tree"));
+    w.openScene("whitted", AccelKind::Grid, /*quiet=*/true, {}, /*renderImage=*/false);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
     Session& s = w.session();
-    QTest::keyClick(&w, Qt::Key_End);
+    s.tracePixel(200, 150, 320, 240);
+    w.view3D()->orbit(40, 25, 1.0);  // the scene's camera sees the primary ray end-on
+    s.setCursor(s.size());
     const QImage three = grab(w.view3D());
     for (int k = 0; k < kRayKindCount; ++k) {
         const PaletteColour& c = rayColour(RayKind(k));
         SCOPED_TRACE(std::string(c.key));
         EXPECT_GT(pixelsNear(three, c.r, c.g, c.b, 2), 30);  // at least its legend stroke
     }
+    // The legend names the colours as the lessons' {colour:KEY} do, in the app's language.
+    EXPECT_TRUE(rayKindLabel(RayKind::Shadow, Language::En).endsWith("(yellow)"));
+    EXPECT_TRUE(rayKindLabel(RayKind::Shadow, Language::It).endsWith("(giallo)"));
     // The primary ray is drawn in the primary's colour beyond the legend: more such pixels
     // with the rays than before any ray began.
     const PaletteColour& primary = rayColour(RayKind::Primary);
     const int withRays = pixelsNear(three, primary.r, primary.g, primary.b, 12);
     s.setCursor(0);
     EXPECT_GT(withRays, pixelsNear(grab(w.view3D()), primary.r, primary.g, primary.b, 12) + 20);
-    w.tasks().cancel(TaskKind::Render);
 
-    ASSERT_TRUE(openLesson(w, "mailboxing"));
+    // The quiz lesson (mailboxing on) at its end: a primitive tested, one skipped, the hit.
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
     QTest::keyClick(&w, Qt::Key_End);
+    ASSERT_FALSE(w.session().state().mailboxSkips.empty());
     const QImage two = grab(w.view2D());
     const PaletteColour& tested = roleColour(PaletteRole::Tested);
     const PaletteColour& skipped = roleColour(PaletteRole::Skipped);
@@ -438,18 +507,23 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
     EXPECT_GT(pixelsNear(two, hit.r, hit.g, hit.b, 2), 100);
 }
 
-// Lesson 12's third step stops after the second hit: the reflection of the mirror sphere on
-// the floor's triangle; the inspector shows that hit's barycentric u and v, as the event has.
+// A ray that ends on a triangle: the inspector shows that hit's barycentric u and v, as the
+// event has them (lesson 12 asks for v).
 TEST(Inspector, ATriangleHitShowsItsBarycentricUV) {
     Window win;
     MainWindow& w = win.w;
-    ASSERT_TRUE(openLesson(w, "intersections"));
-    w.lessonPanel()->goToStep(2);
-    const Session& s = w.session();
-    ASSERT_GT(s.cursor(), 0u);
-    const auto* hit = std::get_if<RayHit>(&s.log().events()[s.cursor() - 1]);
+    w.openScene("whitted", AccelKind::Grid, /*quiet=*/true, {}, /*renderImage=*/false);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    Session& s = w.session();
+    s.tracePixel(160, 230, 320, 240);  // a floor pixel, below the spheres
+    std::size_t at = 0;
+    const RayHit* hit = nullptr;
+    for (std::size_t i = 0; i < s.log().events().size() && !hit; ++i)
+        if (const auto* h = std::get_if<RayHit>(&s.log().events()[i]);
+            h && h->prim != kNoId && !s.scene3D()->isSphere(h->prim))
+            hit = h, at = i;
     ASSERT_NE(hit, nullptr);
-    ASSERT_FALSE(s.scene3D()->isSphere(hit->prim));
+    s.setCursor(at + 1);
     const QString text = w.inspectorText();
     EXPECT_TRUE(text.contains(QStringLiteral("hit on triangle %1").arg(hit->prim)))
         << text.toStdString();
@@ -457,17 +531,17 @@ TEST(Inspector, ATriangleHitShowsItsBarycentricUV) {
         << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("v = %1").arg(hit->v, 0, 'g', 6)))
         << text.toStdString();
-    w.tasks().cancel(TaskKind::Render);
+    EXPECT_GT(hit->u + hit->v, 0.0);  // a real barycentric pair, not the zeros of a sphere
 }
 
-/// A lesson over the lecture grid and its example ray o = (0.4, 0.4), d = (1, 0.75), with a
+/// A lesson over the lecture grid and the ray o = (0.4, 0.4), d = (1, 0.75), with a
 /// choice, a sequence of cells and a compute exercise.
 QString lessonWithNewKinds(const QTemporaryDir& dir) {
     const QByteArray text = R"({
 "format": "raystep-lesson", "version": 1, "id": "new-kinds", "number": 98,
 "title": {"en": "New kinds"}, "text": {"en": "The slides' grid."},
 "scene": "lecture-grid", "setup": {"accel": "grid"}, "views": ["2d"],
-"trace": {"ray": "example"},
+"trace": {"ray": [0.4, 0.4, 1, 0.75]},
 "exercises": [
  {"id": "why", "type": "choice", "prompt": {"en": "Why a grid?"},
   "choices": [{"text": {"en": "It sorts the primitives"}, "why": {"en": "It does not sort them."}},
@@ -563,6 +637,15 @@ TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
     QTest::keyClicks(answer, "3,5858");
     QTest::keyClick(answer, Qt::Key_Return);
     EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
+
+    // Lecturer mode shows each kind's answer: b), the three cells, t0.
+    w.setLecturerMode(true);
+    const char* answers[] = {"b", "1,0; 1,1; 2,1", "3.58579"};
+    for (int e = 0; e < 3; ++e) {
+        p->selectExercise(e);
+        EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
+        EXPECT_TRUE(p->feedback().contains(answers[e])) << p->feedback().toStdString();
+    }
 }
 
 // A sweep_pick is graded from the sweep's table: checked before the sweep has run, it starts
