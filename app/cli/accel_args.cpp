@@ -42,7 +42,7 @@ void addAccelOptions(CLI::App* cmd, AccelArgs& a) {
         ->capture_default_str();
     cmd->add_option(
            "--grid-lambda", a.gridLambda,
-           "Grid: cells a primitive, lambda N cells in all (Cleary-Wyvill rule); at most " +
+           "Grid: cells per primitive, lambda N cells in all (Cleary-Wyvill rule); at most " +
                std::to_string(GridOptions::kMaxCells) + " cells")
         ->capture_default_str();
     cmd->add_option("--grid-res", a.gridRes, "Grid: cells per axis NX,NY,NZ instead of the rule");

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace raystep::cli {
@@ -32,11 +33,19 @@ void addLessonCommand(CLI::App& app, LessonArgs& a) {
     a.key = lesson->add_subcommand(
         "key", "The answer key read from the trace, as an answers file (for lecturers)");
     a.key->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
-    a.check = lesson->add_subcommand("check", "Grade an answers file: score and feedback");
+    a.check = lesson->add_subcommand(
+        "check", "Grade an answers file (score and feedback), or a folder of them (a class table)");
     a.check->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
-    a.check->add_option("--answers", a.answers, "Answers: {\"lesson\": ID, \"answers\": {...}}")
+    a.check
+        ->add_option("--answers", a.answers,
+                     "Answers: {\"lesson\": ID, \"answers\": {...}}, or a folder of such "
+                     "files (*.json)")
         ->check(fileName())
         ->required();
+    a.check
+        ->add_option("--format", a.format,
+                     "The class table per exercise: markdown (the default for a folder) or csv")
+        ->check(CLI::IsMember({"markdown", "csv"}));
     a.check->add_flag("--json", a.json, "Print the grade as JSON");
     a.sweep = lesson->add_subcommand(
         "sweep", "Run a lesson's grid sweep: the same rays at each grid resolution, as a table");
@@ -55,6 +64,15 @@ int list() {
     return 0;
 }
 
+/// Errata as a quoted block under the text they belong to.
+void printErrata(const std::vector<Erratum>& errata, Language lang) {
+    for (const Erratum& e : errata)
+        std::printf("\n> **%s**\n>\n> %s %s\n>\n> %s %s\n>\n> %s\n", erratumHeading(lang).c_str(),
+                    tr(lang, "Slide:").c_str(), e.slide.in(lang).c_str(),
+                    tr(lang, "Correct:").c_str(), e.correct.in(lang).c_str(),
+                    e.why.in(lang).c_str());
+}
+
 int show(Lesson l, Language lang) {
     // Steps with a computed note (the slides' DDA loop beside the exact walk) need the lesson run.
     if (std::any_of(l.steps.begin(), l.steps.end(),
@@ -63,33 +81,70 @@ int show(Lesson l, Language lang) {
         addStepNotes(l, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
     }
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
+    printErrata(l.errata, lang);
     for (std::size_t i = 0; i < l.steps.size(); ++i) {
-        std::printf("\n## %s %zu (%s)\n\n%s\n", lang == Language::It ? "Passo" : "Step", i + 1,
+        std::printf("\n## %s %zu (%s)\n\n%s\n", tr(lang, "Step").c_str(), i + 1,
                     describePosition(l.steps[i].at, lang).c_str(),
                     l.steps[i].text.in(lang).c_str());
         if (!l.steps[i].note.en.empty()) std::printf("\n> %s\n", l.steps[i].note.in(lang).c_str());
+        printErrata(l.steps[i].errata, lang);
     }
-    for (const Exercise& ex : l.exercises)
-        std::printf("\n## %s %s (%s)\n\n%s\n", lang == Language::It ? "Esercizio" : "Exercise",
-                    ex.id.c_str(), std::string(exerciseKindName(ex.kind)).c_str(),
-                    ex.prompt.in(lang).c_str());
+    for (const Exercise& ex : l.exercises) {
+        std::printf("\n## %s %s (%s)\n\n%s\n", tr(lang, "Exercise").c_str(), ex.id.c_str(),
+                    std::string(exerciseKindName(ex.kind)).c_str(), ex.prompt.in(lang).c_str());
+        for (std::size_t i = 0; i < ex.choices.size(); ++i)
+            std::printf("%s%c) %s\n", i ? "" : "\n", static_cast<char>('a' + i),
+                        ex.choices[i].text.in(lang).c_str());
+    }
     return 0;
 }
 
 int key(const Lesson& l) {
     const LessonRun run = runLesson(l);
+    const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
     nlohmann::ordered_json answers = nlohmann::ordered_json::object();
     for (const Exercise& ex : l.exercises)
-        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file));
+        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file, &sweep));
     const nlohmann::ordered_json out = {{"lesson", l.id}, {"answers", answers}};
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
 }
 
-int check(const Lesson& l, const std::string& answersPath, Language lang, bool json) {
-    const AnswerSheet sheet = loadAnswerSheetFile(answersPath);
+/// The answer sheets of a folder (its *.json files, by name) or the one file `path`.
+std::vector<std::pair<std::string, AnswerSheet>> loadSheets(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(path, ec)) return {{path, loadAnswerSheetFile(path)}};
+    std::vector<std::string> files;
+    for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".json") files.push_back(it->path().string());
+    if (ec) throw LessonError(path, 0, "", "cannot list the folder of answers: " + ec.message());
+    if (files.empty())
+        throw LessonError(path, 0, "", "no answer sheets (*.json files) in the folder");
+    std::sort(files.begin(), files.end());
+    std::vector<std::pair<std::string, AnswerSheet>> sheets;
+    for (const std::string& f : files) sheets.emplace_back(f, loadAnswerSheetFile(f));
+    return sheets;
+}
+
+int check(const Lesson& l, const LessonArgs& a, Language lang) {
+    std::error_code ec;
+    const bool folder = std::filesystem::is_directory(a.answers, ec);
+    // Every sheet is read and graded before anything is printed: a bad one stops all.
+    const auto sheets = loadSheets(a.answers);
     const LessonRun run = runLesson(l);
-    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath);
+    const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
+    if (folder || !a.format.empty()) {
+        if (a.json) return fail("--json grades one answers file; a class table is --format");
+        const ClassTable table = classTable(l, *run.log, sheets, &sweep);
+        const std::string out =
+            a.format == "csv" ? classTableCsv(table) : classTableMarkdown(l, table, lang);
+        std::fwrite(out.data(), 1, out.size(), stdout);
+        return 0;
+    }
+    const std::string& answersPath = a.answers;
+    const bool json = a.json;
+    const AnswerSheet& sheet = sheets.front().second;
+    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath, &sweep, run.scene.get());
     if (json) {
         nlohmann::ordered_json items = nlohmann::ordered_json::array();
         for (const auto& i : g.items)
@@ -104,17 +159,18 @@ int check(const Lesson& l, const std::string& answersPath, Language lang, bool j
         std::printf("%s\n", out.dump(2).c_str());
         return 0;
     }
-    const bool it = lang == Language::It;
-    std::printf("%s %d. %s: %d / %zu\n", it ? "Lezione" : "Lesson", l.number,
-                l.title.in(lang).c_str(), g.score, g.items.size());
+    std::printf("%s\n", trf(lang, "Lesson %1. %2: %3 / %4",
+                            {std::to_string(l.number), l.title.in(lang), std::to_string(g.score),
+                             std::to_string(g.items.size())})
+                            .c_str());
     for (const auto& i : g.items) {
-        const char* mark = !i.answered ? (it ? "senza risposta" : "not answered")
-                           : i.correct ? (it ? "giusto" : "right")
-                                       : (it ? "sbagliato" : "wrong");
-        std::printf("  %-16s %-14s", i.exercise.c_str(), mark);
+        const std::string mark = !i.answered ? tr(lang, "no answer")
+                                 : i.correct ? tr(lang, "right")
+                                             : tr(lang, "wrong");
+        std::printf("  %-16s %-14s", i.exercise.c_str(), mark.c_str());
         // The answer is the student's text: escaped, so it cannot forge a line of the report.
         if (i.answered)
-            std::printf(" %s: %s", it ? "data" : "given", printable(i.given, 200).c_str());
+            std::printf(" %s: %s", tr(lang, "given").c_str(), printable(i.given, 200).c_str());
         std::printf("\n      %s\n", printable(i.feedback, 2000).c_str());
     }
     return 0;
@@ -174,7 +230,7 @@ int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
         }
         if (a.key->parsed()) return key(l);
         if (a.sweep->parsed()) return sweep(l, a.json);
-        return check(l, a.answers, *lang, a.json);
+        return check(l, a, *lang);
     } catch (const FileError& e) {
         return fail(e.what());
     }

@@ -15,7 +15,8 @@ struct LessonArgs {
     CLI::App* check = nullptr;
     CLI::App* sweep = nullptr;
     std::string lesson;   // id, number or file
-    std::string answers;  // check: the answers file
+    std::string answers;  // check: the answers file, or a folder of them (a class)
+    std::string format;   // check: "markdown" or "csv", the class table (default for a folder)
     std::string lang = "en";
     bool json = false;
 };

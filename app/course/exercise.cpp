@@ -1,15 +1,17 @@
 // Exercises: answers as typed, the right answer read from the recorded trace (never from the
-// lesson file), and the check of a student's answer with the trace's explanation.
+// lesson file, but for a choice), and the check of a student's answer with the explanation, in
+// the student's language, and the slip a wrong number betrays.
 #include "course/exercise.h"
 
 #include "feedback_text.h"
+#include "miss_cause.h"
 
-#include "raystep/base/format.h"
-#include "raystep/trace/event_text.h"
-
+#include "course/compute.h"
 #include "course/lesson_trace.h"
 
 #include "raystep/base/math.h"
+#include "raystep/trace/event_text.h"
+#include "raystep/trace/replay.h"
 
 #include <algorithm>
 #include <cctype>
@@ -22,9 +24,14 @@ using feedback::axisName;
 
 namespace {
 
-std::optional<double> parseNumber(std::string_view s) {
+std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+std::optional<double> parseNumber(std::string_view s) {
+    s = trim(s);
     if (s.empty()) return std::nullopt;
     std::string copy(s);
     std::replace(copy.begin(), copy.end(), ',', '.');  // "0,75" as Italian students write it
@@ -33,6 +40,12 @@ std::optional<double> parseNumber(std::string_view s) {
     if (ec != std::errc() || end != copy.data() + copy.size() || !std::isfinite(v))
         return std::nullopt;
     return v;
+}
+
+std::optional<long> parseWhole(std::string_view s) {
+    const auto v = parseNumber(s);
+    if (!v || *v != std::floor(*v) || std::abs(*v) > 1e9) return std::nullopt;
+    return static_cast<long>(*v);
 }
 
 std::vector<std::string_view> splitAny(std::string_view s, std::string_view seps) {
@@ -73,29 +86,89 @@ std::optional<E> previousEvent(const EventLog& log, std::size_t before) {
     return std::nullopt;
 }
 
+/// "a".."f" for options 0..5.
+std::string letter(int i) {
+    return std::string(1, static_cast<char>('a' + i));
+}
+
 struct Context {
     const Exercise& ex;
     const EventLog& log;
     const std::string& file;
     std::size_t at;
+    const std::vector<GridSweepRow>* sweep;
+    const LessonScene* scene = nullptr;
     [[noreturn]] void fail(const std::string& message) const {
         throw LessonError(file, ex.line, "exercises." + ex.id, message);
     }
 };
 
-Context contextOf(const Exercise& ex, const EventLog& log, const std::string& file) {
-    Context c{ex, log, file, 0};
+Context contextOf(const Exercise& ex, const EventLog& log, const std::string& file,
+                  const std::vector<GridSweepRow>* sweep) {
+    Context c{ex, log, file, 0, sweep};
     const auto at = resolvePosition(ex.at, log);
     if (!at) c.fail("its position (" + describePosition(ex.at) + ") is not in the trace");
     c.at = *at;
     return c;
 }
 
-/// The reference answer and the trace's explanation of it.
-std::pair<Answer, std::string> reference(const Context& c, Language lang) {
-    Answer a;
+/// The end of a count's or sequence's range.
+std::size_t rangeEnd(const Context& c) {
+    if (!c.ex.until) return c.log.events().size();
+    const auto u = resolvePosition(*c.ex.until, c.log);
+    if (!u || *u < c.at)
+        c.fail("its end (" + describePosition(*c.ex.until) +
+               ") is not in the trace after its start");
+    return *u;
+}
+
+/// A Count's range in words: "after the 1st intersection found", or both ends joined.
+std::string rangeText(const Exercise& ex, Language lang) {
+    std::vector<std::string> parts;
+    if (ex.at.mode != ReplayPosition::Mode::Start) parts.push_back(describePosition(ex.at, lang));
+    if (ex.until && ex.until->mode != ReplayPosition::Mode::End)
+        parts.push_back(describePosition(*ex.until, lang));
+    if (parts.empty()) return tr(lang, "in the whole trace");
+    if (parts.size() == 1) return parts[0];
+    return trf(lang, "%1 and %2", {parts[0], parts[1]});
+}
+
+/// Whether `e` is an event a Count exercise counts; `filtered`: with its ray kind and depth.
+bool counted(const Exercise& ex, const Event& e, bool filtered) {
+    if (e.index() != ex.countKind) return false;
+    if (const auto* b = std::get_if<RayBegin>(&e); b && filtered) {
+        if (ex.rayKind && b->kind != *ex.rayKind) return false;
+        if (ex.rayDepth && b->depth != *ex.rayDepth) return false;
+    }
+    return true;
+}
+
+/// The reference answer, the explanation of it, and the event it is read from.
+struct Reference {
+    Answer answer;
     std::string why;
+    std::optional<std::size_t> source;
+};
+
+/// The sweep's metric of one row.
+double sweepMetric(const Exercise& ex, const GridSweepRow& r) {
+    switch (ex.metric) {
+        case SweepMetric::Cost:
+            return ex.given.cTrav * r.cellsPerRay + ex.given.cIsect * r.testsPerRay;
+        case SweepMetric::TestsPerRay:
+            return r.testsPerRay;
+        case SweepMetric::CellsPerRay:
+            return r.cellsPerRay;
+    }
+    return 0.0;
+}
+
+Reference reference(const Context& c, Language lang) {
+    Reference ref;
+    Answer& a = ref.answer;
+    std::string& why = ref.why;
     const EventLog& log = c.log;
+    const auto n = [&](double v) { return formatNumber(v, lang); };
     switch (c.ex.kind) {
         case ExerciseKind::NextCell: {
             const auto next = nextEvent<DdaCell>(log, c.at);
@@ -104,62 +177,105 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             for (int i = 0; i < dims; ++i) a.numbers.push_back(next->second.cell[i]);
             why = feedback::nextCell(lang, previousEvent<DdaCell>(log, next->first), next->second,
                                      dims);
+            ref.source = next->first;
             break;
         }
         case ExerciseKind::Value: {
             const Quantity q = c.ex.quantity;
             double v = 0.0;
-            std::string source;
             if (q >= Quantity::TMaxX && q <= Quantity::TMaxZ) {
                 const auto e = nextEvent<DdaCell>(log, c.at);
                 if (!e) c.fail("no DDA cell follows its position");
-                v = e->second.tMax[static_cast<int>(q) - static_cast<int>(Quantity::TMaxX)];
-                source = "dda_cell " + cellText(e->second.cell, log.dims());
+                const int axis = static_cast<int>(q) - static_cast<int>(Quantity::TMaxX);
+                v = e->second.tMax[axis];
+                ref.source = e->first;
+                if (e->second.ray < log.rays().size() && std::isfinite(v)) {
+                    const RayRecord& r = log.rays()[e->second.ray];
+                    const double o = r.origin[axis], d = r.dir[axis];
+                    why = trf(lang,
+                              "tMax.%1 is the t at which the ray crosses the next %1 boundary "
+                              "after cell %2: (%3 − %4) / %5 = %6.",
+                              {axisName(axis), cellText(e->second.cell, log.dims()), n(o + v * d),
+                               n(o), n(d), n(v)});
+                }
             } else if (q >= Quantity::TDeltaX && q <= Quantity::TExit) {
                 const auto e = nextEvent<DdaSetup>(log, c.at);
                 if (!e) c.fail("no DDA set-up follows its position");
-                v = q == Quantity::TEnter ? e->second.tEnter
-                    : q == Quantity::TExit
-                        ? e->second.tGridExit
-                        : e->second
-                              .tDelta[static_cast<int>(q) - static_cast<int>(Quantity::TDeltaX)];
-                source = "dda_setup";
+                ref.source = e->first;
+                if (q == Quantity::TEnter) {
+                    v = e->second.tEnter;
+                    why = trf(lang,
+                              "t_enter is where the ray enters the grid: the largest of the slabs' "
+                              "entry times, or 0 when the origin is inside: %1.",
+                              {n(v)});
+                } else if (q == Quantity::TExit) {
+                    v = e->second.tGridExit;
+                    why = trf(lang,
+                              "t_exit is where the ray leaves the grid: the smallest of the slabs' "
+                              "exit times: %1.",
+                              {n(v)});
+                } else {
+                    const int axis = static_cast<int>(q) - static_cast<int>(Quantity::TDeltaX);
+                    v = e->second.tDelta[axis];
+                    if (e->second.ray < log.rays().size() && std::isfinite(v)) {
+                        const double d = log.rays()[e->second.ray].dir[axis];
+                        why = trf(lang,
+                                  "tDelta.%1 is the t the ray takes to cross one cell along %1: "
+                                  "cell size / |d.%1| = %2 / |%3| = %4.",
+                                  {axisName(axis), n(v * std::abs(d)), n(d), n(v)});
+                    }
+                }
             } else if (q >= Quantity::HitT && q <= Quantity::HitV) {
                 const auto e = nextEvent<RayHit>(log, c.at);
                 if (!e) c.fail("no hit follows its position");
+                ref.source = e->first;
                 v = q == Quantity::HitT   ? e->second.t
                     : q == Quantity::HitU ? e->second.u
                                           : e->second.v;
-                source = "ray_hit (primitive " + std::to_string(e->second.prim) + ")";
+                why = q == Quantity::HitT
+                          ? trf(lang,
+                                "The nearest intersection of the ray is with primitive %1, at t = "
+                                "%2.",
+                                {std::to_string(e->second.prim), n(v)})
+                          : trf(lang,
+                                "On primitive %1 the intersection has barycentric coordinates u = "
+                                "%2, v = %3 (the point is (1 − u − v) a + u b + v c).",
+                                {std::to_string(e->second.prim), n(e->second.u), n(e->second.v)});
             } else if (q == Quantity::TestT) {
-                std::optional<PrimitiveTest> hit;
+                std::optional<std::pair<std::size_t, PrimitiveTest>> hit;
                 for (std::size_t i = c.at; i < log.events().size() && !hit; ++i)
                     if (const auto* t = std::get_if<PrimitiveTest>(&log.events()[i]); t && t->hit)
-                        hit = *t;
+                        hit = std::pair{i, *t};
                 if (!hit) c.fail("no primitive test that hits follows its position");
-                v = hit->t;
-                source = "primitive_test (primitive " + std::to_string(hit->prim) + ")";
+                v = hit->second.t;
+                ref.source = hit->first;
+                why = feedback::hitOrMiss(lang, hit->second);
             } else if (q == Quantity::NodeTNear || q == Quantity::NodeTFar) {
                 const auto e = nextEvent<NodeEnter>(log, c.at);
                 if (!e) c.fail("no node is entered after its position");
+                ref.source = e->first;
                 v = q == Quantity::NodeTNear ? e->second.tNear : e->second.tFar;
-                source = "node_enter (node " + std::to_string(e->second.node) + ")";
+                why = trf(lang,
+                          "Node %1 is entered over [tNear, tFar] = [%2, %3]: the part of the ray "
+                          "inside its box (the slab test), clipped to the parent's.",
+                          {std::to_string(e->second.node), n(e->second.tNear), n(e->second.tFar)});
             } else {
                 const auto e = nextEvent<SplitCandidate>(log, c.at);
                 if (!e) c.fail("no split candidate follows its position");
+                ref.source = e->first;
                 const SplitCandidate& s = e->second;
                 v = q == Quantity::CandidatePL   ? s.pl
                     : q == Quantity::CandidatePR ? s.pr
                                                  : s.sahCost;
-                source = std::string("split_candidate ") + axisName(s.axis) + " = " +
-                         formatNumber(s.position) + " (NL " + std::to_string(s.nl) + ", NR " +
-                         std::to_string(s.nr) + ", P(L|C) " + formatNumber(s.pl) + ", P(R|C) " +
-                         formatNumber(s.pr) + ", cost " + formatNumber(s.sahCost) + ")";
+                why = trf(lang,
+                          "Candidate %1 = %2: NL = %3, NR = %4, P(L|C) = Area(L) / Area(C) = %5, "
+                          "P(R|C) = %6, cost = C_trav + C_isect (P(L|C) NL + P(R|C) NR) = %7.",
+                          {axisName(s.axis), n(s.position), std::to_string(s.nl),
+                           std::to_string(s.nr), n(s.pl), n(s.pr), n(s.sahCost)});
             }
             if (!std::isfinite(v))
                 c.fail("the trace's value is not finite (the ray never crosses)");
             a.numbers.push_back(v);
-            why = feedback::value(lang, q, v, source);
             break;
         }
         case ExerciseKind::PickSplit: {
@@ -167,8 +283,8 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             if (!node) c.fail("no node is built after its position");
             std::optional<SplitCandidate> best;
             int count = 0;
-            for (const Event& e : log.events())
-                if (const auto* s = std::get_if<SplitCandidate>(&e);
+            for (std::size_t i = 0; i < log.events().size(); ++i)
+                if (const auto* s = std::get_if<SplitCandidate>(&log.events()[i]);
                     s && s->node == node->second.node) {
                     ++count;
                     if (!best || s->sahCost < best->sahCost) best = *s;
@@ -176,40 +292,57 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             if (!best) c.fail("node " + std::to_string(node->second.node) + " has no candidates");
             a.numbers = {static_cast<double>(best->axis), best->position};
             why = feedback::pickSplit(lang, count, node->second.node, *best);
+            ref.source = node->first;
             break;
         }
         case ExerciseKind::Count: {
-            std::size_t n = 0, end = log.events().size();
-            if (c.ex.until) {
-                const auto u = resolvePosition(*c.ex.until, log);
-                if (!u || *u < c.at)
-                    c.fail("its end (" + describePosition(*c.ex.until) +
-                           ") is not in the trace after its start");
-                end = *u;
-            }
-            for (std::size_t i = c.at; i < end; ++i) {
+            std::size_t total = 0;
+            const std::size_t end = rangeEnd(c);
+            std::vector<std::string> items;
+            std::optional<DdaCell> cell;  // the cell the walk is in, for skips and tests
+            for (std::size_t i = 0; i < end; ++i) {
                 const Event& e = log.events()[i];
-                if (e.index() != c.ex.countKind) continue;
-                if (const auto* b = std::get_if<RayBegin>(&e)) {
-                    if (c.ex.rayKind && b->kind != *c.ex.rayKind) continue;
-                    if (c.ex.rayDepth && b->depth != *c.ex.rayDepth) continue;
+                if (const auto* dc = std::get_if<DdaCell>(&e)) cell = *dc;
+                if (const auto* rb = std::get_if<RayBegin>(&e); rb) cell.reset();
+                if (i < c.at || !counted(c.ex, e, true)) continue;
+                if (!ref.source) ref.source = i;
+                ++total;
+                // What was counted, item by item (the first dozen).
+                if (items.size() >= 12) continue;
+                // Built piece by piece: GCC 12 warns (-Wrestrict, falsely) on " " + string here.
+                std::string in;
+                if (cell) {
+                    in = ' ';
+                    in += trf(lang, "in cell %1", {cellText(cell->cell, log.dims())});
                 }
-                ++n;
+                if (const auto* s = std::get_if<MailboxSkip>(&e))
+                    items.push_back(trf(lang, "primitive %1", {std::to_string(s->prim)}) + in);
+                else if (const auto* t = std::get_if<PrimitiveTest>(&e))
+                    items.push_back(trf(lang, "primitive %1", {std::to_string(t->prim)}) + in);
+                else if (const auto* b = std::get_if<RayBegin>(&e))
+                    items.push_back(trf(lang, "ray %1", {std::to_string(b->ray)}));
+                else if (const auto* d = std::get_if<DdaCell>(&e))
+                    items.push_back(cellText(d->cell, log.dims()));
+                else if (const auto* ne = std::get_if<NodeEnter>(&e))
+                    items.push_back(trf(lang, "node %1", {std::to_string(ne->node)}));
             }
-            a.numbers.push_back(static_cast<double>(n));
-            // What was counted, e.g. "ray_begin shadow depth 1" (appended piece by piece: GCC 12
-            // warns, falsely, with -Wrestrict on " " + string here).
-            std::string what(kEventNames[c.ex.countKind]);
-            if (c.ex.rayKind) {
-                what += ' ';
-                what += kRayKindNames[static_cast<int>(*c.ex.rayKind)];
+            a.numbers.push_back(static_cast<double>(total));
+            std::string what = c.ex.rayKind ? feedback::raysOfKind(lang, *c.ex.rayKind)
+                                            : feedback::eventsCounted(lang, c.ex.countKind);
+            if (c.ex.rayDepth)
+                what = trf(lang, "%1 of depth %2", {what, std::to_string(*c.ex.rayDepth)});
+            why = trf(lang, "%1 %2: %3.", {what, rangeText(c.ex, lang), std::to_string(total)});
+            if (!items.empty()) {
+                std::string list;
+                for (const auto& s : items) {
+                    if (!list.empty()) list += ", ";
+                    list += s;
+                }
+                if (total > items.size()) list += ", …";
+                // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on " " + string.
+                why += ' ';
+                why += trf(lang, "Counted: %1.", {list});
             }
-            if (c.ex.rayDepth) {
-                what += " depth ";
-                what += std::to_string(*c.ex.rayDepth);
-            }
-            why = feedback::count(lang, n, what, c.ex.at,
-                                  c.ex.until.value_or(ReplayPosition{ReplayPosition::Mode::End}));
             break;
         }
         case ExerciseKind::HitOrMiss: {
@@ -217,16 +350,222 @@ std::pair<Answer, std::string> reference(const Context& c, Language lang) {
             if (!t) c.fail("no primitive test follows its position");
             a.hit = t->second.hit;
             if (t->second.hit && c.ex.withT) a.numbers.push_back(t->second.t);
-            why = feedback::hitOrMiss(lang, t->second);
+            const std::string cause =
+                c.scene ? feedback::missCause(*c.scene, log, t->first, lang) : std::string();
+            why = cause.empty() ? feedback::hitOrMiss(lang, t->second)
+                                : trf(lang, "The test of primitive %1 fails. %2",
+                                      {std::to_string(t->second.prim), cause});
+            ref.source = t->first;
+            break;
+        }
+        case ExerciseKind::Choice: {
+            a.numbers.push_back(c.ex.answer);
+            const ChoiceOption& right = c.ex.choices.at(static_cast<std::size_t>(c.ex.answer));
+            why = trf(lang, "The right answer is %1) %2: %3",
+                      {letter(c.ex.answer), right.text.in(lang), right.why.in(lang)});
+            break;
+        }
+        case ExerciseKind::Sequence: {
+            const std::size_t end = rangeEnd(c);
+            const int dims = log.dims();
+            for (std::size_t i = c.at; i < end; ++i) {
+                if (c.ex.length && a.numbers.size() / (c.ex.ofNodes ? 1 : dims) >=
+                                       static_cast<std::size_t>(*c.ex.length))
+                    break;
+                const Event& e = log.events()[i];
+                if (c.ex.ofNodes) {
+                    if (const auto* ne = std::get_if<NodeEnter>(&e)) {
+                        a.numbers.push_back(ne->node);
+                        if (!ref.source) ref.source = i;
+                    }
+                } else if (const auto* dc = std::get_if<DdaCell>(&e)) {
+                    for (int k = 0; k < dims; ++k) a.numbers.push_back(dc->cell[k]);
+                    if (!ref.source) ref.source = i;
+                }
+            }
+            if (a.numbers.empty())
+                c.fail(c.ex.ofNodes ? "no node is entered in its range"
+                                    : "no DDA cell is visited in its range");
+            a.perItem = c.ex.ofNodes ? 1 : dims;
+            why = c.ex.ofNodes ? trf(lang,
+                                     "TestTree enters the nodes in this order, the nearer child "
+                                     "first: %1.",
+                                     {formatAnswer(c.ex, a, lang)})
+                               : trf(lang, "The DDA visits the cells in this order: %1.",
+                                     {formatAnswer(c.ex, a, lang)});
+            break;
+        }
+        case ExerciseKind::SweepPick: {
+            if (!c.sweep || c.sweep->empty())
+                c.fail("a sweep_pick is graded from the lesson's sweep, which has not been run");
+            const GridSweepRow* best = nullptr;
+            std::string table;
+            for (const GridSweepRow& r : *c.sweep) {
+                if (!best || sweepMetric(c.ex, r) < sweepMetric(c.ex, *best)) best = &r;
+                table += (table.empty() ? "" : "; ") + std::to_string(r.resolution) + ": " +
+                         n(sweepMetric(c.ex, r));
+            }
+            a.numbers.push_back(best->resolution);
+            const std::string metric =
+                c.ex.metric == SweepMetric::Cost
+                    ? trf(lang,
+                          "the cost C_trav × cells per ray + C_isect × tests per ray (C_trav = "
+                          "%1, C_isect = %2)",
+                          {n(c.ex.given.cTrav), n(c.ex.given.cIsect)})
+                : c.ex.metric == SweepMetric::TestsPerRay ? tr(lang, "the tests per ray")
+                                                          : tr(lang, "the cells per ray");
+            why = trf(lang, "Per resolution (cells per axis), %1: %2. The lowest is at %3.",
+                      {metric, table, std::to_string(best->resolution)});
+            break;
+        }
+        case ExerciseKind::Compute: {
+            a.numbers.push_back(computeAnswer(c.ex, c.file));
+            why = computeWorking(c.ex, lang);
             break;
         }
     }
-    return {a, why};
+    return ref;
+}
+
+/// Counts of all events of the kind in the range, and of the right kind in the whole trace.
+std::string countSlip(const Context& c, double given, double right, Language lang) {
+    const std::size_t end = rangeEnd(c);
+    std::size_t unfiltered = 0, everywhere = 0;
+    for (std::size_t i = 0; i < c.log.events().size(); ++i) {
+        const Event& e = c.log.events()[i];
+        if (i >= c.at && i < end && counted(c.ex, e, false)) ++unfiltered;
+        if (counted(c.ex, e, true)) ++everywhere;
+    }
+    if ((c.ex.rayKind || c.ex.rayDepth) && given == unfiltered && unfiltered != right)
+        return trf(lang, "%1 counts every ray in the range, of any kind and depth.",
+                   {formatNumber(given, lang)});
+    if (given == everywhere && everywhere != right)
+        return trf(lang, "%1 counts the whole trace, not only the range asked.",
+                   {formatNumber(given, lang)});
+    return "";
+}
+
+/// The slip a wrong Value betrays, read from the trace around its source event.
+std::string valueSlip(const Context& c, double given, double right, std::size_t source,
+                      Language lang) {
+    const auto n = [&](double v) { return formatNumber(v, lang); };
+    const Quantity q = c.ex.quantity;
+    const auto near = [&](double v) { return close(given, v, c.ex.tolerance); };
+    const auto negativeAlong = [&](int axis) {
+        const auto* setup = std::get_if<DdaSetup>(&c.log.events()[source]);
+        return setup && setup->ray < c.log.rays().size() && c.log.rays()[setup->ray].dir[axis] < 0;
+    };
+    if (q >= Quantity::TDeltaX && q <= Quantity::TDeltaZ && right != 0.0 && near(-right) &&
+        negativeAlong(static_cast<int>(q) - static_cast<int>(Quantity::TDeltaX)))
+        return trf(lang,
+                   "%1 is cell size / d without the abs: d is negative along this axis, but "
+                   "tDelta is a distance along the ray, cell size / |d|.",
+                   {n(given)});
+    if (q >= Quantity::TMaxX && q <= Quantity::TMaxZ) {
+        const auto* cell = std::get_if<DdaCell>(&c.log.events()[source]);
+        const int axis = static_cast<int>(q) - static_cast<int>(Quantity::TMaxX);
+        for (int k = 0; cell && k < c.log.dims(); ++k)
+            if (k != axis && near(cell->tMax[k]))
+                return trf(lang, "%1 is tMax.%2, not tMax.%3.",
+                           {n(given), axisName(k), axisName(axis)});
+        if (const auto setup = previousEvent<DdaSetup>(c.log, source); setup) {
+            const double delta = setup->tDelta[axis];
+            if (near(right - delta))
+                return trf(lang,
+                           "%1 is the tMax.%2 of the cell before: after a step along %2, tMax.%2 "
+                           "grows by tDelta.%2 = %3.",
+                           {n(given), axisName(axis), n(delta)});
+        }
+    }
+    if (q == Quantity::HitT) {
+        // The slide's grid loop stops at the first hit found: a farther one, when cells overlap.
+        const auto* hit = std::get_if<RayHit>(&c.log.events()[source]);
+        for (std::size_t i = 0; hit && i < source; ++i)
+            if (const auto* t = std::get_if<PrimitiveTest>(&c.log.events()[i]);
+                t && t->ray == hit->ray && t->hit && t->prim != hit->prim && near(t->t))
+                return trf(lang,
+                           "%1 is primitive %2's intersection: found before the nearest one but "
+                           "farther along the ray. Stopping at the first intersection found (the "
+                           "slide's `break`) gives it; the nearest is primitive %3's.",
+                           {n(given), std::to_string(t->prim), std::to_string(hit->prim)});
+    }
+    if (q == Quantity::NodeTNear || q == Quantity::NodeTFar) {
+        const auto* e = std::get_if<NodeEnter>(&c.log.events()[source]);
+        if (e && near(q == Quantity::NodeTNear ? e->tFar : e->tNear))
+            return trf(lang, "%1 is the other end of the node's interval: tNear ≤ tFar.",
+                       {n(given)});
+    }
+    if (q == Quantity::CandidatePL || q == Quantity::CandidatePR) {
+        const auto* s = std::get_if<SplitCandidate>(&c.log.events()[source]);
+        if (s && near(q == Quantity::CandidatePL ? s->pr : s->pl))
+            return trf(lang, "%1 is the other side's probability: P(L|C) belongs to the left box.",
+                       {n(given)});
+        if (s && near(right * right))
+            return trf(lang,
+                       "%1 takes the probability as Area²/Area² (the slide's slip): P(L|C) is "
+                       "Area(L) / Area(C), not squared.",
+                       {n(given)});
+    }
+    if (right != 0.0 && near(-right)) return trf(lang, "%1 has the wrong sign.", {n(given)});
+    return "";
+}
+
+/// Where a student's order departs from the trace's, and why.
+std::string sequenceSlip(const Context& c, const Answer& given, const Answer& right,
+                         Language lang) {
+    const int per = right.perItem;
+    if (given.perItem != per && !given.numbers.empty())
+        return trf(lang, "Each cell has %1 indices here.", {std::to_string(per)});
+    const std::size_t items = right.numbers.size() / per, gave = given.numbers.size() / per;
+    const auto item = [&](const Answer& a, std::size_t k) {
+        std::array<std::int32_t, 3> cell{0, 0, 0};
+        for (int i = 0; i < per; ++i) cell[i] = static_cast<std::int32_t>(a.numbers[k * per + i]);
+        return c.ex.ofNodes ? trf(lang, "node %1", {std::to_string(cell[0])})
+                            : cellText(cell, c.log.dims());
+    };
+    std::size_t k = 0;
+    while (k < items && k < gave && item(given, k) == item(right, k)) ++k;
+    if (k == items && k == gave) return "";
+    if (k == gave)
+        return trf(lang, "Your order stops after %1 items; the trace goes on with %2.",
+                   {std::to_string(gave), item(right, k)});
+    if (k == items)
+        return trf(lang, "The trace has only %1 here; %2 is not in it.",
+                   {std::to_string(items), item(given, k)});
+    // The k-th event of the range: the reason it comes next.
+    const std::string place = feedback::ordinal(lang, static_cast<int>(k + 1));
+    std::size_t seen = 0;
+    std::optional<DdaCell> prevCell;
+    for (std::size_t i = c.at; i < c.log.events().size(); ++i) {
+        const Event& e = c.log.events()[i];
+        if (c.ex.ofNodes) {
+            const auto* ne = std::get_if<NodeEnter>(&e);
+            if (!ne || seen++ != k) continue;
+            return trf(lang,
+                       "Your order departs from the trace's at the %1 item: the trace enters node "
+                       "%2 there, over [tNear, tFar] = [%3, %4], the nearest interval still to "
+                       "visit; you wrote %5.",
+                       {place, std::to_string(ne->node), formatNumber(ne->tNear, lang),
+                        formatNumber(ne->tFar, lang), item(given, k)});
+        }
+        const auto* dc = std::get_if<DdaCell>(&e);
+        if (!dc) continue;
+        if (seen++ != k) {
+            prevCell = *dc;
+            continue;
+        }
+        const std::string why = feedback::nextCell(
+            lang, prevCell ? prevCell : previousEvent<DdaCell>(c.log, i), *dc, c.log.dims());
+        return trf(lang, "Your order departs from the trace's at the %1 item (you wrote %2): %3",
+                   {place, item(given, k), why});
+    }
+    return "";
 }
 
 }  // namespace
 
-std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std::string* why) {
+std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std::string* why,
+                                  Language lang) {
     const auto bad = [&](const std::string& message) -> std::optional<Answer> {
         if (why) *why = message;
         return std::nullopt;
@@ -234,23 +573,23 @@ std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std
     Answer a;
     switch (ex.kind) {
         case ExerciseKind::NextCell: {
-            std::string_view s = text;
-            const auto parts = splitAny(s, "(), ;\t");
+            const auto parts = splitAny(text, "(), ;\t");
             if (parts.size() < 2 || parts.size() > 3)
-                return bad("expected a cell as X,Y or X,Y,Z (whole numbers)");
+                return bad(tr(lang, "expected a cell as X,Y or X,Y,Z (whole numbers)"));
             for (const auto p : parts) {
-                const auto v = parseNumber(p);
-                if (!v || *v != std::floor(*v)) return bad("cell indices are whole numbers");
-                a.numbers.push_back(*v);
+                const auto v = parseWhole(p);
+                if (!v) return bad(tr(lang, "cell indices are whole numbers"));
+                a.numbers.push_back(static_cast<double>(*v));
             }
             return a;
         }
         case ExerciseKind::Value:
+        case ExerciseKind::Compute:
         case ExerciseKind::Count: {
             const auto v = parseNumber(text);
-            if (!v) return bad("expected a number");
+            if (!v) return bad(tr(lang, "expected a number"));
             if (ex.kind == ExerciseKind::Count && (*v < 0 || *v != std::floor(*v)))
-                return bad("a count is a whole number, 0 or more");
+                return bad(tr(lang, "a count is a whole number, 0 or more"));
             a.numbers.push_back(*v);
             return a;
         }
@@ -258,66 +597,158 @@ std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std
             const std::string s = lower(text);
             const auto eq = s.find('=');
             if (eq == std::string::npos)
-                return bad("expected a split plane as x=POSITION (or y=, z=)");
+                return bad(tr(lang, "expected a split plane as x=POSITION (or y=, z=)"));
             const auto axisPart = splitAny(std::string_view(s).substr(0, eq), " \t");
             if (axisPart.size() != 1 || axisPart[0].size() != 1 ||
                 std::string_view("xyz").find(axisPart[0][0]) == std::string_view::npos)
-                return bad("the axis is x, y or z");
+                return bad(tr(lang, "the axis is x, y or z"));
             const auto v = parseNumber(std::string_view(s).substr(eq + 1));
-            if (!v) return bad("expected a number after '='");
+            if (!v) return bad(tr(lang, "expected a number after '='"));
             a.numbers = {static_cast<double>(axisPart[0][0] - 'x'), *v};
             return a;
         }
         case ExerciseKind::HitOrMiss: {
+            const auto expected = [&] {
+                return bad(ex.withT
+                               ? tr(lang, "expected \"hit T\" (T the intersection's t) or \"miss\"")
+                               : tr(lang, "expected \"hit\" or \"miss\""));
+            };
             const std::string s = lower(text);
             const auto parts = splitAny(s, " \t=:");
-            if (parts.empty()) return bad("expected \"hit\" (with its t) or \"miss\"");
+            if (parts.empty()) return expected();
             const std::string_view word = parts[0];
-            if (word == "miss" || word == "manca" || word == "false") {
-                if (parts.size() > 1) return bad("a miss has no t");
-                a.hit = false;
-                return a;
-            }
-            if (word != "hit" && word != "colpisce" && word != "true")
-                return bad("expected \"hit\" (with its t) or \"miss\"");
+            // The words of both languages, whatever the app's language.
+            for (const char* no :
+                 {"miss", "false", "no", "manca", "mancata", "mancato", "falso", "nessuna"})
+                if (word == no) {
+                    if (parts.size() > 1) return bad(tr(lang, "a miss has no t"));
+                    a.hit = false;
+                    return a;
+                }
+            bool yes = false;
+            for (const char* w :
+                 {"hit", "true", "yes", "colpisce", "colpita", "colpito", "sì", "si", "vero"})
+                yes = yes || word == w;
+            if (!yes) return expected();
             a.hit = true;
             std::size_t i = 1;
             if (i < parts.size() && parts[i] == "t") ++i;
             if (i < parts.size()) {
                 const auto v = parseNumber(parts[i]);
-                if (!v || i + 1 != parts.size()) return bad("expected \"hit T\" with T a number");
+                if (!v || i + 1 != parts.size()) return expected();
                 a.numbers.push_back(*v);
             }
-            if (ex.withT && a.numbers.empty()) return bad("give the hit's t too: \"hit T\"");
+            if (ex.withT && a.numbers.empty())
+                return bad(tr(lang, "give the intersection's t too: \"hit T\""));
+            return a;
+        }
+        case ExerciseKind::Choice: {
+            std::string s = lower(trim(text));
+            while (!s.empty() && (s.front() == '(' || s.back() == ')' || s.back() == '.')) {
+                if (s.front() == '(') s.erase(0, 1);
+                if (!s.empty() && (s.back() == ')' || s.back() == '.')) s.pop_back();
+            }
+            const int options = static_cast<int>(ex.choices.size());
+            int index = -1;
+            if (s.size() == 1 && s[0] >= 'a' && s[0] < 'a' + options) index = s[0] - 'a';
+            if (const auto v = parseWhole(s); v && *v >= 1 && *v <= options)
+                index = static_cast<int>(*v) - 1;
+            if (index < 0)
+                return bad(trf(lang, "expected a letter (a to %1) or a number (1 to %2)",
+                               {letter(std::max(options, 1) - 1), std::to_string(options)}));
+            a.numbers.push_back(index);
+            return a;
+        }
+        case ExerciseKind::Sequence: {
+            if (ex.ofNodes) {
+                for (const auto p : splitAny(text, " ,;\t")) {
+                    const auto v = parseWhole(p);
+                    if (!v || *v < 0)
+                        return bad(
+                            tr(lang, "expected node ids in order, as 0 1 4 (whole numbers)"));
+                    a.numbers.push_back(static_cast<double>(*v));
+                }
+                if (a.numbers.empty())
+                    return bad(tr(lang, "expected node ids in order, as 0 1 4 (whole numbers)"));
+                return a;
+            }
+            std::string s(text);
+            const bool grouped = s.find_first_of(";)") != std::string::npos;
+            for (char& ch : s)
+                if (ch == ')') ch = ';';
+            s.erase(std::remove(s.begin(), s.end(), '('), s.end());
+            const auto cells = splitAny(s, grouped ? ";" : " \t");
+            int per = 0;
+            for (const auto cell : cells) {
+                const auto parts = splitAny(cell, ", \t");
+                if (parts.empty()) continue;
+                if (parts.size() < 2 || parts.size() > 3 ||
+                    (per && per != static_cast<int>(parts.size())))
+                    return bad(tr(lang, "expected cells in order, as 0,0; 1,0; 1,1"));
+                per = static_cast<int>(parts.size());
+                for (const auto p : parts) {
+                    const auto v = parseWhole(p);
+                    if (!v) return bad(tr(lang, "cell indices are whole numbers"));
+                    a.numbers.push_back(static_cast<double>(*v));
+                }
+            }
+            if (!per) return bad(tr(lang, "expected cells in order, as 0,0; 1,0; 1,1"));
+            a.perItem = per;
+            return a;
+        }
+        case ExerciseKind::SweepPick: {
+            const auto v = parseWhole(text);
+            if (!v || *v < 1)
+                return bad(tr(lang, "expected a resolution: cells per axis, a whole number"));
+            a.numbers.push_back(static_cast<double>(*v));
             return a;
         }
     }
     return bad("unknown exercise kind");
 }
 
-std::string formatAnswer(const Exercise& ex, const Answer& a) {
+std::string formatAnswer(const Exercise& ex, const Answer& a, Language lang) {
+    const auto whole = [](double v) { return std::to_string(static_cast<long long>(v)); };
     switch (ex.kind) {
         case ExerciseKind::NextCell: {
             std::string s;
             // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "," + to_string here.
             for (std::size_t i = 0; i < a.numbers.size(); ++i) {
                 if (i) s += ',';
-                s += std::to_string(static_cast<long long>(a.numbers[i]));
+                s += whole(a.numbers[i]);
             }
             return s;
         }
         case ExerciseKind::Value:
-            return a.numbers.empty() ? "" : formatNumber(a.numbers[0]);
+        case ExerciseKind::Compute:
+            return a.numbers.empty() ? "" : formatNumber(a.numbers[0], lang);
         case ExerciseKind::Count:
-            return a.numbers.empty() ? "" : std::to_string(static_cast<long long>(a.numbers[0]));
+        case ExerciseKind::SweepPick:
+            return a.numbers.empty() ? "" : whole(a.numbers[0]);
         case ExerciseKind::PickSplit:
             return a.numbers.size() < 2 ? ""
                                         : std::string(axisName(static_cast<int>(a.numbers[0]))) +
-                                              "=" + formatNumber(a.numbers[1]);
-        case ExerciseKind::HitOrMiss:
+                                              "=" + formatNumber(a.numbers[1], lang);
+        case ExerciseKind::HitOrMiss: {
             if (!a.hit) return "";
-            if (!*a.hit) return "miss";
-            return a.numbers.empty() ? "hit" : "hit " + formatNumber(a.numbers[0]);
+            // The answer's keywords, which parseAnswer reads in either language: a grammar, not
+            // a translation (the catalogue's "hit" is the event list's noun, "intersezione").
+            const bool it = lang == Language::It;
+            if (!*a.hit) return it ? "mancata" : "miss";
+            const std::string word = it ? "colpita" : "hit";
+            return a.numbers.empty() ? word : word + " " + formatNumber(a.numbers[0], lang);
+        }
+        case ExerciseKind::Choice:
+            return a.numbers.empty() ? "" : letter(static_cast<int>(a.numbers[0]));
+        case ExerciseKind::Sequence: {
+            std::string s;
+            const std::size_t per = static_cast<std::size_t>(std::max(a.perItem, 1));
+            for (std::size_t i = 0; i < a.numbers.size(); ++i) {
+                if (i) s += ex.ofNodes ? " " : (i % per ? "," : "; ");
+                s += whole(a.numbers[i]);
+            }
+            return s;
+        }
     }
     return "";
 }
@@ -334,23 +765,47 @@ std::vector<SplitCandidate> splitCandidates(const Exercise& ex, const EventLog& 
     return out;
 }
 
-Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::string& lessonFile) {
-    return reference(contextOf(ex, log, lessonFile), Language::En).first;
+Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
+                       const std::vector<GridSweepRow>* sweep) {
+    return reference(contextOf(ex, log, lessonFile, sweep), Language::En).answer;
+}
+
+std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& log,
+                                            const std::string& lessonFile) {
+    if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
+        ex.kind == ExerciseKind::SweepPick)
+        return std::nullopt;
+    return reference(contextOf(ex, log, lessonFile, nullptr), Language::En).source;
+}
+
+std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log) {
+    if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
+        ex.kind == ExerciseKind::SweepPick)
+        return std::nullopt;
+    return resolvePosition(ex.at, log);
 }
 
 Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answer, Language lang,
-                    const std::string& lessonFile) {
-    const Context c = contextOf(ex, log, lessonFile);
-    const auto [ref, why] = reference(c, lang);
+                    const std::string& lessonFile, const std::vector<GridSweepRow>* sweep,
+                    const LessonScene* scene) {
+    Context c = contextOf(ex, log, lessonFile, sweep);
+    c.scene = scene;
+    const Reference r = reference(c, lang);
+    const Answer& ref = r.answer;
     Verdict v;
-    v.expected = formatAnswer(ex, ref);
-    v.feedback = why;
+    v.expected = formatAnswer(ex, ref, lang);
     switch (ex.kind) {
         case ExerciseKind::NextCell:
         case ExerciseKind::Count:
+        case ExerciseKind::Choice:
             v.correct = answer.numbers == ref.numbers;
             break;
+        case ExerciseKind::Sequence:
+            v.correct = answer.numbers == ref.numbers &&
+                        (answer.perItem == ref.perItem || answer.numbers.empty());
+            break;
         case ExerciseKind::Value:
+        case ExerciseKind::Compute:
             v.correct = answer.numbers.size() == 1 &&
                         close(answer.numbers[0], ref.numbers[0], ex.tolerance);
             break;
@@ -375,7 +830,85 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                                           (answer.numbers.size() == 1 &&
                                            close(answer.numbers[0], ref.numbers[0], ex.tolerance)));
             break;
+        case ExerciseKind::SweepPick: {
+            // Any resolution as low as the lowest is right.
+            if (answer.numbers.size() != 1) break;
+            double best = kInfinity;
+            for (const GridSweepRow& row : *sweep) best = std::min(best, sweepMetric(ex, row));
+            for (const GridSweepRow& row : *sweep)
+                if (row.resolution == answer.numbers[0] &&
+                    sweepMetric(ex, row) <= best * (1.0 + 1e-12))
+                    v.correct = true;
+            break;
+        }
     }
+    // What the wrong answer betrays, with the student's own numbers.
+    if (!v.correct && !answer.numbers.empty()) {
+        const double given = answer.numbers[0];
+        switch (ex.kind) {
+            case ExerciseKind::Value:
+                v.slip = valueSlip(c, given, ref.numbers[0], *r.source, lang);
+                break;
+            case ExerciseKind::Compute:
+                v.slip = computeSlip(ex, given, lang);
+                break;
+            case ExerciseKind::Count:
+                v.slip = countSlip(c, given, ref.numbers[0], lang);
+                break;
+            case ExerciseKind::Sequence:
+                v.slip = sequenceSlip(c, answer, ref, lang);
+                break;
+            case ExerciseKind::Choice: {
+                if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;
+                const auto& chosen = ex.choices[static_cast<std::size_t>(given)];
+                v.slip = trf(
+                    lang, "%1) %2: %3",
+                    {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
+                break;
+            }
+            case ExerciseKind::SweepPick: {
+                std::string list;
+                bool listed = false;
+                for (const GridSweepRow& row : *sweep) {
+                    list += (list.empty() ? "" : ", ") + std::to_string(row.resolution);
+                    listed = listed || row.resolution == given;
+                }
+                v.slip = listed ? trf(lang, "At %1 the metric is higher than at %2.",
+                                      {formatNumber(given, lang), v.expected})
+                                : trf(lang, "%1 is not one of the sweep's resolutions (%2).",
+                                      {formatNumber(given, lang), list});
+                break;
+            }
+            case ExerciseKind::PickSplit: {
+                if (answer.numbers.size() != 2) break;
+                const auto candidates = splitCandidates(ex, log);
+                const std::string plane = std::string(axisName(static_cast<int>(given))) + " = " +
+                                          formatNumber(answer.numbers[1], lang);
+                const SplitCandidate* mine = nullptr;
+                for (const SplitCandidate& s : candidates)
+                    if (s.axis == given && close(answer.numbers[1], s.position, 1e-9)) mine = &s;
+                if (!mine) {
+                    v.slip = trf(lang, "%1 is not one of the candidates listed.", {plane});
+                    break;
+                }
+                const auto n = [&](double x) { return formatNumber(x, lang); };
+                v.slip = trf(lang,
+                             "%1 costs C_trav + C_isect (%2 · %3 + %4 · %5) = %6, more than the "
+                             "cheapest.",
+                             {plane, n(mine->pl), std::to_string(mine->nl), n(mine->pr),
+                              std::to_string(mine->nr), n(mine->sahCost)});
+                break;
+            }
+            case ExerciseKind::HitOrMiss:
+                if (answer.hit == ref.hit && ref.hit == true && !ref.numbers.empty())
+                    v.slip = trf(lang, "It is an intersection, but not at t = %1.",
+                                 {formatNumber(given, lang)});
+                break;
+            default:
+                break;
+        }
+    }
+    v.feedback = v.slip.empty() ? r.why : v.slip + " " + r.why;
     return v;
 }
 

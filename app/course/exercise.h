@@ -1,41 +1,70 @@
 #pragma once
-// Exercises: a student's answer as typed, the right answer read from the recorded trace, and the
-// check of one against the other with the trace's explanation.
+// Exercises: a student's answer as typed, the right answer read from the recorded trace (or, for
+// a compute exercise, from raystep's kernels; for a choice, the lesson file; for a sweep_pick, the
+// sweep's rows), and the check of one against the other with the explanation and, where a wrong
+// answer betrays a known slip, its name.
+#include "course/grid_sweep.h"
 #include "course/lesson.h"
 
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace raystep {
 
-/// A student's answer. NextCell: the cell's indices; Value and Count: one number; PickSplit:
-/// axis (0, 1, 2) and position; HitOrMiss: hit, and t when asked.
+/// A student's answer. NextCell: the cell's indices; Value, Count, Compute: one number;
+/// PickSplit: axis (0, 1, 2) and position; HitOrMiss: hit, and t when asked; Choice: the option
+/// (0-based); Sequence: the cells' indices one after the other, or the node ids; SweepPick: the
+/// resolution (cells per axis).
 struct Answer {
     std::vector<double> numbers;
     std::optional<bool> hit;
+    int perItem = 1;  // Sequence of cells: indices per cell (2 or 3)
 };
-/// Reads an answer as typed: "2,1" (cell), "0.75" (value, count), "x=2.5" (split),
-/// "miss" or "hit 3.55" (hit or miss). nullopt with `why` set when it is not such an answer.
-std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std::string* why);
-std::string formatAnswer(const Exercise& ex, const Answer& a);
+/// Reads an answer as typed: "2,1" (cell), "0.75" or "0,75" (value, count, compute), "x=2.5"
+/// (split), "miss" / "mancata" or "hit 3.55" / "colpita 3,55" (hit or miss), "b" or "2" (choice),
+/// "0,0; 1,0; 1,1" or "(0,0) (1,0)" (cells in order), "0 1 4" (nodes), "8" (a resolution).
+/// nullopt with `why` set, in `lang`, when it is not such an answer.
+std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std::string* why,
+                                  Language lang = Language::En);
+/// An answer as a student would type it in `lang` (English: as an answers file holds it).
+std::string formatAnswer(const Exercise& ex, const Answer& a, Language lang = Language::En);
 
 /// The candidates of the split a PickSplit exercise is about (those the app lists).
 std::vector<SplitCandidate> splitCandidates(const Exercise& ex, const EventLog& log);
 
-/// The right answer, read from the trace; throws LessonError (naming the exercise's line in
-/// `lessonFile`) when the trace does not hold what the exercise asks about.
-Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::string& lessonFile);
+/// The right answer; throws LessonError (naming the exercise's line in `lessonFile`) when the
+/// trace does not hold what the exercise asks about. A sweep_pick needs the sweep's rows.
+Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
+                       const std::vector<GridSweepRow>* sweep = nullptr);
+
+/// The lesson's scene, when the caller has it: a missed test's feedback then names the cause.
+using LessonScene = std::variant<Scene, Scene2D>;
 
 struct Verdict {
     bool correct = false;
-    std::string expected;  // the reference answer, as text
-    std::string feedback;  // why the right answer is right, from the trace
+    std::string expected;  // the reference answer, as text in the verdict's language
+    std::string feedback;  // the slip (if any), then why the right answer is right
+    std::string slip;      // the slip the wrong answer betrays, with the student's numbers
 };
 Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answer, Language lang,
-                    const std::string& lessonFile);
+                    const std::string& lessonFile, const std::vector<GridSweepRow>* sweep = nullptr,
+                    const LessonScene* scene = nullptr);
+
+/// Quiz mode: while `ex` is open (not yet answered right), the replay must not pass this cursor
+/// (its `at`, resolved in `log`). nullopt for the kinds whose answer is not in the trace (choice,
+/// compute, sweep_pick) or when the position is not in the trace.
+std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log);
+
+/// The index of the event the reference answer is read from (the first one, for counts and
+/// sequences); nullopt for kinds not read from the trace.
+std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& log,
+                                            const std::string& lessonFile);
 
 }  // namespace raystep

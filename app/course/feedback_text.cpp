@@ -1,105 +1,195 @@
-// The sentences that explain a reference answer, English beside Italian, so a translator sees
-// both at once: one function per exercise kind (course/feedback_text.h).
+// The sentences that explain a reference answer (course/feedback_text.h), through the one
+// translation mechanism: English is the key, the Italian is in i18n/it/course.json.
 #include "feedback_text.h"
 
 #include "course/lesson_trace.h"
 
-#include "raystep/base/format.h"
 #include "raystep/trace/event_text.h"
-
-#include <cmath>
+#include "raystep/trace/replay.h"
 
 namespace raystep::feedback {
-
-namespace {
-
-/// Two-language feedback: picks the language's text.
-std::string tr2(Language lang, const std::string& en, const std::string& it) {
-    return lang == Language::It ? it : en;
-}
-
-}  // namespace
 
 const char* axisName(int a) {
     return a == 0 ? "x" : a == 1 ? "y" : "z";
 }
 
+std::string ordinal(Language lang, int n) {
+    const std::string s = std::to_string(n);
+    if (lang == Language::It) return s;
+    const int tens = n % 100, units = n % 10;
+    if (tens >= 11 && tens <= 13) return s + "th";
+    return s + (units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th");
+}
+
+std::string afterEvent(Language lang, std::size_t kind, const std::string& nth) {
+    // The nth event of a kind, as the lecture would say it (no internal names).
+    switch (kind) {
+        case variantIndex<RayBegin>():
+            return trf(lang, "after the %1 ray begins", {nth});
+        case variantIndex<DdaSetup>():
+            return trf(lang, "after the %1 DDA set-up", {nth});
+        case variantIndex<DdaCell>():
+            return trf(lang, "after the %1 cell visited", {nth});
+        case variantIndex<MailboxSkip>():
+            return trf(lang, "after the %1 test skipped by mailboxing", {nth});
+        case variantIndex<PrimitiveTest>():
+            return trf(lang, "after the %1 primitive test", {nth});
+        case variantIndex<NodeEnter>():
+            return trf(lang, "after the %1 node entered", {nth});
+        case variantIndex<NodeSkip>():
+            return trf(lang, "after the %1 node skipped", {nth});
+        case variantIndex<BuildNode>():
+            return trf(lang, "after the %1 node built", {nth});
+        case variantIndex<SplitCandidate>():
+            return trf(lang, "after the %1 candidate plane", {nth});
+        case variantIndex<SplitChosen>():
+            return trf(lang, "after the %1 chosen plane", {nth});
+        case variantIndex<LeafMade>():
+            return trf(lang, "after the %1 leaf made", {nth});
+        case variantIndex<RayHit>():
+            return trf(lang, "after the %1 intersection found", {nth});
+        case variantIndex<RayMiss>():
+            return trf(lang, "after the %1 ray that hits nothing", {nth});
+        case variantIndex<ShadingTerm>():
+            return trf(lang, "after the %1 shading term", {nth});
+        case variantIndex<PixelResult>():
+            return trf(lang, "after the %1 pixel colour", {nth});
+    }
+    return std::string(kEventNames.at(kind));
+}
+std::string beforeEvent(Language lang, std::size_t kind, const std::string& nth) {
+    // As afterEvent, before it.
+    switch (kind) {
+        case variantIndex<RayBegin>():
+            return trf(lang, "before the %1 ray begins", {nth});
+        case variantIndex<DdaSetup>():
+            return trf(lang, "before the %1 DDA set-up", {nth});
+        case variantIndex<DdaCell>():
+            return trf(lang, "before the %1 cell visited", {nth});
+        case variantIndex<MailboxSkip>():
+            return trf(lang, "before the %1 test skipped by mailboxing", {nth});
+        case variantIndex<PrimitiveTest>():
+            return trf(lang, "before the %1 primitive test", {nth});
+        case variantIndex<NodeEnter>():
+            return trf(lang, "before the %1 node entered", {nth});
+        case variantIndex<NodeSkip>():
+            return trf(lang, "before the %1 node skipped", {nth});
+        case variantIndex<BuildNode>():
+            return trf(lang, "before the %1 node built", {nth});
+        case variantIndex<SplitCandidate>():
+            return trf(lang, "before the %1 candidate plane", {nth});
+        case variantIndex<SplitChosen>():
+            return trf(lang, "before the %1 chosen plane", {nth});
+        case variantIndex<LeafMade>():
+            return trf(lang, "before the %1 leaf made", {nth});
+        case variantIndex<RayHit>():
+            return trf(lang, "before the %1 intersection found", {nth});
+        case variantIndex<RayMiss>():
+            return trf(lang, "before the %1 ray that hits nothing", {nth});
+        case variantIndex<ShadingTerm>():
+            return trf(lang, "before the %1 shading term", {nth});
+        case variantIndex<PixelResult>():
+            return trf(lang, "before the %1 pixel colour", {nth});
+    }
+    return std::string(kEventNames.at(kind));
+}
+std::string eventsCounted(Language lang, std::size_t kind) {
+    switch (kind) {
+        case variantIndex<RayBegin>():
+            return tr(lang, "Rays");
+        case variantIndex<DdaSetup>():
+            return tr(lang, "DDA set-ups");
+        case variantIndex<DdaCell>():
+            return tr(lang, "Cells visited");
+        case variantIndex<MailboxSkip>():
+            return tr(lang, "Tests skipped by mailboxing");
+        case variantIndex<PrimitiveTest>():
+            return tr(lang, "Primitive tests");
+        case variantIndex<NodeEnter>():
+            return tr(lang, "Nodes entered");
+        case variantIndex<NodeSkip>():
+            return tr(lang, "Nodes skipped");
+        case variantIndex<BuildNode>():
+            return tr(lang, "Nodes built");
+        case variantIndex<SplitCandidate>():
+            return tr(lang, "Candidate planes");
+        case variantIndex<SplitChosen>():
+            return tr(lang, "Chosen planes");
+        case variantIndex<LeafMade>():
+            return tr(lang, "Leaves made");
+        case variantIndex<RayHit>():
+            return tr(lang, "Intersections found");
+        case variantIndex<RayMiss>():
+            return tr(lang, "Rays that hit nothing");
+        case variantIndex<ShadingTerm>():
+            return tr(lang, "Shading terms");
+        case variantIndex<PixelResult>():
+            return tr(lang, "Pixel colours");
+    }
+    return std::string(kEventNames.at(kind));
+}
+
+std::string raysOfKind(Language lang, RayKind k) {
+    switch (k) {
+        case RayKind::Primary:
+            return tr(lang, "Primary rays");
+        case RayKind::Shadow:
+            return tr(lang, "Shadow rays");
+        case RayKind::Reflection:
+            return tr(lang, "Reflected rays");
+        case RayKind::Refraction:
+            return tr(lang, "Refracted rays");
+        case RayKind::Diffuse:
+            return tr(lang, "Diffuse bounce rays");
+    }
+    return tr(lang, "Rays");
+}
+
 std::string nextCell(Language lang, const std::optional<DdaCell>& before, const DdaCell& next,
                      int dims) {
     if (!before)
-        return tr2(lang,
-                   "The walk starts in the cell that contains the ray's entry point (t_enter): " +
-                       cellText(next.cell, dims) + ".",
-                   "La visita comincia dalla cella che contiene il punto d'ingresso del raggio "
-                   "(t_enter): " +
-                       cellText(next.cell, dims) + ".");
+        return trf(lang,
+                   "The walk starts in the cell that holds the ray's entry point (t_enter): %1.",
+                   {cellText(next.cell, dims)});
     std::string tmax;
     for (int i = 0; i < dims; ++i)
-        tmax +=
-            std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " + formatNumber(before->tMax[i]);
+        tmax += std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " +
+                formatNumber(before->tMax[i], lang);
     const std::string axes = axesText(next.axes);
-    return tr2(lang,
-               "In cell " + cellText(before->cell, dims) + " the DDA compares " + tmax +
-                   ": the smallest is along " + axes + ", so it steps in " + axes + " to " +
-                   cellText(next.cell, dims) +
-                   (axes.size() > 1 ? " (a tie: the ray passes through a corner)" : "") + ".",
-               "Nella cella " + cellText(before->cell, dims) + " il DDA confronta " + tmax +
-                   ": il minore è lungo " + axes + ", quindi avanza in " + axes + " fino a " +
-                   cellText(next.cell, dims) +
-                   (axes.size() > 1 ? " (pareggio: il raggio passa per un vertice)" : "") + ".");
-}
-
-std::string value(Language lang, Quantity q, double v, const std::string& source) {
-    return tr2(lang,
-               "The trace records " + std::string(quantityName(q)) + " = " + formatNumber(v) +
-                   " in the event " + source + ".",
-               "La traccia registra " + std::string(quantityName(q)) + " = " + formatNumber(v) +
-                   " nell'evento " + source + ".");
+    if (axes.size() > 1)
+        return trf(lang,
+                   "In cell %1 the DDA compares %2: %3 tie for the smallest, so it steps in %3 at "
+                   "once to %4 (the ray passes through a corner).",
+                   {cellText(before->cell, dims), tmax, axes, cellText(next.cell, dims)});
+    return trf(lang,
+               "In cell %1 the DDA compares %2: the smallest is along %3, so it steps in %3 to %4.",
+               {cellText(before->cell, dims), tmax, axes, cellText(next.cell, dims)});
 }
 
 std::string pickSplit(Language lang, int count, std::uint32_t node, const SplitCandidate& best) {
-    const std::string formula = "C_trav + C_isect (" + formatNumber(best.pl) + " x " +
-                                std::to_string(best.nl) + " + " + formatNumber(best.pr) + " x " +
+    const auto n = [&](double v) { return formatNumber(v, lang); };
+    const std::string formula = "C_trav + C_isect (" + n(best.pl) + " · " +
+                                std::to_string(best.nl) + " + " + n(best.pr) + " · " +
                                 std::to_string(best.nr) + ")";
-    return tr2(
-        lang,
-        "Of the " + std::to_string(count) + " candidates of node " + std::to_string(node) +
-            ", the cheapest is " + axisName(best.axis) + " = " + formatNumber(best.position) +
-            ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) + ", cost " +
-            formula + " = " + formatNumber(best.sahCost) + ".",
-        "Tra i " + std::to_string(count) + " candidati del nodo " + std::to_string(node) +
-            ", il meno costoso è " + axisName(best.axis) + " = " + formatNumber(best.position) +
-            ": NL = " + std::to_string(best.nl) + ", NR = " + std::to_string(best.nr) + ", costo " +
-            formula + " = " + formatNumber(best.sahCost) + ".");
-}
-
-std::string count(Language lang, std::size_t n, const std::string& what, const ReplayPosition& from,
-                  const ReplayPosition& to) {
-    return tr2(lang,
-               "The trace holds " + std::to_string(n) + " events " + what + " from " +
-                   describePosition(from) + " to " + describePosition(to) + ".",
-               "La traccia contiene " + std::to_string(n) + " eventi " + what + " tra " +
-                   describePosition(from, Language::It) + " e " +
-                   describePosition(to, Language::It) + ".");
+    return trf(lang,
+               "Of the %1 candidates of node %2, the cheapest is %3 = %4: NL = %5, NR = %6, cost "
+               "%7 = %8.",
+               {std::to_string(count), std::to_string(node), axisName(best.axis), n(best.position),
+                std::to_string(best.nl), std::to_string(best.nr), formula, n(best.sahCost)});
 }
 
 std::string hitOrMiss(Language lang, const PrimitiveTest& test) {
     const std::string prim = std::to_string(test.prim);
     if (test.hit)
-        return tr2(lang,
-                   "The test of primitive " + prim + " hits at t = " + formatNumber(test.t) +
-                       " (the smallest root inside the ray's interval).",
-                   "Il test della primitiva " + prim + " colpisce a t = " + formatNumber(test.t) +
-                       " (la radice più piccola nell'intervallo del raggio).");
-    return tr2(lang,
-               "The test of primitive " + prim +
-                   " misses: no root lies inside the ray's interval (a negative discriminant, a "
-                   "root behind the origin or beyond the nearest hit, or a point outside the "
-                   "triangle or segment).",
-               "Il test della primitiva " + prim +
-                   " fallisce: nessuna radice cade nell'intervallo del raggio (discriminante "
-                   "negativo, radice dietro l'origine o oltre il colpo più vicino, o punto fuori "
-                   "dal triangolo o segmento).");
+        return trf(lang,
+                   "The test of primitive %1 finds an intersection at t = %2, inside the ray's "
+                   "interval.",
+                   {prim, formatNumber(test.t, lang)});
+    return trf(lang,
+               "The test of primitive %1 fails: no intersection lies inside the ray's interval (a "
+               "negative discriminant, an intersection behind the origin or beyond the nearest "
+               "one found so far, or a point outside the triangle or segment).",
+               {prim});
 }
 
 }  // namespace raystep::feedback

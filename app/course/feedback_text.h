@@ -1,8 +1,8 @@
 #pragma once
 // Private to the course library: the sentences that explain a reference answer from the trace,
-// one function per exercise kind, and the axis names they share with the answers'
-// own formatting (exercise.cpp); numbers and cells are written by base/format.h and
-// trace/event_text.h, as everywhere.
+// one function per exercise kind, and the words for events and positions they share with
+// describePosition (lesson_trace.cpp). Every sentence goes through tr/trf (base/i18n.h), every
+// number through formatNumber in the reader's language.
 #include "course/lesson.h"
 
 #include "raystep/trace/events.h"
@@ -17,17 +17,22 @@ namespace raystep::feedback {
 
 const char* axisName(int a);  // "x", "y", "z"
 
+/// "1st", "2nd" in English; "1" in Italian, whose patterns add "°" or "ª" by the noun's gender.
+std::string ordinal(Language lang, int n);
+/// "after the 2nd cell visited" / "dopo la 2ª cella visitata": no internal event names.
+std::string afterEvent(Language lang, std::size_t kind, const std::string& nth);
+std::string beforeEvent(Language lang, std::size_t kind, const std::string& nth);
+/// The events of a kind, as a count names them: "Primitive tests" / "Test di primitive".
+std::string eventsCounted(Language lang, std::size_t kind);
+/// A ray kind as the slides name it, plural: "Shadow rays" / "Raggi d'ombra".
+std::string raysOfKind(Language lang, RayKind k);
+
 /// NextCell: where the walk starts (no cell `before`), or which tMax was smallest in `before`.
 std::string nextCell(Language lang, const std::optional<DdaCell>& before, const DdaCell& next,
                      int dims);
-/// Value: the trace's value and the event it was read from (`source`, e.g. "dda_setup").
-std::string value(Language lang, Quantity q, double v, const std::string& source);
 /// PickSplit: the cheapest of `count` candidates of `node`, with its cost worked out.
 std::string pickSplit(Language lang, int count, std::uint32_t node, const SplitCandidate& best);
-/// Count: `n` events of the kind `what` between two positions.
-std::string count(Language lang, std::size_t n, const std::string& what, const ReplayPosition& from,
-                  const ReplayPosition& to);
-/// HitOrMiss: the primitive test's verdict, and why a miss misses.
+/// HitOrMiss: the primitive test's verdict.
 std::string hitOrMiss(Language lang, const PrimitiveTest& test);
 
 }  // namespace raystep::feedback

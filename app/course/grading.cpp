@@ -2,11 +2,15 @@
 // student's answers file read and graded against the lesson's trace.
 #include "course/grading.h"
 
+#include "course/compute.h"
 #include "course/exercise.h"
 #include "course/lesson_trace.h"
 
 #include "raystep/base/json_reader.h"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <sstream>
 
 namespace raystep {
@@ -19,11 +23,25 @@ void validateLesson(const Lesson& lesson) {
     const LessonRun run = runLesson(lesson);
     if (run.log->events().empty())
         throw LessonError(lesson.file, 0, "trace", "the trace recorded no events");
-    for (const LessonStep& s : lesson.steps)
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& s = lesson.steps[i];
+        const std::string key = "steps[" + std::to_string(i) + "]";
         if (!resolvePosition(s.at, *run.log))
-            throw LessonError(lesson.file, s.line, "steps",
+            throw LessonError(lesson.file, s.line, key,
                               "its position (" + describePosition(s.at) + ") is not in the trace");
-    for (const Exercise& ex : lesson.exercises) referenceAnswer(ex, *run.log, lesson.file);
+        // A filter that shows nothing leaves the student an empty event list.
+        const auto& events = run.log->events();
+        if (!s.filter.empty() && std::none_of(events.begin(), events.end(), [&](const Event& e) {
+                return eventMatchesFilter(e, run.log->dims(), s.filter);
+            }))
+            throw LessonError(lesson.file, s.line, key + ".filter",
+                              "the filter '" + printable(s.filter) +
+                                  "' matches no event of the trace (filter by an event kind: " +
+                                  "dda_cell, primitive_test, ray_begin, ...)");
+    }
+    const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(lesson, run);
+    for (const Exercise& ex : lesson.exercises) referenceAnswer(ex, *run.log, lesson.file, &sweep);
+    checkComputePrompts(lesson);
     Lesson noted = lesson;  // the steps' notes can be made from this lesson's run
     addStepNotes(noted, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
     const bool is2D = std::holds_alternative<Scene2D>(*run.scene);
@@ -32,6 +50,107 @@ void validateLesson(const Lesson& lesson) {
             throw LessonError(lesson.file, 0, "views",
                               std::string(lessonViewName(v)) + " does not fit a " +
                                   (is2D ? "2D" : "3D") + " scene");
+    // Last, so a lesson that fails only here has passed every other check.
+    checkNoAnswerGivenAway(lesson, *run.log);
+}
+
+std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run) {
+    const bool needed =
+        std::any_of(lesson.exercises.begin(), lesson.exercises.end(),
+                    [](const Exercise& e) { return e.kind == ExerciseKind::SweepPick; });
+    if (!needed || !lesson.sweep) return {};
+    return runGridSweep(*run.scene, *lesson.sweep);
+}
+
+void checkComputePrompts(const Lesson& lesson) {
+    for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
+        const Exercise& ex = lesson.exercises[i];
+        if (ex.kind != ExerciseKind::Compute) continue;
+        for (const Language lang : {Language::En, Language::It}) {
+            const auto missing = numbersNotInText(ex.given.numbers, ex.prompt.in(lang), lang);
+            if (!missing.empty())
+                throw LessonError(lesson.file, ex.line,
+                                  "exercises[" + std::to_string(i) + "].prompt." +
+                                      std::string(languageCode(lang)),
+                                  "the prompt does not state the given number " +
+                                      formatNumber(missing[0], lang) +
+                                      ": a compute exercise's prompt gives all its data");
+        }
+    }
+}
+
+namespace {
+/// The ways a number can be written where a student reads it.
+std::vector<std::string> writtenForms(double v) {
+    std::vector<std::string> forms;
+    for (const Language lang : {Language::En, Language::It}) {
+        forms.push_back(formatNumber(v, lang));
+        for (int digits = 2; digits <= 4; ++digits) forms.push_back(formatNumber(v, lang, digits));
+    }
+    return forms;
+}
+
+/// Whether `text` writes the number `form` as a number of its own (not inside a longer one).
+bool writes(std::string_view text, const std::string& form) {
+    const auto digitLike = [](char c) { return (c >= '0' && c <= '9'); };
+    for (std::size_t at = text.find(form); at != std::string_view::npos;
+         at = text.find(form, at + 1)) {
+        const std::size_t end = at + form.size();
+        const bool before = at > 0 && (digitLike(text[at - 1]) || text[at - 1] == '.' ||
+                                       (text[at - 1] == ',' && at > 1 && digitLike(text[at - 2])));
+        const bool after =
+            end < text.size() &&
+            (digitLike(text[end]) || ((text[end] == '.' || text[end] == ',') &&
+                                      end + 1 < text.size() && digitLike(text[end + 1])));
+        if (!before && !after) return true;
+    }
+    return false;
+}
+}  // namespace
+
+void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log) {
+    for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
+        const Exercise& ex = lesson.exercises[i];
+        const std::string key = "exercises[" + std::to_string(i) + "]";
+        const auto at = resolvePosition(ex.at, log);
+        if (!at) continue;  // validateLesson names it
+        if (const auto source = answerEventIndex(ex, log, lesson.file); source && *source < *at)
+            throw LessonError(lesson.file, ex.line, key + ".at",
+                              "the answer's event comes before the exercise's position, so it is "
+                              "on screen while the exercise is open");
+        if (ex.kind != ExerciseKind::Value && ex.kind != ExerciseKind::Compute) continue;
+        const double answer = referenceAnswer(ex, log, lesson.file).numbers.at(0);
+        if (answer == std::floor(answer) && std::abs(answer) <= 1.0) continue;
+        // Where a student reads before answering: (place, text).
+        std::vector<std::pair<std::string, const LocalText*>> texts{{"text", &lesson.text}};
+        for (std::size_t k = 0; k < lesson.errata.size(); ++k) {
+            texts.push_back(
+                {"errata[" + std::to_string(k) + "].correct", &lesson.errata[k].correct});
+            texts.push_back({"errata[" + std::to_string(k) + "].why", &lesson.errata[k].why});
+        }
+        // Every step: a student pages through them while the exercise is open.
+        for (std::size_t k = 0; k < lesson.steps.size(); ++k)
+            texts.push_back({"steps[" + std::to_string(k) + "].text", &lesson.steps[k].text});
+        texts.push_back({key + ".prompt", &ex.prompt});
+        for (std::size_t k = 0; k < ex.hints.size(); ++k)
+            texts.push_back({key + ".hint[" + std::to_string(k) + "]", &ex.hints[k]});
+        const auto forms = writtenForms(answer);
+        // A compute exercise's own data may equal its answer; the prompt must state them.
+        const bool givenEqualsAnswer = ex.kind == ExerciseKind::Compute &&
+                                       std::any_of(ex.given.numbers.begin(), ex.given.numbers.end(),
+                                                   [&](double g) { return g == answer; });
+        for (const auto& [place, text] : texts) {
+            if (givenEqualsAnswer && place == key + ".prompt") continue;
+            for (const Language lang : {Language::En, Language::It})
+                for (const std::string& form : forms)
+                    if (writes(text->in(lang), form))
+                        throw LessonError(lesson.file, ex.line, key,
+                                          "its answer " + formatNumber(answer) + " is written in " +
+                                              place + "." + std::string(languageCode(lang)) +
+                                              " as \"" + form +
+                                              "\", which the student reads before answering");
+        }
+    }
 }
 
 namespace {
@@ -105,7 +224,9 @@ AnswerSheet loadAnswerSheetFile(const std::string& path) {
 }
 
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
-                   Language lang, const std::string& sheetFile) {
+                   Language lang, const std::string& sheetFile,
+                   const std::vector<GridSweepRow>* sweep,
+                   const std::variant<Scene, Scene2D>* scene) {
     if (sheet.lesson != lesson.id && sheet.lesson != std::to_string(lesson.number))
         throw LessonError(sheetFile, sheet.lessonLine, "lesson",
                           "the answers are for lesson '" + printable(sheet.lesson) + "', not '" +
@@ -125,9 +246,10 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
         if (const auto it = sheet.answers.find(ex.id); it != sheet.answers.end()) {
             item.answered = true;
             item.given = it->second;
-            given = parseAnswer(ex, it->second, &why);
+            given = parseAnswer(ex, it->second, &why, lang);
         }
-        const Verdict v = checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file);
+        const Verdict v =
+            checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file, sweep, scene);
         item.correct = given.has_value() && v.correct;
         item.expected = v.expected;
         item.feedback = item.answered && !given ? why + ". " + v.feedback : v.feedback;
@@ -135,6 +257,106 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
         g.items.push_back(std::move(item));
     }
     return g;
+}
+
+ClassTable classTable(const Lesson& lesson, const EventLog& log,
+                      const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
+                      const std::vector<GridSweepRow>* sweep) {
+    ClassTable table;
+    table.sheets = static_cast<int>(sheets.size());
+    // Per exercise: each wrong answer as it reads (its canonical form), its first spelling, count.
+    struct Wrong {
+        std::string firstSpelling;
+        int count = 0;
+        std::size_t firstSeen = 0;
+    };
+    std::vector<std::map<std::string, Wrong>> wrongs(lesson.exercises.size());
+    for (const Exercise& ex : lesson.exercises) {
+        table.rows.emplace_back();
+        table.rows.back().exercise = ex.id;
+    }
+    std::size_t seen = 0;
+    for (const auto& [file, sheet] : sheets) {
+        const Grade g = gradeAnswers(lesson, log, sheet, Language::En, file, sweep);
+        for (std::size_t i = 0; i < g.items.size(); ++i) {
+            const Grade::Item& item = g.items[i];
+            ClassTable::Row& row = table.rows[i];
+            if (!item.answered) {
+                ++row.notAnswered;
+            } else if (item.correct) {
+                ++row.right;
+            } else {
+                ++row.wrong;
+                const auto parsed = parseAnswer(lesson.exercises[i], item.given, nullptr);
+                const std::string key = parsed ? formatAnswer(lesson.exercises[i], *parsed)
+                                               : "\x01" + item.given;  // unreadable: as typed
+                Wrong& w = wrongs[i][key];
+                if (w.count++ == 0) {
+                    w.firstSpelling = item.given;
+                    w.firstSeen = seen++;
+                }
+            }
+        }
+    }
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+        const Wrong* best = nullptr;
+        for (const auto& [key, w] : wrongs[i])
+            if (!best || w.count > best->count ||
+                (w.count == best->count && w.firstSeen < best->firstSeen))
+                best = &w;
+        if (best) {
+            table.rows[i].commonWrong = best->firstSpelling;
+            table.rows[i].commonWrongCount = best->count;
+        }
+    }
+    return table;
+}
+
+namespace {
+/// A student's answer inside a Markdown table cell: one line, no cell break.
+std::string markdownCell(const std::string& text) {
+    std::string out;
+    for (const char c : printable(text, 80)) {
+        if (c == '|') out += '\\';
+        out += c;
+    }
+    return out;
+}
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    return out + "\"";
+}
+}  // namespace
+
+std::string classTableMarkdown(const Lesson& lesson, const ClassTable& table, Language lang) {
+    std::string out =
+        trf(lang, "Lesson %1. %2: %3 answer sheets",
+            {std::to_string(lesson.number), lesson.title.in(lang), std::to_string(table.sheets)}) +
+        "\n\n| " + tr(lang, "exercise") + " | " + tr(lang, "right answers") + " | " +
+        tr(lang, "wrong answers") + " | " + tr(lang, "not answered") + " | " +
+        tr(lang, "most common wrong answer") + " | " + tr(lang, "how many") +
+        " |\n|---|---:|---:|---:|---|---:|\n";
+    for (const ClassTable::Row& r : table.rows)
+        out += "| " + r.exercise + " | " + std::to_string(r.right) + " | " +
+               std::to_string(r.wrong) + " | " + std::to_string(r.notAnswered) + " | " +
+               (r.commonWrongCount ? markdownCell(r.commonWrong) : "") + " | " +
+               (r.commonWrongCount ? std::to_string(r.commonWrongCount) : "") + " |\n";
+    return out;
+}
+
+std::string classTableCsv(const ClassTable& table) {
+    std::string out = "exercise,right,wrong,not_answered,most_common_wrong,how_many\n";
+    for (const ClassTable::Row& r : table.rows)
+        out += csvField(r.exercise) + "," + std::to_string(r.right) + "," +
+               std::to_string(r.wrong) + "," + std::to_string(r.notAnswered) + "," +
+               (r.commonWrongCount ? csvField(r.commonWrong) : "") + "," +
+               (r.commonWrongCount ? std::to_string(r.commonWrongCount) : "") + "\n";
+    return out;
 }
 
 }  // namespace raystep

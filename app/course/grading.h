@@ -1,7 +1,9 @@
 #pragma once
 // Grading a course: a lesson checked whole (`raystep-cli lesson validate`), and a student's
 // answers file graded against the lesson's trace.
+#include "course/grid_sweep.h"
 #include "course/lesson.h"
+#include "course/lesson_trace.h"
 
 #include "raystep/trace/events.h"
 
@@ -16,6 +18,23 @@ namespace raystep {
 /// step's and exercise's position exists in it and every exercise has a reference answer.
 /// Throws LessonError on the first problem.
 void validateLesson(const Lesson& lesson);
+
+/// The rows a sweep_pick exercise is graded from: the lesson's sweep run over its scene; empty
+/// when no exercise of the lesson needs it (a sweep takes about a second).
+std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run);
+
+/// Quiz mode's checks (also in validateLesson): each exercise's answer lies after its own position
+/// (the replay stops there while it is open), and no number of a value or compute answer (as
+/// formatNumber writes it in either language, or rounded to 2 to 4 significant digits) is written
+/// in the lesson's text, its errata, any step (a student pages through them while the exercise
+/// is open), its prompt or its hints.
+/// Throws LessonError naming the exercise and where its answer shows. Whole answers 0 and 1 are
+/// exempt: they are in every formula.
+void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log);
+
+/// A compute exercise's prompt must state its data: every given number is written in the prompt,
+/// in both languages. Throws LessonError naming the exercise and the missing number.
+void checkComputePrompts(const Lesson& lesson);
 
 /// A course's answers file: {"lesson": ID, "answers": {exercise id: answer}} where an answer is a
 /// number, an array of numbers (a cell), a string as typed in the app, or true/false (hit/miss).
@@ -40,6 +59,30 @@ struct Grade {
     int score = 0;
 };
 Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
-                   Language lang, const std::string& sheetFile);
+                   Language lang, const std::string& sheetFile,
+                   const std::vector<GridSweepRow>* sweep = nullptr,
+                   const std::variant<Scene, Scene2D>* scene = nullptr);
+
+/// A class's answers to one lesson, per exercise (`raystep-cli lesson check --answers FOLDER`):
+/// how many were right, wrong (an unreadable answer is wrong) or not answered, and the most common
+/// wrong answer (answers that read the same, "1,5" and "1.5", count as one) with how many gave it.
+struct ClassTable {
+    struct Row {
+        std::string exercise;
+        int right = 0, wrong = 0, notAnswered = 0;
+        std::string commonWrong;  // as the first student who gave it wrote it
+        int commonWrongCount = 0;
+    };
+    std::vector<Row> rows;
+    int sheets = 0;
+};
+/// Grades every sheet (`sheets`: file name and sheet) against the lesson; throws the first
+/// sheet's LessonError (naming its file, line and key).
+ClassTable classTable(const Lesson& lesson, const EventLog& log,
+                      const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
+                      const std::vector<GridSweepRow>* sweep = nullptr);
+/// The table as Markdown (a heading line, then the table) or as CSV (RFC 4180 quoting).
+std::string classTableMarkdown(const Lesson& lesson, const ClassTable& table, Language lang);
+std::string classTableCsv(const ClassTable& table);
 
 }  // namespace raystep

@@ -12,6 +12,7 @@
 #include "raystep/scene/scene2d.h"
 #include "raystep/trace/events.h"
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -25,6 +26,16 @@ struct LocalText {
     std::string en, it;
     const std::string& in(Language l) const { return l == Language::It && !it.empty() ? it : en; }
 };
+
+/// A slip in the slides, pointed out: the slide's line as written, the right one, and why. The
+/// app shows it as a marked box, "Note on the slides" (erratumHeading), under the lesson's or
+/// the step's text.
+struct Erratum {
+    LocalText slide, correct, why;
+    int line = 0;
+};
+/// "Note on the slides" in `lang`: the heading of an erratum's box.
+std::string erratumHeading(Language lang);
 
 /// A lesson, answers or progress file that cannot be used: file, line, key and why.
 class LessonError : public FileError {
@@ -59,6 +70,7 @@ struct LessonStep {
     // for the lesson's 2D ray; `note` holds that comparison once the lesson has run (addStepNotes).
     bool textbookDda = false;
     LocalText note;
+    std::vector<Erratum> errata;
     int line = 0;  // in the lesson file, for messages
 };
 
@@ -71,7 +83,17 @@ struct LessonTrace {
     int width = 320, height = 240;
 };
 
-enum class ExerciseKind { NextCell, Value, PickSplit, Count, HitOrMiss };
+enum class ExerciseKind {
+    NextCell,
+    Value,
+    PickSplit,
+    Count,
+    HitOrMiss,
+    Choice,     // a conceptual question: the answer is in the lesson file (the one exception)
+    Sequence,   // the cells the DDA visits, or the nodes TestTree enters, in order
+    SweepPick,  // the sweep's resolution of the lowest metric
+    Compute,    // a hand computation from data the prompt gives
+};
 std::string_view exerciseKindName(ExerciseKind k);
 
 /// Quantities a Value exercise asks for; each is read from the next event of its kind at or after
@@ -98,18 +120,56 @@ enum class Quantity {
 std::optional<Quantity> parseQuantity(std::string_view name);
 std::string_view quantityName(Quantity q);
 
+/// One option of a Choice exercise, and why it is right or wrong.
+struct ChoiceOption {
+    LocalText text, why;
+};
+
+/// The data of a Compute exercise: a ray and one shape (or a kd node and a plane for the SAH).
+struct ComputeGiven {
+    enum class Shape { Sphere, Triangle, Plane, Box, Grid, Node };
+    Shape shape = Shape::Sphere;
+    int dims = 3;                    // Grid and Node: 2 or 3, by the vectors' length
+    std::array<double, 3> o{}, d{};  // the ray (all but Node)
+    std::array<double, 3> center{};  // Sphere: centre and radius
+    double radius = 0.0;
+    std::array<std::array<double, 3>, 3> tri{};  // Triangle: a, b, c
+    std::array<double, 3> normal{};              // Plane: the points p with p.n = k
+    double k = 0.0;
+    std::array<double, 3> lo{}, hi{};  // Box, Node: min and max; Grid: min and cell size
+    std::array<int, 3> res{0, 0, 0};   // Grid: cells per axis (0: 1024)
+    int axis = 0;                      // Node: the plane's axis and position
+    double at = 0.0;
+    int nl = 0, nr = 0;  // Node: primitives left and right
+    // Node's SAH and SweepPick's cost: the lesson's setup (c_trav, c_isect, empty_bonus).
+    double cTrav = 1.0, cIsect = 5.0, emptyBonus = 0.5;
+    std::vector<double> numbers;  // every number given, as written, for the prompt check
+};
+
+enum class SweepMetric { Cost, TestsPerRay, CellsPerRay };
+std::string_view sweepMetricName(SweepMetric m);
+
 struct Exercise {
     std::string id;
     ExerciseKind kind = ExerciseKind::Value;
-    LocalText prompt, hint;
+    LocalText prompt;
+    // Revealed one at a time: a nudge, then the formula, then the worked first step.
+    std::vector<LocalText> hints;
     ReplayPosition at;
-    Quantity quantity = Quantity::TMaxX;  // Value
-    std::size_t countKind = 0;            // Count: variant index of the events counted
-    std::optional<RayKind> rayKind;       // Count of ray_begin: only rays of this kind
-    std::optional<int> rayDepth;          // ... and of this depth (0 = primary)
-    std::optional<ReplayPosition> until;  // Count: up to here (else to the end)
-    bool withT = false;                   // HitOrMiss: the t of a hit is asked too
-    double tolerance = 0.01;              // relative (absolute below 1) for numbers
+    Quantity quantity = Quantity::TMaxX;     // Value
+    std::size_t countKind = 0;               // Count: variant index of the events counted
+    std::optional<RayKind> rayKind;          // Count of ray_begin: only rays of this kind
+    std::optional<int> rayDepth;             // ... and of this depth (0 = primary)
+    std::optional<ReplayPosition> until;     // Count, Sequence: up to here (else to the end)
+    bool withT = false;                      // HitOrMiss: the t of a hit is asked too
+    double tolerance = 0.01;                 // relative (absolute below 1) for numbers
+    std::vector<ChoiceOption> choices;       // Choice: 2 to 6 options
+    int answer = 0;                          // Choice: the right option (0-based)
+    bool ofNodes = false;                    // Sequence: node_enter ids (else dda_cell cells)
+    std::optional<int> length;               // Sequence: only the first N
+    SweepMetric metric = SweepMetric::Cost;  // SweepPick
+    ComputeGiven given;                      // Compute
+    std::string computeQuantity;             // Compute: "t0", "tMax.x", "sahCost", ...
     int line = 0;
 };
 
@@ -125,8 +185,9 @@ struct Lesson {
     std::optional<GridSweepSpec> sweep;
     std::vector<LessonStep> steps;
     std::vector<Exercise> exercises;
-    std::string file;      // where it was read from (messages)
-    bool builtin = false;  // embedded in raystep (its scene is a built-in name)
+    std::vector<Erratum> errata;  // the lesson's own, shown under its text
+    std::string file;             // where it was read from (messages)
+    bool builtin = false;         // embedded in raystep (its scene is a built-in name)
 
     const Exercise* exercise(std::string_view exerciseId) const;
 };

@@ -2,6 +2,8 @@
 // replay positions its steps and exercises name in that trace.
 #include "course/lesson_trace.h"
 
+#include "feedback_text.h"
+
 #include "raystep/accel/dda_textbook.h"
 #include "raystep/trace/event_text.h"
 
@@ -74,8 +76,11 @@ namespace {
 /// Cells as the lesson's text writes them, the first `shown` of them.
 std::string cellsText(const std::vector<IVecN<2>>& cells, std::size_t shown) {
     std::string s;
-    for (std::size_t k = 0; k < std::min(cells.size(), shown); ++k)
-        s += (k ? " " : "") + cellText({cells[k].x, cells[k].y, 0}, 2);
+    for (std::size_t k = 0; k < std::min(cells.size(), shown); ++k) {
+        // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on " " + string here.
+        if (k) s += ' ';
+        s += cellText({cells[k].x, cells[k].y, 0}, 2);
+    }
     return s + (cells.size() > shown ? " ..." : "");
 }
 
@@ -89,30 +94,24 @@ LocalText textbookNote(const GridSpec<2, double>& grid, const Ray2& ray) {
     while (part < loop.size() && part < exact.size() && loop[part] == exact[part]) ++part;
     const std::size_t shown = std::max<std::size_t>(6, part + 2);
     const std::string l = cellsText(loop, shown), e = cellsText(exact, shown);
-    LocalText note;
-    note.en =
-        "The slides' loop (`tMax += tDelta`; X when tMaxX < tMaxY, else Y) walks this ray "
-        "through " +
-        l + "; the exact walk through " + e + ". ";
-    note.it =
-        "Il ciclo delle slide (`tMax += tDelta`; X se tMaxX < tMaxY, altrimenti Y) porta "
-        "questo raggio per " +
-        l + "; il cammino esatto per " + e + ". ";
-    if (part == loop.size() && part == exact.size()) {
-        note.en += "Both visit the same " + std::to_string(part) + " cells.";
-        note.it += "Visitano le stesse " + std::to_string(part) + " celle.";
-    } else {
-        const auto at = [&](const std::vector<IVecN<2>>& cells, const char* none) {
+    const auto in = [&](Language lang) {
+        std::string text = trf(lang,
+                               "The slides' loop (`tMax += tDelta`; X when tMaxX < tMaxY, else Y) "
+                               "walks this ray through %1; the exact walk through %2.",
+                               {l, e});
+        if (part == loop.size() && part == exact.size())
+            return text + " " + trf(lang, "Both visit the same %1 cells.", {std::to_string(part)});
+        const auto at = [&](const std::vector<IVecN<2>>& cells) {
             return part < cells.size() ? cellText({cells[part].x, cells[part].y, 0}, 2)
-                                       : std::string(none);
+                                       : tr(lang, "no cell");
         };
-        const std::string nth = std::to_string(part + 1);
-        note.en += "They part at cell " + nth + ": the loop enters " + at(loop, "no cell") +
-                   ", the exact walk " + at(exact, "no cell") + ".";
-        note.it += "Si separano alla cella " + nth + ": il ciclo entra in " +
-                   at(loop, "nessuna cella") + ", il cammino esatto in " +
-                   at(exact, "nessuna cella") + ".";
-    }
+        return text + " " +
+               trf(lang, "They part at cell %1: the loop enters %2, the exact walk %3.",
+                   {std::to_string(part + 1), at(loop), at(exact)});
+    };
+    LocalText note;
+    note.en = in(Language::En);
+    note.it = in(Language::It);
     return note;
 }
 }  // namespace
@@ -159,23 +158,40 @@ std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const Event
 }
 
 std::string describePosition(const ReplayPosition& at, Language lang) {
-    const bool it = lang == Language::It;
     switch (at.mode) {
         case ReplayPosition::Mode::Start:
-            return it ? "l'inizio" : "the start";
+            return tr(lang, "the start");
         case ReplayPosition::Mode::End:
-            return it ? "la fine" : "the end";
+            return tr(lang, "the end");
         case ReplayPosition::Mode::Cursor:
-            return (it ? "l'evento " : "event ") + std::to_string(at.cursor);
+            return trf(lang, "event %1", {std::to_string(at.cursor)});
         case ReplayPosition::Mode::AfterEvent:
-        case ReplayPosition::Mode::BeforeEvent: {
-            const bool after = at.mode == ReplayPosition::Mode::AfterEvent;
-            return std::string(after ? (it ? "dopo" : "after") : (it ? "prima di" : "before")) +
-                   " " + std::string(kEventNames[at.eventKind]) + (it ? " numero " : " number ") +
-                   std::to_string(at.nth);
-        }
+            return feedback::afterEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
+        case ReplayPosition::Mode::BeforeEvent:
+            return feedback::beforeEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
     }
     return "?";
+}
+
+namespace {
+std::string lowerAscii(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return out;
+}
+}  // namespace
+
+bool eventMatchesFilter(const Event& e, std::string_view shownLine, std::string_view filter) {
+    if (filter.empty()) return true;
+    const std::string f = lowerAscii(filter);
+    // The event list filters case-insensitively (QSortFilterProxyModel), so does this.
+    return lowerAscii(kEventNames[e.index()]).find(f) != std::string::npos ||
+           lowerAscii(shownLine).find(f) != std::string::npos;
+}
+
+bool eventMatchesFilter(const Event& e, int dims, std::string_view filter) {
+    return eventMatchesFilter(e, eventText(e, dims), filter);
 }
 
 }  // namespace raystep

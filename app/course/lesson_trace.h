@@ -43,4 +43,10 @@ void addStepNotes(Lesson& lesson, const std::variant<Scene, Scene2D>& scene,
 std::optional<std::size_t> resolvePosition(const ReplayPosition& at, const EventLog& log);
 std::string describePosition(const ReplayPosition& at, Language lang = Language::En);
 
+/// True when a step's event filter shows `e`: `filter` (case aside) is part of the event's kind
+/// name ("dda_cell", "ray_begin") or of its line in the event list. An empty filter shows all.
+bool eventMatchesFilter(const Event& e, int dims, std::string_view filter);
+/// The same with the line the caller shows for `e` (the app's event list, in its language).
+bool eventMatchesFilter(const Event& e, std::string_view shownLine, std::string_view filter);
+
 }  // namespace raystep

@@ -101,11 +101,10 @@ void mergeProgress(Progress& into, const Progress& saved) {
 }
 
 std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang) {
-    const bool it = lang == Language::It;
     std::ostringstream s;
-    s << (it ? "# raystep: progressi\n\n" : "# raystep: progress\n\n");
-    s << (it ? "| Lezione | Esercizi | Svolti | Corretti | Tentativi |\n"
-             : "| Lesson | Exercises | Done | Right | Attempts |\n");
+    s << "# " << tr(lang, "raystep: progress") << "\n\n";
+    s << "| " << tr(lang, "Lesson") << " | " << tr(lang, "Exercises") << " | " << tr(lang, "Done")
+      << " | " << tr(lang, "Right") << " | " << tr(lang, "Attempts") << " |\n";
     s << "|---|---:|---:|---:|---:|\n";
     int total = 0, done = 0, right = 0;
     for (const Lesson& l : lessons) {
@@ -125,9 +124,9 @@ std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons
           << d << " | " << r << " | " << attempts << " |\n";
     }
     s << "\n"
-      << (it ? "Totale: " : "Total: ") << right << " / " << total
-      << (it ? " esercizi corretti, " : " exercises right, ") << done
-      << (it ? " svolti.\n" : " attempted.\n");
+      << trf(lang, "Total: %1 / %2 exercises right, %3 attempted.",
+             {std::to_string(right), std::to_string(total), std::to_string(done)})
+      << "\n";
     return s.str();
 }
 

@@ -2,47 +2,74 @@
 #include "event_list.h"
 
 #include "language.h"
+#include "course/lesson_trace.h"
 
 #include "raystep/trace/event_text.h"
 
 #include <QLineEdit>
 #include <QListView>
-#include <QSortFilterProxyModel>
 #include <QVBoxLayout>
 
 namespace raystep::gui {
 
 EventListModel::EventListModel(Session& s, QObject* parent) : QAbstractListModel(parent), s_(s) {
-    connect(&s_, &Session::logChanged, this, [this] {
+    const auto reset = [this] {
         beginResetModel();
         endResetModel();
-    });
+    };
+    connect(&s_, &Session::logChanged, this, reset);
+    connect(&s_, &Session::limitChanged, this, reset);
 }
 
 int EventListModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : static_cast<int>(s_.size());
+    return parent.isValid() ? 0 : static_cast<int>(s_.end());
 }
 
 QVariant EventListModel::data(const QModelIndex& index, int role) const {
-    if (role != Qt::DisplayRole || !index.isValid()) return {};
+    if (!index.isValid() || index.row() >= static_cast<int>(s_.end())) return {};
+    const Event& e = s_.log().events()[index.row()];
+    if (role == KindNameRole) return QString::fromUtf8(kEventNames[e.index()].data());
+    if (role != Qt::DisplayRole) return {};
     return QStringLiteral("%1  %2")
         .arg(index.row() + 1)
         .arg(QString::fromStdString(eventText(s_.log(), index.row(), interfaceLanguage())));
+}
+
+void EventFilter::setText(const QString& text) {
+    text_ = text.trimmed().toStdString();
+    invalidateFilter();
+}
+
+bool EventFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
+    if (parent.isValid() || row >= static_cast<int>(s_.end())) return false;
+    // The lessons' rule (course/lesson_trace.h), so a step's filter shows what validation saw;
+    // and the line as this list shows it (in the app's language).
+    return eventMatchesFilter(s_.log().events()[row], s_.log().dims(), text_) ||
+           sourceModel()
+               ->index(row, 0)
+               .data()
+               .toString()
+               .section(QStringLiteral("  "), 1)  // not the row's number
+               .contains(QString::fromStdString(text_), Qt::CaseInsensitive);
 }
 
 EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     auto* ll = new QVBoxLayout(this);
     ll->setContentsMargins(0, 0, 0, 0);
     filterEdit_ = new QLineEdit;
-    filterEdit_->setPlaceholderText(tr("Filter events (e.g. cell, test, mailbox)"));
+    filterEdit_->setObjectName("eventFilter");
+    filterEdit_->setPlaceholderText(tr("Filter: a kind (dda_cell, primitive_test) or any text"));
+    filterEdit_->setClearButtonEnabled(true);
     ll->addWidget(filterEdit_);
     model_ = new EventListModel(session_, this);
-    filter_ = new QSortFilterProxyModel(this);
+    filter_ = new EventFilter(session_, this);
     filter_->setSourceModel(model_);
-    filter_->setFilterCaseSensitivity(Qt::CaseInsensitive);
-    connect(filterEdit_, &QLineEdit::textChanged, filter_,
-            &QSortFilterProxyModel::setFilterFixedString);
+    connect(filterEdit_, &QLineEdit::textChanged, this, [this](const QString& text) {
+        filter_->setText(text);
+        showCursor();  // the rows moved: the highlight follows the cursor, not the old row
+    });
     list_ = new QListView;
+    list_->setObjectName("eventList");
     list_->setModel(filter_);
     list_->setUniformItemSizes(true);
     ll->addWidget(list_);
@@ -50,19 +77,58 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
         session_.setCursor(static_cast<std::size_t>(filter_->mapToSource(i).row()) + 1);
     });
     connect(&session_, &Session::cursorChanged, this, [this] { showCursor(); });
+    connect(&session_, &Session::limitChanged, this, [this] { showCursor(); });
 }
 
 void EventList::setFilter(const QString& text) {
     filterEdit_->setText(text);
+    showCursor();
+}
+
+QString EventList::filter() const {
+    return filterEdit_->text();
+}
+
+int EventList::rowCount() const {
+    return filter_->rowCount();
+}
+
+QString EventList::rowText(int row) const {
+    return filter_->index(row, 0).data().toString();
+}
+
+int EventList::currentRow() const {
+    const QModelIndex i = list_->currentIndex();
+    return i.isValid() && list_->selectionModel()->isSelected(i) ? i.row() : -1;
 }
 
 void EventList::showCursor() {
-    if (session_.cursor() == 0) return;
-    const QModelIndex i =
-        filter_->mapFromSource(model_->index(static_cast<int>(session_.cursor()) - 1));
-    if (i.isValid()) {
-        list_->setCurrentIndex(i);
-        list_->scrollTo(i);
+    // The last row shown at or before the cursor's event (the filter may hide that event).
+    QModelIndex shown;
+    const int cursor = static_cast<int>(std::min(session_.cursor(), session_.end()));
+    if (cursor > 0) {
+        const QModelIndex exact = filter_->mapFromSource(model_->index(cursor - 1));
+        if (exact.isValid()) {
+            shown = exact;
+        } else {
+            // Rows are in event order: the last one before the cursor, by bisection.
+            int lo = 0, hi = filter_->rowCount();
+            while (lo < hi) {
+                const int mid = (lo + hi) / 2;
+                if (filter_->mapToSource(filter_->index(mid, 0)).row() < cursor - 1)
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            if (lo > 0) shown = filter_->index(lo - 1, 0);
+        }
+    }
+    if (shown.isValid()) {
+        list_->setCurrentIndex(shown);
+        list_->scrollTo(shown);
+    } else {
+        list_->clearSelection();
+        list_->setCurrentIndex({});
     }
 }
 

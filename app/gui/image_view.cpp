@@ -19,6 +19,13 @@ ImageView::ImageView(Session& session, QWidget* parent) : QWidget(parent), sessi
         marked_ = {-1, -1};
         if (!session_.scene3D()) clear();
     });
+    // A clicked pixel stays marked while its ray tree is replayed (not after going back).
+    connect(&session_, &Session::logChanged, this, [this] {
+        if (session_.logKind() != LogKind::Pixel && marked_.x() >= 0) {
+            marked_ = {-1, -1};
+            update();
+        }
+    });
 }
 
 void ImageView::renderStarted(int width, int height) {
@@ -131,10 +138,57 @@ void ImageView::paintEvent(QPaintEvent*) {
         }
     }
     if (marked_.x() >= 0 && !r.isEmpty()) {
+        // The pixel being explored: its square and a ring around it, in red over dark.
         const double s = r.width() / size_.width();
-        g.setPen(QPen(QColor(255, 80, 60), 2));
-        g.drawRect(QRectF(r.x() + marked_.x() * s - 3, r.y() + marked_.y() * s - 3, s + 6, s + 6));
+        const QPointF c(r.x() + (marked_.x() + 0.5) * s, r.y() + (marked_.y() + 0.5) * s);
+        g.setRenderHint(QPainter::Antialiasing);
+        g.setBrush(Qt::NoBrush);
+        for (const QPen& pen : {QPen(QColor(0, 0, 0, 200), 4.5), QPen(QColor(255, 80, 60), 2)}) {
+            g.setPen(pen);
+            g.drawRect(QRectF(c.x() - s / 2 - 3, c.y() - s / 2 - 3, s + 6, s + 6));
+            g.drawEllipse(c, s / 2 + 10, s / 2 + 10);
+        }
     }
+    if (const QPointF c = lessonMarkCentre(); !c.isNull()) {
+        // The lesson's pixel: a ring and a cross-hair with a gap, dark under light, so it reads
+        // on any picture; and its name.
+        g.setRenderHint(QPainter::Antialiasing);
+        const double ring = 11, inner = 5, outer = 22;
+        const auto mark = [&](const QPen& pen) {
+            g.setPen(pen);
+            g.setBrush(Qt::NoBrush);
+            g.drawEllipse(c, ring, ring);
+            for (const QPointF d : {QPointF(1, 0), QPointF(-1, 0), QPointF(0, 1), QPointF(0, -1)})
+                g.drawLine(c + inner * d, c + outer * d);
+        };
+        mark(QPen(QColor(0, 0, 0, 200), 4.5));
+        mark(QPen(QColor(255, 235, 60), 2));
+        const QString label =
+            tr("lesson's pixel (%1, %2)").arg(lessonPixel_->x()).arg(lessonPixel_->y());
+        const QRectF text = g.fontMetrics().boundingRect(label).adjusted(-4, -2, 4, 2);
+        QPointF at = c + QPointF(outer + 4, -outer - 2);
+        if (at.x() + text.width() > width()) at.setX(c.x() - outer - 4 - text.width());
+        if (at.y() - text.height() < 0) at.setY(c.y() + outer + text.height());
+        const QRectF box(at.x(), at.y() - text.height(), text.width(), text.height());
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(0, 0, 0, 170));
+        g.drawRoundedRect(box, 3, 3);
+        g.setPen(QColor(255, 235, 60));
+        g.drawText(box, Qt::AlignCenter, label);
+    }
+}
+
+void ImageView::setLessonPixel(std::optional<QRect> pixel) {
+    lessonPixel_ = pixel;
+    update();
+}
+
+QPointF ImageView::lessonMarkCentre() const {
+    const QRectF r = imageRect();
+    if (!lessonPixel_ || r.isEmpty() || lessonPixel_->width() <= 0 || lessonPixel_->height() <= 0)
+        return {};
+    return {r.x() + (lessonPixel_->x() + 0.5) / lessonPixel_->width() * r.width(),
+            r.y() + (lessonPixel_->y() + 0.5) / lessonPixel_->height() * r.height()};
 }
 
 void ImageView::mousePressEvent(QMouseEvent* e) {

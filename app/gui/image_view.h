@@ -9,6 +9,8 @@
 #include <QImage>
 #include <QWidget>
 
+#include <optional>
+
 class QPushButton;
 
 namespace raystep::gui {
@@ -38,6 +40,11 @@ class ImageView : public QWidget {
         update();
     }
     const QImage& image() const { return image_; }
+    /// The pixel a lesson traces, marked on the image: (x, y) of a width x height image (the
+    /// lesson's size, which may differ from the rendered one); nullopt removes the mark.
+    void setLessonPixel(std::optional<QRect> pixel);
+    /// Where the lesson's pixel is marked in the widget (tests look there); null if not shown.
+    QPointF lessonMarkCentre() const;
     QPushButton* renderButton() const { return renderButton_; }
 
   signals:
@@ -64,6 +71,7 @@ class ImageView : public QWidget {
     bool heatmap_ = false;
     double zoom_ = 1.0;
     QPoint marked_{-1, -1};
+    std::optional<QRect> lessonPixel_;  // x, y in a width x height image
     QPushButton* renderButton_ = nullptr;
 };
 

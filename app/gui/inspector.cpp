@@ -20,7 +20,8 @@ QString num(double v) {
 QString describeState(const Session& s) {
     const ReplayState& st = s.state();
     QStringList lines;
-    lines << Inspector::tr("step %1 of %2").arg(st.cursor).arg(s.size());
+    // Of the events the replay may show (an open exercise hides the rest: quiz mode).
+    lines << Inspector::tr("step %1 of %2").arg(st.cursor).arg(s.end());
     if (st.cursor > 0)
         lines << QString::fromStdString(eventText(s.log(), st.cursor - 1, interfaceLanguage()));
     if (st.ray != kNoId) lines << Inspector::tr("ray %1").arg(st.ray);
@@ -62,6 +63,12 @@ QString describeState(const Session& s) {
         lines << Inspector::tr("nearest hit so far: primitive %1 at t = %2")
                      .arg(st.nearestPrim)
                      .arg(num(*st.nearestT));
+    // The ray's hit on a triangle: its barycentric u, v (lesson 12), as the event records them.
+    if (st.hit && s.scene3D() && st.hit->prim != kNoId &&
+        st.hit->prim < s.scene3D()->primitiveCount() && !s.scene3D()->isSphere(st.hit->prim))
+        lines << Inspector::tr("hit on triangle %1: t = %2   u = %3   v = %4")
+                     .arg(st.hit->prim)
+                     .arg(num(st.hit->t), num(st.hit->u), num(st.hit->v));
     if (st.buildNode) {
         lines << Inspector::tr("building node %1 (%2 primitives, depth %3), %4 candidates")
                      .arg(st.buildNode->node)
@@ -97,6 +104,8 @@ QString describeState(const Session& s) {
 Inspector::Inspector(Session& s, QWidget* parent) : QTextBrowser(parent), session_(s) {
     setObjectName("inspector");
     connect(&session_, &Session::cursorChanged, this,
+            [this] { setPlainText(describeState(session_)); });
+    connect(&session_, &Session::limitChanged, this,
             [this] { setPlainText(describeState(session_)); });
 }
 

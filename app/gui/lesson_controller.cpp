@@ -64,15 +64,15 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
 
     // The lesson panel asks; the controller moves the replay and saves the progress.
     connect(lesson_, &LessonPanel::stepShown, this, [this](int i) { applyStep(i); });
-    connect(lesson_, &LessonPanel::lessonTraceRequested, this, [this] {
-        showLessonTrace();
-        applyStep(lesson_->step());
-    });
+    connect(lesson_, &LessonPanel::lessonTraceRequested, this, [this] { backToLesson(); });
     connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
+        // While exploring the exercise waits: only "Back to the lesson" returns to its trace.
+        if (lesson_->exploring()) return;
         showLessonTrace();
         const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
         if (at) session_.setCursor(*at);
     });
+    connect(lesson_, &LessonPanel::quizChanged, this, [this] { updateQuizLimit(); });
     connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
     connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
     connect(&session_, &Session::logChanged, this, [this] { showReplayText(); });
@@ -82,7 +82,55 @@ void LessonController::show(const Lesson& lesson, const LogRef& trace) {
     // The panel records answers into this lesson's progress (std::map entries do not move) and
     // grades them against its own share of the trace.
     lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id]);
+    if (trace)
+        if (const auto kind = lessonEventKind(lesson, *trace)) emit jumpKindSuggested(*kind);
     applyStep(lesson_->step());
+}
+
+std::optional<std::size_t> LessonController::lessonEventKind(const Lesson& lesson,
+                                                             const EventLog& log) {
+    std::vector<const ReplayPosition*> positions;
+    for (const LessonStep& s : lesson.steps) positions.push_back(&s.at);
+    for (const Exercise& e : lesson.exercises) positions.push_back(&e.at);
+    for (const ReplayPosition* at : positions) {
+        if (at->mode != ReplayPosition::Mode::AfterEvent &&
+            at->mode != ReplayPosition::Mode::BeforeEvent)
+            continue;
+        // A kind the trace holds once (the DDA's set-up) is no place for N to jump between.
+        int seen = 0;
+        for (const Event& e : log.events())
+            if (e.index() == at->eventKind && ++seen > 1) return at->eventKind;
+    }
+    return std::nullopt;
+}
+
+void LessonController::backToLesson() {
+    if (!lesson_->hasLesson()) return;
+    showLessonTrace();
+    // Where the student was in the lesson: the open exercise's position, else the step's.
+    if (lesson_->exerciseOpen()) {
+        const auto at =
+            resolvePosition(lesson_->lesson().exercises[lesson_->exercise()].at, session_.log());
+        if (at) session_.setCursor(*at);
+        updateQuizLimit();
+        if (!lesson_->lesson().steps.empty())
+            events_->setFilter(
+                QString::fromStdString(lesson_->lesson().steps[lesson_->step()].filter));
+    } else {
+        applyStep(lesson_->step());
+    }
+}
+
+void LessonController::updateQuizLimit() {
+    const LogRef& log = lesson_->lessonLog();
+    const auto quiz = lesson_->quizExercise();
+    if (!lesson_->hasLesson() || !log || !quiz) {
+        session_.setLimit(nullptr, std::nullopt);
+        return;
+    }
+    // The exercise's own position: what lies after it holds its answer (course/exercise.h;
+    // none for the kinds whose answer is not in the trace).
+    session_.setLimit(log, quizLimit(lesson_->lesson().exercises[*quiz], *log));
 }
 
 void LessonController::applyStep(int index) {
@@ -199,7 +247,11 @@ void LessonController::showSceneIntro() {
 
 void LessonController::showReplayText() {
     if (lesson_->hasLesson()) {
-        lesson_->setReplayNote(replayDescription());
+        const QString exploring = replayDescription();
+        // The step's filter is about the lesson's trace: exploring shows every event (going
+        // back to the lesson sets the step's filter again).
+        if (!exploring.isEmpty() && !lesson_->exploring()) events_->setFilter({});
+        lesson_->setReplayNote(exploring);
     } else if (session_.showingBuild()) {
         lesson_->showText(
             lectureText(QStringLiteral("building")).arg(structureName(session_.kind())));

@@ -11,6 +11,8 @@
 
 #include <QObject>
 
+#include <optional>
+
 class QMainWindow;
 class QMenu;
 
@@ -51,12 +53,22 @@ class LessonController : public QObject {
     QString progressPath() const { return progressPath_; }
     void exportProgressReport();
 
+    /// "Back to the lesson": its own trace again, at the open exercise or the step shown.
+    void backToLesson();
+    /// The event kind the lesson is about (N jumps to it): the first step's or exercise's kind
+    /// that the trace holds more than once; nullopt when none does.
+    static std::optional<std::size_t> lessonEventKind(const Lesson& lesson, const EventLog& log);
+
   signals:
     /// A lesson picked in the lessons menu.
     void lessonRequested(const QString& id);
+    /// A lesson was shown whose steps are about events of this kind (the timeline's N).
+    void jumpKindSuggested(std::size_t eventKind);
 
   private:
     void applyStep(int index);
+    /// Quiz mode: the session's limit from the open exercise (course/lesson_trace.h's position).
+    void updateQuizLimit();
     /// A lesson's steps and exercises are positions in its trace: replay it again if needed.
     void showLessonTrace();
     void saveProgress();

@@ -1,7 +1,7 @@
 #include "lesson_panel.h"
 
 #include "language.h"
-
+#include <QButtonGroup>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -9,8 +9,11 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
+#include <QRegularExpressionValidator>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QTextTable>
 #include <QVBoxLayout>
 
 namespace raystep::gui {
@@ -38,7 +41,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_->setOpenExternalLinks(true);
     layout->addWidget(text_, 1);
 
-    // Shown while the replay is not the lesson's trace: the exercises still grade against it.
+    // Shown while the student explores (a pixel click, R, B): the one way back to the lesson.
     noteRow_ = new QWidget;
     noteRow_->setObjectName("replayNote");
     noteRow_->setStyleSheet(QStringLiteral("#replayNote { background: #fff4d6; }"));
@@ -47,8 +50,9 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     note_ = new QLabel;
     note_->setWordWrap(true);
     note_->setStyleSheet(QStringLiteral("color: #5a4300"));
-    auto* back = new QPushButton(tr("Back to the lesson's trace"));
+    auto* back = new QPushButton(tr("Back to the lesson (Esc)"));
     back->setObjectName("backToLesson");
+    back->setToolTip(tr("The lesson's own trace, its steps and its exercises"));
     nr->addWidget(note_);
     nr->addWidget(back, 0, Qt::AlignRight);
     connect(back, &QPushButton::clicked, this, &LessonPanel::lessonTraceRequested);
@@ -74,20 +78,47 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(stepRow_);
 
     exerciseBox_ = new QGroupBox(tr("Exercise"));
+    exerciseBox_->setObjectName("exerciseBox");
     auto* el = new QVBoxLayout(exerciseBox_);
-    auto* er = new QHBoxLayout;
+    exerciseHeader_ = new QWidget;
+    auto* er = new QHBoxLayout(exerciseHeader_);
+    er->setContentsMargins(0, 0, 0, 0);
     auto* prevEx = new QPushButton(QStringLiteral("<"));
     auto* nextEx = new QPushButton(QStringLiteral(">"));
+    prevEx->setToolTip(tr("Previous exercise"));
+    nextEx->setToolTip(tr("Next exercise"));
     prevEx->setMaximumWidth(30);
     nextEx->setMaximumWidth(30);
     exerciseLabel_ = new QLabel;
     exerciseLabel_->setAlignment(Qt::AlignCenter);
+    // An exercise is open while the student works on it: the replay then stops at its position.
+    openButton_ = new QPushButton;
+    openButton_->setObjectName("openExercise");
     er->addWidget(prevEx);
     er->addWidget(exerciseLabel_, 1);
     er->addWidget(nextEx);
-    el->addLayout(er);
+    er->addWidget(openButton_);
+    el->addWidget(exerciseHeader_);
     connect(prevEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ - 1); });
     connect(nextEx, &QPushButton::clicked, this, [this] { selectExercise(exercise_ + 1); });
+    connect(openButton_, &QPushButton::clicked, this, [this] {
+        if (exerciseOpen_)
+            closeExercise();
+        else
+            selectExercise(exercise_);
+    });
+    exploreNote_ = new QLabel(
+        tr("The exercises are about the lesson's own trace, not what you are exploring: go "
+           "back to the lesson to answer them."));
+    exploreNote_->setObjectName("exploreNote");
+    exploreNote_->setWordWrap(true);
+    exploreNote_->setStyleSheet(QStringLiteral("color: #5a4300"));
+    el->addWidget(exploreNote_);
+    exerciseBody_ = new QWidget;
+    auto* body = new QVBoxLayout(exerciseBody_);
+    body->setContentsMargins(0, 0, 0, 0);
+    el->addWidget(exerciseBody_);
+    el = body;  // the prompt, the answer and the feedback go in the body
     prompt_ = new QLabel;
     prompt_->setWordWrap(true);
     prompt_->setTextFormat(Qt::MarkdownText);
@@ -98,6 +129,30 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     candidates_->setObjectName("candidates");
     el->addWidget(answer_);
     el->addWidget(candidates_);
+    choiceBox_ = new QWidget;
+    choiceBox_->setObjectName("choices");
+    new QVBoxLayout(choiceBox_);
+    choiceBox_->layout()->setContentsMargins(0, 0, 0, 0);
+    choiceGroup_ = new QButtonGroup(this);
+    el->addWidget(choiceBox_);
+    sweepPicker_ = new QComboBox;
+    sweepPicker_->setObjectName("sweepPicker");
+    el->addWidget(sweepPicker_);
+    clearButton_ = new QPushButton(tr("Clear the cells"));
+    clearButton_->setObjectName("clearSequence");
+    clearButton_->setToolTip(tr("Start the order again"));
+    el->addWidget(clearButton_, 0, Qt::AlignRight);
+    connect(clearButton_, &QPushButton::clicked, this, [this] {
+        sequence_.clear();
+        answer_->clear();
+        emit sequenceChanged(sequence_);
+    });
+    // Typing a sequence replaces the clicked cells (the typed text is the answer).
+    connect(answer_, &QLineEdit::textEdited, this, [this] {
+        if (sequence_.isEmpty()) return;
+        sequence_.clear();
+        emit sequenceChanged(sequence_);
+    });
     auto* br = new QHBoxLayout;
     checkButton_ = new QPushButton(tr("Check"));
     hintButton_ = new QPushButton(tr("Hint"));
@@ -105,16 +160,24 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     br->addWidget(checkButton_);
     br->addWidget(hintButton_);
     br->addWidget(revealButton_);
-    el->addLayout(br);
     connect(checkButton_, &QPushButton::clicked, this, [this] { check(); });
     connect(answer_, &QLineEdit::returnPressed, this, [this] { check(); });
     connect(hintButton_, &QPushButton::clicked, this, [this] { hint(); });
     connect(revealButton_, &QPushButton::clicked, this, [this] { revealAnswer(); });
+    hints_ = new QLabel;
+    hints_->setObjectName("hints");
+    hints_->setWordWrap(true);
+    hints_->setTextFormat(Qt::MarkdownText);
+    hints_->setStyleSheet(QStringLiteral("color: #1f4e99"));
+    el->addWidget(hints_);
     feedback_ = new QLabel;
     feedback_->setObjectName("feedback");
     feedback_->setWordWrap(true);
     feedback_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     el->addWidget(feedback_);
+    // The buttons last: the box grows upwards as hints and feedback come, and the buttons stay
+    // where the student's mouse is (Hint pressed again reveals the next one).
+    el->addLayout(br);
     layout->addWidget(exerciseBox_);
 
     sweepButton_ = new QPushButton(tr("Run the sweep"));
@@ -141,6 +204,7 @@ void LessonPanel::syncPicker() {
 void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
+    exploring_ = exerciseOpen_ = false;
     noteRow_->hide();
     freeText_ = markdown;
     text_->setMarkdown(markdown);
@@ -149,6 +213,7 @@ void LessonPanel::showText(const QString& markdown) {
     sweepButton_->hide();
     sweepTable_->hide();
     picker_->setCurrentIndex(0);
+    emit quizChanged();
 }
 
 void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress) {
@@ -156,7 +221,11 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     log_ = std::move(log);
     noteRow_->hide();
     hasLesson_ = true;
+    exploring_ = false;
+    // A lesson opens on its text and steps; an exercise opens when the student turns to it.
+    exerciseOpen_ = false;
     ownProgress_ = {};
+    sweepRows_.clear();
     progress_ = progress ? progress : &ownProgress_;
     picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
     stepRow_->setVisible(!lesson.steps.empty());
@@ -167,17 +236,18 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     exercise_ = 0;
     refreshText();
     refreshExercise();
+    emit quizChanged();
 }
 
 void LessonPanel::setReplayNote(const QString& what) {
-    if (!hasLesson_ || what.isEmpty()) {
-        noteRow_->hide();
-        return;
-    }
-    note_->setText(tr("The replay shows %1. The steps and exercises are about the lesson's "
-                      "own trace.")
-                       .arg(what));
-    noteRow_->show();
+    exploring_ = hasLesson_ && !what.isEmpty();
+    if (exploring_)
+        note_->setText(tr("You are exploring %1. The lesson's steps and exercises are about its "
+                          "own trace: they wait until you go back.")
+                           .arg(what));
+    noteRow_->setVisible(exploring_);
+    stepRow_->setEnabled(!exploring_);
+    if (hasLesson_) updateExerciseBox();
 }
 
 QString LessonPanel::replayNote() const {
@@ -187,6 +257,12 @@ QString LessonPanel::replayNote() const {
 void LessonPanel::setLecturerMode(bool on) {
     lecturer_ = on;
     if (hasLesson_) refreshExercise();
+    emit quizChanged();
+}
+
+void LessonPanel::setShowErrata(bool on) {
+    showErrata_ = on;
+    if (hasLesson_) refreshText();
 }
 
 void LessonPanel::goToStep(int index) {
@@ -199,50 +275,124 @@ void LessonPanel::goToStep(int index) {
 void LessonPanel::selectExercise(int index) {
     if (!hasLesson_ || lesson_.exercises.empty()) return;
     exercise_ = std::clamp(index, 0, static_cast<int>(lesson_.exercises.size()) - 1);
+    exerciseOpen_ = true;
     refreshExercise();
+    emit quizChanged();
     emit exerciseShown(exercise_);
 }
 
+void LessonPanel::closeExercise() {
+    if (!exerciseOpen_) return;
+    exerciseOpen_ = false;
+    updateExerciseBox();
+    emit quizChanged();
+}
+
+std::optional<int> LessonPanel::quizExercise() const {
+    if (!hasLesson_ || !exerciseOpen_ || lecturer_ || lesson_.exercises.empty() ||
+        solved(exercise_))
+        return std::nullopt;
+    return exercise_;
+}
+
+void LessonPanel::appendErrata(QTextCursor& at, const std::vector<Erratum>& errata) {
+    if (!showErrata_) return;
+    for (const Erratum& e : errata) {
+        // A marked box: what the slide says, what is right, and why.
+        at.movePosition(QTextCursor::End);
+        QTextTableFormat box;
+        box.setBackground(QColor(0xff, 0xf4, 0xd6));
+        box.setBorder(1);
+        box.setBorderBrush(QColor(0xe0, 0xc0, 0x70));
+        box.setBorderStyle(QTextFrameFormat::BorderStyle_Solid);
+        box.setCellPadding(6);
+        box.setCellSpacing(0);
+        box.setTopMargin(6);
+        box.setBottomMargin(6);
+        box.setWidth(QTextLength(QTextLength::PercentageLength, 100));
+        QTextTable* table = at.insertTable(1, 1, box);
+        QTextCursor cell = table->cellAt(0, 0).firstCursorPosition();
+        cell.insertMarkdown(QStringLiteral("**%1**\n\n%2 *%3*\n\n%4 %5\n\n%6")
+                                .arg(q(erratumHeading(lang_)), tr("The slide:"),
+                                     q(e.slide.in(lang_)), tr("Correct:"), q(e.correct.in(lang_)),
+                                     q(e.why.in(lang_))));
+        at.movePosition(QTextCursor::End);
+    }
+}
+
 void LessonPanel::refreshText() {
-    QString md = QStringLiteral("# %1. %2\n\n%3\n")
-                     .arg(lesson_.number)
-                     .arg(q(lesson_.title.in(lang_)), q(lesson_.text.in(lang_)));
+    text_->setMarkdown(QStringLiteral("# %1. %2\n\n%3\n")
+                           .arg(lesson_.number)
+                           .arg(q(lesson_.title.in(lang_)), q(lesson_.text.in(lang_))));
+    QTextCursor at(text_->document());
+    at.movePosition(QTextCursor::End);
+    appendErrata(at, lesson_.errata);
     if (!lesson_.steps.empty()) {
-        md += QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
-                  .arg(tr("Step"))
-                  .arg(step_ + 1)
-                  .arg(lesson_.steps.size())
-                  .arg(q(lesson_.steps[step_].text.in(lang_)));
+        const LessonStep& step = lesson_.steps[step_];
+        QString md = QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
+                         .arg(tr("Step"))
+                         .arg(step_ + 1)
+                         .arg(lesson_.steps.size())
+                         .arg(q(step.text.in(lang_)));
         // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
-        if (const LocalText& note = lesson_.steps[step_].note; !note.en.empty())
-            md += QStringLiteral("\n> %1\n").arg(q(note.in(lang_)));
+        if (!step.note.en.empty()) md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
+        at.movePosition(QTextCursor::End);
+        at.insertBlock();
+        at.insertMarkdown(md);
+        appendErrata(at, step.errata);
         stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));
         prevStep_->setEnabled(step_ > 0);
         nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));
     }
-    text_->setMarkdown(md);
     // The step's text is what the lecturer points at: keep it in sight.
     text_->moveCursor(QTextCursor::End);
     text_->ensureCursorVisible();
 }
 
-void LessonPanel::refreshExercise() {
+void LessonPanel::updateExerciseBox() {
     if (lesson_.exercises.empty()) return;
-    const Exercise& ex = lesson_.exercises[exercise_];
     exerciseLabel_->setText(tr("Exercise %1 / %2%3")
                                 .arg(exercise_ + 1)
                                 .arg(lesson_.exercises.size())
                                 .arg(solved(exercise_) ? tr(" (solved)") : QString()));
+    openButton_->setText(exerciseOpen_ ? tr("Put away") : tr("Try it"));
+    openButton_->setToolTip(exerciseOpen_
+                                ? tr("Put the exercise away: the replay may then go anywhere")
+                                : tr("Open the exercise: the replay stops at its position "
+                                     "until you answer"));
+    exerciseBody_->setVisible(exerciseOpen_);
+    // While exploring, the exercises wait: they are graded against the lesson's own trace.
+    exerciseHeader_->setEnabled(!exploring_);
+    exerciseBody_->setEnabled(!exploring_);
+    exploreNote_->setVisible(exploring_);
+}
+
+void LessonPanel::refreshExercise() {
+    if (lesson_.exercises.empty()) return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    updateExerciseBox();
     prompt_->setText(q(ex.prompt.in(lang_)));
     answer_->clear();
     feedback_->clear();
     feedback_->setStyleSheet({});
-    hintButton_->setEnabled(!ex.hint.en.empty());
+    hintsShown_ = 0;
+    hints_->clear();
+    hints_->hide();
+    hintButton_->setEnabled(!ex.hints.empty());
+    hintButton_->setText(tr("Hint"));
     revealButton_->setVisible(lecturer_);
     const bool split = ex.kind == ExerciseKind::PickSplit;
     candidates_->setVisible(split);
     answer_->setVisible(!split);
+    answer_->setValidator(nullptr);
     candidates_->clear();
+    choiceBox_->hide();
+    sweepPicker_->hide();
+    clearButton_->hide();
+    if (!sequence_.isEmpty()) {
+        sequence_.clear();
+        emit sequenceChanged(sequence_);
+    }
     if (split && log_) {
         // The candidates without their cost: computing it is the exercise.
         for (const SplitCandidate& c : splitCandidates(ex, *log_))
@@ -255,9 +405,51 @@ void LessonPanel::refreshExercise() {
                     .arg(numberText(c.pl, 'g', 4), numberText(c.pr, 'g', 4)),
                 QStringLiteral("%1=%2").arg(QChar("xyz"[c.axis])).arg(c.position, 0, 'g', 17));
     }
+    // A choice: one radio button an option, lettered as the student may also type them.
+    for (QAbstractButton* b : choiceGroup_->buttons()) {
+        choiceGroup_->removeButton(b);
+        delete b;
+    }
+    if (ex.kind == ExerciseKind::Choice) {
+        for (std::size_t k = 0; k < ex.choices.size(); ++k) {
+            auto* b = new QRadioButton(QStringLiteral("%1) %2")
+                                           .arg(QChar('a' + static_cast<int>(k)))
+                                           .arg(q(ex.choices[k].text.in(lang_))));
+            b->setObjectName(QStringLiteral("choice%1").arg(k));
+            choiceGroup_->addButton(b, static_cast<int>(k));
+            choiceBox_->layout()->addWidget(b);
+        }
+        choiceBox_->show();
+        answer_->hide();
+    }
+    if (ex.kind == ExerciseKind::SweepPick) {
+        sweepPicker_->clear();
+        if (lesson_.sweep)
+            for (int r : lesson_.sweep->resolutions)
+                sweepPicker_->addItem(tr("%1 cells per axis").arg(r), r);
+        sweepPicker_->show();
+        answer_->hide();
+    }
     switch (ex.kind) {
         case ExerciseKind::NextCell:
             answer_->setPlaceholderText(tr("X,Y (or click the cell in the 2D view)"));
+            break;
+        case ExerciseKind::Sequence:
+            answer_->setPlaceholderText(
+                ex.ofNodes ? tr("node ids in order, e.g. 0 1 4")
+                           : tr("cells in order, e.g. 0,0; 1,0 (or click them in the 2D view)"));
+            clearButton_->setVisible(!ex.ofNodes);
+            break;
+        case ExerciseKind::Compute: {
+            answer_->setPlaceholderText(tr("your result, a number (e.g. -2.5 or 0,75)"));
+            // A number box: digits, one sign, a decimal point or comma, an exponent.
+            static const QRegularExpression number(
+                QStringLiteral("[-+]?[0-9]*([.,][0-9]*)?([eE][-+]?[0-9]*)?"));
+            answer_->setValidator(new QRegularExpressionValidator(number, answer_));
+            break;
+        }
+        case ExerciseKind::Choice:
+        case ExerciseKind::SweepPick:
             break;
         case ExerciseKind::Value:
             answer_->setPlaceholderText(tr("a number, e.g. 1.25"));
@@ -275,19 +467,44 @@ void LessonPanel::refreshExercise() {
 }
 
 void LessonPanel::fillCell(int x, int y) {
-    if (!hasLesson_ || lesson_.exercises.empty() || !answer_->isVisible()) return;
-    if (lesson_.exercises[exercise_].kind != ExerciseKind::NextCell) return;
+    if (!hasLesson_ || exploring_ || !exerciseOpen_ || lesson_.exercises.empty() ||
+        !answer_->isVisible())
+        return;
+    const Exercise& ex = lesson_.exercises[exercise_];
+    if (ex.kind == ExerciseKind::Sequence && !ex.ofNodes) {
+        // The cells in the order clicked; checked when the student says so.
+        sequence_.append(QPoint(x, y));
+        QStringList cells;
+        for (const QPoint& c : sequence_) cells << QStringLiteral("%1,%2").arg(c.x()).arg(c.y());
+        answer_->setText(cells.join(QStringLiteral("; ")));
+        emit sequenceChanged(sequence_);
+        return;
+    }
+    if (ex.kind != ExerciseKind::NextCell) return;
     answer_->setText(QStringLiteral("%1,%2").arg(x).arg(y));
     check();
 }
 
 bool LessonPanel::submit(const QString& answer) {
-    if (lesson_.exercises[exercise_].kind == ExerciseKind::PickSplit) {
+    if (!hasLesson_ || lesson_.exercises.empty()) return false;
+    const ExerciseKind kind = lesson_.exercises[exercise_].kind;
+    if (kind == ExerciseKind::PickSplit) {
         const int i = candidates_->findData(answer);
         if (i >= 0) candidates_->setCurrentIndex(i);
+    } else if (kind == ExerciseKind::Choice) {
+        // "b" or "2": the radio button a student would click.
+        const QString a = answer.trimmed().toLower();
+        bool number = false;
+        const int n = a.toInt(&number);
+        const int i = number ? n - 1 : (a.size() == 1 ? a[0].unicode() - 'a' : -1);
+        if (QAbstractButton* b = choiceGroup_->button(i)) b->setChecked(true);
+    } else if (kind == ExerciseKind::SweepPick) {
+        const int i = sweepPicker_->findData(answer.trimmed().toInt());
+        if (i >= 0) sweepPicker_->setCurrentIndex(i);
     } else {
         answer_->setText(answer);
     }
+    feedback_->setProperty("correct", false);
     check();
     return feedback_->property("correct").toBool();
 }
@@ -298,22 +515,52 @@ QString LessonPanel::feedback() const {
 QString LessonPanel::exerciseText() const {
     return prompt_->text();
 }
+QString LessonPanel::hintsText() const {
+    return hints_->text();
+}
 
 void LessonPanel::check() {
     if (!hasLesson_ || !log_ || lesson_.exercises.empty()) return;
+    // While exploring, the exercises wait (their box is disabled; a script may still call).
+    if (exploring_) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(exploreNote_->text());
+        return;
+    }
+    if (!exerciseOpen_) {
+        exerciseOpen_ = true;  // answering an exercise is working on it
+        updateExerciseBox();
+        emit quizChanged();
+    }
     const Exercise& ex = lesson_.exercises[exercise_];
-    const QString typed = ex.kind == ExerciseKind::PickSplit ? candidates_->currentData().toString()
-                                                             : answer_->text();
+    const QString typed = typedAnswer();
+    if (typed.isEmpty() && (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::SweepPick)) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(tr("Pick one of the options first."));
+        return;
+    }
+    if (ex.kind == ExerciseKind::SweepPick && !sweepRows()) {
+        // Graded from the sweep's table: run it first (in the background).
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(tr("The answer is graded from the sweep's table: the sweep runs now; "
+                              "check again when its table is shown."));
+        emit sweepRequested();
+        return;
+    }
     std::string why;
-    const auto answer = parseAnswer(ex, typed.toStdString(), &why);
+    const auto answer = parseAnswer(ex, typed.toStdString(), &why, lang_);
     if (!answer) {
         feedback_->setProperty("correct", false);
         feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
         feedback_->setText(tr("Cannot read that answer: %1.").arg(q(why)));
         return;
     }
-    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file);
+    const Verdict v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
     LessonProgress::ExerciseRecord& rec = record(exercise_);
+    const bool wasSolved = rec.correct;
     ++rec.attempts;
     rec.correct = rec.correct || v.correct;
     rec.answer = typed.toStdString();
@@ -322,20 +569,25 @@ void LessonPanel::check() {
     if (v.correct) {
         feedback_->setStyleSheet(QStringLiteral("color: #1a7f37"));
         feedback_->setText(tr("Right. %1").arg(q(v.feedback)));
+    } else if (wasSolved) {
+        // Solved before: the attempt is not counted against the student.
+        feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
+        feedback_->setText(tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback)));
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
+        // A slip the answer betrays is named at once, with the student's own numbers.
         feedback_->setText(
             rec.attempts >= 3 || lecturer_
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
-                : tr("Not right yet (try %1 of 3). Step the replay and look at the "
-                     "inspector, or ask for a hint.")
-                      .arg(rec.attempts));
+            : v.slip.empty() ? tr("Not right yet (try %1 of 3). Step the replay and look at the "
+                                  "inspector, or ask for a hint.")
+                                   .arg(rec.attempts)
+                             : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(q(v.slip)));
     }
-    exerciseLabel_->setText(tr("Exercise %1 / %2%3")
-                                .arg(exercise_ + 1)
-                                .arg(lesson_.exercises.size())
-                                .arg(solved(exercise_) ? tr(" (solved)") : QString()));
+    updateExerciseBox();
     emit answered(q(ex.id), v.correct, typed);
+    // Answered right: the replay may go past the exercise now.
+    if (v.correct && !wasSolved) emit quizChanged();
 }
 
 LessonProgress::ExerciseRecord& LessonPanel::record(int exercise) {
@@ -348,20 +600,59 @@ bool LessonPanel::solved(int exercise) const {
 }
 
 void LessonPanel::hint() {
+    // One more hint each press: a nudge, then the formula, then the worked first step.
     const Exercise& ex = lesson_.exercises[exercise_];
-    feedback_->setStyleSheet({});
-    feedback_->setText(tr("Hint: %1").arg(q(ex.hint.in(lang_))));
+    if (hintsShown_ >= static_cast<int>(ex.hints.size())) return;
+    ++hintsShown_;
+    QStringList shown;
+    for (int k = 0; k < hintsShown_; ++k)
+        shown << tr("**Hint %1 of %2.** %3")
+                     .arg(k + 1)
+                     .arg(ex.hints.size())
+                     .arg(q(ex.hints[k].in(lang_)));
+    hints_->setText(shown.join(QStringLiteral("\n\n")));
+    hints_->show();
+    const bool more = hintsShown_ < static_cast<int>(ex.hints.size());
+    hintButton_->setEnabled(more);
+    hintButton_->setText(more ? tr("Next hint") : tr("No more hints"));
+}
+
+QString LessonPanel::typedAnswer() const {
+    const Exercise& ex = lesson_.exercises[exercise_];
+    switch (ex.kind) {
+        case ExerciseKind::PickSplit:
+            return candidates_->currentData().toString();
+        case ExerciseKind::Choice:
+            return choiceGroup_->checkedId() < 0 ? QString()
+                                                 : QString::number(choiceGroup_->checkedId() + 1);
+        case ExerciseKind::SweepPick:
+            return sweepPicker_->currentIndex() < 0
+                       ? QString()
+                       : QString::number(sweepPicker_->currentData().toInt());
+        default:
+            return answer_->text();
+    }
+}
+
+const std::vector<GridSweepRow>* LessonPanel::sweepRows() const {
+    return sweepRows_.empty() ? nullptr : &sweepRows_;
 }
 
 void LessonPanel::revealAnswer() {
     if (!log_) return;
     const Exercise& ex = lesson_.exercises[exercise_];
-    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file);
+    if (ex.kind == ExerciseKind::SweepPick && !sweepRows()) {
+        feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
+        feedback_->setText(tr("Run the sweep to see the answer: it is read from its table."));
+        return;
+    }
+    const Verdict v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
 }
 
 void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
+    sweepRows_ = rows;
     // What the lesson is about first (the panel is narrow): tests against cells against time.
     const QStringList headers = {tr("cells/axis"), tr("tests/ray"), tr("cells/ray"),
                                  tr("trace ms"),   tr("cells"),     tr("refs"),

@@ -9,10 +9,16 @@
 #include "course/lesson.h"
 #include "course/progress.h"
 
+#include <QList>
+#include <QPoint>
+#include <QTextCursor>
 #include <QWidget>
+
+#include <optional>
 
 #include <vector>
 
+class QButtonGroup;
 class QComboBox;
 class QGroupBox;
 class QLabel;
@@ -39,9 +45,11 @@ class LessonPanel : public QWidget {
     /// The lesson's trace (null when no lesson is open).
     const LogRef& lessonLog() const { return log_; }
     /// The replay shows something else than the lesson's trace (`what`, e.g. "pixel (3, 4)"):
-    /// say so and offer the way back; an empty `what` hides the note.
+    /// the student explores. Say so, offer the one way back, and disable the steps and the
+    /// exercises (they are about the lesson's own trace). An empty `what` ends it.
     void setReplayNote(const QString& what);
     QString replayNote() const;
+    bool exploring() const { return exploring_; }
     /// The picker shows the open lesson again (after a pick that could not be opened).
     void syncPicker();
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
@@ -54,7 +62,19 @@ class LessonPanel : public QWidget {
     int step() const { return step_; }
     int exercise() const { return exercise_; }
     void goToStep(int index);
+    /// Shows and opens exercise `index` (the replay goes to its position).
     void selectExercise(int index);
+    /// Puts the open exercise away (the replay may then go anywhere).
+    void closeExercise();
+    bool exerciseOpen() const { return hasLesson_ && exerciseOpen_; }
+    /// Quiz mode: the exercise that stops the replay at its position (open, not yet answered
+    /// right, lecturer mode off), if any.
+    std::optional<int> quizExercise() const;
+    /// Lessons > Show notes on the slides: the errata boxes under the texts.
+    void setShowErrata(bool on);
+    bool showErrata() const { return showErrata_; }
+    /// The hints revealed so far for the shown exercise, one a line.
+    QString hintsText() const;
     /// Types an answer and checks it (what the Check button does); true if right.
     bool submit(const QString& answer);
     QString feedback() const;
@@ -67,13 +87,17 @@ class LessonPanel : public QWidget {
 
   signals:
     void lessonRequested(const QString& id);
-    /// "Back to the lesson's trace".
+    /// "Back to the lesson": its own trace, steps and exercises.
     void lessonTraceRequested();
+    /// The exercise stopping the replay changed (opened, closed, answered right, lecturer mode).
+    void quizChanged();
     void stepShown(int index);
     void exerciseShown(int index);
     /// An answer was checked and recorded in the progress: the main window saves it.
     void answered(const QString& exerciseId, bool correct, const QString& answer);
     void sweepRequested();
+    /// The cells of a sequence answer so far (the 2D view numbers them); empty when none.
+    void sequenceChanged(const QList<QPoint>& cells);
 
   private:
     void refreshText();
@@ -81,12 +105,24 @@ class LessonPanel : public QWidget {
     void check();
     void hint();
     void revealAnswer();
+    /// What the student answered, as text parseAnswer reads ("" when nothing is chosen yet).
+    QString typedAnswer() const;
+    /// The sweep's rows for grading a sweep_pick, or null before the sweep has run.
+    const std::vector<GridSweepRow>* sweepRows() const;
+    /// The exercise box's parts, enabled and shown for the exercise's state.
+    void updateExerciseBox();
+    /// The lesson's or a step's slide errata, as marked boxes at the end of the text.
+    void appendErrata(QTextCursor& at, const std::vector<Erratum>& errata);
 
     Language lang_ = Language::En;
     Lesson lesson_;
     LogRef log_;
     bool hasLesson_ = false;
     bool lecturer_ = false;
+    bool exploring_ = false;
+    bool exerciseOpen_ = false;
+    bool showErrata_ = true;
+    int hintsShown_ = 0;
     int step_ = 0;
     int exercise_ = 0;
     /// This exercise's record in the progress (made on first use).
@@ -105,10 +141,21 @@ class LessonPanel : public QWidget {
     QPushButton* prevStep_ = nullptr;
     QPushButton* nextStep_ = nullptr;
     QGroupBox* exerciseBox_ = nullptr;
+    QWidget* exerciseHeader_ = nullptr;
     QLabel* exerciseLabel_ = nullptr;
+    QPushButton* openButton_ = nullptr;
+    QLabel* exploreNote_ = nullptr;
+    QWidget* exerciseBody_ = nullptr;
+    QLabel* hints_ = nullptr;
     QLabel* prompt_ = nullptr;
     QLineEdit* answer_ = nullptr;
     QComboBox* candidates_ = nullptr;
+    QWidget* choiceBox_ = nullptr;  // a choice exercise's radio buttons
+    QButtonGroup* choiceGroup_ = nullptr;
+    QPushButton* clearButton_ = nullptr;  // a sequence answer: start again
+    QComboBox* sweepPicker_ = nullptr;    // a sweep_pick exercise: the sweep's resolutions
+    QList<QPoint> sequence_;              // cells clicked for a sequence answer, in order
+    std::vector<GridSweepRow> sweepRows_;  // the sweep's table, once run (sweep_pick grades it)
     QPushButton* checkButton_ = nullptr;
     QPushButton* hintButton_ = nullptr;
     QPushButton* revealButton_ = nullptr;

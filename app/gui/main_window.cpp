@@ -91,6 +91,7 @@ void MainWindow::createViews() {
             tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
     });
     connect(view2D_, &View2D::cellClicked, lesson_, &LessonPanel::fillCell);
+    connect(lesson_, &LessonPanel::sequenceChanged, view2D_, &View2D::setSequence);
 }
 
 void MainWindow::createTimeline() {
@@ -129,6 +130,7 @@ void MainWindow::createDocks() {
             [this](const QString& id) { openLesson(id); });
     connect(lessons_, &LessonController::lessonRequested, this,
             [this](const QString& id) { openLesson(id); });
+    connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
 }
 
 void MainWindow::createStatusBar() {
@@ -210,6 +212,21 @@ void MainWindow::createActions() {
     a.lecturer->setCheckable(true);
     a.lecturer->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     connect(a.lecturer, &QAction::toggled, lesson_, &LessonPanel::setLecturerMode);
+    // The one way back after a pixel click, R or B: the lesson's trace, steps and exercises.
+    a.backToLesson = action(tr("&Back to the lesson"), QKeySequence(Qt::Key_Escape),
+                            [this] { lessons_->backToLesson(); });
+    a.backToLesson->setEnabled(false);
+    connect(&session_, &Session::logChanged, this,
+            [this] { actions_.backToLesson->setEnabled(lesson_->exploring()); });
+    // The slides' errata under the texts: a lecturer may hide them; remembered.
+    a.showErrata = new QAction(tr("Show &notes on the slides"), this);
+    a.showErrata->setCheckable(true);
+    a.showErrata->setChecked(QSettings().value("lessons/showErrata", true).toBool());
+    lesson_->setShowErrata(a.showErrata->isChecked());
+    connect(a.showErrata, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("lessons/showErrata", on);
+        lesson_->setShowErrata(on);
+    });
 
     a.compare = action(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C),
                        [this] { openCompare(); });
@@ -233,7 +250,7 @@ void MainWindow::createMenus() {
     replay->addActions({a.replayBuild, a.exampleRay, a.first, a.last});
     QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
     lessons_->setLessonsMenu(lessons->addMenu(tr("&Built-in lessons")));
-    lessons->addActions({a.openLessonFile, a.lecturer});
+    lessons->addActions({a.openLessonFile, a.backToLesson, a.lecturer, a.showErrata});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
 }
@@ -253,6 +270,7 @@ void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
             if (outcome.superseded) return;  // a newer open is under way
             if (!outcome.ok()) return openFailed(nameOrPath, outcome, quiet);
             showScene(std::move(scene), renderImage);
+            imageView_->setLessonPixel(std::nullopt);
             lessons_->showSceneIntro();
             // The lecture's 2D pictures use the 2D view; 3D scenes the 3D view and the image.
             showViews(session_.is2D(), !session_.is2D(), !session_.is2D());
@@ -398,6 +416,12 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             showViews(shows(LessonView::View2D), shows(LessonView::View3D),
                       shows(LessonView::Image));
             lessons_->show(o.lesson, o.trace);
+            // The pixel the lesson traces, marked on the image in the lesson's own image size.
+            if (lesson.trace.kind == LessonTrace::Kind::Pixel)
+                imageView_->setLessonPixel(
+                    QRect(lesson.trace.x, lesson.trace.y, lesson.trace.width, lesson.trace.height));
+            else
+                imageView_->setLessonPixel(std::nullopt);
             setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
             finishOpen(true, {});
         });

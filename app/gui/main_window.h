@@ -80,6 +80,11 @@ class MainWindow : public QMainWindow {
     QString progressPath() const;
     /// The inspector's text (what tests read).
     QString inspectorText() const;
+    EventList* eventList() const { return events_; }
+    Timeline* timeline() const { return timeline_; }
+    /// Lessons > Back to the lesson (Esc) and Show notes on the slides.
+    QAction* backToLessonAction() const { return actions_.backToLesson; }
+    QAction* showErrataAction() const { return actions_.showErrata; }
     View2D* view2D() const { return view2D_; }
     VtkView* view3D() const { return view3D_; }
     ImageView* imageView() const { return imageView_; }
@@ -146,7 +151,7 @@ class MainWindow : public QMainWindow {
             *quit;
         QAction *stepForward, *stepBack, *play, *nextOfKind, *replayBuild, *exampleRay, *first,
             *last;
-        QAction *openLessonFile, *lecturer;
+        QAction *openLessonFile, *lecturer, *backToLesson, *showErrata;
         QAction *compare, *renderAgain, *heatmap, *resetCamera;
     } actions_{};
     QLabel* taskLabel_ = nullptr;

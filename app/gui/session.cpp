@@ -97,11 +97,27 @@ void Session::showLog(LogRef log, LogKind kind) {
     logKind_ = kind;
     cursor_ = 0;
     emit logChanged();
+    emit limitChanged();  // the limit holds for its own log only
     emit cursorChanged(cursor_);
 }
 
+void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
+    const std::optional<std::size_t> before = this->limit();
+    limitLog_ = limit ? log : nullptr;
+    limit_ = limit;
+    if (this->limit() == before) return;
+    emit limitChanged();
+    if (cursor_ > end()) setCursor(end());
+}
+
+std::optional<std::size_t> Session::limit() const {
+    if (!limit_ || limitLog_ != log_ || *limit_ >= size()) return std::nullopt;
+    return limit_;
+}
+
 void Session::setCursor(std::size_t cursor) {
-    cursor = std::min(cursor, size());
+    // Never past an open exercise's position (quiz mode), nor past the end.
+    cursor = std::min(cursor, end());
     if (cursor == cursor_ && replay_->state().cursor == cursor) return;
     cursor_ = cursor;
     replay_->seek(cursor);

@@ -97,6 +97,13 @@ class Session : public QObject {
     const EventLog& log() const { return *log_; }
     const LogRef& logRef() const { return log_; }
     std::size_t size() const { return replay_->size(); }
+    /// Quiz mode: while `log` is replayed, the cursor stays at or before `limit` (an open
+    /// exercise's position), and the views show nothing past it; nullopt lifts the limit.
+    void setLimit(const LogRef& log, std::optional<std::size_t> limit);
+    /// The limit on the log replayed now, if it has one that hides events.
+    std::optional<std::size_t> limit() const;
+    /// How far the cursor may go: the limit, else the end of the log.
+    std::size_t end() const { return limit().value_or(size()); }
     std::size_t cursor() const { return cursor_; }
     const ReplayState& state() const { return replay_->state(); }
     const Replay& replay() const { return *replay_; }
@@ -110,6 +117,8 @@ class Session : public QObject {
     void sceneChanged();
     void logChanged();
     void cursorChanged(std::size_t cursor);
+    /// The quiz limit was set, moved or lifted (the event list shows up to end()).
+    void limitChanged();
 
   private:
     SceneRef scene_;
@@ -117,6 +126,8 @@ class Session : public QObject {
     LogKind logKind_ = LogKind::None;
     std::unique_ptr<Replay> replay_ = std::make_unique<Replay>(*log_);  // over *log_
     std::size_t cursor_ = 0;
+    LogRef limitLog_;  // the log the limit belongs to (a lesson's trace)
+    std::optional<std::size_t> limit_;
 };
 
 }  // namespace raystep::gui

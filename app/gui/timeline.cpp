@@ -3,6 +3,7 @@
 
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QSlider>
 #include <QSpinBox>
@@ -12,21 +13,41 @@
 namespace raystep::gui {
 
 namespace {
-// Event kinds the timeline can jump to, with their variant index.
-const std::pair<const char*, std::size_t> kJumpKinds[] = {
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "DDA step"), variantIndex<DdaCell>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "primitive test"), variantIndex<PrimitiveTest>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "mailbox skip"), variantIndex<MailboxSkip>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "node enter"), variantIndex<NodeEnter>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "ray begin"), variantIndex<RayBegin>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "hit"), variantIndex<RayHit>()},
-    {QT_TRANSLATE_NOOP("raystep::gui::Timeline", "split chosen"), variantIndex<SplitChosen>()},
+// Event kinds the timeline can jump to (N), by variant index, in the order the combo lists them.
+const std::size_t kJumpKinds[] = {
+    variantIndex<DdaCell>(),     variantIndex<PrimitiveTest>(),  variantIndex<MailboxSkip>(),
+    variantIndex<NodeEnter>(),   variantIndex<RayBegin>(),       variantIndex<RayHit>(),
+    variantIndex<SplitChosen>(), variantIndex<SplitCandidate>(), variantIndex<BuildNode>(),
+    variantIndex<LeafMade>(),    variantIndex<DdaSetup>(),       variantIndex<NodeSkip>(),
+    variantIndex<ShadingTerm>(),
 };
+
+/// The combo's name of a kind (tr() with a literal each, so the catalogue test finds them).
+QString jumpKindLabel(std::size_t kind) {
+    if (kind == variantIndex<DdaCell>()) return Timeline::tr("DDA step");
+    if (kind == variantIndex<PrimitiveTest>()) return Timeline::tr("primitive test");
+    if (kind == variantIndex<MailboxSkip>()) return Timeline::tr("mailbox skip");
+    if (kind == variantIndex<NodeEnter>()) return Timeline::tr("node enter");
+    if (kind == variantIndex<RayBegin>()) return Timeline::tr("ray begin");
+    if (kind == variantIndex<RayHit>()) return Timeline::tr("hit");
+    if (kind == variantIndex<SplitChosen>()) return Timeline::tr("split chosen");
+    if (kind == variantIndex<SplitCandidate>()) return Timeline::tr("split candidate");
+    if (kind == variantIndex<BuildNode>()) return Timeline::tr("build node");
+    if (kind == variantIndex<LeafMade>()) return Timeline::tr("leaf made");
+    if (kind == variantIndex<DdaSetup>()) return Timeline::tr("DDA set-up");
+    if (kind == variantIndex<NodeSkip>()) return Timeline::tr("node skip");
+    return Timeline::tr("shading term");
+}
 }  // namespace
 
 Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
-    auto* tl = new QHBoxLayout(this);
-    tl->setContentsMargins(6, 2, 6, 2);
+    // The controls in a row; the quiz cue under them, only while an exercise stops the replay
+    // (beside them it squeezed the scrubber to nothing at 1366 pixels).
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(6, 2, 6, 2);
+    rows->setSpacing(2);
+    auto* tl = new QHBoxLayout;
+    rows->addLayout(tl);
     const auto button = [&](const QString& text, const QString& tip, auto slot) {
         auto* b = new QToolButton;
         b->setText(text);
@@ -40,8 +61,9 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     play_ = button(QStringLiteral(">"), tr("Play / pause (Space)"), [this] { togglePlay(); });
     button(QStringLiteral(">|"), tr("Step forward (Right)"), [this] { stepForward(); });
     kindCombo_ = new QComboBox;
-    // i18n: the kinds' names are marked with QT_TRANSLATE_NOOP in kJumpKinds.
-    for (const auto& [name, kind] : kJumpKinds) kindCombo_->addItem(tr(name));
+    kindCombo_->setObjectName("jumpKind");
+    for (const std::size_t kind : kJumpKinds)
+        kindCombo_->addItem(jumpKindLabel(kind), QVariant::fromValue<qulonglong>(kind));
     tl->addWidget(kindCombo_);
     button(tr("next"), tr("Jump to the next event of this kind (N)"),
            [this] { jumpToNextOfKind(); });
@@ -55,18 +77,27 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     tl->addWidget(scrubber_, 1);
     position_ = new QLabel;
     tl->addWidget(position_);
+    // Quiz mode: why the replay stops at an open exercise.
+    quizCue_ = new QLabel(tr("Answer the exercise to see what comes next"));
+    quizCue_->setObjectName("quizCue");
+    quizCue_->setStyleSheet(
+        QStringLiteral("#quizCue { background: #fff4d6; color: #5a4300; padding: 2px 6px; "
+                       "border: 1px solid #e0c070; border-radius: 3px; }"));
+    quizCue_->hide();
+    rows->addWidget(quizCue_, 0, Qt::AlignRight);
     connect(scrubber_, &QSlider::valueChanged, this,
             [this](int v) { session_.setCursor(static_cast<std::size_t>(v)); });
 
     timer_ = new QTimer(this);
     connect(timer_, &QTimer::timeout, this, [this] {
-        if (session_.cursor() >= session_.size()) return togglePlay();
+        if (session_.cursor() >= session_.end()) return togglePlay();
         stepForward();
     });
     connect(speed_, &QSpinBox::valueChanged, this,
             [this](int v) { timer_->setInterval(1000 / v); });
     timer_->setInterval(1000 / speed_->value());
     connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
+    connect(&session_, &Session::limitChanged, this, [this] { updateTimeline(); });
 }
 
 void Timeline::stepForward() {
@@ -76,16 +107,31 @@ void Timeline::stepBack() {
     if (session_.cursor() > 0) session_.setCursor(session_.cursor() - 1);
 }
 void Timeline::jumpToNextOfKind() {
-    const std::size_t kind = kJumpKinds[std::max(0, kindCombo_->currentIndex())].second;
-    const std::size_t at = session_.replay().nextOfKind(session_.cursor(), kind);
+    const std::size_t at = session_.replay().nextOfKind(session_.cursor(), jumpKind());
+    // Past an open exercise the session stops it at the exercise (quiz mode).
     session_.setCursor(at < session_.size() ? at + 1 : session_.size());
+}
+
+bool Timeline::setJumpKind(std::size_t eventKind) {
+    const int i = kindCombo_->findData(QVariant::fromValue<qulonglong>(eventKind));
+    if (i < 0) return false;
+    kindCombo_->setCurrentIndex(i);
+    return true;
+}
+
+std::size_t Timeline::jumpKind() const {
+    return static_cast<std::size_t>(kindCombo_->currentData().toULongLong());
+}
+
+QString Timeline::quizCue() const {
+    return quizCue_->isHidden() ? QString() : quizCue_->text();
 }
 void Timeline::togglePlay() {
     if (timer_->isActive()) {
         timer_->stop();
         play_->setText(QStringLiteral(">"));
     } else {
-        if (session_.cursor() >= session_.size()) session_.setCursor(0);
+        if (session_.cursor() >= session_.end()) session_.setCursor(0);
         timer_->start();
         play_->setText(QStringLiteral("||"));
     }
@@ -93,9 +139,11 @@ void Timeline::togglePlay() {
 
 void Timeline::updateTimeline() {
     const QSignalBlocker block(scrubber_);
-    scrubber_->setRange(0, static_cast<int>(session_.size()));
+    // In quiz mode the scrubber ends at the exercise: what lies past it is not shown.
+    scrubber_->setRange(0, static_cast<int>(session_.end()));
     scrubber_->setValue(static_cast<int>(session_.cursor()));
-    position_->setText(tr("%1 / %2").arg(session_.cursor()).arg(session_.size()));
+    position_->setText(tr("%1 / %2").arg(session_.cursor()).arg(session_.end()));
+    quizCue_->setVisible(session_.limit().has_value());
 }
 
 }  // namespace raystep::gui

@@ -28,12 +28,21 @@ class Timeline : public QWidget {
     /// The scrubber and the position label, from the session's cursor.
     void updateTimeline();
 
+  public:
+    /// N jumps to events of this kind (a variant index of Event); false if the combo lacks it.
+    bool setJumpKind(std::size_t eventKind);
+    /// The variant index N jumps to now.
+    std::size_t jumpKind() const;
+    /// The quiz cue ("Answer the exercise to see what comes next"), shown while a limit holds.
+    QString quizCue() const;
+
   private:
     Session& session_;
     QComboBox* kindCombo_ = nullptr;
     QSpinBox* speed_ = nullptr;
     QSlider* scrubber_ = nullptr;
     QLabel* position_ = nullptr;
+    QLabel* quizCue_ = nullptr;
     QToolButton* play_ = nullptr;
     QTimer* timer_ = nullptr;
 };

@@ -1,6 +1,7 @@
 #include "view2d.h"
 
 #include "language.h"
+#include "course/palette.h"
 
 #include <QMouseEvent>
 
@@ -14,14 +15,42 @@ namespace raystep::gui {
 namespace {
 const QColor kBackground(250, 250, 247);
 const QColor kGridLine(200, 200, 200);
-const QColor kVisited(255, 236, 160);
-const QColor kCurrent(255, 200, 60);
-const QColor kPrimitive(60, 60, 70);
-const QColor kTested(230, 120, 30);
-const QColor kSkipped(150, 150, 150);
-const QColor kHit(20, 150, 60);
-const QColor kRay(200, 30, 40);
+const QColor kPrimitive(60, 60, 70);  // untouched primitives: ink, not a role
+QColor colourOf(const PaletteColour& c, int alpha = 255) {
+    return QColor(c.r, c.g, c.b, alpha);
+}
+// The roles' colours come from the one palette (course/palette.h), as the lessons name them.
+QColor role(PaletteRole r, int alpha = 255) {
+    return colourOf(roleColour(r), alpha);
+}
+// Visited cells as a light tint of the palette's colour, so the grid and labels stay readable.
+const QColor kVisited = role(PaletteRole::Visited, 120);
+const QColor kCurrent = role(PaletteRole::Current, 200);
+const QColor kTested = role(PaletteRole::Tested);
+const QColor kSkipped = role(PaletteRole::Skipped);
+const QColor kHit = role(PaletteRole::Hit);
+const QColor kRay = colourOf(rayColour(RayKind::Primary));
 }  // namespace
+
+static QString roleLabel(PaletteRole r) {
+    switch (r) {
+        case PaletteRole::Visited:
+            return View2D::tr("visited cell");
+        case PaletteRole::Current:
+            return View2D::tr("current cell or node");
+        case PaletteRole::Tested:
+            return View2D::tr("tested primitive");
+        case PaletteRole::Skipped:
+            return View2D::tr("skipped (mailbox)");
+        case PaletteRole::Hit:
+            return View2D::tr("nearest hit");
+        case PaletteRole::Candidate:
+            return View2D::tr("candidate plane");
+        case PaletteRole::Chosen:
+            return View2D::tr("chosen plane");
+    }
+    return {};
+}
 
 View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
     // A click takes the keyboard from the answer box, so B, R and N reach the window.
@@ -49,9 +78,11 @@ void View2D::fit() const {
     const Vec2 size = world_.diagonal();
     // A build's replay keeps the bottom strip for the SAH cost chart.
     const double chart = session_.showingBuild() ? 130.0 : 0.0;
-    scale_ = std::min((width() - 20) / size.x, (height() - 40 - chart) / size.y);
-    offset_ =
-        QPointF((width() - scale_ * size.x) / 2, chart + (height() - chart - scale_ * size.y) / 2);
+    // The legend keeps a strip on the right (when the view is wide enough to spare it).
+    const double legend = width() > 560 ? legendWidth() + 12 : 0.0;
+    scale_ = std::min((width() - 20 - legend) / size.x, (height() - 40 - chart) / size.y);
+    offset_ = QPointF((width() - legend - scale_ * size.x) / 2,
+                      chart + (height() - chart - scale_ * size.y) / 2);
 }
 
 QPointF View2D::toScreen(const Vec2& p) const {
@@ -89,6 +120,11 @@ QPointF View2D::cellCentre(int x, int y) const {
     const auto& spec = grid->spec();
     return toScreen(
         Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0), spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
+}
+
+void View2D::setSequence(const QList<QPoint>& cells) {
+    sequence_ = cells;
+    update();
 }
 
 void View2D::mousePressEvent(QMouseEvent* e) {
@@ -154,7 +190,7 @@ void View2D::paintEvent(QPaintEvent*) {
     } else if (kd && st.node && st.node->node < kdBoxes_.size()) {
         const BoxN<2>& box = kdBoxes_[st.node->node];
         g.fillRect(QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
-                   kVisited);
+                   role(PaletteRole::Current, 110));
     }
 
     // A build being replayed: the node being split, the candidate planes so far, the choice.
@@ -189,13 +225,13 @@ void View2D::paintEvent(QPaintEvent*) {
     if (build && st.buildNode && st.buildNode->node < session_.log().nodes().size()) {
         const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
         const QRectF box(toScreen(Vec2(n.lo[0], n.hi[1])), toScreen(Vec2(n.hi[0], n.lo[1])));
-        g.fillRect(box, QColor(200, 225, 255, 110));
-        g.setPen(QPen(QColor(40, 90, 200), 2));
+        g.fillRect(box, role(PaletteRole::Current, 50));
+        g.setPen(QPen(role(PaletteRole::Current), 2));
         g.drawRect(box);
         // The most recent candidates (a big node has thousands; the chart shows them all).
         constexpr std::size_t kShown = 256;
         const std::size_t from = st.candidates.size() > kShown ? st.candidates.size() - kShown : 0;
-        g.setPen(QPen(QColor(40, 90, 200, 70), 1));  // solid: dashes are slow to rasterize
+        g.setPen(QPen(role(PaletteRole::Candidate, 110), 1));  // solid: dashes rasterize slowly
         for (std::size_t k = from; k < st.candidates.size(); ++k) {
             const SplitCandidate& c = st.candidates[k];
             const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
@@ -203,7 +239,7 @@ void View2D::paintEvent(QPaintEvent*) {
             g.drawLine(toScreen(a), toScreen(b));
         }
         if (st.chosen) {
-            g.setPen(QPen(QColor(200, 40, 40), 3));
+            g.setPen(QPen(role(PaletteRole::Chosen), 3));
             const auto& c = *st.chosen;
             const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
             const Vec2 b = c.axis == 0 ? Vec2(c.position, n.hi[1]) : Vec2(n.hi[0], c.position);
@@ -286,10 +322,73 @@ void View2D::paintEvent(QPaintEvent*) {
         }
     }
     if (build) drawCostChart(g, st);
+    if (grid && !build) {
+        // A sequence answer: each clicked cell with its place in the order, over the picture.
+        g.setFont([&] {
+            QFont f = g.font();
+            f.setBold(true);
+            f.setPointSizeF(f.pointSizeF() * 1.3);
+            return f;
+        }());
+        for (int k = 0; k < sequence_.size(); ++k) {
+            const QRectF cell = cellRect({sequence_[k].x(), sequence_[k].y(), 0}).normalized();
+            const double r = std::min(cell.width(), cell.height()) * 0.22;
+            const QPointF c = cell.center() + QPointF(cell.width() * 0.25, -cell.height() * 0.25);
+            g.setPen(QPen(QColor(30, 30, 30), 1.5));
+            g.setBrush(QColor(255, 255, 255, 230));
+            g.drawEllipse(c, r, r);
+            g.drawText(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r), Qt::AlignCenter,
+                       QString::number(k + 1));
+        }
+        g.setFont(font());
+    }
+    drawLegend(g, build);
     g.setPen(QColor(60, 60, 60));
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
                QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
                    structureName(session_.kind()));
+}
+
+double View2D::legendWidth() const {
+    double w = 0;
+    for (int r = 0; r < kPaletteRoleCount; ++r)
+        w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r))));
+    return w + 14 + 16;
+}
+
+void View2D::drawLegend(QPainter& g, bool build) const {
+    // The colour roles this picture uses, from the palette (the lessons name the same colours).
+    std::vector<std::pair<QColor, QString>> rows;
+    if (build) {
+        rows = {{role(PaletteRole::Current), roleLabel(PaletteRole::Current)},
+                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate)},
+                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen)}};
+    } else {
+        rows = {{kRay, tr("the ray")}};
+        rows.emplace_back(kVisited, roleLabel(PaletteRole::Visited));
+        rows.emplace_back(kCurrent, roleLabel(PaletteRole::Current));
+        for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
+            rows.emplace_back(role(r), roleLabel(r));
+    }
+    const QFontMetrics fm(g.font());
+    const double row = fm.height() + 2, swatch = 14;
+    double w = 0;
+    for (const auto& r : rows) w = std::max<double>(w, fm.horizontalAdvance(r.second));
+    const QRectF box(width() - (w + swatch + 22), 28, w + swatch + 16, row * rows.size() + 8);
+    g.save();
+    g.setPen(QColor(200, 200, 200));
+    g.setBrush(QColor(255, 255, 255, 225));
+    g.drawRoundedRect(box, 4, 4);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const double y = box.top() + 4 + row * k;
+        g.setPen(Qt::NoPen);
+        g.setBrush(rows[k].first);
+        g.drawRect(QRectF(box.left() + 6, y + (row - swatch) / 2, swatch, swatch));
+        g.setPen(QColor(40, 40, 40));
+        g.drawText(QRectF(box.left() + 10 + swatch, y, w + 4, row),
+                   Qt::AlignLeft | Qt::AlignVCenter, rows[k].second);
+    }
+    g.restore();
 }
 
 void View2D::drawPrimitive(QPainter& painter, std::uint32_t p) const {
@@ -391,7 +490,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
     g.drawLine(QPointF(chart.left(), yLeaf), QPointF(chart.right(), yLeaf));
     if (st.chosen) {
         g.setPen(Qt::NoPen);
-        g.setBrush(QColor(200, 40, 40));
+        g.setBrush(role(PaletteRole::Chosen));
         g.drawEllipse(at(st.chosen->axis, st.chosen->position, st.chosen->sahCost), 4, 4);
     }
     g.setPen(QColor(60, 60, 60));

@@ -25,8 +25,12 @@ class View2D : public QWidget {
     /// Where the centre of grid cell (x, y) is drawn (tests click there).
     QPointF cellCentre(int x, int y) const;
 
+  public slots:
+    /// The cells a student has clicked for a sequence exercise, numbered in order on the grid.
+    void setSequence(const QList<QPoint>& cells);
+
   signals:
-    /// A click on a grid cell (the lessons' "predict the next cell").
+    /// A click on a grid cell (the lessons' "predict the next cell", "order the cells").
     void cellClicked(int x, int y);
 
   protected:
@@ -37,6 +41,9 @@ class View2D : public QWidget {
     QPointF toScreen(const Vec2& p) const;
     Vec2 toWorld(QPointF p) const;
     void drawCostChart(QPainter& g, const ReplayState& st) const;
+    /// The colour roles of the picture (the palette's), top right.
+    void drawLegend(QPainter& g, bool build) const;
+    double legendWidth() const;
     void fit() const;  // the scene-to-widget mapping for the current size
 
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
@@ -47,6 +54,7 @@ class View2D : public QWidget {
     void indexBuild();
 
     Session& session_;
+    QList<QPoint> sequence_;  // a sequence answer's cells, in the order clicked
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;

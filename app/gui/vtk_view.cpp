@@ -1,5 +1,7 @@
 #include "vtk_view.h"
 
+#include "course/palette.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -37,10 +39,54 @@ vtkSmartPointer<vtkActor> linesActor(vtkPoints* points, vtkCellArray* lines,
     return actor;
 }
 
-/// Colours of the lecture's kinds of ray: primary, shadow, reflection, refraction, diffuse.
-constexpr unsigned char kRayColours[kRayKindCount][3] = {
-    {230, 60, 50}, {90, 90, 90}, {40, 120, 230}, {40, 190, 170}, {220, 160, 40}};
+/// A palette colour (course/palette.h, the one table) as VTK's cell colour.
+struct Rgb {
+    unsigned char c[3];
+    explicit Rgb(const PaletteColour& p) : c{p.r, p.g, p.b} {}
+    operator const unsigned char*() const { return c; }
+};
 }  // namespace
+
+QString rayKindLabel(RayKind kind) {
+    switch (kind) {
+        case RayKind::Primary:
+            return VtkView::tr("primary");
+        case RayKind::Shadow:
+            return VtkView::tr("shadow");
+        case RayKind::Reflection:
+            return VtkView::tr("reflection");
+        case RayKind::Refraction:
+            return VtkView::tr("refraction");
+        case RayKind::Diffuse:
+            return VtkView::tr("diffuse");
+    }
+    return {};
+}
+
+void drawRayLegend(QPainter& g, QPointF topLeft, bool dark) {
+    // One row a kind: a stroke in the ray's colour (the palette's) and its name.
+    const QFontMetrics fm(g.font());
+    const double row = fm.height() + 2, swatch = 22;
+    double width = 0;
+    for (int k = 0; k < kRayKindCount; ++k)
+        width = std::max<double>(width, fm.horizontalAdvance(rayKindLabel(RayKind(k))));
+    const QRectF box(topLeft, QSizeF(swatch + 18 + width, row * kRayKindCount + 8));
+    g.save();
+    g.setRenderHint(QPainter::Antialiasing);
+    g.setPen(Qt::NoPen);
+    g.setBrush(dark ? QColor(20, 22, 28, 200) : QColor(255, 255, 255, 220));
+    g.drawRoundedRect(box, 4, 4);
+    for (int k = 0; k < kRayKindCount; ++k) {
+        const PaletteColour& c = rayColour(RayKind(k));
+        const double y = box.top() + 4 + row * k + row / 2;
+        g.setPen(QPen(QColor(c.r, c.g, c.b), 3));
+        g.drawLine(QPointF(box.left() + 6, y), QPointF(box.left() + 6 + swatch, y));
+        g.setPen(dark ? QColor(235, 235, 235) : QColor(40, 40, 40));
+        g.drawText(QRectF(box.left() + 12 + swatch, y - row / 2, width + 4, row),
+                   Qt::AlignLeft | Qt::AlignVCenter, rayKindLabel(RayKind(k)));
+    }
+    g.restore();
+}
 
 VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(session) {
     // A click takes the keyboard from the answer box, so B, R and N reach the window.
@@ -182,7 +228,7 @@ void VtkView::rebuildRays() {
         const vtkIdType ids[2] = {points->InsertNextPoint(a.x, a.y, a.z),
                                   points->InsertNextPoint(b.x, b.y, b.z)};
         lines->InsertNextCell(2, ids);
-        colours->InsertNextTypedTuple(kRayColours[static_cast<int>(ray.kind)]);
+        colours->InsertNextTypedTuple(Rgb(rayColour(ray.kind)));
     }
     raysActor_ = linesActor(points, lines, colours, 2.5);
     renderer_->AddActor(raysActor_);
@@ -225,9 +271,11 @@ void VtkView::rebuildRays() {
         static const int edges[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
         addEdges(id, edges, colour);
     };
-    static const unsigned char kVoxel[3] = {255, 200, 60}, kNode[3] = {120, 200, 255},
-                               kHitMark[3] = {40, 220, 90}, kCandidate[3] = {150, 150, 160},
-                               kChosen[3] = {230, 50, 50};
+    // The 2D view's roles, from the one palette: visited voxels, the current node, hits, the
+    // build's candidate and chosen planes.
+    const Rgb kVoxel(roleColour(PaletteRole::Visited)), kNode(roleColour(PaletteRole::Current)),
+        kHitMark(roleColour(PaletteRole::Hit)), kCandidate(roleColour(PaletteRole::Candidate)),
+        kChosen(roleColour(PaletteRole::Chosen));
     const Accelerator* accel = session_.accel3D();
     if (const auto* grid = accel ? std::get_if<UniformGrid>(accel) : nullptr) {
         const auto& spec = grid->spec();
@@ -253,7 +301,7 @@ void VtkView::rebuildRays() {
                bvh && !session_.showingBuild()) {
         // Object subdivision: every box the ray has entered (they may overlap), the current one
         // brighter.
-        static const unsigned char kEntered[3] = {70, 110, 160};
+        const Rgb kEntered(roleColour(PaletteRole::Visited));
         for (const std::uint32_t n : st.nodesEntered)
             if (n < bvh->nodes().size())
                 box(bvh->nodes()[n].bounds.lo, bvh->nodes()[n].bounds.hi,
@@ -307,6 +355,8 @@ void VtkView::paintEvent(QPaintEvent*) {
     g.setPen(QColor(230, 230, 230));
     g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
                tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
+    // Which colour is which kind of ray (the lessons name the same colours).
+    if (!session_.showingBuild()) drawRayLegend(g, QPointF(8, 28), /*dark=*/true);
     dirty_ = false;
 }
 

@@ -10,12 +10,18 @@
 
 #include <QWidget>
 
+class QPainter;
 class vtkActor;
 class vtkGenericRenderWindowInteractor;
 class vtkRenderWindow;
 class vtkRenderer;
 
 namespace raystep::gui {
+
+/// The name of a kind of ray as the legend shows it ("primary", "shadow", ...).
+QString rayKindLabel(RayKind kind);
+/// The legend of the ray colours (the palette's), with its top left corner at `topLeft`.
+void drawRayLegend(QPainter& g, QPointF topLeft, bool dark);
 
 class VtkView : public QWidget {
     Q_OBJECT

@@ -279,22 +279,24 @@ TEST_F(Cli, TraceRecordsAPixelsRayTree) {
 }
 
 TEST_F(Cli, TwoDimensionalLectureScenes) {
-    // The slides' DDA example: cells (0,0) (1,0) (1,1) (2,1) ..., and the nearest hit found in
-    // cell (3,3) after a farther hit in cell (3,2): t = 2.204 / 0.63 on the short segment.
+    // The slides' DDA example: cells (0,0) (1,0) (1,1) (2,1) (3,1) ..., and the nearest hit found
+    // in cell (4,2) after a farther hit in cell (3,2): by hand, the small circle (4.3, 2.3) r 0.25
+    // at t = (3.88 - sqrt(0.0484)) / 0.8 = 4.575.
     const CliRun r = run("trace lecture-grid --accel grid -o g.json");
     ASSERT_EQ(r.code, 0) << r.err;
     const auto t = nlohmann::json::parse(slurp(dir / "g.json"));
     std::vector<std::vector<int>> cells;
     for (const auto& e : t["events"])
         if (e["type"] == "dda_cell") cells.push_back({e["cell"][0], e["cell"][1]});
-    ASSERT_GE(cells.size(), 4u);
+    ASSERT_GE(cells.size(), 5u);
     EXPECT_EQ(cells[0], (std::vector<int>{0, 0}));
     EXPECT_EQ(cells[1], (std::vector<int>{1, 0}));
     EXPECT_EQ(cells[2], (std::vector<int>{1, 1}));
     EXPECT_EQ(cells[3], (std::vector<int>{2, 1}));
-    EXPECT_EQ(cells.back(), (std::vector<int>{3, 3}));
+    EXPECT_EQ(cells[4], (std::vector<int>{3, 1}));
+    EXPECT_EQ(cells.back(), (std::vector<int>{4, 2}));
     EXPECT_EQ(t["events"].back()["type"], "ray_hit");
-    EXPECT_NEAR(t["events"].back()["t"].get<double>(), 2.204 / 0.63, 1e-12);
+    EXPECT_NEAR(t["events"].back()["t"].get<double>(), 4.575, 1e-12);
     const CliRun b = run("build lecture-kdtree --split sah --json");
     ASSERT_EQ(b.code, 0) << b.err;
     EXPECT_EQ(nlohmann::json::parse(b.out)["dimensions"], 2);
@@ -698,20 +700,213 @@ TEST_F(Cli, LessonKeyAndCheckGradeACoursesAnswers) {
     write("key.json", key.out);
     const CliRun full = run("lesson check 6 --answers key.json");
     ASSERT_EQ(full.code, 0) << full.err;
-    EXPECT_NE(full.out.find(": 3 / 3"), std::string::npos) << full.out;
+    // Every exercise of the lesson has an answer in the key.
+    const std::size_t exercises = nlohmann::json::parse(key.out)["answers"].size();
+    const std::string all = std::to_string(exercises);
+    EXPECT_NE(full.out.find(": " + all + " / " + all), std::string::npos) << full.out;
+    // By hand (o = (0.4, 0.4), d = (0.8, 0.4), cells of 1): tDeltaY = 1 / 0.4 = 2.5; in (2, 1)
+    // tMaxX = (3 - 0.4) / 0.8 = 3.25 < tMaxY = (2 - 0.4) / 0.4 = 4, so the next cell is (3, 1).
     std::ofstream(dir / "sheet.json") << R"({"lesson": "grid-2d-dda", "student": "ada",
-               "answers": {"tdelta-y": "1,3333", "tmax-x-after-step": 2.6, "next-cell": [3, 1]}})";
+               "answers": {"tdelta-y": "2,5", "tmax-x-after-step": 2, "next-cell": [2, 2]}})";
     const CliRun graded = run("lesson check grid-2d-dda --answers sheet.json --json");
     ASSERT_EQ(graded.code, 0) << graded.err;
     const auto j = nlohmann::json::parse(graded.out);
     EXPECT_EQ(j["score"], 1);
-    EXPECT_EQ(j["out_of"], 3);
+    EXPECT_EQ(j["out_of"], exercises);
     EXPECT_EQ(j["exercises"][0]["correct"], true);
-    EXPECT_EQ(j["exercises"][1]["correct"], false);
-    EXPECT_EQ(j["exercises"][1]["expected"], "1.6");
-    EXPECT_EQ(j["exercises"][2]["expected"], "2,2");
-    EXPECT_NE(j["exercises"][2]["feedback"].get<std::string>().find("steps in Y"),
+    EXPECT_EQ(j["exercises"][2]["correct"], false);
+    EXPECT_EQ(j["exercises"][2]["expected"], "3.25");
+    EXPECT_EQ(j["exercises"][3]["expected"], "3,1");
+    EXPECT_NE(j["exercises"][3]["feedback"].get<std::string>().find("steps in X"),
               std::string::npos);
+}
+
+// A lesson of its own, so the class tests do not follow the built-in lessons' edits: 4 x 4 unit
+// cells (the walls x = 0 and y = 0 give the bounds), the ray (0.5, 0.5) + t (1, 0.5). By hand:
+// tDeltaY = 1 / 0.5 = 2; in (0, 0) tMaxX = 0.5 < tMaxY = 1, so the second cell is (1, 0); the walk
+// (0, 0) (1, 0) (1, 1) (2, 1) (3, 1) (3, 2) leaves at x = 4 (t = 3.5): 6 cells.
+void writeClassLesson(const fs::path& dir) {
+    std::ofstream(dir / "room.json")
+        << R"({"dimensions": 2, "grid": [4, 4], "ray": {"origin": [0.5, 0.5], "dir": [1, 0.5]},
+               "segments": [{"from": [0, 0], "to": [4, 0]}, {"from": [0, 4], "to": [0, 0]}]})";
+    std::ofstream(dir / "walk.json") << R"({
+        "format": "raystep-lesson", "version": 1, "id": "walk", "number": 42,
+        "title": {"en": "Walk", "it": "Cammino"}, "text": {"en": "A walk.", "it": "Un cammino."},
+        "scene": "room.json", "setup": {"accel": "grid"}, "trace": {"ray": "example"},
+        "exercises": [
+          {"id": "tdelta-y", "type": "value", "quantity": "tDelta.y", "prompt": {"en": "?"}},
+          {"id": "next-cell", "type": "next_cell", "at": {"before": "dda_cell", "nth": 2},
+           "prompt": {"en": "?"}},
+          {"id": "cells", "type": "count", "count": "dda_cell", "prompt": {"en": "?"}}]})";
+}
+
+// A class of four sheets: per exercise, right, wrong, not answered and the most common wrong
+// answer; "-2" and "-2,0" read the same and count as one, "1|0" cannot be read and is wrong.
+TEST_F(Cli, LessonCheckOverAFolderGivesTheClassTable) {
+    writeClassLesson(dir);
+    const CliRun key = run("lesson key walk.json");
+    ASSERT_EQ(key.code, 0) << key.err;
+    const auto j = nlohmann::json::parse(key.out);
+    EXPECT_EQ(j["answers"]["tdelta-y"], "2");
+    EXPECT_EQ(j["answers"]["next-cell"], "1,0");
+    EXPECT_EQ(j["answers"]["cells"], "6");
+    fs::create_directories(dir / "class");
+    write("class/ada.json", R"({"lesson": "walk", "answers": {"tdelta-y": "2",
+        "next-cell": "1,0", "cells": 6}})");
+    write("class/bo.json", R"({"lesson": "walk", "answers": {"tdelta-y": "-2",
+        "next-cell": "0,1"}})");
+    write("class/cy.json", R"({"lesson": "walk", "answers": {"tdelta-y": "-2,0",
+        "next-cell": [0, 1], "cells": "5"}})");
+    write("class/di.json", R"({"lesson": 42, "answers": {"tdelta-y": "0.5",
+        "next-cell": "1|0", "cells": "6"}})");
+    write("class/notes.txt", "not a sheet: only *.json files are read");
+    const CliRun md = run("lesson check walk.json --answers class");
+    ASSERT_EQ(md.code, 0) << md.err;
+    EXPECT_NE(md.out.find("Lesson 42. Walk: 4 answer sheets"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| exercise | right answers | wrong answers | not answered | most "
+                          "common wrong answer | how many |"),
+              std::string::npos)
+        << md.out;
+    EXPECT_NE(md.out.find("| tdelta-y | 1 | 3 | 0 | -2 | 2 |"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| next-cell | 1 | 3 | 0 | 0,1 | 2 |"), std::string::npos) << md.out;
+    EXPECT_NE(md.out.find("| cells | 2 | 1 | 1 | 5 | 1 |"), std::string::npos) << md.out;
+    const CliRun csv = run("lesson check walk.json --answers class --format csv");
+    ASSERT_EQ(csv.code, 0) << csv.err;
+    EXPECT_EQ(csv.out,
+              "exercise,right,wrong,not_answered,most_common_wrong,how_many\n"
+              "tdelta-y,1,3,0,-2,2\n"
+              "next-cell,1,3,0,\"0,1\",2\n"
+              "cells,2,1,1,5,1\n");
+    const CliRun it = run("lesson check walk.json --answers class --lang it");
+    ASSERT_EQ(it.code, 0) << it.err;
+    EXPECT_NE(it.out.find("Lezione 42. Cammino: 4 fogli di risposte"), std::string::npos) << it.out;
+    EXPECT_NE(it.out.find("| esercizio | risposte giuste | risposte sbagliate | senza risposta |"),
+              std::string::npos)
+        << it.out;
+    // One sheet as a table, too.
+    const CliRun one = run("lesson check walk.json --answers class/bo.json --format csv");
+    ASSERT_EQ(one.code, 0) << one.err;
+    EXPECT_NE(one.out.find("cells,0,0,1,,\n"), std::string::npos) << one.out;
+}
+
+// A bad sheet anywhere in the folder: one line naming its file, line and key, exit 2, and no
+// table at all (nothing half written).
+TEST_F(Cli, LessonCheckOverAFolderStopsAtABadSheet) {
+    writeClassLesson(dir);
+    fs::create_directories(dir / "class");
+    write("class/a.json", R"({"lesson": "walk", "answers": {"next-cell": "1,0"}})");
+    write("class/b.json", "{\"lesson\": \"walk\",\n \"answers\": {\n \"next-cel\": [1, 0]}}");
+    write("class/c.json", R"({"lesson": "walk", "answers": {"next-cell": "0,1"}})");
+    const CliRun r = run("lesson check walk.json --answers class");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("class/b.json:3: key 'answers.next-cel': lesson walk has no exercise"),
+              std::string::npos)
+        << r.err;
+    write("class/b.json", "{\"lesson\": \"walk\",\n \"answers\": {\"next-cell\": {}}}");
+    const CliRun parse = run("lesson check walk.json --answers class --format csv");
+    EXPECT_EQ(parse.code, 2);
+    EXPECT_EQ(parse.out, "");
+    EXPECT_NE(parse.err.find("class/b.json:2: key 'answers.next-cell'"), std::string::npos)
+        << parse.err;
+    write("class/b.json", R"({"lesson": "7", "answers": {}})");
+    const CliRun other = run("lesson check walk.json --answers class");
+    EXPECT_EQ(other.code, 2);
+    EXPECT_NE(other.err.find("class/b.json:1: key 'lesson'"), std::string::npos) << other.err;
+    const CliRun format = run("lesson check walk.json --answers class/a.json --format html");
+    EXPECT_NE(format.code, 0);
+    EXPECT_EQ(format.out, "");
+}
+
+// Why a test misses, named from the scene. By hand, the ray (0.5, 0.5) + t (1, 0) through brute
+// force, primitives in id order: circle 0 at (2, 0.5), r 0.5, is hit at t = 1; circle 1 at
+// (4.5, 0.5), r 0.2, at t = 3.8, beyond it; circle 2 at (2.5, 3), r 0.5: B^2 - 4AC = 16 - 40 =
+// -24; segment 3 (x = 1.5, y 1 to 2) is met at y = 0.5, s = -0.5; segment 4 (x = 0.2) at
+// t = -0.3, behind the origin.
+TEST_F(Cli, AMissedTestNamesItsCause) {
+    write("misses.json", R"({"dimensions": 2, "grid": [4, 2],
+        "ray": {"origin": [0.5, 0.5], "dir": [1, 0]},
+        "circles": [{"center": [2, 0.5], "radius": 0.5}, {"center": [4.5, 0.5], "radius": 0.2},
+                    {"center": [2.5, 3], "radius": 0.5}],
+        "segments": [{"from": [1.5, 1], "to": [1.5, 2]}, {"from": [0.2, 0], "to": [0.2, 1]}]})");
+    std::string exercises;
+    for (int k = 2; k <= 5; ++k)
+        exercises += std::string(k > 2 ? "," : "") + R"({"id": "t)" + std::to_string(k) +
+                     R"(", "type": "hit_or_miss", "at": {"before": "primitive_test", "nth": )" +
+                     std::to_string(k) + R"(}, "prompt": {"en": "?"}})";
+    write("m.json", R"({"format": "raystep-lesson", "version": 1, "id": "m", "number": 43,
+        "title": {"en": "M"}, "text": {"en": "M."}, "scene": "misses.json",
+        "trace": {"ray": "example"}, "exercises": [)" +
+                        exercises + "]}");
+    write("a.json", R"({"lesson": "m", "answers": {"t2": "hit", "t3": "hit", "t4": "hit",
+        "t5": "hit"}})");
+    const CliRun r = run("lesson check m.json --answers a.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("Its intersection, t = 3.8, lies beyond the nearest one found so far "
+                         "(t = 1)."),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("The discriminant B² − 4AC = -24 is negative"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("outside the segment (at s = -0.5 of it"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("behind the origin (t = -0.3)"), std::string::npos) << r.out;
+    const CliRun it = run("lesson check m.json --answers a.json --lang it");
+    EXPECT_NE(it.out.find("Il discriminante B² − 4AC = -24 è negativo"), std::string::npos)
+        << it.out;
+}
+
+// A lesson file with errata and the new kinds: show prints the errata as a quoted block and the
+// options; key and check grade them. By hand: the sphere c = (0, 0, 0), R = 1 from o = (0, 0, 5)
+// along (0, 0, -1): A = 1, B = -10, C = 24, disc = 4, t = (10 - 2) / 2 = 4.
+TEST_F(Cli, ALessonWithErrataAndTheNewKinds) {
+    write("new.json", R"({
+        "format": "raystep-lesson", "version": 1, "id": "new", "number": 41,
+        "title": {"en": "New", "it": "Nuova"}, "text": {"en": "Text.", "it": "Testo."},
+        "errata": [{"slide": "C = ||dir - c||^2", "correct": "C = |o - c|^2 - R^2",
+                    "why": {"en": "The origin, not the direction.", "it": "L'origine."}}],
+        "scene": "lecture-grid", "setup": {"accel": "grid"}, "trace": {"ray": "example"},
+        "steps": [{"text": {"en": "The {colour:primary} ray.", "it": "Il raggio {colour:primary}."},
+                   "filter": "dda_cell"}],
+        "exercises": [
+          {"id": "disc", "type": "compute", "quantity": "discriminant",
+           "prompt": {"en": "o = (0, 0, 5), d = (0, 0, -1), c = (0, 0, 0), R = 1: the discriminant?",
+                      "it": "o = (0; 0; 5), d = (0; 0; -1), c = (0; 0; 0), R = 1: il discriminante?"},
+           "given": {"ray": {"o": [0, 0, 5], "d": [0, 0, -1]}, "sphere": {"c": [0, 0, 0], "r": 1}}},
+          {"id": "why", "type": "choice", "prompt": {"en": "Which?", "it": "Quale?"},
+           "choices": [{"text": {"en": "One", "it": "Uno"}, "why": {"en": "No.", "it": "No."}},
+                       {"text": {"en": "Two", "it": "Due"}, "why": {"en": "Yes.", "it": "Sì."}}],
+           "answer": 1}]})");
+    const CliRun v = run("lesson validate new.json");
+    ASSERT_EQ(v.code, 0) << v.err;
+    const CliRun show = run("lesson show new.json --lang it");
+    ASSERT_EQ(show.code, 0) << show.err;
+    EXPECT_NE(show.out.find("> **Nota sulle slide**"), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("> Slide: C = ||dir - c||^2"), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("> L'origine."), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("Il raggio rosso."), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("a) Uno\nb) Due"), std::string::npos) << show.out;
+    const CliRun key = run("lesson key new.json");
+    ASSERT_EQ(key.code, 0) << key.err;
+    const auto j = nlohmann::json::parse(key.out);
+    EXPECT_EQ(j["answers"]["disc"], "4");
+    EXPECT_EQ(j["answers"]["why"], "b");
+    write("sheet.json", R"({"lesson": "new", "answers": {"disc": "2", "why": "a"}})");
+    const CliRun graded = run("lesson check new.json --answers sheet.json --lang it");
+    ASSERT_EQ(graded.code, 0) << graded.err;
+    EXPECT_NE(graded.out.find("0 / 2"), std::string::npos) << graded.out;
+    EXPECT_NE(graded.out.find("Δ = B² − 4AC = (-10)² − 4 · 1 · 24 = 4"), std::string::npos)
+        << graded.out;
+    // The prompt must state the data: drop R = 1 from the Italian and validation names it.
+    std::string text = slurp(dir / "new.json");
+    text.replace(text.find("c = (0; 0; 0), R = 1"), 20, "c = (0; 0; 0)");
+    write("new.json", text);
+    const CliRun bad = run("lesson validate new.json");
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.err.find("key 'exercises[0].prompt.it': the prompt does not state the given "
+                           "number 1"),
+              std::string::npos)
+        << bad.err;
 }
 
 // A lecturer's own lesson beside its own scene file: the scene path is relative to the lesson.
@@ -770,14 +965,16 @@ class CliReaders : public Cli {
 
 TEST_F(CliReaders, AnswersFileThatIsAFolderOrMissing) {
     fs::create_directories(dir / "answers");
+    // A folder is a class's sheets: one without any is named.
     expectOneLine("lesson check 6 --answers answers",
-                  "answers: cannot read the answers file: it is a folder");
+                  "answers: no answer sheets (*.json files) in the folder");
     expectOneLine("lesson check 6 --answers none.json",
                   "none.json: cannot read the answers file: no such file");
 }
 
 TEST_F(CliReaders, ALessonNumberInTheAnswersFile) {
-    write("a.json", "{\"lesson\": 6, \"answers\": {\"next-cell\": [2, 2]}}");
+    // In (2, 1) tMaxX = 3.25 < tMaxY = 4 (lesson 6 by hand): the next cell is (3, 1).
+    write("a.json", "{\"lesson\": 6, \"answers\": {\"next-cell\": [3, 1]}}");
     const CliRun r = run("lesson check 6 --answers a.json --json");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["score"], 1);
@@ -831,7 +1028,7 @@ TEST_F(Cli, ControlCharactersInOptionsStayOneLine) {
 // Numbers at the extremes: the grid's lambda, the DDA's crossing times, the kernels' range.
 
 TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
-    // lambda is cells a primitive: more lambda, never fewer cells, never past the cap (a huge
+    // lambda is cells per primitive: more lambda, never fewer cells, never past the cap (a huge
     // lambda used to wrap through int to a one-cell grid).
     long last = 0;
     for (const char* lambda : {"0.001", "1", "4", "1e6", "2147483648", "1e300", "1.7e308"}) {
@@ -847,8 +1044,9 @@ TEST_F(Cli, GridLambdaIsMonotonicAndCapped) {
     }
     EXPECT_GT(last, 1L << 20);
     const CliRun help = run("render --help");
-    EXPECT_NE(help.out.find("cells a primitive"), std::string::npos) << help.out;
+    EXPECT_NE(help.out.find("cells per primitive"), std::string::npos) << help.out;
     EXPECT_EQ(help.out.find("primitives a cell"), std::string::npos) << help.out;
+    EXPECT_EQ(help.out.find("primitives per cell"), std::string::npos) << help.out;
 }
 
 TEST_F(Cli, GridRenderOfAHugeSceneIsRefusedByItsObject) {

@@ -180,7 +180,8 @@ TEST(EventText, TheRecorderSaysTheLogsDimension) {
     traceRay2D(buildAccelerator2D(s2, AccelKind::Grid), *s2.exampleRay, walk);
     for (const Event& e : walk.events())
         if (std::holds_alternative<DdaCell>(e)) {
-            EXPECT_EQ(eventText(e, walk.dims()), "cell (0, 0) (first cell), tMax (0.6, 0.8)");
+            // By hand: (1 - 0.4) / 0.8 and (1 - 0.4) / 0.4.
+            EXPECT_EQ(eventText(e, walk.dims()), "cell (0, 0) (first cell), tMax (0.75, 1.5)");
             break;
         }
 

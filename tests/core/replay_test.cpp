@@ -22,17 +22,18 @@ TEST(Replay, TheSlidesDdaExampleStepByStep) {
     std::get<UniformGridT<Scene2DPrims>>(grid).intersect(r, c, log, id);
 
     Replay replay(log);
-    // After the set-up and the first cell: X = 0, Y = 0, tMax = (0.6, 0.8), tDelta = (1, 4/3),
-    // by hand from the origin (0.4, 0.4), the direction (1, 0.75) and cells of 1.
+    // After the set-up and the first cell: X = 0, Y = 0, tMax = (0.6/0.8, 0.6/0.4) = (0.75, 1.5),
+    // tDelta = (1/0.8, 1/0.4) = (1.25, 2.5), by hand from the origin (0.4, 0.4), the direction
+    // (0.8, 0.4) and cells of 1.
     const std::size_t first = replay.nextOfKind(0, variantIndex<DdaCell>());
     const ReplayState& a = replay.seek(first + 1);
     ASSERT_TRUE(a.ddaSetup && a.ddaCell);
     EXPECT_EQ(a.ddaCell->cell[0], 0);
     EXPECT_EQ(a.ddaCell->cell[1], 0);
-    EXPECT_NEAR(a.ddaCell->tMax[0], 0.6, 1e-15);
-    EXPECT_NEAR(a.ddaCell->tMax[1], 0.8, 1e-15);
-    EXPECT_NEAR(a.ddaSetup->tDelta[0], 1.0, 1e-15);
-    EXPECT_NEAR(a.ddaSetup->tDelta[1], 4.0 / 3.0, 1e-15);
+    EXPECT_NEAR(a.ddaCell->tMax[0], 0.75, 1e-15);
+    EXPECT_NEAR(a.ddaCell->tMax[1], 1.5, 1e-15);
+    EXPECT_NEAR(a.ddaSetup->tDelta[0], 1.25, 1e-15);
+    EXPECT_NEAR(a.ddaSetup->tDelta[1], 2.5, 1e-15);
     // Three steps on: (1,0) by X, (1,1) by Y, (2,1) by X, as on the slides.
     std::size_t at = first;
     for (int i = 0; i < 3; ++i) at = replay.nextOfKind(at + 1, variantIndex<DdaCell>());
@@ -42,19 +43,23 @@ TEST(Replay, TheSlidesDdaExampleStepByStep) {
     EXPECT_EQ(b.visitedCells, cells);
     EXPECT_EQ(b.ddaCell->axes, 1u);  // stepped in X
     EXPECT_FALSE(b.nearestT);
-    // At the end: the circle hit in cell (3,2) beyond it, then the segment nearer in (3,3).
+    // At the end: the long segment hit in cell (3,2) beyond it (the cell ends at t = 4.5), then
+    // the small circle nearer in (4,2). The circle (4.3, 2.3), r 0.25, by hand: a = d.d = 0.8,
+    // b = (o - c).d = -3.88, c = |o - c|^2 - r^2 = 18.7575, b^2 - a c = 0.0484 = 0.22^2, so
+    // t = (3.88 - 0.22) / 0.8 = 4.575.
     const ReplayState& end = replay.seek(replay.size());
-    EXPECT_EQ(end.visitedCells.back(), (std::array<std::int32_t, 3>{3, 3, 0}));
+    EXPECT_EQ(end.visitedCells.back(), (std::array<std::int32_t, 3>{4, 2, 0}));
     ASSERT_TRUE(end.nearestT);
-    EXPECT_NEAR(*end.nearestT, 2.204 / 0.63, 1e-13);
-    // The circle's hit, by hand: (5.675 - sqrt(0.018125)) / 1.5625, seen before the segment's.
-    bool circleSeen = false;
+    EXPECT_NEAR(*end.nearestT, 4.575, 1e-13);
+    // The segment (3.7, 2.95)-(5.5, 2.25), by hand: 0.4 + 0.8 t = 3.7 + 1.8 s and
+    // 0.4 + 0.4 t = 2.95 - 0.7 s give s = 9/16, t = 345/64; seen before the circle's.
+    bool segmentSeen = false;
     for (const PrimitiveTest& t : end.tests)
-        if (t.hit && t.prim == 2) {
-            circleSeen = true;
-            EXPECT_NEAR(t.t, (5.675 - std::sqrt(0.018125)) / 1.5625, 1e-13);
+        if (t.hit && t.prim == 6) {
+            segmentSeen = true;
+            EXPECT_NEAR(t.t, 345.0 / 64.0, 1e-13);
         }
-    EXPECT_TRUE(circleSeen);
+    EXPECT_TRUE(segmentSeen);
     EXPECT_EQ(end.mailboxSkips.size(), c.mailboxSkips);
 }
 

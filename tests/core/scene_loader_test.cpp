@@ -31,7 +31,8 @@ constexpr const char* kMinimal = R"({"objects": [{"type": "sphere", "radius": 1}
 
 TEST(SceneLoader, EveryBuiltinSceneLoads) {
     const auto names = builtinSceneNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"cornell", "default", "stadium", "whitted"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"cornell", "default", "lecture-dda3d", "stadium",
+                                               "whitted"}));
     for (const auto& name : names) {
         const Scene s = loadBuiltinScene(name);
         EXPECT_EQ(s.name, name);
@@ -201,7 +202,7 @@ TEST(SceneLoader, MissingFileNamesIt) {
         FAIL() << "expected a SceneError";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.file(), "/nonexistent/scene.json");
-        EXPECT_NE(std::string(e.what()).find("built-in: cornell, default, stadium, whitted"),
+        EXPECT_NE(std::string(e.what()).find("built-in: cornell, default, lecture-dda3d, stadium, whitted"),
                   std::string::npos)
             << e.what();
     }

@@ -549,7 +549,8 @@ TEST(Trees2D, FindWhatBruteForceFinds) {
 }
 
 TEST(Scene2D, RayCircleAndSegmentByHand) {
-    // The lecture-grid example ray (0.4, 0.4) + t (1, 0.75), not of unit length.
+    // The ray (0.4, 0.4) + t (1, 0.75), not of unit length (lecture-grid's example ray before
+    // issue 17).
     const Ray2 r{Vec2(0.4, 0.4), Vec2(1.0, 0.75)};
     // Circle (4.2, 2.9), radius 0.3: a t^2 + 2 b t + c = 0 with a = 1.5625, b = -5.675,
     // c = 20.6; the nearer root (5.675 - sqrt(b^2 - a c)) / a, b^2 - a c = 0.018125.

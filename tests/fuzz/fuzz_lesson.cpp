@@ -13,6 +13,9 @@ namespace {
 // reader's, so such lessons are read but not validated.
 bool quickToValidate(const raystep::Lesson& l) {
     if (l.scene == "stadium") return false;
+    // A sweep_pick exercise runs the lesson's sweep (up to 256^3 cells per grid) to validate.
+    for (const raystep::Exercise& e : l.exercises)
+        if (e.kind == raystep::ExerciseKind::SweepPick) return false;
     const raystep::GridOptions& g = l.options.grid;
     if (g.res && static_cast<long>((*g.res)[0]) * (*g.res)[1] * (*g.res)[2] > 64 * 64 * 64)
         return false;

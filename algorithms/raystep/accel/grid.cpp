@@ -117,7 +117,7 @@ UniformGridT<Prims>::UniformGridT(Prims prims, const GridOptions& options)
              shrink *= 0.5)
             for (int i = 0; i < N; ++i) res[i] = std::max(1, static_cast<int>(asked[i] * shrink));
     } else {
-        // Cleary & Wyvill: lambda N cells in all, so lambda is cells a primitive. The total is
+        // Cleary & Wyvill: lambda N cells in all, so lambda is cells per primitive. The total is
         // clamped to [1, kMaxCells] before any conversion (NaN: one cell), so nothing wraps and
         // the cells never decrease as lambda grows.
         const VecN<N, double> d = 0.5 * b.hi - 0.5 * b.lo;  // half: never overflows

@@ -18,13 +18,13 @@
 namespace raystep {
 
 /// The grid's resolution: the Cleary-Wyvill rule, cells per axis d_i cbrt(lambda N / V) (in 2D
-/// d_i sqrt(lambda N / A)), that is lambda N cells for N primitives: lambda is cells a primitive
+/// d_i sqrt(lambda N / A)), that is lambda N cells for N primitives: lambda is cells per primitive
 /// (the lecture's 3 to 5 means a few cells for each primitive, not a few primitives a cell). The
 /// cells never decrease as lambda grows; memory is capped: at most kMaxCellsPerAxis on an axis,
 /// kMaxCells in all and kMaxReferences primitive listings (or N, if more). A rule's resolution
 /// past a cap is the largest that fits; an explicit `res` past one shrinks in proportion.
 struct GridOptions {
-    double lambda = 4.0;                    // Cleary-Wyvill density: about lambda cells a primitive
+    double lambda = 4.0;                    // Cleary-Wyvill density: lambda cells per primitive
     std::optional<std::array<int, 3>> res;  // explicit cells per axis instead of the rule
     bool mailbox = true;                    // test each primitive once per ray (mailboxing)
     static constexpr int kMaxCellsPerAxis = 512;

@@ -157,6 +157,21 @@ std::optional<TriangleHit<T>> intersectTrianglePlane(const TVec3<T>& o, const TV
     return TriangleHit<T>{t, u, v};
 }
 
+/// A ray against the plane of the points p with p.n = k (the slides' plane, with the sign that
+/// agrees with that equation): t = (k - o.n) / (d.n); nullopt when the ray is parallel to it or
+/// t is outside (tMin, tMax). The course's hand computations (app/course) ask for its steps.
+template <typename T, typename Steps = NoSteps>
+std::optional<T> intersectPlane(const TVec3<T>& o, const TVec3<T>& d, const TVec3<T>& n, T k,
+                                T tMin, T tMax, Steps&& steps = {}) {
+    const T denom = glm::dot(n, d);
+    steps("n.dir", denom);
+    if (denom == T(0) || !std::isfinite(denom)) return std::nullopt;  // parallel to the plane
+    const T t = (k - glm::dot(n, o)) / denom;
+    steps("t", t);
+    if (!(t > tMin && t < tMax)) return std::nullopt;
+    return t;
+}
+
 /// Moller-Trumbore: solves o + t d = a + u (b-a) + v (c-a) by Cramer's rule, no plane stored.
 template <typename T, typename Steps = NoSteps>
 std::optional<TriangleHit<T>> intersectTriangleMT(const TVec3<T>& o, const TVec3<T>& d,

@@ -1,0 +1,504 @@
+// Compute exercises: the answer from raystep's kernels, the working with the given numbers, and
+// the slips a wrong number betrays.
+#include "course/compute.h"
+
+#include "raystep/accel/dda.h"
+#include "raystep/accel/sah.h"
+#include "raystep/base/math.h"
+#include "raystep/geometry/intersect.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+namespace raystep {
+
+namespace {
+
+using Shape = ComputeGiven::Shape;
+using V3 = TVec3<double>;
+
+V3 vec(const std::array<double, 3>& a) {
+    return {a[0], a[1], a[2]};
+}
+
+/// A number in the working: the language's decimal mark, a negative one in brackets.
+std::string num(double v, Language lang) {
+    const std::string s = formatNumber(v == 0.0 ? 0.0 : v, lang);
+    return v < 0 ? "(" + s + ")" : s;
+}
+/// A tuple: "(1.5, 2, 0)"; in Italian "(1,5; 2; 0)", since the comma is the decimal mark.
+std::string tuple(const std::array<double, 3>& v, int dims, Language lang) {
+    std::string s = "(";
+    for (int i = 0; i < dims; ++i) {
+        if (i) s += lang == Language::It ? "; " : ", ";
+        s += formatNumber(v[i] == 0.0 ? 0.0 : v[i], lang);
+    }
+    return s + ")";
+}
+std::string tuple(const V3& v, Language lang) {
+    return tuple(std::array<double, 3>{v.x, v.y, v.z}, 3, lang);
+}
+
+bool close(double a, double b) {
+    return std::abs(a - b) <= 0.01 * std::max(1.0, std::abs(b));
+}
+
+/// Every quantity of the exercise's shape that its data define, by name, from the kernels.
+struct Evaluation {
+    std::map<std::string, double> q;
+    std::string undefinedWhy;  // English, for the lecturer's error message
+};
+
+Evaluation evaluate(const ComputeGiven& g) {
+    Evaluation e;
+    const V3 o = vec(g.o), d = vec(g.d);
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    switch (g.shape) {
+        case Shape::Sphere: {
+            StepLog log;
+            const auto t =
+                intersectSphereTextbook<double>(o, d, vec(g.center), g.radius, 0.0, kInf, log);
+            for (const auto& s : log.steps) e.q[s.name] = s.v[0];
+            if (t) e.q["t"] = *t;
+            if (!e.q.count("t0"))
+                e.undefinedWhy = "the ray misses the sphere (discriminant < 0)";
+            else if (!t)
+                e.undefinedWhy = "both roots lie behind the origin (the sphere is behind the ray)";
+            break;
+        }
+        case Shape::Triangle: {
+            StepLog log;
+            intersectTrianglePlane<double>(o, d, vec(g.tri[0]), vec(g.tri[1]), vec(g.tri[2]), 0.0,
+                                           kInf, log);
+            for (const auto& s : log.steps)
+                if (s.size == 1) e.q[s.name] = s.v[0];
+            if (!e.q.count("u"))
+                e.undefinedWhy =
+                    "the ray is parallel to the triangle or meets "
+                    "its plane behind the origin";
+            break;
+        }
+        case Shape::Plane: {
+            StepLog log;
+            intersectPlane<double>(o, d, vec(g.normal), g.k, -kInf, kInf, log);
+            for (const auto& s : log.steps) e.q[s.name] = s.v[0];
+            if (!e.q.count("t")) e.undefinedWhy = "the ray is parallel to the plane";
+            break;
+        }
+        case Shape::Box: {
+            const auto span = intersectBox<double>(o, d, vec(g.lo), vec(g.hi), 0.0, kInf);
+            if (!span) {
+                e.undefinedWhy = "the ray misses the box";
+                break;
+            }
+            e.q["t_enter"] = span->first;
+            e.q["t_exit"] = span->second;
+            break;
+        }
+        case Shape::Grid: {
+            const auto walk = [&](auto dimsTag) {
+                constexpr int N = decltype(dimsTag)::value;
+                GridSpec<N, double> spec;
+                for (int i = 0; i < N; ++i) {
+                    // Without "res", a grid of 1024 cells per axis: far larger than an example.
+                    spec.res[i] = g.res[i] > 0 ? g.res[i] : 1024;
+                    spec.lo[i] = g.lo[i];
+                    spec.hi[i] = g.lo[i] + spec.res[i] * g.hi[i];
+                }
+                VecN<N, double> oo, dd;
+                for (int i = 0; i < N; ++i) {
+                    oo[i] = g.o[i];
+                    dd[i] = g.d[i];
+                }
+                Dda<N, double> dda(spec, oo, dd);
+                if (!dda.valid()) {
+                    e.undefinedWhy = "the ray misses the grid";
+                    return;
+                }
+                for (int i = 0; i < N; ++i) {
+                    const std::string a(1, "xyz"[i]);
+                    e.q["cell." + a] = dda.cell()[i];
+                    e.q["tMax." + a] = dda.tMax()[i];
+                    e.q["tDelta." + a] = dda.tDelta()[i];
+                }
+                e.q["t_enter"] = dda.tEnter();
+            };
+            if (g.dims == 2)
+                walk(std::integral_constant<int, 2>{});
+            else
+                walk(std::integral_constant<int, 3>{});
+            break;
+        }
+        case Shape::Node: {
+            const auto costs = [&](auto dimsTag) {
+                constexpr int N = decltype(dimsTag)::value;
+                BoxN<N> box;
+                for (int i = 0; i < N; ++i) {
+                    box.lo[i] = g.lo[i];
+                    box.hi[i] = g.hi[i];
+                }
+                const auto [l, r] = box.splitAt(g.axis, g.at);
+                e.q["area"] = box.area();
+                e.q["areaL"] = l.area();
+                e.q["areaR"] = r.area();
+                e.q["pL"] = l.area() / box.area();
+                e.q["pR"] = r.area() / box.area();
+            };
+            if (g.dims == 2)
+                costs(std::integral_constant<int, 2>{});
+            else
+                costs(std::integral_constant<int, 3>{});
+            e.q["sahCost"] =
+                sahCost(g.cTrav, g.cIsect, g.emptyBonus, e.q["pL"], e.q["pR"],
+                        static_cast<std::uint32_t>(g.nl), static_cast<std::uint32_t>(g.nr));
+            break;
+        }
+    }
+    return e;
+}
+
+const char* axisLetter(int i) {
+    return i == 0 ? "x" : i == 1 ? "y" : "z";
+}
+int axisOf(const std::string& q) {
+    return q.back() - 'x';
+}
+
+}  // namespace
+
+double computeAnswer(const Exercise& ex, const std::string& lessonFile) {
+    const Evaluation e = evaluate(ex.given);
+    const auto it = e.q.find(ex.computeQuantity);
+    if (it == e.q.end() || !std::isfinite(it->second))
+        throw LessonError(lessonFile, ex.line, "exercises." + ex.id + ".given",
+                          ex.computeQuantity + " is not defined for these data: " +
+                              (e.undefinedWhy.empty() ? "it is infinite (the ray never crosses)"
+                                                      : e.undefinedWhy));
+    return it->second;
+}
+
+std::string computeWorking(const Exercise& ex, Language lang) {
+    const ComputeGiven& g = ex.given;
+    const Evaluation e = evaluate(g);
+    const auto q = [&](const char* name) {
+        const auto it = e.q.find(name);
+        return it == e.q.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+    };
+    const auto n = [&](double v) { return num(v, lang); };
+    const std::string& what = ex.computeQuantity;
+    const V3 o = vec(g.o), d = vec(g.d);
+    switch (g.shape) {
+        case Shape::Sphere: {
+            const V3 f = o - vec(g.center);
+            if (what == "a")
+                return "A = d·d = " + n(d.x) + "² + " + n(d.y) + "² + " + n(d.z) +
+                       "² = " + n(q("a")) + ".";
+            if (what == "b")
+                return "B = 2 d·(o − c) = 2 (" + n(d.x) + " · " + n(f.x) + " + " + n(d.y) + " · " +
+                       n(f.y) + " + " + n(d.z) + " · " + n(f.z) + ") = " + n(q("b")) + ".";
+            if (what == "c")
+                return "C = |o − c|² − R² = " + n(f.x) + "² + " + n(f.y) + "² + " + n(f.z) +
+                       "² − " + n(g.radius) + "² = " + n(q("c")) + ".";
+            const std::string abc = "A = " + n(q("a")) + ", B = " + n(q("b")) +
+                                    ", C = " + n(q("c")) + "; Δ = B² − 4AC = " + n(q("b")) +
+                                    "² − 4 · " + n(q("a")) + " · " + n(q("c")) + " = " +
+                                    n(q("discriminant"));
+            if (what == "discriminant") return abc + ".";
+            const std::string roots = abc + "; t0 = (−B − √Δ) / 2A = " + n(q("t0")) +
+                                      ", t1 = (−B + √Δ) / 2A = " + n(q("t1"));
+            if (what == "t0" || what == "t1") return roots + ".";
+            return roots + "; " +
+                   trf(lang, "t is the smaller root in front of the origin (t > 0): %1.",
+                       {n(q("t"))});
+        }
+        case Shape::Triangle: {
+            const V3 a = vec(g.tri[0]), b = vec(g.tri[1]), c = vec(g.tri[2]);
+            const V3 nn = glm::cross(b - a, c - a);
+            std::string s =
+                "n = (b − a) × (c − a) = " + tuple(nn, lang) + "; n·d = " + n(q("n.dir"));
+            if (what == "n.dir") return s + ".";
+            s += "; t = (n·a − n·o) / n·d = (" + n(glm::dot(nn, a)) + " − " + n(glm::dot(nn, o)) +
+                 ") / " + n(q("n.dir")) + " = " + n(q("t"));
+            if (what == "t") return s + ".";
+            const double t = q("t");
+            const V3 p = o + t * d;
+            s += "; p = o + t d = " + tuple(p, lang) + "; |n|² = " + n(glm::dot(nn, nn));
+            if (what == "u") return s + "; u = n·((p − a) × (c − a)) / |n|² = " + n(q("u")) + ".";
+            return s + "; v = n·((b − a) × (p − a)) / |n|² = " + n(q("v")) + ".";
+        }
+        case Shape::Plane: {
+            const V3 nn = vec(g.normal);
+            std::string s = "n·d = " + n(q("n.dir"));
+            if (what == "n.dir") return s + ".";
+            return s + "; t = (k − n·o) / (n·d) = (" + n(g.k) + " − " + n(glm::dot(nn, o)) +
+                   ") / " + n(q("n.dir")) + " = " + n(q("t")) + ".";
+        }
+        case Shape::Box: {
+            std::string s = tr(lang, "Per axis, the slab's times (min − o) / d and (max − o) / d:");
+            for (int i = 0; i < 3; ++i) {
+                if (g.d[i] == 0.0) continue;
+                double t0 = (g.lo[i] - g.o[i]) / g.d[i], t1 = (g.hi[i] - g.o[i]) / g.d[i];
+                if (t0 > t1) std::swap(t0, t1);
+                s += std::string(" ") + axisLetter(i) + " [" + n(t0) +
+                     (lang == Language::It ? "; " : ", ") + n(t1) + "]";
+            }
+            return s + "; " +
+                   (what == "t_enter"
+                        ? trf(lang, "t_enter is the largest entry (0 if the origin is inside): %1.",
+                              {n(q("t_enter"))})
+                        : trf(lang, "t_exit is the smallest exit: %1.", {n(q("t_exit"))}));
+        }
+        case Shape::Grid: {
+            const int i = axisOf(what);
+            const std::string a = axisLetter(i);
+            if (what.rfind("tDelta.", 0) == 0)
+                return "tDelta." + a + " = " + tr(lang, "cell size") + " / |d." + a +
+                       "| = " + n(g.hi[i]) + " / |" + n(g.d[i]) + "| = " + n(q(what.c_str())) + ".";
+            const double tEnter = q("t_enter");
+            const double p = g.o[i] + tEnter * g.d[i];
+            std::string s =
+                trf(lang, "The ray enters the grid at t_enter = %1, at %2 = %3 along %4",
+                    {n(tEnter), a, n(p), a}) +
+                "; cell." + a + " = ⌊(" + n(p) + " − " + n(g.lo[i]) + ") / " + n(g.hi[i]) + "⌋";
+            if (g.d[i] < 0)
+                s += " " + tr(lang, "(on a face, the cell below it, since d is negative)");
+            s += " = " + n(q(("cell." + a).c_str()));
+            if (what.rfind("cell.", 0) == 0) return s + ".";
+            const double cell = q(("cell." + a).c_str());
+            const double bound = g.lo[i] + (g.d[i] > 0 ? cell + 1 : cell) * g.hi[i];
+            return s + "; " + trf(lang, "the next boundary ahead is at %1 = %2", {a, n(bound)}) +
+                   ": tMax." + a + " = (" + n(bound) + " − " + n(g.o[i]) + ") / " + n(g.d[i]) +
+                   " = " + n(q(what.c_str())) + ".";
+        }
+        case Shape::Node: {
+            const std::string area = g.dims == 2 ? tr(lang, "perimeter") : tr(lang, "surface area");
+            std::string s =
+                trf(lang, "Area = the box's %1: Area(C) = %2, Area(L) = %3, Area(R) = %4",
+                    {area, n(q("area")), n(q("areaL")), n(q("areaR"))}) +
+                "; P(L|C) = Area(L) / Area(C) = " + n(q("pL")) +
+                ", P(R|C) = Area(R) / Area(C) = " + n(q("pR"));
+            if (what != "sahCost") return s + ".";
+            s +=
+                "; " +
+                trf(lang,
+                    "cost = C_trav + C_isect (P(L|C) NL + P(R|C) NR) = %1 + %2 (%3 · %4 + %5 · %6)",
+                    {n(g.cTrav), n(g.cIsect), n(q("pL")), std::to_string(g.nl), n(q("pR")),
+                     std::to_string(g.nr)});
+            if (g.nl == 0 || g.nr == 0)
+                s += " · (1 − " + n(g.emptyBonus) + ") " + tr(lang, "(a side is empty: the bonus)");
+            return s + " = " + n(q("sahCost")) + ".";
+        }
+    }
+    return "";
+}
+
+std::string computeSlip(const Exercise& ex, double given, Language lang) {
+    const ComputeGiven& g = ex.given;
+    const Evaluation e = evaluate(g);
+    const std::string& what = ex.computeQuantity;
+    const auto it = e.q.find(what);
+    if (it == e.q.end()) return "";
+    const double right = it->second;
+    if (close(given, right)) return "";
+    const auto q = [&](const char* name) {
+        const auto f = e.q.find(name);
+        return f == e.q.end() ? std::numeric_limits<double>::quiet_NaN() : f->second;
+    };
+    const auto n = [&](double v) { return formatNumber(v, lang); };
+    const V3 o = vec(g.o), d = vec(g.d);
+    switch (g.shape) {
+        case Shape::Sphere: {
+            const V3 f = o - vec(g.center);
+            const double r2 = g.radius * g.radius;
+            const double a = q("a"), b = q("b");
+            // The slide writes C = ||dir - c||^2: the direction instead of the origin, no -R^2.
+            const V3 fd = d - vec(g.center);
+            if (what == "c" && close(given, glm::dot(f, f)))
+                return trf(lang, "%1 is |o − c|² without − R²: C = |o − c|² − R² = %2.",
+                           {n(given), n(right)});
+            if (what == "c" &&
+                (close(given, glm::dot(fd, fd)) || close(given, glm::dot(fd, fd) - r2)))
+                return trf(lang,
+                           "%1 uses the direction d where the origin o belongs (the slide's C = "
+                           "||dir − c||² is a typo): C = |o − c|² − R² = %2.",
+                           {n(given), n(right)});
+            if (what == "discriminant" && close(given, b * b - 4 * a * glm::dot(f, f)))
+                return trf(lang, "%1 is B² − 4AC with C = |o − c|², without − R².", {n(given)});
+            if (what == "discriminant" && close(given, b * b - a * q("c")))
+                return trf(lang, "%1 is B² − AC: the discriminant is B² − 4AC.", {n(given)});
+            if (what == "t0" || what == "t1" || what == "t") {
+                const double t0 = q("t0"), t1 = q("t1");
+                const double other = close(right, t0) ? t1 : t0;
+                if (close(given, other))
+                    return trf(lang,
+                               "%1 is the other root: t0 = %2 is where the ray enters the sphere, "
+                               "t1 = %3 where it leaves; the intersection is the smaller root in "
+                               "front of the origin.",
+                               {n(given), n(t0), n(t1)});
+                const double sq = std::sqrt(std::max(0.0, q("discriminant")));
+                for (const double unhalved : {-b - sq, -b + sq})
+                    if (close(given, unhalved))
+                        return trf(lang,
+                                   "%1 is −B ∓ √Δ without the division by 2A (the slide leaves out "
+                                   "/2A): divide by 2A = %2.",
+                                   {n(given), n(2 * a)});
+            }
+            break;
+        }
+        case Shape::Triangle:
+            if (what == "u" && close(given, q("v")))
+                return trf(lang,
+                           "%1 is v, not u: u weighs corner b, v corner c (p = (1 − u − v) a + u b "
+                           "+ v c).",
+                           {n(given)});
+            if (what == "v" && close(given, q("u")))
+                return trf(lang,
+                           "%1 is u, not v: u weighs corner b, v corner c (p = (1 − u − v) a + u b "
+                           "+ v c).",
+                           {n(given)});
+            break;
+        case Shape::Plane:
+            if (what == "t") {
+                // The slide's t = -(o.n + d) / (dir.n), against its own plane p.n - d = 0.
+                const V3 nn = vec(g.normal);
+                if (close(given, -(glm::dot(o, nn) + g.k) / q("n.dir")))
+                    return trf(
+                        lang,
+                        "%1 follows the slide's t = −(o·n + d) / (dir·n), whose sign contradicts "
+                        "its own plane p·n − d = 0: with p·n = k, t = (k − o·n) / (d·n).",
+                        {n(given)});
+            }
+            break;
+        case Shape::Box:
+            if (what == "t_enter" && close(given, q("t_exit")))
+                return trf(lang,
+                           "%1 is t_exit: the ray enters at the largest of the slabs' entries.",
+                           {n(given)});
+            if (what == "t_exit" && close(given, q("t_enter")))
+                return trf(lang,
+                           "%1 is t_enter: the ray leaves at the smallest of the slabs' exits.",
+                           {n(given)});
+            {
+                // The smallest entry (or largest exit): one slab, not the box.
+                double minEnter = std::numeric_limits<double>::infinity(), maxExit = -minEnter;
+                for (int i = 0; i < 3; ++i) {
+                    if (g.d[i] == 0.0) continue;
+                    double t0 = (g.lo[i] - g.o[i]) / g.d[i], t1 = (g.hi[i] - g.o[i]) / g.d[i];
+                    if (t0 > t1) std::swap(t0, t1);
+                    minEnter = std::min(minEnter, t0);
+                    maxExit = std::max(maxExit, t1);
+                }
+                if ((what == "t_enter" && close(given, minEnter)) ||
+                    (what == "t_exit" && close(given, maxExit)))
+                    return trf(lang,
+                               "%1 is where the ray crosses one slab, not the box: the box is the "
+                               "overlap of the three slabs.",
+                               {n(given)});
+            }
+            break;
+        case Shape::Grid: {
+            const int i = axisOf(what);
+            const std::string a = axisLetter(i);
+            if (what.rfind("cell.", 0) == 0 && g.d[i] < 0 && std::abs(given - right) == 1.0)
+                return trf(lang,
+                           "%1 is one cell off: with d.%2 negative, the ray on a boundary is in "
+                           "the cell below it, and the index counts down from there.",
+                           {n(given), a});
+            if (what.rfind("tMax.", 0) == 0) {
+                const double cell = q(("cell." + a).c_str());
+                const double wrongBound = g.lo[i] + (g.d[i] > 0 ? cell : cell + 1) * g.hi[i];
+                if (close(given, (wrongBound - g.o[i]) / g.d[i]))
+                    return trf(
+                        lang,
+                        "%1 uses the boundary behind the ray: the next boundary ahead is at %2 = "
+                        "%3.",
+                        {n(given), a, n(g.lo[i] + (g.d[i] > 0 ? cell + 1 : cell) * g.hi[i])});
+            }
+            break;
+        }
+        case Shape::Node:
+            if (what == "pL" || what == "pR" || what == "sahCost") {
+                const double pl2 = q("pL") * q("pL"), pr2 = q("pR") * q("pR");
+                const double cost2 =
+                    sahCost(g.cTrav, g.cIsect, g.emptyBonus, pl2, pr2,
+                            static_cast<std::uint32_t>(g.nl), static_cast<std::uint32_t>(g.nr));
+                if ((what == "pL" && close(given, pl2)) || (what == "pR" && close(given, pr2)) ||
+                    (what == "sahCost" && close(given, cost2)))
+                    return trf(lang,
+                               "%1 takes the probability as Area²/Area² (the slide's slip): P(L|C) "
+                               "is Area(L) / Area(C), not squared.",
+                               {n(given)});
+            }
+            if (what == "sahCost" && (g.nl == 0 || g.nr == 0) &&
+                close(given, splitCost(g.cTrav, g.cIsect, q("pL"), q("pR"), g.nl, g.nr)))
+                return trf(lang,
+                           "%1 leaves out the empty-space bonus: a side is empty, so the cost is "
+                           "multiplied by (1 − %2).",
+                           {n(given), n(g.emptyBonus)});
+            if (what == "sahCost" && g.nl && g.nr && close(given, (1.0 - g.emptyBonus) * right))
+                return trf(lang, "%1 applies the empty-space bonus, but neither side is empty.",
+                           {n(given)});
+            break;
+    }
+    if (right != 0.0 && close(given, -right))
+        return trf(lang, "%1 has the wrong sign.", {n(given)});
+    return "";
+}
+
+std::vector<double> numbersInText(std::string_view text, Language lang) {
+    std::vector<double> out;
+    const auto digit = [&](std::size_t i) {
+        return i < text.size() && text[i] >= '0' && text[i] <= '9';
+    };
+    for (std::size_t i = 0; i < text.size();) {
+        if (!digit(i)) {
+            ++i;
+            continue;
+        }
+        // A number's start: digits not glued to a letter or a digit before them ("x2" is a name).
+        const bool glued =
+            i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_');
+        std::size_t j = i;
+        std::string s;
+        while (digit(j)) s += text[j++];
+        const char mark = lang == Language::It ? ',' : '.';
+        if ((j < text.size() && (text[j] == mark || text[j] == '.')) && digit(j + 1)) {
+            s += '.';
+            ++j;
+            while (digit(j)) s += text[j++];
+        }
+        if (j < text.size() && (text[j] == 'e' || text[j] == 'E') &&
+            (digit(j + 1) || ((text[j + 1] == '-' || text[j + 1] == '+') && digit(j + 2)))) {
+            s += text[j++];
+            while (j < text.size() && (digit(j) || text[j] == '-' || text[j] == '+'))
+                s += text[j++];
+        }
+        if (!glued) {
+            double v = std::strtod(s.c_str(), nullptr);
+            // A minus sign before it: '-' or the Unicode minus U+2212 (E2 88 92).
+            if (i >= 1 && text[i - 1] == '-') v = -v;
+            if (i >= 3 && text.substr(i - 3, 3) == "\xe2\x88\x92") v = -v;
+            out.push_back(v);
+        }
+        i = j;
+    }
+    return out;
+}
+
+std::vector<double> numbersNotInText(const std::vector<double>& numbers, std::string_view text,
+                                     Language lang) {
+    const std::vector<double> written = numbersInText(text, lang);
+    std::vector<double> missing;
+    for (const double v : numbers)
+        if (std::none_of(written.begin(), written.end(), [&](double w) {
+                return std::abs(w - v) <= 1e-9 * std::max(1.0, std::abs(v));
+            }))
+            missing.push_back(v);
+    return missing;
+}
+
+}  // namespace raystep

@@ -1,0 +1,71 @@
+// The palette's entries: Okabe-Ito (Okabe & Ito 2008, "Color Universal Design") and a grey.
+#include "course/palette.h"
+
+namespace raystep {
+
+namespace {
+constexpr std::array<PaletteColour, kRayKindCount + kPaletteRoleCount> kPalette{{
+    // Rays, on the 3D view's dark background: all bright enough to read there.
+    {"primary", 213, 94, 0, "red", "rosso"},  // Okabe-Ito vermilion
+    {"shadow", 240, 228, 66, "yellow", "giallo"},
+    {"reflection", 86, 180, 233, "sky blue", "azzurro"},
+    {"refraction", 204, 121, 167, "pink", "rosa"},  // reddish purple
+    {"diffuse", 0, 158, 115, "green", "verde"},     // bluish green
+    // The 2D view's roles, on its white background (its ray is drawn in the primary colour).
+    {"visited", 240, 228, 66, "yellow", "giallo"},
+    {"current", 230, 159, 0, "orange", "arancione"},
+    {"tested", 204, 121, 167, "pink", "rosa"},
+    {"skipped", 153, 153, 153, "grey", "grigio"},
+    {"hit", 0, 158, 115, "green", "verde"},
+    {"candidate", 86, 180, 233, "sky blue", "azzurro"},
+    {"chosen", 0, 114, 178, "blue", "blu"},
+}};
+static_assert(kRayKindCount == 5 && kPaletteRoleCount == 7);
+}  // namespace
+
+const PaletteColour& rayColour(RayKind k) {
+    return kPalette[static_cast<std::size_t>(k)];
+}
+
+const PaletteColour& roleColour(PaletteRole role) {
+    return kPalette[kRayKindCount + static_cast<std::size_t>(role)];
+}
+
+std::span<const PaletteColour> paletteColours() {
+    return kPalette;
+}
+
+std::optional<PaletteColour> paletteColour(std::string_view key) {
+    for (const PaletteColour& c : kPalette)
+        if (c.key == key) return c;
+    return std::nullopt;
+}
+
+std::optional<std::string> expandColourNames(std::string_view text, Language lang,
+                                             std::string* unknown) {
+    constexpr std::string_view kOpen = "{colour:";
+    std::string out;
+    std::size_t from = 0;
+    for (;;) {
+        const std::size_t at = text.find(kOpen, from);
+        if (at == std::string_view::npos) break;
+        const std::size_t close = text.find('}', at + kOpen.size());
+        if (close == std::string_view::npos) {
+            if (unknown) *unknown = std::string(text.substr(at));
+            return std::nullopt;
+        }
+        const std::string_view key = text.substr(at + kOpen.size(), close - at - kOpen.size());
+        const auto c = paletteColour(key);
+        if (!c) {
+            if (unknown) *unknown = std::string(key);
+            return std::nullopt;
+        }
+        out.append(text.substr(from, at - from));
+        out.append(c->name(lang));
+        from = close + 1;
+    }
+    out.append(text.substr(from));
+    return out;
+}
+
+}  // namespace raystep
