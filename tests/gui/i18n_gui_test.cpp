@@ -46,25 +46,28 @@ struct Shown {
     QString where, text;
 };
 
-/// Words that are the same in English and Italian: names (raystep, SAH, DDA, BVH, kd-tree, a
-/// built-in scene's file name), "File" and "pixel" (Italian uses them), "mailboxing" (the
-/// slides' word), and the board's symbols the inspector writes as the slides do (X, tMaxX, tDeltaX,
-/// stepX, t_enter, NL, P(L|C)).
+/// Words that are the same in English and Italian: names (raystep, SAH, DDA, BVH, kd-tree,
+/// mip-mapping, shadow and environment mapping, a built-in scene's file name), "File" and "pixel"
+/// (Italian uses them), "mailboxing" (the slides' word), single letters (labels), and the
+/// board's symbols the inspector writes as the slides do (tMaxX, tDeltaX, stepX, t_enter, NL).
 bool sameInBothLanguages(const QString& text) {
-    static const std::set<QString> kWords = {
-        "raystep", "pixel", "SAH",   "DDA",   "BVH",     "File",   "mailboxing", "X",
-        "Y",       "Z",     "t",     "tMaxX", "tMaxY",   "tMaxZ",  "tDeltaX",    "tDeltaY",
-        "tDeltaZ", "stepX", "stepY", "stepZ", "t_enter", "t_exit", "NL",         "NR",
-        "P",       "L",     "R",     "C",     "x",       "y",      "z"};
+    static const std::set<QString> kWords = {"raystep", "pixel",   "SAH",   "DDA",   "BVH",
+                                             "File",    "tMaxX",   "tMaxY", "tMaxZ", "tDeltaX",
+                                             "tDeltaY", "tDeltaZ", "stepX", "stepY", "stepZ",
+                                             "t_enter", "t_exit",  "NL",    "NR"};
     QString rest = text;
-    rest.remove(QLatin1Char('&')).remove(QStringLiteral("kd-tree"));
+    rest.remove(QLatin1Char('&'));
+    // Names of techniques Italian courses use as they are.
+    for (const char* term : {"kd-tree", "mip-mapping", "shadow mapping", "environment mapping"})
+        rest.remove(QString::fromLatin1(term), Qt::CaseInsensitive);
     rest.remove(QRegularExpression(QStringLiteral("<[^>]*>")));  // rich text's tags
     for (const std::string& name : builtinSceneNames()) rest.remove(QString::fromStdString(name));
     for (const std::string& name : builtinScene2DNames()) rest.remove(QString::fromStdString(name));
     static const QRegularExpression word(QStringLiteral("[A-Za-z_]+"));
     for (auto m = word.globalMatch(rest); m.hasNext();)
+        // A single letter is a label ("b)", "x = 2"), not English.
         if (const QString w = m.next().captured();
-            !kWords.count(w) && w.toLower() != QStringLiteral("mailboxing"))
+            w.size() > 1 && !kWords.count(w) && w.toLower() != QStringLiteral("mailboxing"))
             return false;
     return true;  // numbers, symbols and the words above only
 }
@@ -296,6 +299,8 @@ TEST(ItalianInterface, SameWordsAreAllowedOnlyFromTheShortList) {
     EXPECT_TRUE(sameInBothLanguages("x = 2,6   (NL 3, NR 13, P(L|C) 0,6413, P(R|C) 0,852)"));
     EXPECT_FALSE(sameInBothLanguages("Step >"));
     EXPECT_FALSE(sameInBothLanguages("nodes"));
+    EXPECT_TRUE(sameInBothLanguages("c) Mip-mapping"));
+    EXPECT_FALSE(sameInBothLanguages("b) Shadow rays"));
     // Numbers written the Italian way do not make a line Italian.
     EXPECT_EQ(wordsOf("hit at t = 0,5; u = -1,25e-05"), wordsOf("hit at t = 0.5, u = -1.25e-05"));
     EXPECT_NE(wordsOf("intersezione a t = 0,5"), wordsOf("hit at t = 0.5"));
