@@ -223,8 +223,6 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     noteRow_->hide();
     hasLesson_ = true;
     exploring_ = false;
-    // A lesson opens on its text and steps; an exercise opens when the student turns to it.
-    exerciseOpen_ = false;
     ownProgress_ = {};
     sweepRows_.clear();
     progress_ = progress ? progress : &ownProgress_;
@@ -234,7 +232,12 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     sweepButton_->setVisible(lesson.sweep.has_value());
     sweepTable_->hide();
     step_ = std::clamp(progress_->step, 0, std::max(0, int(lesson.steps.size()) - 1));
+    // A lesson opens on its first unsolved exercise, open: the replay stops at its position,
+    // so the steps cannot show its answer before the student predicts it ("Put away" frees it).
     exercise_ = 0;
+    while (exercise_ + 1 < static_cast<int>(lesson.exercises.size()) && solved(exercise_))
+        ++exercise_;
+    exerciseOpen_ = !lesson.exercises.empty() && !solved(exercise_);
     refreshText();
     refreshExercise();
     emit quizChanged();

@@ -8,6 +8,7 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include "course/exercise.h"
 #include "course/lesson_trace.h"
 
 #include "raystep/scene/scene_loader.h"
@@ -85,16 +86,17 @@ TEST(App, SteppingTheSlidesDdaShowsTheBoardsValues) {
     ASSERT_TRUE(open(w, "lecture-grid", AccelKind::Grid));
     Session& s = w.session();
     ASSERT_GT(s.size(), 10u);
-    // By hand: origin (0.4, 0.4), direction (1, 0.75), cells of 1: tMax (0.6, 0.8) in cell
-    // (0, 0); then X to (1, 0) with tMaxX 1.6; Y to (1, 1) with tMaxY 2.1333; X to (2, 1).
+    // By hand: origin (0.4, 0.4), direction (0.8, 0.4), cells of 1: tMax (0.75, 1.5) and
+    // tDelta (1.25, 2.5) in cell (0, 0); then X to (1, 0) with tMaxX 2; Y to (1, 1) with tMaxY 4;
+    // X to (2, 1) with tMaxX 3.25.
     s.setCursor(afterNth(s, variantIndex<DdaCell>(), 0));
     EXPECT_TRUE(w.inspectorText().contains("X = 0   Y = 0")) << w.inspectorText().toStdString();
-    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8"));
-    EXPECT_TRUE(w.inspectorText().contains("tDeltaX = 1   tDeltaY = 1.33333"));
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.75   tMaxY = 1.5"));
+    EXPECT_TRUE(w.inspectorText().contains("tDeltaX = 1.25   tDeltaY = 2.5"));
     const QImage first = grab(w.view2D());
     s.setCursor(afterNth(s, variantIndex<DdaCell>(), 3));
     EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1")) << w.inspectorText().toStdString();
-    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 2.6   tMaxY = 2.13333"));
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 3.25   tMaxY = 4"));
     const QImage fourth = grab(w.view2D());
     EXPECT_GT(colours(first), 20u);  // grid, cells, primitives, ray, labels
     EXPECT_NE(first, fourth);        // the current cell and the ray moved
@@ -294,30 +296,31 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
     ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
     LessonPanel* p = w.lessonPanel();
     ASSERT_TRUE(p->hasLesson());
+    p->closeExercise();  // the lecturer follows the steps: the first exercise put away
     EXPECT_TRUE(w.view2D()->isVisible());
     EXPECT_FALSE(w.view3D()->isVisible());
     // Step 2 is "after the first cell": the board's values, by hand as in the test above.
     p->goToStep(1);
-    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.6   tMaxY = 0.8"))
+    EXPECT_TRUE(w.inspectorText().contains("tMaxX = 0.75   tMaxY = 1.5"))
         << w.inspectorText().toStdString();
     const QImage step2 = grab(w.view2D());
-    p->goToStep(2);
+    p->goToStep(4);  // the slides' last frame
     EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1")) << w.inspectorText().toStdString();
     EXPECT_NE(grab(w.view2D()), step2);
 
-    // Exercise 3: the ray is in (2, 1); tMaxX 2.6 > tMaxY 2.133, so the next cell is (2, 2).
-    p->selectExercise(2);
+    // Exercise 4: the ray is in (2, 1); tMaxX 3.25 < tMaxY 4, so the next cell is (3, 1).
+    p->selectExercise(3);
     EXPECT_TRUE(w.inspectorText().contains("X = 2   Y = 1"));  // the replay waits before the step
     QApplication::processEvents();
-    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(3, 1).toPoint());
-    EXPECT_TRUE(p->feedback().startsWith("Not right")) << p->feedback().toStdString();
     QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(2, 2).toPoint());
+    EXPECT_TRUE(p->feedback().startsWith("Not right")) << p->feedback().toStdString();
+    QTest::mouseClick(w.view2D(), Qt::LeftButton, {}, w.view2D()->cellCentre(3, 1).toPoint());
     EXPECT_TRUE(p->feedback().startsWith("Right.")) << p->feedback().toStdString();
-    EXPECT_TRUE(p->feedback().contains("steps in Y")) << p->feedback().toStdString();
-    // Typed with an Italian decimal comma, within the tolerance: tDeltaY = 1 / 0.75.
+    EXPECT_TRUE(p->feedback().contains("steps in X")) << p->feedback().toStdString();
+    // Typed with an Italian decimal comma, within the tolerance: tDeltaY = 1 / 0.4.
     p->selectExercise(0);
-    EXPECT_FALSE(p->submit("1,3"));
-    EXPECT_TRUE(p->submit("1,333"));
+    EXPECT_FALSE(p->submit("2,4"));
+    EXPECT_TRUE(p->submit("2,5"));
 
     // The progress file: written atomically, read back by the core's parser.
     QFile f(w.progressPath());
@@ -326,14 +329,14 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
     const auto& rec = saved.lessons.at("grid-2d-dda").exercises;
     EXPECT_EQ(rec.at("next-cell").attempts, 2);
     EXPECT_TRUE(rec.at("next-cell").correct);
-    EXPECT_EQ(rec.at("next-cell").answer, "2,2");
+    EXPECT_EQ(rec.at("next-cell").answer, "3,1");
     EXPECT_EQ(rec.at("tdelta-y").attempts, 2);
-    EXPECT_EQ(saved.lessons.at("grid-2d-dda").step, 2);
+    EXPECT_EQ(saved.lessons.at("grid-2d-dda").step, 4);
 
     // Reopened, the lesson comes back at the step it was left on.
     MainWindow again;
     ASSERT_TRUE(openLesson(again, "6"));
-    EXPECT_EQ(again.lessonPanel()->step(), 2);
+    EXPECT_EQ(again.lessonPanel()->step(), 4);
 }
 
 TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
@@ -343,10 +346,16 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
     ASSERT_TRUE(openLesson(w, "building-kdtree"));
     LessonPanel* p = w.lessonPanel();
     EXPECT_TRUE(w.session().showingBuild());
-    p->selectExercise(0);
+    // The root's pick (the lesson asks for the costs of named planes first).
+    const auto& exercises = p->lesson().exercises;
+    const auto pickAt = std::find_if(exercises.begin(), exercises.end(), [](const Exercise& e) {
+        return e.kind == ExerciseKind::PickSplit;
+    });
+    ASSERT_NE(pickAt, exercises.end());
+    p->selectExercise(static_cast<int>(pickAt - exercises.begin()));
     EXPECT_TRUE(p->feedback().isEmpty());  // a student sees no answer
     const LessonRun run = runLesson(p->lesson());
-    const Answer ref = referenceAnswer(p->lesson().exercises[0], *run.log, p->lesson().file);
+    const Answer ref = referenceAnswer(*pickAt, *run.log, p->lesson().file);
     const QString pick = QStringLiteral("%1=%2")
                              .arg(QChar("xyz"[int(ref.numbers[0])]))
                              .arg(ref.numbers[1], 0, 'g', 17);
@@ -393,9 +402,12 @@ TEST(App, The3DDdaLessonShowsTheThirdAxis) {
     w.resize(1500, 900);
     w.show();
     ASSERT_TRUE(openLesson(w, "dda-3d"));
-    w.lessonPanel()->goToStep(1);  // after the second voxel
+    w.lessonPanel()->closeExercise();  // its first exercise (t_enter) would stop the replay
+    w.lessonPanel()->goToStep(1);  // after the first voxel
     const QString text = w.inspectorText();
-    for (const char* part : {"   Z = ", "tMaxZ = ", "tDeltaZ = ", "stepZ = ", "t_enter = 0"})
+    // The eye is outside the grid: t_enter = (2 - 5.2) / dz with dz = -0.79699 (by hand from the
+    // camera, lesson 7's calculation), 4.01512.
+    for (const char* part : {"   Z = ", "tMaxZ = ", "tDeltaZ = ", "stepZ = ", "t_enter = 4.01512"})
         EXPECT_TRUE(text.contains(part)) << part << "\n" << text.toStdString();
     w.tasks().cancel(TaskKind::Render);
 }
@@ -407,8 +419,21 @@ TEST(App, EveryLessonOpensAndEveryStepShows) {
     for (const Lesson& l : builtinLessons()) {
         SCOPED_TRACE(l.id);
         ASSERT_TRUE(openLesson(w, QString::fromStdString(l.id)));
+        // It opens on its first unsolved exercise (earlier tests may have solved some), open:
+        // no step goes past that exercise's position.
+        LessonPanel* p = w.lessonPanel();
+        const auto open = p->quizExercise();
+        const auto limit =
+            open ? quizLimit(l.exercises[std::size_t(*open)], w.session().log()) : std::nullopt;
         for (std::size_t i = 0; i < l.steps.size(); ++i) {
-            w.lessonPanel()->goToStep(static_cast<int>(i));
+            p->goToStep(static_cast<int>(i));
+            const std::size_t at = *resolvePosition(l.steps[i].at, w.session().log());
+            EXPECT_EQ(w.session().cursor(), limit ? std::min(at, *limit) : at);
+        }
+        // Put away, every step shows its own position.
+        p->closeExercise();
+        for (std::size_t i = 0; i < l.steps.size(); ++i) {
+            p->goToStep(static_cast<int>(i));
             EXPECT_EQ(w.session().cursor(), *resolvePosition(l.steps[i].at, w.session().log()));
         }
         EXPECT_GT(colours(grab(&w)), 50u);
@@ -749,9 +774,9 @@ TEST(AppLifetimes, TwoWindowsSavingProgressLoseNoAnswer) {
     ASSERT_TRUE(openLesson(a, "6"));
     ASSERT_TRUE(openLesson(b, "6"));
     a.lessonPanel()->selectExercise(0);
-    EXPECT_TRUE(a.lessonPanel()->submit("1.33333"));  // tDeltaY = 1 / 0.75
-    b.lessonPanel()->selectExercise(2);
-    EXPECT_FALSE(b.lessonPanel()->submit("3,1"));  // the next cell is (2, 2)
+    EXPECT_TRUE(a.lessonPanel()->submit("2.5"));  // tDeltaY = 1 / 0.4
+    b.lessonPanel()->selectExercise(3);
+    EXPECT_FALSE(b.lessonPanel()->submit("2,2"));  // the next cell is (3, 1)
     a.lessonPanel()->goToStep(1);                  // a saves again after b
     QFile f(a.progressPath());
     ASSERT_TRUE(f.open(QIODevice::ReadOnly));
@@ -759,7 +784,7 @@ TEST(AppLifetimes, TwoWindowsSavingProgressLoseNoAnswer) {
     const auto& ex = saved.lessons.at("grid-2d-dda").exercises;
     ASSERT_TRUE(ex.count("tdelta-y") && ex.count("next-cell"));
     EXPECT_TRUE(ex.at("tdelta-y").correct);
-    EXPECT_EQ(ex.at("next-cell").answer, "3,1");
+    EXPECT_EQ(ex.at("next-cell").answer, "2,2");
     EXPECT_EQ(saved.lessons.at("grid-2d-dda").step, 1);
 }
 

@@ -133,7 +133,14 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     const std::size_t limit = indexOfNth<DdaCell>(s.log(), 5);
     ASSERT_LT(limit + 3, s.size());  // there is something past it to hide
 
-    // Closed, the exercise stops nothing: End goes to the end.
+    // The lesson opens on its first exercise, open: End stops at its position (before the
+    // first cell). Put away, the exercise stops nothing: End goes to the end.
+    ASSERT_TRUE(p->exerciseOpen());
+    ASSERT_EQ(p->exercise(), 0);
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), *quizLimit(p->lesson().exercises[0], s.log()));
+    EXPECT_LT(s.cursor(), limit);
+    p->closeExercise();
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), s.size());
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
@@ -496,6 +503,7 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
 
     // The quiz lesson (mailboxing on) at its end: a primitive tested, one skipped, the hit.
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
+    w.lessonPanel()->closeExercise();  // the lesson opens on its first exercise: put it away
     QTest::keyClick(&w, Qt::Key_End);
     ASSERT_FALSE(w.session().state().mailboxSkips.empty());
     const QImage two = grab(w.view2D());
