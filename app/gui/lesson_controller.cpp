@@ -1,6 +1,8 @@
 // The lesson controller: a lesson's steps, exercises, progress and sweep, and the help texts.
 #include "lesson_controller.h"
 
+#include "course/palette.h"
+
 #include "event_list.h"
 #include "language.h"
 #include "lesson_panel.h"
@@ -281,7 +283,9 @@ QString LessonController::lectureText(const QString& name) const {
     const QString lang = lang_ == Language::It ? QStringLiteral("it") : QStringLiteral("en");
     QFile f(QStringLiteral(":/texts/%1/%2.md").arg(lang, name));
     if (!f.open(QIODevice::ReadOnly)) return {};
-    return QString::fromUtf8(f.readAll()).trimmed();
+    // Colours by their palette names ({colour:chosen}), as in the lessons: named once.
+    const auto text = expandColourNames(f.readAll().toStdString(), lang_, nullptr);
+    return text ? QString::fromStdString(*text).trimmed() : QString();
 }
 
 }  // namespace raystep::gui

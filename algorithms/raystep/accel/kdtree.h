@@ -4,8 +4,9 @@
 // the primitives' centres (median), or the plane of lowest Surface Area Heuristic cost (sah):
 //   Cost = C_trav + P(L|C) Cost(L) + P(R|C) Cost(R),  P(L|C) = Area(L) / Area(C),
 // with Cost(leaf) = C_isect N. The SAH build sweeps sorted split events and is O(N log N)
-// (Wald & Havran 2006). Traversal is the slides' TestTree: front to back with a stack, stopping
-// as soon as the nearest hit lies in the node being left.
+// (Wald & Havran 2006). Traversal is the slides' TestTree corrected: the slide's unordered
+// toVisit stopping at the first finite t can return a farther hit, so children are visited
+// front to back with a stack, stopping once the nearest hit lies in the node being left.
 #include "raystep/accel/query.h"
 #include "raystep/accel/sah.h"
 #include "raystep/base/progress.h"
@@ -109,8 +110,8 @@ class KdTree : public Queries<KdTree<Prims>, Prims> {
     template <typename Rec>
     void build(Rec& rec);
     template <bool AnyHit, typename Rec>
-    /// The slides' TestTree: the nodes the ray crosses, nearest first, stopping once the
-    /// nearest hit lies before the node being entered.
+    /// The slides' TestTree, corrected (lesson 10): the nodes the ray crosses, nearest first,
+    /// stopping once the nearest hit lies before the node being entered.
     std::optional<HitT> testTree(RayT ray, TraversalCounters& counters, Rec& rec,
                                  std::uint32_t rayId) const;
 
