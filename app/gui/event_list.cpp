@@ -1,8 +1,8 @@
 // The event list: the log's lines (event_text.h), filtered, following the replay's cursor.
 #include "event_list.h"
 
-#include "language.h"
 #include "course/lesson_trace.h"
+#include "language.h"
 
 #include "raystep/trace/event_text.h"
 

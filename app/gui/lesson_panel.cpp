@@ -1,6 +1,5 @@
 #include "lesson_panel.h"
 
-#include "language.h"
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QGroupBox>
@@ -15,6 +14,7 @@
 #include <QTextBrowser>
 #include <QTextTable>
 #include <QVBoxLayout>
+#include "language.h"
 
 namespace raystep::gui {
 
@@ -688,14 +688,11 @@ void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {
     sweepTable_->setRowCount(static_cast<int>(rows.size()));
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
         const GridSweepRow& row = rows[r];
-        const QStringList cells = {QString::number(row.resolution),
-                                   numberText(row.testsPerRay, 'f', 1),
-                                   numberText(row.cellsPerRay, 'f', 1),
-                                   numberText(row.traceMs, 'f', 1),
-                                   QString::number(row.cells),
-                                   QString::number(row.references),
-                                   numberText(row.buildMs, 'f', 1),
-                                   numberText(row.skipsPerRay, 'f', 1)};
+        const QStringList cells = {
+            QString::number(row.resolution),     numberText(row.testsPerRay, 'f', 1),
+            numberText(row.cellsPerRay, 'f', 1), numberText(row.traceMs, 'f', 1),
+            QString::number(row.cells),          QString::number(row.references),
+            numberText(row.buildMs, 'f', 1),     numberText(row.skipsPerRay, 'f', 1)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

@@ -1,7 +1,7 @@
 #include "view2d.h"
 
-#include "language.h"
 #include "course/palette.h"
+#include "language.h"
 
 #include <QMouseEvent>
 

@@ -202,7 +202,8 @@ TEST(SceneLoader, MissingFileNamesIt) {
         FAIL() << "expected a SceneError";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.file(), "/nonexistent/scene.json");
-        EXPECT_NE(std::string(e.what()).find("built-in: cornell, default, lecture-dda3d, stadium, whitted"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "built-in: cornell, default, lecture-dda3d, stadium, whitted"),
                   std::string::npos)
             << e.what();
     }

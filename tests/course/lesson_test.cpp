@@ -212,9 +212,8 @@ TEST(Lessons, TheVoxelSizeSweepIsCheapestAtEightCellsPerAxis) {
         int res;
         double tests, cells;
     };
-    const Hand hand[] = {{1, 25.125, 0.8375},         {2, 11.919375, 1.243958},
-                         {4, 5.688854, 2.348646},     {5, 4.631458, 2.895},
-                         {8, 3.069271, 4.633385},     {16, 2.347396, 9.219427}};
+    const Hand hand[] = {{1, 25.125, 0.8375},  {2, 11.919375, 1.243958}, {4, 5.688854, 2.348646},
+                         {5, 4.631458, 2.895}, {8, 3.069271, 4.633385},  {16, 2.347396, 9.219427}};
     for (const Hand& h : hand) {
         SCOPED_TRACE(h.res);
         const auto row = std::find_if(rows.begin(), rows.end(),
@@ -257,8 +256,7 @@ TEST(Lessons, TheHierarchiesLessonsTestTreeEntersFourNodesByHand) {
     // The box [0.8, 2.6] x [3.5, 6.5] around the big circle and the segment below it: the x slab
     // [0.6, 2.4], the y slab [(6.5 - 7.6) / -0.55, (3.5 - 7.6) / -0.55] = [2, 7.45]; the exit is
     // 2.4 (and the entry 2: the ray crosses the box, yet meets neither primitive).
-    EXPECT_NEAR(referenceAnswer(*l.exercise("box-exit"), *run.log, l.file).numbers[0], 2.4,
-                1e-12);
+    EXPECT_NEAR(referenceAnswer(*l.exercise("box-exit"), *run.log, l.file).numbers[0], 2.4, 1e-12);
     const Answer first = referenceAnswer(*l.exercise("first-leaf-test"), *run.log, l.file);
     ASSERT_TRUE(first.hit.has_value());
     EXPECT_FALSE(*first.hit);
@@ -293,8 +291,9 @@ TEST(Lessons, TheKdTreeLessonsCandidatesEqualAHandComputation) {
     EXPECT_TRUE(sawBest);
     const double p = 2119.0 / 2838.0;
     EXPECT_NEAR(sahCost(1.0, 5.0, 0.5, p, p, 4, 12), 86179.0 / 1419.0, 1e-9);
-    // The compute exercises: x = 1.5's P(L|C) (a cell 1 x 7: 16 / 28.38), the midpoint's and the median's costs (x = 6.4,
-    // N_L 9, N_R 10: cells 5.9 x 7 and 1.29 x 7, 1 + 5 (9 x 10/11 + 10 x 829/1419) = 100919/1419).
+    // The compute exercises: x = 1.5's P(L|C) (a cell 1 x 7: 16 / 28.38), the midpoint's and the
+    // median's costs (x = 6.4, N_L 9, N_R 10: cells 5.9 x 7 and 1.29 x 7, 1 + 5 (9 x 10/11 + 10 x
+    // 829/1419) = 100919/1419).
     const auto ref = [&](const char* id) {
         return referenceAnswer(*l.exercise(id), *run.log, l.file).numbers[0];
     };
@@ -526,7 +525,9 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
     EXPECT_EQ(rec.answer, "2,2");
     const std::string report = progressReport(back, builtinLessons(), Language::En);
     // Each row: the lesson's exercises, then done, right, attempts from p.
-    const auto exercises = [](const char* id) { return std::to_string(loadLesson(id).exercises.size()); };
+    const auto exercises = [](const char* id) {
+        return std::to_string(loadLesson(id).exercises.size());
+    };
     EXPECT_NE(report.find("| 6. The uniform grid and the 2D DDA, step by step | " + exercises("6") +
                           " | 1 | 1 | 3 |"),
               std::string::npos)

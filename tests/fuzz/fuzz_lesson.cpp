@@ -2,9 +2,9 @@
 // loaded, the structure built, the trace recorded, every position and answer looked up).
 // The lesson "lives" in a folder that does not exist, so a relative scene path finds no file;
 // a built-in scene name works as in a real lesson.
-#include "fuzz_support.h"
 #include "course/grading.h"
 #include "course/lesson.h"
+#include "fuzz_support.h"
 
 namespace {
 

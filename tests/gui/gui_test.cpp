@@ -403,7 +403,7 @@ TEST(App, The3DDdaLessonShowsTheThirdAxis) {
     w.show();
     ASSERT_TRUE(openLesson(w, "dda-3d"));
     w.lessonPanel()->closeExercise();  // its first exercise (t_enter) would stop the replay
-    w.lessonPanel()->goToStep(1);  // after the first voxel
+    w.lessonPanel()->goToStep(1);      // after the first voxel
     const QString text = w.inspectorText();
     // The eye is outside the grid: t_enter = (2 - 5.2) / dz with dz = -0.79699 (by hand from the
     // camera, lesson 7's calculation), 4.01512.
