@@ -2,6 +2,8 @@
 // slip a student's number betrays, Italian answers and messages, and quiz mode's checks. Every
 // reference value below is computed by hand (the comments show how) or in Python, never read
 // from raystep.
+#include "lesson_test_util.h"
+
 #include "course/compute.h"
 #include "course/exercise.h"
 #include "course/grading.h"
@@ -18,6 +20,8 @@
 namespace raystep {
 namespace {
 
+using test::expectLessonError;
+
 // A lesson over the lecture grid (6 x 4 unit cells) and its example ray o = (0.4, 0.4),
 // d = (1, 0.75); `trace` replaces the trace, `extra` adds keys.
 std::string lessonWith(const std::string& extra, const std::string& trace = "\"example\"",
@@ -30,18 +34,6 @@ std::string lessonWith(const std::string& extra, const std::string& trace = "\"e
 
 bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
-}
-
-void expectLessonError(const std::string& text, int line, const std::string& key,
-                       const std::string& words) {
-    try {
-        loadLessonText(text, "bad.json");
-        ADD_FAILURE() << "no error for: " << text;
-    } catch (const LessonError& e) {
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_EQ(e.key(), key) << e.what();
-        EXPECT_TRUE(has(e.what(), words)) << e.what();
-    }
 }
 
 /// A compute exercise: `given` and `quantity`, the prompt stating `prompt`.

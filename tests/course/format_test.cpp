@@ -1,5 +1,7 @@
 // The lesson format's additions of issue 17 (docs/lesson-format.md): slide errata, hints given one
 // at a time, colour names from the one palette, and step filters that must show an event.
+#include "lesson_test_util.h"
+
 #include "course/exercise.h"
 #include "course/grading.h"
 #include "course/lesson.h"
@@ -14,26 +16,8 @@
 namespace raystep {
 namespace {
 
-// A valid lesson over the lecture grid's example ray, with `extra` keys from line 11 on.
-std::string lessonWith(const std::string& extra) {
-    return "{\n\"format\": \"raystep-lesson\",\n\"version\": 1,\n\"id\": \"t\",\n\"number\": 1,\n"
-           "\"title\": {\"en\": \"T\"},\n\"text\": {\"en\": \"x\"},\n\"scene\": \"lecture-grid\",\n"
-           "\"setup\": {\"accel\": \"grid\"},\n\"trace\": {\"ray\": \"example\"}" +
-           extra + "\n}";
-}
-
-void expectLessonError(const std::string& text, int line, const std::string& key,
-                       const std::string& words) {
-    try {
-        loadLessonText(text, "bad.json");
-        ADD_FAILURE() << "no error for: " << text;
-    } catch (const LessonError& e) {
-        EXPECT_EQ(e.file(), "bad.json");
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_EQ(e.key(), key) << e.what();
-        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
-}
+using test::expectLessonError;
+using test::lessonWith;
 
 TEST(LessonFormat, ErrataOnTheLessonAndOnAStep) {
     const Lesson l = loadLessonText(

@@ -1,10 +1,12 @@
 // Lessons: every built-in lesson loads, records its trace and replays each step; every exercise's
 // reference answer passes its own check and a wrong one fails; the references of the slides'
 // examples equal a hand computation; bad lesson, answers and progress files name line and key.
-#include "course/lesson.h"
+#include "lesson_test_util.h"
+
 #include "course/exercise.h"
 #include "course/grading.h"
 #include "course/grid_sweep.h"
+#include "course/lesson.h"
 #include "course/lesson_trace.h"
 #include "course/progress.h"
 
@@ -21,6 +23,9 @@
 
 namespace raystep {
 namespace {
+
+using test::expectLessonError;
+using test::lessonWith;
 
 TEST(Lessons, ThirteenInTheLecturesOrderEachInBothLanguages) {
     const std::vector<Lesson> lessons = builtinLessons();
@@ -352,26 +357,6 @@ TEST(Lessons, AnswersAreParsedAsTyped) {
     EXPECT_EQ(h->numbers[0], 3.5);
     EXPECT_FALSE(parseAnswer(hit, "hit", &why)) << "the t is asked";
     EXPECT_FALSE(parseAnswer(hit, "maybe", &why));
-}
-
-std::string lessonWith(const std::string& extra) {
-    return "{\n\"format\": \"raystep-lesson\",\n\"version\": 1,\n\"id\": \"t\",\n\"number\": 1,\n"
-           "\"title\": {\"en\": \"T\"},\n\"text\": {\"en\": \"x\"},\n\"scene\": \"lecture-grid\",\n"
-           "\"setup\": {\"accel\": \"grid\"},\n\"trace\": {\"ray\": \"example\"}" +
-           extra + "\n}";
-}
-
-void expectLessonError(const std::string& text, int line, const std::string& key,
-                       const std::string& words) {
-    try {
-        loadLessonText(text, "bad.json");
-        ADD_FAILURE() << "no error for: " << text;
-    } catch (const LessonError& e) {
-        EXPECT_EQ(e.file(), "bad.json");
-        EXPECT_EQ(e.line(), line) << e.what();
-        EXPECT_EQ(e.key(), key) << e.what();
-        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
 }
 
 TEST(Lessons, ABadLessonFileNamesLineAndKey) {
