@@ -6,7 +6,7 @@ namespace raystep {
 namespace {
 constexpr std::array<PaletteColour, kRayKindCount + kPaletteRoleCount> kPalette{{
     // Rays, on the 3D view's dark background: all bright enough to read there.
-    {"primary", 213, 94, 0, "red", "rosso"},  // Okabe-Ito vermilion
+    {"primary", 213, 94, 0, "orange-red", "rosso arancio"},  // Okabe-Ito vermilion
     {"shadow", 240, 228, 66, "yellow", "giallo"},
     {"reflection", 86, 180, 233, "sky blue", "azzurro"},
     {"refraction", 204, 121, 167, "pink", "rosa"},  // reddish purple
