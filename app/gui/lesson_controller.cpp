@@ -125,14 +125,18 @@ void LessonController::backToLesson() {
 
 void LessonController::updateQuizLimit() {
     const LogRef& log = lesson_->lessonLog();
-    const auto quiz = lesson_->quizExercise();
-    if (!lesson_->hasLesson() || !log || !quiz) {
+    if (!lesson_->hasLesson() || !log) {
         session_.setLimit(nullptr, std::nullopt);
         return;
     }
-    // The exercise's own position: what lies after it holds its answer (course/exercise.h;
-    // none for the kinds whose answer is not in the trace).
-    session_.setLimit(log, quizLimit(lesson_->lesson().exercises[*quiz], *log));
+    // Every unsolved exercise holds the replay at its own position, open or not: what lies
+    // after it holds its answer (course/exercise.h; none for the kinds whose answer is not in
+    // the trace). Otherwise a step, or the list, shows a later exercise's answer first.
+    std::optional<std::size_t> limit;
+    for (const int i : lesson_->heldExercises())
+        if (const auto at = quizLimit(lesson_->lesson().exercises[std::size_t(i)], *log))
+            limit = limit ? std::min(*limit, *at) : *at;
+    session_.setLimit(log, limit);
 }
 
 void LessonController::applyStep(int index) {

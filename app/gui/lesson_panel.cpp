@@ -238,6 +238,7 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     while (exercise_ + 1 < static_cast<int>(lesson.exercises.size()) && solved(exercise_))
         ++exercise_;
     exerciseOpen_ = !lesson.exercises.empty() && !solved(exercise_);
+    putAway_.clear();
     refreshText();
     refreshExercise();
     emit quizChanged();
@@ -280,6 +281,7 @@ void LessonPanel::selectExercise(int index) {
     if (!hasLesson_ || lesson_.exercises.empty()) return;
     exercise_ = std::clamp(index, 0, static_cast<int>(lesson_.exercises.size()) - 1);
     exerciseOpen_ = true;
+    putAway_.erase(exercise_);
     refreshExercise();
     emit quizChanged();
     emit exerciseShown(exercise_);
@@ -288,8 +290,17 @@ void LessonPanel::selectExercise(int index) {
 void LessonPanel::closeExercise() {
     if (!exerciseOpen_) return;
     exerciseOpen_ = false;
+    putAway_.insert(exercise_);
     updateExerciseBox();
     emit quizChanged();
+}
+
+std::vector<int> LessonPanel::heldExercises() const {
+    std::vector<int> held;
+    if (!hasLesson_ || lecturer_) return held;
+    for (int i = 0; i < static_cast<int>(lesson_.exercises.size()); ++i)
+        if (!solved(i) && !putAway_.count(i)) held.push_back(i);
+    return held;
 }
 
 std::optional<int> LessonPanel::quizExercise() const {

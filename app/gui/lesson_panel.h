@@ -15,6 +15,7 @@
 #include <QWidget>
 
 #include <optional>
+#include <set>
 
 #include <vector>
 
@@ -64,12 +65,16 @@ class LessonPanel : public QWidget {
     void goToStep(int index);
     /// Shows and opens exercise `index` (the replay goes to its position).
     void selectExercise(int index);
-    /// Puts the open exercise away (the replay may then go anywhere).
+    /// Puts the open exercise away: the student chooses to look past its position (the other
+    /// unsolved exercises still hold the replay at theirs).
     void closeExercise();
     bool exerciseOpen() const { return hasLesson_ && exerciseOpen_; }
     /// Quiz mode: the exercise that stops the replay at its position (open, not yet answered
     /// right, lecturer mode off), if any.
     std::optional<int> quizExercise() const;
+    /// The exercises that hold the replay: every unsolved one the student has not put away
+    /// (none in lecturer mode). The replay stops at the earliest of their positions.
+    std::vector<int> heldExercises() const;
     /// Lessons > Show notes on the slides: the errata boxes under the texts.
     void setShowErrata(bool on);
     bool showErrata() const { return showErrata_; }
@@ -121,6 +126,7 @@ class LessonPanel : public QWidget {
     bool lecturer_ = false;
     bool exploring_ = false;
     bool exerciseOpen_ = false;
+    std::set<int> putAway_;  // exercises the student chose to look past (Put away)
     bool showErrata_ = true;
     int hintsShown_ = 0;
     int step_ = 0;

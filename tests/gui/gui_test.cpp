@@ -43,6 +43,15 @@
 namespace raystep::gui {
 namespace {
 
+/// Puts every exercise of the open lesson away, as a student who chooses to look past them
+/// does: no exercise then holds the replay.
+void putAwayAll(LessonPanel* p) {
+    for (int i = 0; i < static_cast<int>(p->lesson().exercises.size()); ++i) {
+        p->selectExercise(i);
+        p->closeExercise();
+    }
+}
+
 /// Distinct colours in an image: a blank (one-colour) view has 1.
 std::size_t colours(const QImage& image) {
     std::set<QRgb> seen;
@@ -296,7 +305,7 @@ TEST(App, ALessonsStepsAndExercisesFollowTheTrace) {
     ASSERT_TRUE(openLesson(w, "grid-2d-dda"));
     LessonPanel* p = w.lessonPanel();
     ASSERT_TRUE(p->hasLesson());
-    p->closeExercise();  // the lecturer follows the steps: the first exercise put away
+    putAwayAll(p);  // the student follows the steps, looking past the exercises
     EXPECT_TRUE(w.view2D()->isVisible());
     EXPECT_FALSE(w.view3D()->isVisible());
     // Step 2 is "after the first cell": the board's values, by hand as in the test above.
@@ -402,7 +411,7 @@ TEST(App, The3DDdaLessonShowsTheThirdAxis) {
     w.resize(1500, 900);
     w.show();
     ASSERT_TRUE(openLesson(w, "dda-3d"));
-    w.lessonPanel()->closeExercise();  // its first exercise (t_enter) would stop the replay
+    putAwayAll(w.lessonPanel());  // its exercises (t_enter first) would stop the replay
     w.lessonPanel()->goToStep(1);      // after the first voxel
     const QString text = w.inspectorText();
     // The eye is outside the grid: t_enter = (2 - 5.2) / dz with dz = -0.79699 (by hand from the
@@ -419,19 +428,21 @@ TEST(App, EveryLessonOpensAndEveryStepShows) {
     for (const Lesson& l : builtinLessons()) {
         SCOPED_TRACE(l.id);
         ASSERT_TRUE(openLesson(w, QString::fromStdString(l.id)));
-        // It opens on its first unsolved exercise (earlier tests may have solved some), open:
-        // no step goes past that exercise's position.
+        // It opens on its first unsolved exercise, open, and every unsolved exercise holds the
+        // replay: no step goes past the earliest of their positions.
         LessonPanel* p = w.lessonPanel();
-        const auto open = p->quizExercise();
-        const auto limit =
-            open ? quizLimit(l.exercises[std::size_t(*open)], w.session().log()) : std::nullopt;
+        EXPECT_EQ(p->exerciseOpen(), !p->heldExercises().empty());
+        std::optional<std::size_t> limit;
+        for (const int e : p->heldExercises())
+            if (const auto at = quizLimit(l.exercises[std::size_t(e)], w.session().log()))
+                limit = limit ? std::min(*limit, *at) : *at;
         for (std::size_t i = 0; i < l.steps.size(); ++i) {
             p->goToStep(static_cast<int>(i));
             const std::size_t at = *resolvePosition(l.steps[i].at, w.session().log());
             EXPECT_EQ(w.session().cursor(), limit ? std::min(at, *limit) : at);
         }
-        // Put away, every step shows its own position.
-        p->closeExercise();
+        // All put away, every step shows its own position.
+        putAwayAll(p);
         for (std::size_t i = 0; i < l.steps.size(); ++i) {
             p->goToStep(static_cast<int>(i));
             EXPECT_EQ(w.session().cursor(), *resolvePosition(l.steps[i].at, w.session().log()));

@@ -41,6 +41,15 @@
 namespace raystep::gui {
 namespace {
 
+/// Puts every exercise of the open lesson away, as a student who chooses to look past them
+/// does: no exercise then holds the replay.
+void putAwayAll(LessonPanel* p) {
+    for (int i = 0; i < static_cast<int>(p->lesson().exercises.size()); ++i) {
+        p->selectExercise(i);
+        p->closeExercise();
+    }
+}
+
 bool openLesson(MainWindow& w, const QString& lesson) {
     w.openLesson(lesson, /*quiet=*/true);
     return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
@@ -134,16 +143,22 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     ASSERT_LT(limit + 3, s.size());  // there is something past it to hide
 
     // The lesson opens on its first exercise, open: End stops at its position (before the
-    // first cell). Put away, the exercise stops nothing: End goes to the end.
+    // second cell). Put away, it stops nothing, but the second exercise, unsolved, still holds
+    // the replay at its own position, open or not; with both put away End goes to the end.
     ASSERT_TRUE(p->exerciseOpen());
     ASSERT_EQ(p->exercise(), 0);
     QTest::keyClick(&w, Qt::Key_End);
-    EXPECT_EQ(s.cursor(), *quizLimit(p->lesson().exercises[0], s.log()));
-    EXPECT_LT(s.cursor(), limit);
+    EXPECT_EQ(s.cursor(), indexOfNth<DdaCell>(s.log(), 2));
+    p->closeExercise();
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), limit);
+    EXPECT_FALSE(w.timeline()->quizCue().isEmpty());
+    p->selectExercise(1);
     p->closeExercise();
     QTest::keyClick(&w, Qt::Key_End);
     EXPECT_EQ(s.cursor(), s.size());
     EXPECT_TRUE(w.timeline()->quizCue().isEmpty());
+    s.setCursor(0);
 
     // Open the second exercise with the ">" button (it opens the one it shows).
     QPushButton* next = nullptr;
@@ -242,8 +257,9 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     ASSERT_NE(putAway, nullptr);
     QTest::mouseClick(putAway, Qt::LeftButton);
     EXPECT_FALSE(p->exerciseOpen());
+    // The second exercise, unsolved, holds the replay at its position (before the 5th cell).
     QTest::keyClick(&w, Qt::Key_End);
-    EXPECT_EQ(s.cursor(), s.size());
+    EXPECT_EQ(s.cursor(), indexOfNth<DdaCell>(s.log(), 5));
     // A step past the exercise, with the exercise open again, stops at the exercise.
     p->selectExercise(0);
     p->goToStep(static_cast<int>(p->lesson().steps.size()) - 1);  // the last step: the end
@@ -503,7 +519,7 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
 
     // The quiz lesson (mailboxing on) at its end: a primitive tested, one skipped, the hit.
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
-    w.lessonPanel()->closeExercise();  // the lesson opens on its first exercise: put it away
+    putAwayAll(w.lessonPanel());  // the lesson's exercises would hold the replay
     QTest::keyClick(&w, Qt::Key_End);
     ASSERT_FALSE(w.session().state().mailboxSkips.empty());
     const QImage two = grab(w.view2D());
@@ -576,8 +592,8 @@ QPushButton* buttonNamed(QWidget* in, const QString& text) {
     return nullptr;
 }
 
-// A choice answered with its radio buttons: the chosen option's why, and no quiz limit (its
-// answer is not in the trace). A sequence answered by clicking cells in order in the 2D view,
+// A choice answered with its radio buttons: the chosen option's why, and no quiz limit of its
+// own (its answer is not in the trace). A sequence answered by clicking cells in order in the 2D view,
 // with Clear to start again; it stops the replay where the order starts. A compute exercise in
 // a number box (a letter cannot be typed), graded with the slip a wrong number betrays.
 TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
@@ -593,7 +609,9 @@ TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
     // Choice: three radio buttons; c) is wrong, b) is right.
     p->selectExercise(0);
     QTest::keyClick(&w, Qt::Key_End);
-    EXPECT_EQ(s.cursor(), s.size());  // nothing of the trace gives a concept away
+    // The choice holds nothing (no event gives a concept away): End stops only where the
+    // unsolved sequence exercise starts.
+    EXPECT_EQ(s.cursor(), indexOfNth<DdaCell>(s.log(), 2));
     auto* c = p->findChild<QAbstractButton*>("choice2");
     auto* b = p->findChild<QAbstractButton*>("choice1");
     ASSERT_TRUE(c && b);
