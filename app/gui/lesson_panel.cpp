@@ -1,5 +1,7 @@
 #include "lesson_panel.h"
 
+#include "course/lesson_trace.h"
+
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QGroupBox>
@@ -10,6 +12,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QRegularExpressionValidator>
+#include <QShortcut>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QTextTable>
@@ -66,8 +69,16 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     nextStep_ = new QPushButton(tr("Step >"));
     prevStep_->setToolTip(tr("Previous step (Page Up)"));
     nextStep_->setToolTip(tr("Next step (Page Down)"));
-    prevStep_->setShortcut(QKeySequence(Qt::Key_PageUp));
-    nextStep_->setShortcut(QKeySequence(Qt::Key_PageDown));
+    // Page Up/Down step wherever the focus is and do nothing at the ends: as the buttons' own
+    // shortcuts they went dead with the button at the last step, and a focused lesson picker
+    // then took the key and opened the next lesson.
+    for (const auto& [key, delta] : {std::pair(Qt::Key_PageUp, -1), std::pair(Qt::Key_PageDown, 1)})
+        connect(new QShortcut(QKeySequence(key), this), &QShortcut::activated, this,
+                [this, delta = delta] {
+                    QPushButton* b = delta < 0 ? prevStep_ : nextStep_;
+                    if (b->isEnabled() && stepRow_->isEnabled() && stepRow_->isVisible())
+                        goToStep(step_ + delta);
+                });
     stepLabel_ = new QLabel;
     stepLabel_->setAlignment(Qt::AlignCenter);
     sr->addWidget(prevStep_);
@@ -75,6 +86,10 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     sr->addWidget(nextStep_);
     connect(prevStep_, &QPushButton::clicked, this, [this] { goToStep(step_ - 1); });
     connect(nextStep_, &QPushButton::clicked, this, [this] { goToStep(step_ + 1); });
+    // What the held exercises allow changes which step texts may be read.
+    connect(this, &LessonPanel::quizChanged, this, [this] {
+        if (hasLesson_) refreshText();
+    });
     layout->addWidget(stepRow_);
 
     exerciseBox_ = new QGroupBox(tr("Exercise"));
@@ -303,6 +318,15 @@ std::vector<int> LessonPanel::heldExercises() const {
     return held;
 }
 
+std::optional<std::pair<int, std::size_t>> LessonPanel::heldBy() const {
+    std::optional<std::pair<int, std::size_t>> held;
+    if (!log_) return held;
+    for (const int i : heldExercises())
+        if (const auto at = quizLimit(lesson_.exercises[std::size_t(i)], *log_))
+            if (!held || *at < held->second) held = std::pair(i, *at);
+    return held;
+}
+
 std::optional<int> LessonPanel::quizExercise() const {
     if (!hasLesson_ || !exerciseOpen_ || lecturer_ || lesson_.exercises.empty() ||
         solved(exercise_))
@@ -344,11 +368,20 @@ void LessonPanel::refreshText() {
     appendErrata(at, lesson_.errata);
     if (!lesson_.steps.empty()) {
         const LessonStep& step = lesson_.steps[step_];
+        // A step past an unsolved exercise's position tells what comes after it: its text waits
+        // with the replay (a step may name the next cell or the count the exercise asks for).
+        const auto held = heldBy();
+        const auto stepAt = log_ ? resolvePosition(step.at, *log_) : std::nullopt;
+        const QString text =
+            held && stepAt && *stepAt > held->second
+                ? tr("This step comes after exercise %1: answer it, or put it away, to read it.")
+                      .arg(held->first + 1)
+                : q(step.text.in(lang_));
         QString md = QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
                          .arg(tr("Step"))
                          .arg(step_ + 1)
                          .arg(lesson_.steps.size())
-                         .arg(q(step.text.in(lang_)));
+                         .arg(text);
         // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
         if (!step.note.en.empty()) md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
         at.movePosition(QTextCursor::End);
@@ -371,10 +404,10 @@ void LessonPanel::updateExerciseBox() {
                                 .arg(lesson_.exercises.size())
                                 .arg(solved(exercise_) ? tr(" (solved)") : QString()));
     openButton_->setText(exerciseOpen_ ? tr("Put away") : tr("Try it"));
-    openButton_->setToolTip(exerciseOpen_
-                                ? tr("Put the exercise away: the replay may then go anywhere")
-                                : tr("Open the exercise: the replay stops at its position "
-                                     "until you answer"));
+    openButton_->setToolTip(
+        exerciseOpen_ ? tr("Put the exercise away: the replay may then go past its position")
+                      : tr("Open the exercise: the replay stops at its position "
+                           "until you answer"));
     // While exploring, the exercises wait: they are graded against the lesson's own trace, and
     // the open one's prompt is put aside (the explored trace may hold its answer); Back to the
     // lesson shows it again, with its limit.

@@ -16,6 +16,7 @@
 
 #include <optional>
 #include <set>
+#include <utility>
 
 #include <vector>
 
@@ -75,6 +76,8 @@ class LessonPanel : public QWidget {
     /// The exercises that hold the replay: every unsolved one the student has not put away
     /// (none in lecturer mode). The replay stops at the earliest of their positions.
     std::vector<int> heldExercises() const;
+    /// The held exercise whose position comes first, and that position (the replay's limit).
+    std::optional<std::pair<int, std::size_t>> heldBy() const;
     /// Lessons > Show notes on the slides: the errata boxes under the texts.
     void setShowErrata(bool on);
     bool showErrata() const { return showErrata_; }

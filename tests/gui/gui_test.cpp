@@ -411,8 +411,8 @@ TEST(App, The3DDdaLessonShowsTheThirdAxis) {
     w.resize(1500, 900);
     w.show();
     ASSERT_TRUE(openLesson(w, "dda-3d"));
-    putAwayAll(w.lessonPanel());  // its exercises (t_enter first) would stop the replay
-    w.lessonPanel()->goToStep(1);      // after the first voxel
+    putAwayAll(w.lessonPanel());   // its exercises (t_enter first) would stop the replay
+    w.lessonPanel()->goToStep(1);  // after the first voxel
     const QString text = w.inspectorText();
     // The eye is outside the grid: t_enter = (2 - 5.2) / dz with dz = -0.79699 (by hand from the
     // camera, lesson 7's calculation), 4.01512.

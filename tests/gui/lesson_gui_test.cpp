@@ -266,6 +266,42 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     EXPECT_EQ(s.cursor(), limit);
 }
 
+// A step past an unsolved exercise's position waits with the replay: its text (which may name
+// what the exercise asks) is replaced by a note until the exercise is answered or put away.
+// Page Up/Down step wherever the focus is: at the last step, with the lesson picker focused,
+// Page Down does nothing (it used to reach the picker and open the next lesson).
+TEST(Quiz, AStepPastAnUnsolvedExerciseWaitsAndPageDownNeverLeavesTheLesson) {
+    QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                  "/progress.json");
+    QTemporaryDir dir;
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
+    LessonPanel* p = w.lessonPanel();
+    auto* text = p->findChild<QTextBrowser*>("lessonText");
+    ASSERT_NE(text, nullptr);
+    p->goToStep(2);  // "end": past the first exercise (before the 2nd cell)
+    EXPECT_FALSE(text->toPlainText().contains("The end."));
+    EXPECT_TRUE(text->toPlainText().contains("This step comes after exercise 1"))
+        << text->toPlainText().toStdString();
+    p->goToStep(1);  // after the 1st cell: before the exercise's position, readable
+    EXPECT_TRUE(text->toPlainText().contains("The first cell."));
+    putAwayAll(p);
+    p->goToStep(2);
+    EXPECT_TRUE(text->toPlainText().contains("The end."));
+
+    auto* picker = p->findChild<QComboBox*>("lessonPicker");
+    ASSERT_NE(picker, nullptr);
+    picker->setFocus();
+    QTest::keyClick(picker, Qt::Key_PageDown);
+    QTest::keyClick(picker, Qt::Key_PageDown);
+    EXPECT_EQ(p->lesson().id, "quiz");
+    EXPECT_EQ(p->step(), 2);
+    QTest::keyClick(picker, Qt::Key_PageUp);
+    EXPECT_EQ(p->lesson().id, "quiz");
+    EXPECT_EQ(p->step(), 1);
+}
+
 // A pixel lesson of the test's own: pixel (200, 150) of a 320 x 240 image of the whitted
 // scene, a step whose filter shows the primitive tests, and an exercise before the first test.
 const QByteArray kPixelLesson = R"({
@@ -593,9 +629,9 @@ QPushButton* buttonNamed(QWidget* in, const QString& text) {
 }
 
 // A choice answered with its radio buttons: the chosen option's why, and no quiz limit of its
-// own (its answer is not in the trace). A sequence answered by clicking cells in order in the 2D view,
-// with Clear to start again; it stops the replay where the order starts. A compute exercise in
-// a number box (a letter cannot be typed), graded with the slip a wrong number betrays.
+// own (its answer is not in the trace). A sequence answered by clicking cells in order in the 2D
+// view, with Clear to start again; it stops the replay where the order starts. A compute exercise
+// in a number box (a letter cannot be typed), graded with the slip a wrong number betrays.
 TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
