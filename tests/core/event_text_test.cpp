@@ -118,7 +118,7 @@ TEST(EventText, ItalianUsesTheSlidesTermsAndDecimalCommas) {
                         LeafReason::NoSplit, LeafReason::NoProgress}) {
         const std::string line = eventText(LeafMade{2, reason, 3, 2, 12.0}, 2, it);
         // "primitive 1" reads right for any count, as "1 primitive" would not.
-        EXPECT_EQ(line.rfind("foglia 2: primitive 3 (", 0), 0u) << line;
+        EXPECT_EQ(line.rfind("foglia 2: 3 primitive (", 0), 0u) << line;
         EXPECT_EQ(line.find('_'), std::string::npos) << line;
     }
     EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::DiffuseBounce, kNoId, {}}, 3, it),
