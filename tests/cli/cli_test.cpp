@@ -884,7 +884,7 @@ TEST_F(Cli, ALessonWithErrataAndTheNewKinds) {
     EXPECT_NE(show.out.find("> **Nota sulle slide**"), std::string::npos) << show.out;
     EXPECT_NE(show.out.find("> Slide: C = ||dir - c||^2"), std::string::npos) << show.out;
     EXPECT_NE(show.out.find("> L'origine."), std::string::npos) << show.out;
-    EXPECT_NE(show.out.find("Il raggio rosso."), std::string::npos) << show.out;
+    EXPECT_NE(show.out.find("Il raggio rosso arancio."), std::string::npos) << show.out;
     EXPECT_NE(show.out.find("a) Uno\nb) Due"), std::string::npos) << show.out;
     const CliRun key = run("lesson key new.json");
     ASSERT_EQ(key.code, 0) << key.err;
