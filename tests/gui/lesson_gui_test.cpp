@@ -367,8 +367,11 @@ TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     EXPECT_TRUE(w.eventList()->filter().isEmpty());
     EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(w.session().size()));
     // The steps wait as the exercises do.
-    for (QPushButton* b : p->findChildren<QPushButton*>())
-        if (b->text() == "< Step" || b->text() == "Step >") EXPECT_FALSE(b->isEnabled());
+    for (QPushButton* b : p->findChildren<QPushButton*>()) {
+        if (b->text() == "< Step" || b->text() == "Step >") {
+            EXPECT_FALSE(b->isEnabled());
+        }
+    }
     QTest::keyClick(&w, Qt::Key_Escape);
     EXPECT_EQ(w.session().logRef(), lessonLog);
     EXPECT_EQ(w.session().cursor(), exerciseAt);
