@@ -493,9 +493,10 @@ TEST(EventListFilter, MatchesKindNamesAndTheHighlightFollowsTheCursor) {
     const int row = list->currentRow();
     if (row >= 0) {
         EXPECT_LE(list->rowText(row).section("  ", 0, 0).toInt(), static_cast<int>(third + 1));
-        if (row + 1 < list->rowCount())
+        if (row + 1 < list->rowCount()) {
             EXPECT_GT(list->rowText(row + 1).section("  ", 0, 0).toInt(),
                       static_cast<int>(third + 1));
+        }
     }
 }
 
