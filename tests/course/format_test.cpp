@@ -84,7 +84,8 @@ TEST(LessonFormat, ColourNamesComeFromThePalette) {
         "c.json");
     // The names as the palette's table gives them, written here by hand.
     EXPECT_EQ(l.steps[0].text.en, "Primary rays are orange-red, shadow rays yellow.");
-    EXPECT_EQ(l.steps[0].text.it, "I raggi primari sono in rosso arancio,\nquelli d'ombra in giallo.");
+    EXPECT_EQ(l.steps[0].text.it,
+              "I raggi primari sono in rosso arancio,\nquelli d'ombra in giallo.");
     expectLessonError(
         lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\",\n \"it\": \"{colour:mauve}\"}}]"), 12,
         "steps[0].text.it", "unknown colour {colour:mauve}");

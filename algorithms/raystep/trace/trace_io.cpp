@@ -1,7 +1,7 @@
 #include "raystep/trace/trace_io.h"
 
-#include "raystep/base/json_reader.h"
 #include "raystep/base/json_lines.h"
+#include "raystep/base/json_reader.h"
 
 #include <nlohmann/json.hpp>
 
