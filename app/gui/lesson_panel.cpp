@@ -385,7 +385,8 @@ void LessonPanel::refreshText() {
         // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
         if (!step.note.en.empty()) md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
         at.movePosition(QTextCursor::End);
-        at.insertBlock();
+        // A plain block: one inserted after a text ending in a list would be an empty bullet.
+        at.insertBlock(QTextBlockFormat(), QTextCharFormat());
         at.insertMarkdown(md);
         appendErrata(at, step.errata);
         stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));

@@ -36,7 +36,9 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextList>
 
 namespace raystep::gui {
 namespace {
@@ -457,6 +459,24 @@ TEST(Lesson, ErrataBoxesShowAndHideAndHintsComeOneAPress) {
     Window again;
     EXPECT_FALSE(again.w.showErrataAction()->isChecked());  // remembered
     QSettings().remove("lessons/showErrata");
+}
+
+// A lesson text ending in a list: the step that follows it is not drawn as one more, empty, bullet
+// (the block inserted after the list used to inherit the list's format).
+TEST(Lesson, NoEmptyBulletAfterALessonTextThatEndsInAList) {
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, "2")) << w.lastOpenError().toStdString();
+    auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+    ASSERT_NE(text, nullptr);
+    int items = 0;
+    for (QTextBlock b = text->document()->begin(); b.isValid(); b = b.next()) {
+        if (!b.textList()) continue;
+        ++items;
+        EXPECT_FALSE(b.text().trimmed().isEmpty()) << "an empty list item after: "
+                                                   << b.previous().text().toStdString();
+    }
+    EXPECT_GT(items, 5);  // lesson 2's text holds its lists
 }
 
 // The filter matches the trace's kind names (what lessons use) as well as the shown text, and
