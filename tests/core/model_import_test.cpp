@@ -97,13 +97,24 @@ TEST(ModelImport, SceneAroundTheModelFramesItOnAFloor) {
     EXPECT_GT(s.camera.eye.x, 1.0);
     EXPECT_GT(s.camera.eye.y, 1.5);
     EXPECT_GT(s.camera.eye.z, 1.0);
-    // Every corner of the bounds is in front of the camera and inside its vertical field of view.
+    // Every corner of the bounds is in front of the camera and inside its field of view, both
+    // vertically and horizontally (the image is 4:3): by the pinhole's angles, worked out here.
     const Vec3 forward = glm::normalize(s.camera.lookAt - s.camera.eye);
+    const Vec3 right = glm::normalize(glm::cross(forward, s.camera.up));
+    const Vec3 up = glm::cross(right, forward);
+    const double tanHalf = std::tan(s.camera.fovDeg / 2.0 * kPi / 180.0);
+    double widest = 0.0;
     for (int c = 0; c < 8; ++c) {
-        const Vec3 p((c & 1) ? 2 : 0, (c & 2) ? 3 : 0, (c & 4) ? 2 : 0);
-        const Vec3 d = glm::normalize(p - s.camera.eye);
-        EXPECT_LT(std::acos(glm::dot(d, forward)) * 180.0 / kPi, s.camera.fovDeg / 2.0);
+        const Vec3 v = Vec3((c & 1) ? 2 : 0, (c & 2) ? 3 : 0, (c & 4) ? 2 : 0) - s.camera.eye;
+        const double z = glm::dot(v, forward);
+        ASSERT_GT(z, 0.0);
+        EXPECT_LE(std::abs(glm::dot(v, up)) / z, tanHalf);
+        EXPECT_LE(std::abs(glm::dot(v, right)) / z, tanHalf * 4.0 / 3.0);
+        widest = std::max({widest, std::abs(glm::dot(v, up)) / z / tanHalf,
+                           std::abs(glm::dot(v, right)) / z / (tanHalf * 4.0 / 3.0)});
     }
+    // ... and fills it: a corner reaches past 80% of the half-field.
+    EXPECT_GT(widest, 0.8);
 }
 
 TEST(ModelImport, SavedSceneLoadsBackTheSameTriangles) {

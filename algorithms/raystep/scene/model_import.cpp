@@ -237,13 +237,37 @@ Scene sceneAroundModel(const ImportedModel& model, const std::string& name) {
     const Vec3 centre = model.bounds.centroid();
     const double radius = 0.5 * glm::length(model.bounds.diagonal());
 
-    // A three-quarter view: 35 degrees round from the front (+z), 20 degrees above, far enough
-    // for the bounding sphere to fill the vertical field of view with a margin.
+    // A three-quarter view: 35 degrees round from the front (+z), 20 degrees above, as near as
+    // the eight corners of the bounds stay inside 90% of the field of view (both ways), and
+    // outside the bounding sphere.
     scene.camera.fovDeg = 40.0;
     const double az = 35.0 * kPi / 180.0, el = 20.0 * kPi / 180.0;
     const Vec3 dir(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
-    const double distance = 1.1 * radius / std::sin(0.5 * scene.camera.fovDeg * kPi / 180.0);
-    scene.camera.eye = centre + distance * dir;
+    const Vec3 right = glm::normalize(glm::cross(-dir, Vec3(0, 1, 0)));
+    const Vec3 up = glm::cross(right, -dir);
+    const double tanY = 0.9 * std::tan(0.5 * scene.camera.fovDeg * kPi / 180.0);
+    const double tanX = tanY * scene.settings.width / scene.settings.height;
+    const auto fits = [&](double distance) {
+        const Vec3 eye = centre + distance * dir;
+        for (int c = 0; c < 8; ++c) {
+            const Vec3 p((c & 1) ? model.bounds.hi.x : model.bounds.lo.x,
+                         (c & 2) ? model.bounds.hi.y : model.bounds.lo.y,
+                         (c & 4) ? model.bounds.hi.z : model.bounds.lo.z);
+            const Vec3 v = p - eye;
+            const double z = -glm::dot(v, dir);
+            if (!(z > 0) || std::abs(glm::dot(v, right)) > tanX * z ||
+                std::abs(glm::dot(v, up)) > tanY * z)
+                return false;
+        }
+        return true;
+    };
+    double near = 1.05 * radius, far = 1.1 * radius / std::sin(std::atan(tanY));
+    if (fits(near)) far = near;
+    for (int i = 0; i < 50 && far - near > 1e-6 * far; ++i) {
+        const double mid = 0.5 * (near + far);
+        (fits(mid) ? far : near) = mid;
+    }
+    scene.camera.eye = centre + far * dir;
     scene.camera.lookAt = centre;
     scene.camera.up = Vec3(0, 1, 0);
 
@@ -339,7 +363,29 @@ SceneFiles sceneFilesFor(const Scene& scene, std::size_t meshTriangles,
         material(o, t.material);
         j["objects"].push_back(o);
     }
-    out.sceneJson = j.dump(2) + "\n";
+    // One key a line, and one light, material or object a line: readable, and diffable.
+    std::string text = "{\n";
+    bool first = true;
+    for (const auto& [key, value] : j.items()) {
+        text += std::string(first ? "" : ",\n") + "  " + J(key).dump() + ": ";
+        first = false;
+        if (value.is_array() && !value.empty() && value[0].is_object()) {
+            text += "[\n";
+            for (std::size_t i = 0; i < value.size(); ++i)
+                text += "    " + value[i].dump() + (i + 1 < value.size() ? ",\n" : "\n");
+            text += "  ]";
+        } else if (key == "materials" && !value.empty()) {
+            text += "{\n";
+            std::size_t i = 0;
+            for (const auto& [name, m] : value.items())
+                text +=
+                    "    " + J(name).dump() + ": " + m.dump() + (++i < value.size() ? ",\n" : "\n");
+            text += "  }";
+        } else {
+            text += value.dump();
+        }
+    }
+    out.sceneJson = text + "\n}\n";
 
     // The mesh: each distinct vertex once (by its exact bits), faces by 1-based index.
     struct Key {
