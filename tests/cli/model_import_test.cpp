@@ -130,7 +130,9 @@ TEST_F(ModelCli, BadModelsAreOneLineAndExitTwo) {
         {"garbage.ply", "cannot import the model"},
         {"nan_vertex.obj", "not a finite number"},
         {"nan_vertex.ply", "not a finite number"},
-        {"no_triangles.obj", "no triangles"}};
+        {"no_triangles.obj", "no triangles"},
+        {"truncated.ply", "declares 5 'face' elements"},
+        {"huge_count.ply", "declares 3000000 'vertex' elements"}};
     for (const auto& [file, why] : bad)
         expectBad("render '" + kModels + file + "' -o m.png --save-scene m.json", file, why);
 }
