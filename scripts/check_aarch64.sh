@@ -12,7 +12,7 @@ command -v "$CXX" >/dev/null || { echo "check_aarch64: $CXX not found (apt insta
 # put x86's C library headers before the cross compiler's own.
 INC="$OUT/include"
 mkdir -p "$INC"
-for h in glm nlohmann boost tbb oneapi stb tiny_obj_loader.h; do
+for h in glm nlohmann boost tbb oneapi stb tiny_obj_loader.h assimp; do
   [ -e "/usr/include/$h" ] || { echo "check_aarch64: /usr/include/$h missing" >&2; exit 2; }
   ln -sfn "/usr/include/$h" "$INC/$h"
 done

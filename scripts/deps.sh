@@ -5,6 +5,7 @@
 RAYSTEP_BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libtinyobjloader-dev libstb-dev libboost-dev
+  libassimp-dev  # models (.obj .ply .stl .gltf .glb): raystep_import
 )
 # The replay app: Qt6 widgets, Qt's own Italian for its dialogs (qtbase_it), VTK (its config needs
 # MPI's C target: mpi-default-dev comes with it), and what runs it without a screen (xvfb-run) with
@@ -15,6 +16,7 @@ RAYSTEP_GUI_PACKAGES=(
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev
   g++-aarch64-linux-gnu  # scripts/check_aarch64.sh: the core compiles for ARM64
+  glmark2-data  # the Stanford bunny (models/bunny.obj, 69,666 triangles) of the model tests
 )
 # test.sh's second build: clang 14 with its sanitizer and libFuzzer runtimes, and llvm-14 for
 # llvm-symbolizer (readable stacks in sanitizer reports).

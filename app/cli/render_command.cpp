@@ -6,6 +6,7 @@
 
 #include "raystep/render/image.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +22,9 @@ namespace raystep::cli {
 
 void addRenderCommand(CLI::App& app, RenderArgs& a) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene to a PNG image");
-    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option("scene", a.scene,
+                    "Built-in scene name, scene file, or model (.obj .ply .stl .gltf .glb: a "
+                    "camera, a floor and two lights are put around it; default: default)");
     cmd->add_option("-o,--output", a.output, "Output PNG (default: <scene>.png)")
         ->check(fileName());
     cmd->add_option("--width", a.width, "Image width in pixels")
@@ -35,6 +38,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
                     "Random diffuse bounce rays at the first diffuse hit (0 = none)")
         ->transform(wholeNumber(0, 1024));
     addAccelOptions(cmd, a.accel);
+    a.accelOption = cmd->get_option("--accel");
     cmd->add_option("--ray-offset", a.rayOffset,
                     "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
         ->capture_default_str();
@@ -46,6 +50,10 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     cmd->add_option("--stats", a.stats, "Write ray counts and timings as JSON")->check(fileName());
     cmd->add_option("--heatmap", a.heatmap, "Write primitive tests per pixel as a PNG heat map")
         ->check(fileName());
+    cmd->add_option("--save-scene", a.saveScene,
+                    "Model only: write the scene made around it as a scene file (*.json), its "
+                    "mesh beside it as <name>.mesh.obj")
+        ->check(fileName());
 }
 
 int runRender(const RenderArgs& a) {
@@ -55,17 +63,38 @@ int runRender(const RenderArgs& a) {
         return fail("-o " + output + ": the image is written as PNG; name it *.png");
     if (!a.heatmap.empty() && !hasExtension(a.heatmap, ".png"))
         return fail("--heatmap " + a.heatmap + ": the heat map is written as PNG; name it *.png");
-    if (auto problem = checkOutputs(
-            {{"-o", output}, {"--stats", a.stats}, {"--heatmap", a.heatmap}}, {a.scene}))
+    const bool model = isModelPath(a.scene);
+    std::string meshPath;  // --save-scene's mesh: <name>.mesh.obj beside the scene file
+    if (!a.saveScene.empty()) {
+        if (!model)
+            return fail("--save-scene " + a.saveScene + ": only a model (" +
+                        "*.obj, *.ply, *.stl, *.gltf, *.glb) is made into a scene; " + a.scene +
+                        " is a scene already");
+        if (!hasExtension(a.saveScene, ".json"))
+            return fail("--save-scene " + a.saveScene +
+                        ": the scene is written as a scene file; name it *.json");
+        meshPath = (std::filesystem::path(a.saveScene).parent_path() /
+                    (std::filesystem::path(a.saveScene).stem().string() + ".mesh.obj"))
+                       .string();
+    }
+    if (auto problem = checkOutputs({{"-o", output},
+                                     {"--stats", a.stats},
+                                     {"--heatmap", a.heatmap},
+                                     {"--save-scene", a.saveScene},
+                                     {"--save-scene (its mesh)", meshPath}},
+                                    {a.scene}))
         return fail(*problem);
+    // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says otherwise.
+    AccelArgs accelArgs = a.accel;
+    if (model && !(a.accelOption && a.accelOption->count() > 0)) accelArgs.accel = "kdtree";
     AccelChoice choice;
-    if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
+    if (auto problem = resolveAccel(accelArgs, choice)) return fail(*problem);
     const auto offset = parseRayOffset(a.rayOffset);
     if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
 
     Scene scene;
     try {
-        scene = loadScene(a.scene);
+        scene = model ? importModelScene(a.scene) : loadScene(a.scene);
     } catch (const SceneError& e) {
         return fail(e.what());
     }
@@ -148,6 +177,15 @@ int runRender(const RenderArgs& a) {
         statsJson = j.dump(2) + "\n";
         files.push_back({a.stats, statsJson});
     }
+    SceneFiles sceneFiles;
+    if (!a.saveScene.empty()) {
+        // The model's triangles come first in the scene (sceneAroundModel); the floor follows.
+        const std::size_t modelTriangles = scene.triangles.size() - 2;
+        sceneFiles = sceneFilesFor(scene, modelTriangles,
+                                   std::filesystem::path(meshPath).filename().string());
+        files.push_back({a.saveScene, sceneFiles.sceneJson});
+        files.push_back({meshPath, sceneFiles.meshObj});
+    }
     if (auto problem = writeOutputs(files)) return fail(*problem);
     std::printf("wrote %s (%dx%d, %d spp, %llu rays, %.0f ms)\n", output.c_str(), opt.width,
                 opt.height, opt.spp, static_cast<unsigned long long>(result.counters.totalRays()),
@@ -157,6 +195,9 @@ int runRender(const RenderArgs& a) {
                     a.heatmap.c_str(),
                     static_cast<unsigned long long>(
                         *std::max_element(result.costPerPixel.begin(), result.costPerPixel.end())));
+    if (!a.saveScene.empty())
+        std::printf("wrote %s (the scene around %s) and %s (its mesh)\n", a.saveScene.c_str(),
+                    a.scene.c_str(), meshPath.c_str());
     return 0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// `raystep-cli render`: a scene to a PNG image, with a heat map of the primitive tests and the
-// ray counts as JSON on request.
+// `raystep-cli render`: a scene or a model (.obj .ply .stl .gltf .glb) to a PNG image, with a heat
+// map of the primitive tests and the ray counts as JSON on request.
 #include "accel_args.h"
 
 #include <CLI/CLI.hpp>
@@ -21,6 +21,9 @@ struct RenderArgs {
     std::uint64_t seed = 1;
     std::string stats;
     std::string heatmap;
+    std::string saveScene;  // a model's scene, written as a scene file
+    const CLI::Option* accelOption =
+        nullptr;  // whether --accel was given (models default to a tree)
 };
 
 void addRenderCommand(CLI::App& app, RenderArgs& a);

@@ -83,6 +83,7 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
 void LessonController::show(const Lesson& lesson, const LogRef& trace) {
     // The panel records answers into this lesson's progress (std::map entries do not move) and
     // grades them against its own share of the trace.
+    lessonScene_ = session_.sceneRef();
     lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id]);
     if (trace)
         if (const auto kind = lessonEventKind(lesson, *trace)) emit jumpKindSuggested(*kind);
@@ -108,6 +109,9 @@ std::optional<std::size_t> LessonController::lessonEventKind(const Lesson& lesso
 
 void LessonController::backToLesson() {
     if (!lesson_->hasLesson()) return;
+    // The structure chooser built another structure: the lesson's comes back first.
+    if (lessonScene_ && session_.sceneRef() != lessonScene_)
+        emit lessonSceneRequested(lessonScene_);
     showLessonTrace();
     // Where the student was in the lesson: the open exercise's position, else the step's.
     if (lesson_->exerciseOpen()) {
@@ -265,7 +269,12 @@ void LessonController::showReplayText() {
 }
 
 QString LessonController::replayDescription() const {
-    if (!lesson_->hasLesson() || session_.logRef() == lesson_->lessonLog()) return {};
+    if (!lesson_->hasLesson()) return {};
+    // The structure chooser's pick: the lesson's trace is about another structure.
+    if (lessonScene_ && session_.sceneRef() != lessonScene_)
+        return tr("the lesson's scene with another structure (%1)")
+            .arg(structureName(session_.kind()));
+    if (session_.logRef() == lesson_->lessonLog()) return {};
     switch (session_.logKind()) {
         case LogKind::Pixel:
             for (auto it = session_.log().events().rbegin(); it != session_.log().events().rend();

@@ -64,6 +64,9 @@ class LessonController : public QObject {
     void lessonRequested(const QString& id);
     /// A lesson was shown whose steps are about events of this kind (the timeline's N).
     void jumpKindSuggested(std::size_t eventKind);
+    /// Back to the lesson after its structure was changed: the window shows its own scene and
+    /// structure again (the lesson's trace is about them).
+    void lessonSceneRequested(SceneRef scene);
 
   private:
     void applyStep(int index);
@@ -90,6 +93,7 @@ class LessonController : public QObject {
     EventList* events_;
     VtkView* view3D_;
     QMenu* lessonsMenu_ = nullptr;
+    SceneRef lessonScene_;  // the lesson's scene and structure, as its trace was recorded
     Language lang_ = Language::En;
     Progress studentProgress_;
     QString progressPath_;

@@ -6,6 +6,7 @@
 #include "session.h"
 
 #include "raystep/base/file_error.h"
+#include "raystep/scene/model_import.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -32,12 +33,14 @@ int main(int argc, char** argv) {
     parser.addHelpOption();
     const QCommandLineOption lessonOpt("lesson", "Open a lesson: id, number or file (default 1).",
                                        "id|file");
-    const QCommandLineOption sceneOpt("scene", "Open a built-in scene or scene file instead.",
-                                      "name|file");
+    const QCommandLineOption sceneOpt(
+        "scene", "Open a built-in scene, a scene file or a model (.obj .ply .stl .gltf .glb).",
+        "name|file");
     const QCommandLineOption lecturerOpt("lecturer",
                                          "Lecturer mode: the exercises show their answers.");
-    const QCommandLineOption accelOpt("accel", "Structure: bruteforce, grid, kdtree or bvh.",
-                                      "kind", "grid");
+    const QCommandLineOption accelOpt(
+        "accel", "Structure: bruteforce, grid, kdtree or bvh (default: grid; kdtree for a model).",
+        "kind", "grid");
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
     const QCommandLineOption replayOpt("replay", "What to replay: ray (the default) or build.",
                                        "ray|build", "ray");
@@ -95,7 +98,11 @@ int main(int argc, char** argv) {
     QString opening;
     if (parser.isSet(sceneOpt)) {
         opening = "--scene " + parser.value(sceneOpt);
-        window.openScene(parser.value(sceneOpt), *kind, quiet);
+        // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says.
+        const bool model = raystep::isModelPath(parser.value(sceneOpt).toStdString());
+        window.openScene(parser.value(sceneOpt),
+                         model && !parser.isSet(accelOpt) ? raystep::AccelKind::KdTree : *kind,
+                         quiet);
     } else {
         const QString lesson =
             parser.isSet(lessonOpt) ? parser.value(lessonOpt) : QStringLiteral("1");

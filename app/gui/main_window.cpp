@@ -58,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createStatusBar();
     createActions();
     createMenus();
+    createStructureControls();
     QSettings settings;
     geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
@@ -131,6 +132,8 @@ void MainWindow::createDocks() {
     connect(lessons_, &LessonController::lessonRequested, this,
             [this](const QString& id) { openLesson(id); });
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
+    connect(lessons_, &LessonController::lessonSceneRequested, this,
+            [this](SceneRef scene) { showScene(std::move(scene), !imageView_->isHidden()); });
 }
 
 void MainWindow::createStatusBar() {
@@ -586,9 +589,13 @@ void MainWindow::togglePlay() {
 }
 
 void MainWindow::openFileDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
-    if (!path.isEmpty()) openScene(path, session_.kind());
+    // Models too: the scene is made around them (model_import.h). Not the lesson's structure
+    // (brute force in lesson 1 would take minutes on a big mesh): the chooser's, else a kd-tree.
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open scene"), QString(),
+        tr("Scenes and models (*.json *.obj *.ply *.stl *.gltf *.glb)") + ";;" +
+            tr("Scenes (*.json)") + ";;" + tr("Models (*.obj *.ply *.stl *.gltf *.glb)"));
+    if (!path.isEmpty()) openScene(path, openKind(), false, openOptions());
 }
 
 QString savePng(const QImage& image, const QString& path) {

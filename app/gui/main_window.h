@@ -16,6 +16,7 @@
 #include <QPointer>
 
 class QAction;
+class QComboBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -52,6 +53,17 @@ class MainWindow : public QMainWindow {
     /// cannot be opened (a dialog says why unless quiet). `opened` tells how it ended.
     void openScene(const QString& nameOrPath, AccelKind kind, bool quiet = false,
                    const AccelOptions& options = {}, bool renderImage = true);
+    /// The structure chooser: builds the open scene's structure again as `kind` with `split`
+    /// (kd-tree and BVH), in the background; in a lesson that is exploring (Esc goes back).
+    /// File > Open uses the last choice; before any, a kd-tree with SAH splits.
+    void changeStructure(AccelKind kind, SplitMethod split);
+    /// The structure and options File > Open builds (changeStructure's last choice).
+    AccelKind openKind() const;
+    AccelOptions openOptions() const;
+    QComboBox* structureChooser() const { return structureBox_; }
+    QComboBox* splitChooser() const { return splitBox_; }
+    /// The status bar's "Structure: ..." (what the open scene uses).
+    QString structureStatus() const;
     /// Starts opening a lesson (built-in id or number, or a file): its scene, structure and
     /// trace, its views, and the step the user's progress was at; likewise in the background.
     void openLesson(const QString& idOrPath, bool quiet = false);
@@ -96,6 +108,8 @@ class MainWindow : public QMainWindow {
   signals:
     /// An openScene or openLesson ended: opened, or not (with why; "cancelled" included).
     void opened(bool ok, const QString& error);
+    /// A changeStructure ended: the scene shown with the new structure, or not (with why).
+    void structureChanged(bool ok, const QString& error);
 
   public slots:
     // The timeline's (timeline.h), for the tests and scripts that drive the window.
@@ -115,6 +129,10 @@ class MainWindow : public QMainWindow {
     void createStatusBar();
     void createActions();
     void createMenus();
+    /// The structure chooser (a tool bar) and the status bar's structure (main_window_models.cpp).
+    void createStructureControls();
+    /// The chooser and the status bar say what the session's scene uses.
+    void syncStructureControls();
     void openFileDialog();
     void exportScreenshot(QWidget* w, const QString& what);
     void exportTrace();
@@ -154,6 +172,11 @@ class MainWindow : public QMainWindow {
         QAction *openLessonFile, *lecturer, *backToLesson, *showErrata;
         QAction *compare, *renderAgain, *heatmap, *resetCamera;
     } actions_{};
+    QComboBox* structureBox_ = nullptr;
+    QComboBox* splitBox_ = nullptr;
+    QLabel* structureLabel_ = nullptr;
+    /// The user's last choice in the chooser (File > Open builds it); none: a kd-tree, SAH.
+    std::optional<std::pair<AccelKind, SplitMethod>> chosenStructure_;
     QLabel* taskLabel_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

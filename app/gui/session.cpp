@@ -1,6 +1,7 @@
 #include "session.h"
 
 #include "raystep/render/tracer.h"
+#include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <algorithm>
@@ -21,8 +22,19 @@ void buildIn(LoadedScene& l, const AccelOptions& options) {
 SceneRef Session::prepare(const std::string& nameOrPath, AccelKind kind,
                           const AccelOptions& options) {
     auto l = std::make_shared<LoadedScene>();
-    l->scene = loadAnyScene(nameOrPath);
+    l->scene = loadAnySceneOrModel(nameOrPath);
     l->name = nameOrPath;
+    l->kind = kind;
+    l->options = options;
+    buildIn(*l, options);
+    return l;
+}
+
+SceneRef Session::rebuild(const SceneRef& from, AccelKind kind, const AccelOptions& options) {
+    // A copy: the old structure points into the old scene, which others still show meanwhile.
+    auto l = std::make_shared<LoadedScene>();
+    l->scene = from->scene;
+    l->name = from->name;
     l->kind = kind;
     l->options = options;
     buildIn(*l, options);

@@ -43,10 +43,14 @@ enum class LogKind { None, ExampleRay, Pixel, Build, Lesson };
 class Session : public QObject {
     Q_OBJECT
   public:
-    /// Loads and builds; safe on any thread (the window runs it on a worker). Throws SceneError,
-    /// or BuildCancelled when the options' progress says stop.
+    /// Loads (a built-in scene, a scene file or a model: model_import.h) and builds; safe on any
+    /// thread (the window runs it on a worker). Throws SceneError, or BuildCancelled when the
+    /// options' progress says stop.
     static SceneRef prepare(const std::string& nameOrPath, AccelKind kind,
                             const AccelOptions& options = {});
+    /// The scene of `from` (3D or 2D) with another structure built over a copy of it; any thread.
+    /// Throws BuildCancelled when the options' progress says stop.
+    static SceneRef rebuild(const SceneRef& from, AccelKind kind, const AccelOptions& options);
     /// The same for a 2D scene made in code (benchmarks, tests).
     static SceneRef prepare(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
     /// Records the construction of the scene's structure (kd-tree or BVH; 2D or 3D); any thread.

@@ -1,0 +1,144 @@
+// The window's structure chooser (brute force, grid, kd-tree, BVH; midpoint, median or SAH
+// splits) and the status bar's structure: the structure a scene or model uses is always shown and
+// chosen here, never inherited silently from a lesson.
+#include "main_window.h"
+
+#include "image_view.h"
+#include "language.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace raystep::gui {
+
+namespace {
+QString splitName(SplitMethod split) {
+    switch (split) {
+        case SplitMethod::Midpoint:
+            return MainWindow::tr("midpoint");
+        case SplitMethod::Median:
+            return MainWindow::tr("median");
+        case SplitMethod::Sah:
+            break;
+    }
+    return MainWindow::tr("SAH");
+}
+bool hasSplit(AccelKind kind) {
+    return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
+}
+}  // namespace
+
+void MainWindow::createStructureControls() {
+    auto* bar = addToolBar(tr("Structure"));
+    bar->setObjectName("structureToolBar");  // saveState/restoreState need a name
+    structureBox_ = new QComboBox;
+    structureBox_->setObjectName("structureChooser");
+    for (const AccelKind k :
+         {AccelKind::BruteForce, AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh})
+        structureBox_->addItem(structureName(k), static_cast<int>(k));
+    structureBox_->setToolTip(
+        tr("The acceleration structure the scene is traced with; changing it builds it again"));
+    splitBox_ = new QComboBox;
+    splitBox_->setObjectName("splitChooser");
+    for (const SplitMethod m : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah})
+        splitBox_->addItem(splitName(m), static_cast<int>(m));
+    splitBox_->setToolTip(tr("How the kd-tree or the BVH chooses its split planes"));
+    bar->addWidget(new QLabel(tr("Structure:") + " "));
+    bar->addWidget(structureBox_);
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr("Split:") + " "));
+    bar->addWidget(splitBox_);
+    // activated: the user's pick only (syncStructureControls sets them without it).
+    const auto picked = [this] {
+        changeStructure(static_cast<AccelKind>(structureBox_->currentData().toInt()),
+                        static_cast<SplitMethod>(splitBox_->currentData().toInt()));
+    };
+    connect(structureBox_, &QComboBox::activated, this, picked);
+    connect(splitBox_, &QComboBox::activated, this, picked);
+
+    structureLabel_ = new QLabel;
+    structureLabel_->setObjectName("structureStatus");
+    statusBar()->insertPermanentWidget(0, structureLabel_);
+    connect(&session_, &Session::sceneChanged, this, [this] { syncStructureControls(); });
+    syncStructureControls();
+}
+
+void MainWindow::syncStructureControls() {
+    const bool scene = session_.hasScene();
+    const AccelKind kind = scene ? session_.kind() : openKind();
+    const AccelOptions options = scene ? session_.options() : openOptions();
+    const SplitMethod split = kind == AccelKind::Bvh ? options.bvh.split : options.kdtree.split;
+    structureBox_->setCurrentIndex(structureBox_->findData(static_cast<int>(kind)));
+    splitBox_->setCurrentIndex(splitBox_->findData(static_cast<int>(split)));
+    splitBox_->setEnabled(hasSplit(kind));
+    if (!scene) {
+        structureLabel_->clear();
+        return;
+    }
+    const QString what = hasSplit(kind)
+                             ? tr("%1, %2 splits").arg(structureName(kind), splitName(split))
+                             : structureName(kind);
+    const Scene* s3 = session_.scene3D();
+    const std::size_t primitives = s3 ? s3->primitiveCount() : session_.scene2D()->primitiveCount();
+    structureLabel_->setText(tr("Structure: %1 (%2 primitives)").arg(what).arg(primitives));
+}
+
+QString MainWindow::structureStatus() const {
+    return structureLabel_->text();
+}
+
+AccelKind MainWindow::openKind() const {
+    return chosenStructure_ ? chosenStructure_->first : AccelKind::KdTree;
+}
+
+AccelOptions MainWindow::openOptions() const {
+    AccelOptions options;
+    options.kdtree.split = options.bvh.split =
+        chosenStructure_ ? chosenStructure_->second : SplitMethod::Sah;
+    return options;
+}
+
+void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
+    chosenStructure_ = {kind, split};
+    splitBox_->setEnabled(hasSplit(kind));
+    if (!session_.hasScene()) {
+        emit structureChanged(false, tr("No scene is open."));
+        return;
+    }
+    AccelOptions options = session_.options();
+    options.kdtree.split = options.bvh.split = split;
+    const std::uint64_t generation = generation_;
+    const bool render = !imageView_->isHidden();
+    const QString what = hasSplit(kind)
+                             ? tr("%1, %2 splits").arg(structureName(kind), splitName(split))
+                             : structureName(kind);
+    runner_.start<SceneRef>(
+        TaskKind::Structure, tr("Building the %1...").arg(what),
+        [ref = session_.sceneRef(), kind, options](const ProgressFn& progress) {
+            AccelOptions o = options;
+            o.setProgress(progress);
+            return Session::rebuild(ref, kind, o);
+        },
+        [this, generation, render](SceneRef&& scene, const TaskOutcome& outcome) {
+            if (outcome.superseded) return;
+            // Another scene was opened meanwhile: this structure was for the old one.
+            if (generation != generation_) {
+                emit structureChanged(false, tr("another scene was opened"));
+                return;
+            }
+            if (!outcome.ok()) {
+                const QString why = outcome.cancelled ? tr("cancelled") : outcome.errorText();
+                statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
+                syncStructureControls();  // back to what the scene uses
+                emit structureChanged(false, why);
+                return;
+            }
+            showScene(std::move(scene), render);
+            statusBar()->showMessage(structureStatus());
+            emit structureChanged(true, {});
+        });
+}
+
+}  // namespace raystep::gui

@@ -1,0 +1,159 @@
+// `raystep-cli render MODEL`: models of every format rendered with a tree by default, the scene
+// around them saved and loaded back, and bad model files as one line and exit code 2.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kModels = RAYSTEP_SOURCE_DIR "/tests/data/models/";
+const std::string kBunny = "/usr/share/glmark2/models/bunny.obj";
+
+struct CliResult {
+    int code;
+    std::string out, err;
+};
+
+class ModelCli : public ::testing::Test {
+  protected:
+    fs::path dir = fs::temp_directory_path() /
+                   ("raystep-model-cli-" + std::to_string(::getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+
+    static std::string slurp(const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    /// raystep-cli in the test's folder, its outputs outside it; ended after 120 s (a hang on a
+    /// FIFO fails the test with 124 rather than blocking the suite).
+    CliResult run(const std::string& args) {
+        const fs::path out = dir.string() + ".out", err = dir.string() + ".err";
+        const std::string cmd = "cd '" + dir.string() + "' && timeout 120 '" RAYSTEP_CLI "' " +
+                                args + " > '" + out.string() + "' 2> '" + err.string() +
+                                "' < /dev/null";
+        const int status = std::system(cmd.c_str());
+        CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+        fs::remove(out);
+        fs::remove(err);
+        return r;
+    }
+    nlohmann::json stats() { return nlohmann::json::parse(slurp(dir / "s.json")); }
+    /// Exit code 2, one line on stderr naming `file` and saying `why`, and no file written.
+    void expectBad(const std::string& args, const std::string& file, const std::string& why) {
+        SCOPED_TRACE(args);
+        const CliResult r = run(args);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+        for (const auto& e : fs::directory_iterator(dir))
+            EXPECT_FALSE(e.path().extension() == ".png" || e.path().extension() == ".json")
+                << "bad input left " << e.path();
+    }
+};
+
+TEST_F(ModelCli, EveryFormatRendersWithAKdTreeByDefault) {
+    // Triangles of each model (worked out by hand, in the files' comments) plus the floor's 2.
+    const std::vector<std::pair<std::string, int>> models = {
+        {"pyramid.obj", 6},      {"tetra.ply", 4}, {"square.stl", 2},
+        {"wedge_binary.stl", 3}, {"quad.gltf", 2}, {"quad.glb", 2}};
+    for (const auto& [file, triangles] : models) {
+        SCOPED_TRACE(file);
+        const CliResult r =
+            run("render '" + kModels + file + "' -o m.png --width 64 --height 48 --stats s.json");
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_TRUE(fs::exists(dir / "m.png"));
+        const auto s = stats();
+        EXPECT_EQ(s["primitives"]["triangles"], triangles + 2);
+        EXPECT_EQ(s["accel"], "kdtree sah");
+        // The model is in the picture: some pixel tested a primitive.
+        EXPECT_GT(s["max_primitive_tests_per_pixel"].get<int>(), 0);
+    }
+}
+
+TEST_F(ModelCli, BunnyRendersWithATreeNotBruteForce) {
+    const CliResult r =
+        run("render " + kBunny + " -o bunny.png --width 160 --height 120 --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto s = stats();
+    EXPECT_EQ(s["primitives"]["triangles"], 69666 + 2);
+    EXPECT_EQ(s["accel"], "kdtree sah");
+    // A tree tests a few dozen triangles a pixel at most; brute force would test all 69,668.
+    EXPECT_LT(s["max_primitive_tests_per_pixel"].get<int>(), 5000);
+}
+
+TEST_F(ModelCli, AStructureGivenIsKept) {
+    const CliResult r = run("render '" + kModels + "tetra.ply' -o m.png --width 32 --height 24 " +
+                            "--accel bruteforce --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(stats()["accel"], "bruteforce");
+    const CliResult b = run("render '" + kModels + "tetra.ply' -o m.png --width 32 --height 24 " +
+                            "--accel bvh --split median --stats s.json");
+    ASSERT_EQ(b.code, 0) << b.err;
+    EXPECT_EQ(stats()["accel"], "bvh median");
+}
+
+TEST_F(ModelCli, SavedSceneRendersTheSamePicture) {
+    const CliResult r =
+        run("render '" + kModels +
+            "quad.glb' -o a.png --width 64 --height 48 --save-scene quad-scene.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_TRUE(fs::exists(dir / "quad-scene.json"));
+    ASSERT_TRUE(fs::exists(dir / "quad-scene.mesh.obj"));
+    EXPECT_NE(r.out.find("quad-scene.mesh.obj"), std::string::npos) << r.out;
+    const CliResult back =
+        run("render quad-scene.json -o b.png --width 64 --height 48 --accel kdtree --stats s.json");
+    ASSERT_EQ(back.code, 0) << back.err;
+    EXPECT_EQ(stats()["primitives"]["triangles"], 4);
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+}
+
+TEST_F(ModelCli, BadModelsAreOneLineAndExitTwo) {
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"missing.obj", "no such file"},
+        {"empty.stl", "empty"},
+        {"truncated.stl", "cannot import the model"},
+        {"garbage.ply", "cannot import the model"},
+        {"nan_vertex.obj", "not a finite number"},
+        {"nan_vertex.ply", "not a finite number"},
+        {"no_triangles.obj", "no triangles"},
+        {"truncated.ply", "declares 5 'face' elements"},
+        {"huge_count.ply", "declares 3000000 'vertex' elements"}};
+    for (const auto& [file, why] : bad)
+        expectBad("render '" + kModels + file + "' -o m.png --save-scene m.json", file, why);
+}
+
+TEST_F(ModelCli, FoldersAndFifosAreRefusedWithoutWaiting) {
+    fs::create_directories(dir / "folder.obj");
+    ASSERT_EQ(::mkfifo((dir / "pipe.glb").c_str(), 0600), 0);
+    fs::copy_file(kModels + "external.gltf", dir / "external.gltf");
+    ASSERT_EQ(::mkfifo((dir / "external.bin").c_str(), 0600), 0);
+    expectBad("render folder.obj -o m.png", "folder.obj", "it is a folder");
+    expectBad("render pipe.glb -o m.png", "pipe.glb", "not a regular file");
+    expectBad("render external.gltf -o m.png", "external.bin", "not a regular file");
+}
+
+TEST_F(ModelCli, SaveSceneIsCheckedBeforeTheWork) {
+    expectBad("render default --save-scene s.json", "default", "only a model");
+    expectBad("render '" + kModels + "tetra.ply' --save-scene s.png", "s.png", "*.json");
+    // The mesh written beside the scene must not be the model itself.
+    fs::copy_file(kModels + "pyramid.obj", dir / "p.mesh.obj");
+    expectBad("render p.mesh.obj -o m.png --save-scene p.json", "p.mesh.obj", "--save-scene");
+    EXPECT_EQ(slurp(dir / "p.mesh.obj"), slurp(kModels + "pyramid.obj"));
+}
+
+}  // namespace

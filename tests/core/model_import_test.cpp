@@ -1,0 +1,207 @@
+// Models through assimp (scene/model_import.h): the triangles and bounds of small files written by
+// hand in tests/data/models (values worked out on paper in the files' comments), the Stanford
+// bunny, the scene made around a model and its scene file, and every kind of bad file.
+#include "raystep/scene/model_import.h"
+
+#include "raystep/scene/scene_loader.h"
+
+#include <assimp/material.h>
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+namespace raystep {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kModels = RAYSTEP_SOURCE_DIR "/tests/data/models/";
+const std::string kBunny = "/usr/share/glmark2/models/bunny.obj";
+
+void expectBounds(const Bounds3& b, Vec3 lo, Vec3 hi) {
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(b.lo[k], lo[k]) << "axis " << k;
+        EXPECT_EQ(b.hi[k], hi[k]) << "axis " << k;
+    }
+}
+
+TEST(ModelImport, ObjWithAQuadIsTriangulated) {
+    const ImportedModel m = importModel(kModels + "pyramid.obj");
+    EXPECT_EQ(m.triangles.size(), 6u);  // the quad base makes two
+    expectBounds(m.bounds, {0, 0, 0}, {2, 3, 2});
+}
+
+TEST(ModelImport, AsciiPly) {
+    const ImportedModel m = importModel(kModels + "tetra.ply");
+    EXPECT_EQ(m.triangles.size(), 4u);
+    expectBounds(m.bounds, {-1, -2, -3}, {4, 5, 6});
+}
+
+TEST(ModelImport, AsciiAndBinaryStl) {
+    const ImportedModel ascii = importModel(kModels + "square.stl");
+    EXPECT_EQ(ascii.triangles.size(), 2u);
+    expectBounds(ascii.bounds, {-1, -1, 1}, {1, 1, 1});
+    const ImportedModel binary = importModel(kModels + "wedge_binary.stl");
+    EXPECT_EQ(binary.triangles.size(), 3u);
+    expectBounds(binary.bounds, {0, 0, 0}, {3, 1, 2});
+}
+
+TEST(ModelImport, GltfAndGlbApplyTheNodeTransform) {
+    // The unit quad in z = 0, scaled by 2 and moved by (10, 0, -1) by its node.
+    for (const char* file : {"quad.gltf", "quad.glb", "external.gltf"}) {
+        SCOPED_TRACE(file);
+        const ImportedModel m = importModel(kModels + file);
+        EXPECT_EQ(m.triangles.size(), 2u);
+        expectBounds(m.bounds, {10, 0, -1}, {12, 2, -1});
+    }
+}
+
+TEST(ModelImport, StanfordBunny) {
+    const ImportedModel m = importModel(kBunny);
+    // 69,666 faces, none of zero area (counted in exact arithmetic from the file's decimals).
+    EXPECT_EQ(m.triangles.size(), 69666u);
+    EXPECT_EQ(m.droppedDegenerateTriangles, 0u);
+    // assimp keeps coordinates in float: the file's extremes, rounded to float.
+    expectBounds(m.bounds, {-1.0, double(-0.991233f), double(-0.775047f)},
+                 {1.0, double(0.991233f), double(0.775047f)});
+}
+
+TEST(ModelImport, ExtensionsInAnyCase) {
+    EXPECT_TRUE(isModelPath("a/b.OBJ"));
+    EXPECT_TRUE(isModelPath("x.glb"));
+    EXPECT_TRUE(isModelPath("x.Gltf"));
+    EXPECT_FALSE(isModelPath("x.json"));
+    EXPECT_FALSE(isModelPath("obj"));
+}
+
+TEST(ModelImport, SceneAroundTheModelFramesItOnAFloor) {
+    const ImportedModel m = importModel(kModels + "pyramid.obj");
+    const Scene s = sceneAroundModel(m, "pyramid.obj");
+    ASSERT_EQ(s.triangles.size(), 8u);  // 6 of the model, 2 of the floor
+    EXPECT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.triangles[0].material, 0u);  // the default material
+    EXPECT_EQ(s.materials[0].name, "default");
+    // The floor: just under the model's lowest point, and much wider than it.
+    for (int k = 6; k < 8; ++k) {
+        const Triangle& t = s.triangles[std::size_t(k)];
+        EXPECT_NE(t.material, 0u);
+        for (const Vec3& p : {t.a, t.b, t.c}) {
+            EXPECT_LT(p.y, 0.0);
+            EXPECT_GT(p.y, -0.01);
+        }
+    }
+    // The camera looks at the centre (1, 1.5, 1) from above, in front and to the right.
+    EXPECT_EQ(s.camera.lookAt, Vec3(1, 1.5, 1));
+    EXPECT_GT(s.camera.eye.x, 1.0);
+    EXPECT_GT(s.camera.eye.y, 1.5);
+    EXPECT_GT(s.camera.eye.z, 1.0);
+    // Every corner of the bounds is in front of the camera and inside its field of view, both
+    // vertically and horizontally (the image is 4:3): by the pinhole's angles, worked out here.
+    const Vec3 forward = glm::normalize(s.camera.lookAt - s.camera.eye);
+    const Vec3 right = glm::normalize(glm::cross(forward, s.camera.up));
+    const Vec3 up = glm::cross(right, forward);
+    const double tanHalf = std::tan(s.camera.fovDeg / 2.0 * kPi / 180.0);
+    double widest = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 v = Vec3((c & 1) ? 2 : 0, (c & 2) ? 3 : 0, (c & 4) ? 2 : 0) - s.camera.eye;
+        const double z = glm::dot(v, forward);
+        ASSERT_GT(z, 0.0);
+        EXPECT_LE(std::abs(glm::dot(v, up)) / z, tanHalf);
+        EXPECT_LE(std::abs(glm::dot(v, right)) / z, tanHalf * 4.0 / 3.0);
+        widest = std::max({widest, std::abs(glm::dot(v, up)) / z / tanHalf,
+                           std::abs(glm::dot(v, right)) / z / (tanHalf * 4.0 / 3.0)});
+    }
+    // ... and fills it: a corner reaches past 80% of the half-field.
+    EXPECT_GT(widest, 0.8);
+}
+
+TEST(ModelImport, SavedSceneLoadsBackTheSameTriangles) {
+    const fs::path dir = fs::temp_directory_path() / ("raystep-model-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const Scene s = importModelScene(kModels + "tetra.ply");
+    const SceneFiles files = sceneFilesFor(s, 4, "tetra.mesh.obj");
+    std::ofstream(dir / "tetra.json") << files.sceneJson;
+    std::ofstream(dir / "tetra.mesh.obj") << files.meshObj;
+    const Scene back = loadSceneFile((dir / "tetra.json").string());
+    fs::remove_all(dir);
+    ASSERT_EQ(back.triangles.size(), s.triangles.size());
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+        EXPECT_EQ(back.triangles[i].a, s.triangles[i].a) << i;
+        EXPECT_EQ(back.triangles[i].b, s.triangles[i].b) << i;
+        EXPECT_EQ(back.triangles[i].c, s.triangles[i].c) << i;
+        EXPECT_EQ(back.materials[back.triangles[i].material].name,
+                  s.materials[s.triangles[i].material].name);
+    }
+    EXPECT_EQ(back.camera.eye, s.camera.eye);
+    EXPECT_EQ(back.lights.size(), 2u);
+    EXPECT_EQ(back.lights[1].intensity, s.lights[1].intensity);
+    EXPECT_TRUE(back.materials[1].checker.enabled);
+}
+
+/// Bad input: a SceneError of one line that names the file and says `why`.
+void expectRefused(const std::string& path, const std::string& why) {
+    SCOPED_TRACE(path);
+    try {
+        importModel(path);
+        ADD_FAILURE() << "imported";
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(what.rfind(path, 0), 0u) << what;
+        EXPECT_NE(what.find(why), std::string::npos) << what;
+    }
+}
+
+TEST(ModelImport, BadFilesAreOneLineNamingTheFile) {
+    expectRefused(kModels + "missing.obj", "no such file");
+    expectRefused(kModels + "empty.stl", "empty");
+    expectRefused(kModels + "truncated.stl", "cannot import the model");
+    expectRefused(kModels + "garbage.ply", "cannot import the model");
+    expectRefused(kModels + "nan_vertex.obj", "vertex 2: a coordinate is not a finite number");
+    expectRefused(kModels + "nan_vertex.ply", "not a finite number");
+    expectRefused(kModels + "no_triangles.obj", "no triangles");
+    expectRefused(kModels + "pyramid.json", "not a model file");
+    expectRefused(kModels + "truncated.ply", "declares 5 'face' elements");
+}
+
+TEST(ModelImport, APlyHeaderDeclaringMoreThanTheFileHoldsIsRefusedAtOnce) {
+    // 200 bytes declaring 3 million vertices: assimp reserved for them, then aborted on an
+    // assert; 100,000 declared over 700 KB of blanks took it 22 s.
+    const auto start = std::chrono::steady_clock::now();
+    expectRefused(kModels + "huge_count.ply", "declares 3000000 'vertex' elements");
+    const fs::path padded =
+        fs::temp_directory_path() / ("raystep-padded-" + std::to_string(getpid()) + ".ply");
+    std::ofstream(padded) << "ply\nformat ascii 1.0\nelement vertex 100000\nproperty float x\n"
+                             "property float y\nproperty float z\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
+                             "0 1 0\n3 0 1 2\n"
+                          << std::string(700000, ' ') << "\n";
+    expectRefused(padded.string(), "declares 100000 'vertex' elements");
+    fs::remove(padded);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+}
+
+TEST(ModelImport, AssimpsFailedChecksThrowInsteadOfAborting) {
+    // An internal check of libassimp itself (a null material): it called abort().
+    EXPECT_THROW(aiGetMaterialFloatArray(nullptr, "x", 0, 0, nullptr, nullptr), std::runtime_error);
+}
+
+TEST(ModelImport, FoldersAndFifosAreRefusedWithoutWaiting) {
+    const fs::path dir = fs::temp_directory_path() / ("raystep-fifo-" + std::to_string(getpid()));
+    fs::create_directories(dir / "folder.obj");
+    ASSERT_EQ(::mkfifo((dir / "pipe.stl").c_str(), 0600), 0);
+    // A glTF whose buffer is a FIFO: assimp would open it and wait for a writer for ever.
+    fs::copy_file(kModels + "external.gltf", dir / "external.gltf");
+    ASSERT_EQ(::mkfifo((dir / "external.bin").c_str(), 0600), 0);
+    expectRefused((dir / "folder.obj").string(), "it is a folder");
+    expectRefused((dir / "pipe.stl").string(), "not a regular file");
+    expectRefused((dir / "external.gltf").string(), "external.bin': not a regular file");
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace raystep
