@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <cmath>
@@ -32,7 +33,7 @@ ProgressiveRender::ProgressiveRender(const Scene& scene, const Accelerator& acce
       accel_(accel),
       options_(options),
       tracer_(scene, accel, options.trace),
-      arena_(threadsOf(options.threads)) {
+      threads_(threadsOf(options.threads)) {
     if (options_.width < 1 || options_.height < 1 || options_.width > kMaxImageSide ||
         options_.height > kMaxImageSide)
         throw std::invalid_argument("progressive render: the image size must be 1.." +
@@ -109,7 +110,8 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
     double ms = 0.0;
     {
         const ScopedTimer timer(ms);
-        arena_.execute([&] {
+        tbb::task_arena arena(threads_);
+        arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<int>(0, rows, 1),
                               [&](const tbb::blocked_range<int>& r) {
                                   for (int row = r.begin(); row != r.end(); ++row) {
@@ -140,7 +142,7 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
         samplesDone_ = to;
         // The complete picture: each pixel shows its block's traced pixel, averaged.
         const double n = static_cast<double>(samplesDone_);
-        arena_.execute([&] {
+        arena.execute([&] {
             tbb::parallel_for(0, h, [&](int y) {
                 const int cy = y / b * b;
                 for (int x = 0; x < w; ++x) {

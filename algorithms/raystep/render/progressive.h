@@ -6,8 +6,6 @@
 #include "raystep/render/tracer.h"
 #include "raystep/scene/camera.h"
 
-#include <tbb/task_arena.h>
-
 #include <cstdint>
 #include <vector>
 
@@ -83,7 +81,7 @@ class ProgressiveRender {
     std::vector<std::uint64_t> cost_;
     RayCounters counters_;
     std::vector<double> passMs_;
-    tbb::task_arena arena_;
+    int threads_;  // TBB stays out of this header: Qt's `emit` macro breaks its headers
 };
 
 }  // namespace raystep
