@@ -228,8 +228,16 @@ void ImageView::paintEvent(QPaintEvent*) {
         // A progressive render shows each pass's complete picture while it refines.
         g.drawImage(r, heatmap_ && !heat_.isNull() ? heat_ : image_);
         if (heatmap_) drawColourBar(g);
-        g.setPen(QColor(230, 230, 230));
-        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, message());
+        // The caption on a dark box: readable over a bright sky as over a dark floor.
+        const QString caption = message();
+        const QRectF text = g.fontMetrics()
+                                .boundingRect(QRect(8, 6, width() - 16, 20), Qt::AlignLeft, caption)
+                                .adjusted(-4, -1, 4, 1);
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(0, 0, 0, 150));
+        g.drawRoundedRect(text, 3, 3);
+        g.setPen(QColor(235, 235, 235));
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, caption);
         if (state_ == State::Rendering) {
             g.fillRect(QRectF(r.x(), r.y(), r.width() * percent_ / 100.0, 3), QColor(90, 160, 230));
         }

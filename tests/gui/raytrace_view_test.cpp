@@ -88,6 +88,25 @@ TEST(RayTraceView, TurningTheCameraRendersThisViewLikeTheCore) {
     w.view3D()->orbit(40, 25, 1.3);
     const Camera turned = w.view3D()->currentCamera();
     ASSERT_FALSE(sameCamera(turned, scene.camera));
+    // The render of the turned view has started (the move is handled once events settle).
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const auto& f = w.imageFrame();
+            return f && f->ofView && sameCamera(f->camera, turned);
+        },
+        10000));
+    // Progressively: a picture of blocks comes first, while the render goes on.
+    int firstBlock = 0;
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            ImageView* v = w.imageView();
+            if (v->state() == ImageView::State::Rendering && !v->image().isNull() &&
+                v->frame().block > 1 && w.imageFrame()->ofView)
+                firstBlock = v->frame().block;
+            return firstBlock > 0 || v->state() == ImageView::State::Done;
+        },
+        60000));
+    EXPECT_GT(firstBlock, 1);
     ASSERT_TRUE(
         waitForImage(w, [&](const auto& f) { return f.ofView && sameCamera(f.camera, turned); }));
     const MainWindow::ImageFrame f = *w.imageFrame();
