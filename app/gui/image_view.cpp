@@ -91,8 +91,9 @@ QSize ImageView::renderSize(bool ofView) const {
     const QSize frame = lessonPixel_ && lessonPixel_->width() > 0 && lessonPixel_->height() > 0
                             ? lessonPixel_->size()
                             : sceneFrame_;
-    if (frame.width() <= room.width() && frame.height() <= room.height()) return frame;
-    return frame.scaled(room, Qt::KeepAspectRatio).expandedTo(QSize(1, 1));
+    // Its own size whatever the view's (the view scales it): a resize does not render again.
+    if (frame.width() <= kMaxSide && frame.height() <= kMaxSide) return frame;
+    return frame.scaled(kMaxSide, kMaxSide, Qt::KeepAspectRatio).expandedTo(QSize(1, 1));
 }
 
 void ImageView::setSceneFrame(QSize size) {
@@ -308,7 +309,8 @@ void ImageView::setLessonPixel(std::optional<QRect> pixel) {
 QPointF ImageView::lessonMarkCentre() const {
     const QRectF r = imageRect();
     // The lesson's pixel is one of the scene's camera: nowhere in another camera's image.
-    if (ofView_ || !lessonPixel_ || r.isEmpty() || lessonPixel_->width() <= 0 || lessonPixel_->height() <= 0)
+    if (ofView_ || !lessonPixel_ || r.isEmpty() || lessonPixel_->width() <= 0 ||
+        lessonPixel_->height() <= 0)
         return {};
     return {r.x() + (lessonPixel_->x() + 0.5) / lessonPixel_->width() * r.width(),
             r.y() + (lessonPixel_->y() + 0.5) / lessonPixel_->height() * r.height()};

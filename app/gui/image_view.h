@@ -49,7 +49,7 @@ class ImageView : public QWidget {
     void setOfView(bool ofView);
     bool ofView() const { return ofView_; }
     /// The size to render for this view: its own (capped) for the 3D view's camera; else the
-    /// lesson's image size (its pixel is a pixel of it), or the scene's, shrunk to fit if need be.
+    /// lesson's image size (its pixel is a pixel of it), or the scene's (both capped).
     QSize renderSize(bool ofView) const;
     /// The scene's own image size (its render settings), used when no lesson names one.
     void setSceneFrame(QSize size);

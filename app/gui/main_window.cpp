@@ -199,7 +199,10 @@ void MainWindow::createStatusBar() {
     statusBar()->addPermanentWidget(taskLabel_);
     statusBar()->addPermanentWidget(progress_);
     statusBar()->addPermanentWidget(cancel_);
-    connect(cancel_, &QPushButton::clicked, this, [this] { runner_.cancelAll(); });
+    connect(cancel_, &QPushButton::clicked, this, [this] {
+        renderPending_ = false;  // a render about to start is cancelled too
+        runner_.cancelAll();
+    });
     connect(&runner_, &TaskRunner::progressChanged, this,
             [this](const QString& label, int percent) {
                 const bool running = !label.isEmpty();
@@ -396,8 +399,9 @@ void MainWindow::createRenderSettings() {
     rayTraceView_ = new QAction(tr("Ray trace this &view"), this);
     rayTraceView_->setObjectName("rayTraceView");
     rayTraceView_->setCheckable(true);
-    rayTraceView_->setToolTip(tr("Render the image from the 3D view's camera, again at every "
-                                 "move, coarse first and finer while nothing moves"));
+    rayTraceView_->setToolTip(
+        tr("Render the image from the 3D view's camera, again at every "
+           "move, coarse first and finer while nothing moves"));
     connect(rayTraceView_, &QAction::toggled, this, [this] { scheduleRender(); });
     imageView_->setRayTraceAction(rayTraceView_);
     connect(view3D_, &VtkView::cameraMoved, this, [this] {
@@ -406,14 +410,7 @@ void MainWindow::createRenderSettings() {
     connect(view3D_, &VtkView::pointPicked, this, [this](QPointF p) { traceViewPoint(p); });
     // An image of the view's own size follows it (not after a cancel or a failure: the user
     // asks for that one again).
-    connect(imageView_, &ImageView::renderSizeChanged, this, [this] {
-        const auto state = imageView_->state();
-        if (!imageFrame_ || (state != ImageView::State::Done && state != ImageView::State::Rendering))
-            return;
-        if (imageView_->renderSize(imageFrame_->ofView) !=
-            QSize(imageFrame_->width, imageFrame_->height))
-            scheduleRender();
-    });
+    connect(imageView_, &ImageView::renderSizeChanged, this, [this] { followImageSize(); });
 
     renderBar_ = new QToolBar(tr("Render settings"), this);
     renderBar_->setObjectName("renderSettingsBar");
@@ -466,6 +463,16 @@ void MainWindow::scheduleRender() {
     });
 }
 
+void MainWindow::followImageSize() {
+    // A cancelled or failed image waits for the user's "render again", whatever the size.
+    const auto state = imageView_->state();
+    if (!imageFrame_ || (state != ImageView::State::Done && state != ImageView::State::Rendering))
+        return;
+    if (imageView_->renderSize(imageFrame_->ofView) !=
+        QSize(imageFrame_->width, imageFrame_->height))
+        scheduleRender();
+}
+
 void MainWindow::takeFrame() {
     if (!frames_) return;
     if (std::optional<RenderFrame> f = frames_->take()) imageView_->showFrame(*f);
@@ -484,10 +491,8 @@ void MainWindow::traceViewPoint(QPointF widgetPos) {
     settings.diffuseSamples = diffuseBox_->value();
     session_.tracePixel(x, y, w, h, camera, settings);
     session_.setCursor(session_.size());
-    statusBar()->showMessage(tr("3D view point (%1, %2): %3 events recorded")
-                                 .arg(x)
-                                 .arg(y)
-                                 .arg(session_.size()));
+    statusBar()->showMessage(
+        tr("3D view point (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
 }
 
 void MainWindow::renderImage() {
@@ -548,6 +553,7 @@ void MainWindow::renderImage() {
         [this, generation, box](Rendered&& r, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
             if (outcome.cancelled) {
+                renderPending_ = false;  // Cancel holds for a render scheduled meanwhile too
                 imageView_->renderCancelled();
                 statusBar()->showMessage(tr("Render cancelled"));
             } else if (outcome.error) {
@@ -744,10 +750,15 @@ void MainWindow::whenIdle(std::function<void()> f) {
 bool MainWindow::waitUntilIdle(int timeoutMs) {
     QElapsedTimer clock;
     clock.start();
-    while (runner_.busy() && clock.elapsed() < timeoutMs)
-        QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
-    QApplication::processEvents();
-    return !runner_.busy();
+    // A render scheduled (a move, a resize) counts as work: it starts once events settle.
+    const auto busy = [this] { return runner_.busy() || renderPending_; };
+    for (;;) {
+        while (busy() && clock.elapsed() < timeoutMs)
+            QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
+        QApplication::processEvents();
+        if (!busy()) return true;
+        if (clock.elapsed() >= timeoutMs) return false;
+    }
 }
 
 QString MainWindow::inspectorText() const {

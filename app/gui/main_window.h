@@ -145,6 +145,9 @@ class MainWindow : public QMainWindow {
     void syncRenderSettings(const Scene& scene);
     /// Renders the image again once events settle (a camera drag moves it many times).
     void scheduleRender();
+    /// Renders again if the image's wanted size changed (the view's own size when it is of the
+    /// 3D view's camera; the lesson's frame), unless it was cancelled or failed.
+    void followImageSize();
     /// Shows the running render's newest pass, if one came.
     void takeFrame();
     /// A click in the 3D view: records the ray under it, seen by the 3D view's camera.
