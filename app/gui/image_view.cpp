@@ -1,8 +1,13 @@
 #include "image_view.h"
 
+#include "raystep/render/image.h"
+
+#include <QAction>
+#include <QLinearGradient>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPushButton>
+#include <QToolButton>
 #include <QWheelEvent>
 
 namespace raystep::gui {
@@ -28,11 +33,13 @@ ImageView::ImageView(Session& session, QWidget* parent) : QWidget(parent), sessi
     });
 }
 
-void ImageView::renderStarted(int width, int height) {
+void ImageView::renderStarted(int width, int height, bool keepPicture) {
     state_ = State::Rendering;
     size_ = {width, height};
     percent_ = 0;
-    image_ = heat_ = QImage();
+    // A new view of the same scene keeps the old picture until the first pass replaces it.
+    if (!keepPicture) image_ = heat_ = QImage();
+    frame_ = RenderFrame{};
     why_.clear();
     renderButton_->hide();
     update();
@@ -51,6 +58,58 @@ void ImageView::renderFinished(const QImage& image, const QImage& heat, double) 
     size_ = image.size();
     renderButton_->hide();
     update();
+}
+
+void ImageView::showFrame(const RenderFrame& frame) {
+    if (state_ != State::Rendering) return;
+    frame_ = frame;
+    image_ = frame.image;
+    heat_ = frame.heat;
+    size_ = frame.image.size();
+    update();
+}
+
+void ImageView::finishFrame(const RenderFrame& frame, double ms) {
+    frame_ = frame;
+    renderFinished(frame.image, frame.heat, ms);
+}
+
+void ImageView::setOfView(bool ofView) {
+    ofView_ = ofView;
+    update();
+}
+
+QSize ImageView::renderSize(bool ofView) const {
+    // Enough for a projector at full screen, and the first pass stays quick (about 1 Mpixel).
+    constexpr int kMaxSide = 1280;
+    const QSize room = (QSizeF(size()) * devicePixelRatioF()).toSize().expandedTo(QSize(64, 48));
+    if (ofView)
+        return room.width() > kMaxSide || room.height() > kMaxSide
+                   ? room.scaled(kMaxSide, kMaxSide, Qt::KeepAspectRatio)
+                   : room;
+    // The scene's camera: the lesson's own frame, so that its pixel is a pixel of the image.
+    const QSize frame = lessonPixel_ && lessonPixel_->width() > 0 && lessonPixel_->height() > 0
+                            ? lessonPixel_->size()
+                            : sceneFrame_;
+    // Its own size whatever the view's (the view scales it): a resize does not render again.
+    if (frame.width() <= kMaxSide && frame.height() <= kMaxSide) return frame;
+    return frame.scaled(kMaxSide, kMaxSide, Qt::KeepAspectRatio).expandedTo(QSize(1, 1));
+}
+
+void ImageView::setSceneFrame(QSize size) {
+    if (size.isEmpty() || size == sceneFrame_) return;
+    sceneFrame_ = size;
+    emit renderSizeChanged();
+}
+
+void ImageView::setRayTraceAction(QAction* action) {
+    if (!rayTraceButton_) {
+        rayTraceButton_ = new QToolButton(this);
+        rayTraceButton_->setObjectName("rayTraceViewButton");
+        rayTraceButton_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    }
+    rayTraceButton_->setDefaultAction(action);
+    placeButton();
 }
 
 void ImageView::renderCancelled() {
@@ -83,10 +142,21 @@ QString ImageView::message() const {
         case State::NoScene:
             return why_.isEmpty() ? tr("The image view shows 3D scenes.") : why_;
         case State::Rendering:
+            if (!image_.isNull() && frame_.block > 1)
+                return tr("Rendering: one ray per %1x%1 block of pixels... %2%")
+                    .arg(frame_.block)
+                    .arg(percent_);
+            if (!image_.isNull() && frame_.samples < frame_.spp)
+                return tr("Refining: %1 of %2 samples per pixel... %3%")
+                    .arg(frame_.samples)
+                    .arg(frame_.spp)
+                    .arg(percent_);
             return tr("Rendering... %1%\nClick a pixel to trace it meanwhile.").arg(percent_);
         case State::Done:
-            return heatmap_ ? tr("Primitive tests per pixel (dark: few, bright: many)")
-                            : tr("Ray tracing (raystep): click a pixel to trace it");
+            if (heatmap_) return tr("Primitive tests per pixel (dark: few, bright: many)");
+            return ofView_ ? tr("Ray tracing this view (the 3D view's camera): click a pixel to "
+                                "trace it")
+                           : tr("Ray tracing (raystep): click a pixel to trace it");
         case State::Cancelled:
             return tr("Render cancelled. Pixels can still be clicked and traced.");
         case State::Failed:
@@ -107,20 +177,71 @@ void ImageView::placeButton() {
     const QSize hint = renderButton_->sizeHint();
     renderButton_->setGeometry((width() - hint.width()) / 2, height() / 2 + 30, hint.width(),
                                hint.height());
+    if (rayTraceButton_) {
+        const QSize h = rayTraceButton_->sizeHint();
+        rayTraceButton_->setGeometry(width() - h.width() - 6, 4, h.width(), h.height());
+    }
 }
 
 void ImageView::resizeEvent(QResizeEvent*) {
     placeButton();
+    emit renderSizeChanged();
+}
+
+QRectF ImageView::colourBarRect() const {
+    const QRectF r = imageRect();
+    if (!heatmap_ || heat_.isNull() || r.isEmpty()) return {};
+    const double w = std::min(260.0, width() - 24.0);
+    // Under the image when there is room, else over its bottom edge.
+    const double y = std::min(r.bottom() + 22.0, height() - 22.0);
+    return {(width() - w) / 2, y, w, 12};
+}
+
+void ImageView::drawColourBar(QPainter& g) {
+    const QRectF bar = colourBarRect();
+    if (bar.isEmpty()) return;
+    // The heat map's own scale (image.h's heatmapColor), 0 at the left, the maximum at the right.
+    QLinearGradient grad(bar.topLeft(), bar.topRight());
+    for (int i = 0; i <= 16; ++i) {
+        const auto c = heatmapColor(i / 16.0);
+        grad.setColorAt(i / 16.0, QColor(c[0], c[1], c[2]));
+    }
+    g.save();
+    g.setPen(Qt::NoPen);
+    g.setBrush(QColor(0, 0, 0, 170));
+    g.drawRoundedRect(bar.adjusted(-8, -18, 8, 4), 4, 4);
+    g.fillRect(bar, grad);
+    g.setPen(QColor(235, 235, 235));
+    const QRectF labels(bar.left(), bar.top() - 17, bar.width(), 15);
+    g.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
+    g.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, QString::number(frame_.maxTests));
+    g.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter,
+               tr("tests per pixel (min %1, max %2)").arg(frame_.minTests).arg(frame_.maxTests));
+    g.restore();
 }
 
 void ImageView::paintEvent(QPaintEvent*) {
     QPainter g(this);
     g.fillRect(rect(), QColor(40, 40, 44));
     const QRectF r = imageRect();
-    if (state_ == State::Done && !image_.isNull()) {
-        g.drawImage(r, heatmap_ ? heat_ : image_);
-        g.setPen(QColor(230, 230, 230));
-        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, message());
+    const bool picture = !image_.isNull() && (state_ == State::Done || state_ == State::Rendering);
+    if (picture) {
+        // A progressive render shows each pass's complete picture while it refines.
+        g.drawImage(r, heatmap_ && !heat_.isNull() ? heat_ : image_);
+        if (heatmap_) drawColourBar(g);
+        // The caption on a dark box: readable over a bright sky as over a dark floor.
+        const QString caption = message();
+        const QRectF text = g.fontMetrics()
+                                .boundingRect(QRect(8, 6, width() - 16, 20), Qt::AlignLeft, caption)
+                                .adjusted(-4, -1, 4, 1);
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(0, 0, 0, 150));
+        g.drawRoundedRect(text, 3, 3);
+        g.setPen(QColor(235, 235, 235));
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, caption);
+        if (state_ == State::Rendering) {
+            g.fillRect(QRectF(r.x(), r.y(), r.width() * percent_ / 100.0, 3), QColor(90, 160, 230));
+        }
     } else {
         // The image's frame, where a click still picks a pixel, and what is happening.
         if (!r.isEmpty()) {
@@ -179,13 +300,17 @@ void ImageView::paintEvent(QPaintEvent*) {
 }
 
 void ImageView::setLessonPixel(std::optional<QRect> pixel) {
+    const QSize before = renderSize(false);
     lessonPixel_ = pixel;
     update();
+    if (renderSize(false) != before) emit renderSizeChanged();
 }
 
 QPointF ImageView::lessonMarkCentre() const {
     const QRectF r = imageRect();
-    if (!lessonPixel_ || r.isEmpty() || lessonPixel_->width() <= 0 || lessonPixel_->height() <= 0)
+    // The lesson's pixel is one of the scene's camera: nowhere in another camera's image.
+    if (ofView_ || !lessonPixel_ || r.isEmpty() || lessonPixel_->width() <= 0 ||
+        lessonPixel_->height() <= 0)
         return {};
     return {r.x() + (lessonPixel_->x() + 0.5) / lessonPixel_->width() * r.width(),
             r.y() + (lessonPixel_->y() + 0.5) / lessonPixel_->height() * r.height()};

@@ -17,6 +17,7 @@
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
+#include "raystep/render/progressive.h"
 #include "raystep/render/tracer.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/trace_io.h"
@@ -35,20 +36,65 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
+#include <QSignalBlocker>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <mutex>
 
 namespace raystep::gui {
 
 namespace {
 constexpr int kImageWidth = 320, kImageHeight = 240;
+
+/// A progressive render's picture as the image view shows it (8-bit sRGB, the heat map and its
+/// scale); made on the worker.
+RenderFrame frameOf(const ProgressiveRender& r) {
+    const int w = r.options().width, h = r.options().height;
+    RenderFrame f;
+    f.image = QImage(w, h, QImage::Format_RGB888);
+    const auto rgb = toSrgb8(r.image());
+    for (int y = 0; y < h; ++y)
+        std::memcpy(f.image.scanLine(y), rgb.data() + std::size_t(y) * w * 3, std::size_t(w) * 3);
+    f.heat = QImage(w, h, QImage::Format_RGB888);
+    const auto heat = heatmapRgb8(r.costPerPixel(), w, h);
+    for (int y = 0; y < h; ++y)
+        std::memcpy(f.heat.scanLine(y), heat.data() + std::size_t(y) * w * 3, std::size_t(w) * 3);
+    const auto [lo, hi] = std::minmax_element(r.costPerPixel().begin(), r.costPerPixel().end());
+    f.minTests = lo == r.costPerPixel().end() ? 0 : *lo;
+    f.maxTests = hi == r.costPerPixel().end() ? 0 : *hi;
+    if (const ProgressivePass* p = r.lastPass()) {
+        f.block = p->block;
+        f.samples = p->samples;
+    }
+    f.spp = r.options().spp;
+    return f;
+}
 }  // namespace
+
+/// The newest pass of a render under way, put by its worker and taken on the GUI thread (the
+/// runner's rule: a worker never calls into a QObject).
+struct FrameBox {
+    std::mutex mutex;
+    std::optional<RenderFrame> frame;
+    void put(RenderFrame f) {
+        const std::lock_guard lock(mutex);
+        frame = std::move(f);
+    }
+    std::optional<RenderFrame> take() {
+        const std::lock_guard lock(mutex);
+        std::optional<RenderFrame> f = std::move(frame);
+        frame.reset();
+        return f;
+    }
+};
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(tr("raystep"));
@@ -86,7 +132,15 @@ void MainWindow::createViews() {
     views_ = views;
     connect(imageView_, &ImageView::renderRequested, this, [this] { renderImage(); });
     connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
-        session_.tracePixel(x, y, kImageWidth, kImageHeight);
+        // The camera, size and settings the image was made with: the pixel's ray is the one
+        // drawn there.
+        if (const auto& f = imageFrame_) {
+            session_.tracePixel(x, y, f->width, f->height, f->camera, f->trace);
+            clicked_ = Clicked{x, y, f->width, f->height};
+        } else {
+            session_.tracePixel(x, y, kImageWidth, kImageHeight);
+            clicked_ = Clicked{x, y, kImageWidth, kImageHeight};
+        }
         session_.setCursor(session_.size());
         statusBar()->showMessage(
             tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
@@ -148,7 +202,10 @@ void MainWindow::createStatusBar() {
     statusBar()->addPermanentWidget(taskLabel_);
     statusBar()->addPermanentWidget(progress_);
     statusBar()->addPermanentWidget(cancel_);
-    connect(cancel_, &QPushButton::clicked, this, [this] { runner_.cancelAll(); });
+    connect(cancel_, &QPushButton::clicked, this, [this] {
+        renderPending_ = false;  // a render about to start is cancelled too
+        runner_.cancelAll();
+    });
     connect(&runner_, &TaskRunner::progressChanged, this,
             [this](const QString& label, int percent) {
                 const bool running = !label.isEmpty();
@@ -156,8 +213,10 @@ void MainWindow::createStatusBar() {
                 progress_->setVisible(running);
                 cancel_->setVisible(running);
                 progress_->setValue(percent);
-                if (runner_.busy(TaskKind::Render))
+                if (runner_.busy(TaskKind::Render)) {
+                    takeFrame();
                     imageView_->renderProgress(runner_.percent(TaskKind::Render));
+                }
             });
 }
 
@@ -238,6 +297,7 @@ void MainWindow::createActions() {
     a.heatmap->setCheckable(true);
     connect(a.heatmap, &QAction::toggled, imageView_, &ImageView::setHeatmap);
     a.resetCamera = action(tr("&Reset 3D camera"), {}, [this] { view3D_->resetCamera(); });
+    createRenderSettings();
 }
 
 void MainWindow::createMenus() {
@@ -256,6 +316,7 @@ void MainWindow::createMenus() {
     lessons->addActions({a.openLessonFile, a.backToLesson, a.lecturer, a.showErrata});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
+    view->addAction(rayTraceView_);
 }
 
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
@@ -294,6 +355,7 @@ void MainWindow::showScene(SceneRef scene, bool renderImage) {
         session_.traceExampleRay();
         imageView_->clear();
     } else {
+        syncRenderSettings(*session_.scene3D());
         if (renderImage)
             this->renderImage();
         else
@@ -335,45 +397,166 @@ void MainWindow::warn(const QString& title, const QString& text) {
     box->open();  // window-modal, without a nested event loop
 }
 
+void MainWindow::createRenderSettings() {
+    // Off at start: a lesson's text, its pixel and its exercises are in the scene's camera.
+    rayTraceView_ = new QAction(tr("Ray trace this &view"), this);
+    rayTraceView_->setObjectName("rayTraceView");
+    rayTraceView_->setCheckable(true);
+    rayTraceView_->setToolTip(
+        tr("Render the image from the 3D view's camera, again at every "
+           "move, coarse first and finer while nothing moves"));
+    connect(rayTraceView_, &QAction::toggled, this, [this] { scheduleRender(); });
+    imageView_->setRayTraceAction(rayTraceView_);
+    connect(view3D_, &VtkView::cameraMoved, this, [this] {
+        if (rayTraceView_->isChecked()) scheduleRender();
+    });
+    connect(view3D_, &VtkView::pointPicked, this, [this](QPointF p) { traceViewPoint(p); });
+    // An image of the view's own size follows it (not after a cancel or a failure: the user
+    // asks for that one again).
+    connect(imageView_, &ImageView::renderSizeChanged, this, [this] { followImageSize(); });
+
+    renderBar_ = new QToolBar(tr("Render settings"), this);
+    renderBar_->setObjectName("renderSettingsBar");
+    renderBar_->addAction(rayTraceView_);
+    renderBar_->addSeparator();
+    const auto box = [this](const QString& label, const QString& name, int lo, int hi,
+                            const QString& tip) {
+        auto* text = new QLabel(label);
+        text->setContentsMargins(6, 0, 2, 0);
+        renderBar_->addWidget(text);
+        auto* b = new QSpinBox;
+        b->setObjectName(name);
+        b->setRange(lo, hi);  // the scene format's limits (docs/scene-format.md)
+        b->setToolTip(tip);
+        text->setBuddy(b);
+        renderBar_->addWidget(b);
+        connect(b, &QSpinBox::valueChanged, this, [this] { scheduleRender(); });
+        return b;
+    };
+    bouncesBox_ = box(tr("&Bounces"), "renderBounces", 0, 64,
+                      tr("Depth of secondary rays (reflection, refraction, diffuse)"));
+    diffuseBox_ = box(tr("&Diffuse samples"), "renderDiffuseSamples", 0, 1024,
+                      tr("Diffuse bounce rays at the first diffuse hit: colour bleeding"));
+    sppBox_ = box(tr("&Samples per pixel"), "renderSpp", 1, 4096,
+                  tr("Jittered samples per pixel: the last pass of the progressive render"));
+    addToolBar(Qt::TopToolBarArea, renderBar_);
+}
+
+void MainWindow::syncRenderSettings(const Scene& scene) {
+    {
+        const QSignalBlocker block(imageView_);  // the render that follows has the new size
+        imageView_->setSceneFrame(QSize(scene.settings.width, scene.settings.height));
+    }
+    // The scene's own settings, as the command line renders it; not a change by the user.
+    for (auto [b, v] : {std::pair{bouncesBox_, scene.settings.bounces},
+                        std::pair{diffuseBox_, scene.settings.diffuseSamples},
+                        std::pair{sppBox_, scene.settings.spp}}) {
+        const QSignalBlocker block(b);
+        b->setValue(v);
+    }
+}
+
+void MainWindow::scheduleRender() {
+    if (renderPending_ || !session_.scene3D()) return;
+    renderPending_ = true;
+    // Once the events queued now are handled: a drag's many moves make one render, and the
+    // running one is superseded (cancelled) by it.
+    QTimer::singleShot(0, this, [this] {
+        if (renderPending_) renderImage();
+    });
+}
+
+void MainWindow::followImageSize() {
+    // A cancelled or failed image waits for the user's "render again", whatever the size.
+    const auto state = imageView_->state();
+    if (!imageFrame_ || (state != ImageView::State::Done && state != ImageView::State::Rendering))
+        return;
+    if (imageView_->renderSize(imageFrame_->ofView) !=
+        QSize(imageFrame_->width, imageFrame_->height))
+        scheduleRender();
+}
+
+void MainWindow::takeFrame() {
+    if (!frames_) return;
+    if (std::optional<RenderFrame> f = frames_->take()) imageView_->showFrame(*f);
+}
+
+void MainWindow::traceViewPoint(QPointF widgetPos) {
+    if (!session_.scene3D() || !view3D_->isVisible()) return;
+    // The ray under the mouse: pixel (x, y) of an image of the 3D view's size and camera.
+    const int w = std::max(1, view3D_->width()), h = std::max(1, view3D_->height());
+    const int x = std::clamp(static_cast<int>(widgetPos.x()), 0, w - 1);
+    const int y = std::clamp(static_cast<int>(widgetPos.y()), 0, h - 1);
+    const Camera camera = view3D_->currentCamera();
+    if (!cameraUsable(camera)) return;
+    TraceSettings settings;
+    settings.bounces = bouncesBox_->value();
+    settings.diffuseSamples = diffuseBox_->value();
+    session_.tracePixel(x, y, w, h, camera, settings);
+    session_.setCursor(session_.size());
+    statusBar()->showMessage(
+        tr("3D view point (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
+}
+
 void MainWindow::renderImage() {
+    renderPending_ = false;
     const Scene* scene = session_.scene3D();
     if (!scene) return;
     struct Rendered {
-        QImage image, heat;
+        RenderFrame frame;
         double ms = 0.0;
     };
-    imageView_->renderStarted(kImageWidth, kImageHeight);
+    ImageFrame f;
+    f.ofView = rayTraceView_->isChecked();
+    f.camera = f.ofView ? view3D_->currentCamera() : scene->camera;
+    if (!cameraUsable(f.camera)) {
+        f.ofView = false;
+        f.camera = scene->camera;
+    }
+    const QSize size = imageView_->renderSize(f.ofView);
+    f.width = size.width();
+    f.height = size.height();
+    // What the control says (the scene's settings until the user changes them).
+    f.trace.bounces = bouncesBox_->value();
+    f.trace.diffuseSamples = diffuseBox_->value();
+    f.spp = sppBox_->value();
+    // Another view of the same scene keeps its picture until the new one's first pass.
+    const bool sameScene = imageGeneration_ == generation_;
+    imageFrame_ = f;
+    imageGeneration_ = generation_;
+    imageView_->setOfView(f.ofView);
+    imageView_->renderStarted(f.width, f.height, sameScene);
+    auto box = std::make_shared<FrameBox>();
+    frames_ = box;
     const std::uint64_t generation = generation_;
     runner_.start<Rendered>(
         TaskKind::Render, tr("Rendering %1...").arg(QString::fromStdString(session_.name())),
-        [ref = session_.sceneRef()](const ProgressFn& progress) {
+        [ref = session_.sceneRef(), f, box](const ProgressFn& progress) {
             const Scene& s = std::get<Scene>(ref->scene);
-            RenderOptions opt;
-            opt.width = kImageWidth;
-            opt.height = kImageHeight;
-            // What the scene asks for, as the command line renders it (only the size is ours).
-            opt.spp = s.settings.spp;
-            opt.trace.bounces = s.settings.bounces;
-            opt.trace.diffuseSamples = s.settings.diffuseSamples;
-            const RenderResult r = raystep::render(s, *ref->accel3D, opt, progress);
-            if (r.cancelled) throw BuildCancelled();
+            ProgressiveOptions o;
+            o.camera = f.camera;
+            o.width = f.width;
+            o.height = f.height;
+            o.spp = f.spp;
+            o.trace = f.trace;
+            ProgressiveRender r(s, *ref->accel3D, o);
+            const double passes = static_cast<double>(r.plan().size());
+            while (!r.done()) {
+                const double before = static_cast<double>(r.passesDone());
+                if (!r.nextPass([&](double x) { return progress((before + x) / passes); }))
+                    throw BuildCancelled();
+                // Every pass but the last is shown as it comes; the last one by `done`.
+                if (!r.done()) box->put(frameOf(r));
+            }
             Rendered out;
-            out.image = QImage(opt.width, opt.height, QImage::Format_RGB888);
-            const auto rgb = toSrgb8(r.image);
-            for (int y = 0; y < opt.height; ++y)
-                std::memcpy(out.image.scanLine(y), rgb.data() + std::size_t(y) * opt.width * 3,
-                            opt.width * 3);
-            out.heat = QImage(opt.width, opt.height, QImage::Format_RGB888);
-            const auto h = heatmapRgb8(r.costPerPixel, opt.width, opt.height);
-            for (int y = 0; y < opt.height; ++y)
-                std::memcpy(out.heat.scanLine(y), h.data() + std::size_t(y) * opt.width * 3,
-                            opt.width * 3);
-            out.ms = r.renderMs;
+            out.frame = frameOf(r);
+            for (const double ms : r.passMs()) out.ms += ms;
             return out;
         },
-        [this, generation](Rendered&& r, const TaskOutcome& outcome) {
+        [this, generation, box](Rendered&& r, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
             if (outcome.cancelled) {
+                renderPending_ = false;  // Cancel holds for a render scheduled meanwhile too
                 imageView_->renderCancelled();
                 statusBar()->showMessage(tr("Render cancelled"));
             } else if (outcome.error) {
@@ -381,7 +564,7 @@ void MainWindow::renderImage() {
                 imageView_->renderFailed(why);
                 statusBar()->showMessage(tr("Render failed: %1").arg(why));
             } else {
-                imageView_->renderFinished(r.image, r.heat, r.ms);
+                imageView_->finishFrame(r.frame, r.ms);
                 statusBar()->showMessage(
                     tr("Rendered in %1 ms; click a pixel to trace it").arg(r.ms, 0, 'f', 0));
             }
@@ -503,6 +686,11 @@ void MainWindow::openCompare() {
     for (const Event& e : session_.log().events())
         if (const auto* p = std::get_if<PixelResult>(&e)) {
             pixel = {static_cast<int>(p->x), static_cast<int>(p->y), kImageWidth, kImageHeight};
+            // A pixel clicked on an image of another size: in that image's frame.
+            if (clicked_ && clicked_->x == pixel.x && clicked_->y == pixel.y) {
+                pixel.width = clicked_->width;
+                pixel.height = clicked_->height;
+            }
             const bool lessons =
                 lesson_->hasLesson() && lesson_->lesson().trace.kind == LessonTrace::Kind::Pixel;
             if (lessons && lesson_->lesson().trace.x == pixel.x &&
@@ -565,10 +753,15 @@ void MainWindow::whenIdle(std::function<void()> f) {
 bool MainWindow::waitUntilIdle(int timeoutMs) {
     QElapsedTimer clock;
     clock.start();
-    while (runner_.busy() && clock.elapsed() < timeoutMs)
-        QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
-    QApplication::processEvents();
-    return !runner_.busy();
+    // A render scheduled (a move, a resize) counts as work: it starts once events settle.
+    const auto busy = [this] { return runner_.busy() || renderPending_; };
+    for (;;) {
+        while (busy() && clock.elapsed() < timeoutMs)
+            QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
+        QApplication::processEvents();
+        if (!busy()) return true;
+        if (clock.elapsed() >= timeoutMs) return false;
+    }
 }
 
 QString MainWindow::inspectorText() const {

@@ -8,6 +8,9 @@
 #include "course/lesson.h"
 #include "course/progress.h"
 
+#include "raystep/render/tracer.h"
+#include "raystep/scene/camera.h"
+
 #include <functional>
 #include <optional>
 
@@ -20,6 +23,8 @@ class QComboBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QSpinBox;
+class QToolBar;
 
 namespace raystep::gui {
 
@@ -29,6 +34,7 @@ namespace raystep::gui {
 QString savePng(const QImage& image, const QString& path);
 
 class CompareWindow;
+struct FrameBox;
 class EventList;
 class ImageView;
 class Inspector;
@@ -100,6 +106,18 @@ class MainWindow : public QMainWindow {
     View2D* view2D() const { return view2D_; }
     VtkView* view3D() const { return view3D_; }
     ImageView* imageView() const { return imageView_; }
+    /// What the image is (being) made with: the camera, size and settings its pixels are traced
+    /// with when clicked.
+    struct ImageFrame {
+        Camera camera;
+        int width = 0, height = 0;
+        TraceSettings trace;
+        int spp = 1;
+        bool ofView = false;  // the 3D view's camera (ray trace this view), else the scene's
+    };
+    const std::optional<ImageFrame>& imageFrame() const { return imageFrame_; }
+    /// View > Ray trace this view (checkable).
+    QAction* rayTraceViewAction() const { return rayTraceView_; }
     /// `wanted`, made to fit the screen the window is on (a student's laptop is 1366x768).
     QSize fitToScreen(QSize wanted) const;
     /// Whether a window geometry saved by an earlier run was restored.
@@ -138,6 +156,20 @@ class MainWindow : public QMainWindow {
     void exportTrace();
     /// Shows a scene made by a worker: views, text, the first ray to replay, the render.
     void showScene(SceneRef scene, bool renderImage);
+    /// The render settings control (bounces, diffuse samples, samples per pixel) and the "ray
+    /// trace this view" action; a change renders the image again.
+    void createRenderSettings();
+    /// The control shows the scene's own render settings.
+    void syncRenderSettings(const Scene& scene);
+    /// Renders the image again once events settle (a camera drag moves it many times).
+    void scheduleRender();
+    /// Renders again if the image's wanted size changed (the view's own size when it is of the
+    /// 3D view's camera; the lesson's frame), unless it was cancelled or failed.
+    void followImageSize();
+    /// Shows the running render's newest pass, if one came.
+    void takeFrame();
+    /// A click in the 3D view: records the ray under it, seen by the 3D view's camera.
+    void traceViewPoint(QPointF widgetPos);
     /// Which of the 2D view, 3D view and image are shown (a 2D lesson needs no 3D view).
     void showViews(bool view2D, bool view3D, bool image);
     /// An open that did not end well: say why (a dialog unless quiet), keep what is shown.
@@ -180,6 +212,18 @@ class MainWindow : public QMainWindow {
     QLabel* taskLabel_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
+    // Ray trace this view: the action, the settings control, and the render under way.
+    QAction* rayTraceView_ = nullptr;
+    QToolBar* renderBar_ = nullptr;
+    QSpinBox *bouncesBox_ = nullptr, *diffuseBox_ = nullptr, *sppBox_ = nullptr;
+    std::optional<ImageFrame> imageFrame_;
+    std::uint64_t imageGeneration_ = ~std::uint64_t(0);  // the scene the image was made for
+    bool renderPending_ = false;
+    std::shared_ptr<FrameBox> frames_;  // the running render's newest pass
+    struct Clicked {
+        int x, y, width, height;
+    };
+    std::optional<Clicked> clicked_;  // the last pixel clicked, in its image's frame
 };
 
 }  // namespace raystep::gui

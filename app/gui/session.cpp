@@ -100,6 +100,15 @@ void Session::tracePixel(int x, int y, int width, int height) {
     showLog(std::move(log), LogKind::Pixel);
 }
 
+void Session::tracePixel(int x, int y, int width, int height, const Camera& camera,
+                         const TraceSettings& settings) {
+    const Scene* s = scene3D();
+    if (!s) return;
+    auto log = std::make_shared<EventLog>();
+    tracePixelEvents(*s, *accel3D(), camera, settings, x, y, width, height, *log);
+    showLog(std::move(log), LogKind::Pixel);
+}
+
 void Session::showLog(LogRef log, LogKind kind) {
     // The new replay is made before the old one goes: the old log stays alive until then.
     auto replay = std::make_unique<Replay>(*log);

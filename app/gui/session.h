@@ -2,6 +2,7 @@
 // What the app shows: a scene (3D or one of the lecture's 2D pictures), its structure, a recorded
 // log and the replay cursor over it. The views draw from it; they own no algorithm.
 #include "raystep/accel/accel.h"
+#include "raystep/render/tracer.h"
 #include "raystep/scene/scene.h"
 #include "raystep/scene/scene2d.h"
 #include "raystep/trace/replay.h"
@@ -68,6 +69,9 @@ class Session : public QObject {
     void load(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
     /// 3D: records pixel (x, y) of a `width` x `height` image; 2D: the scene's example ray.
     void tracePixel(int x, int y, int width, int height);
+    /// The same seen by another camera with other trace settings (an image of the 3D view's).
+    void tracePixel(int x, int y, int width, int height, const Camera& camera,
+                    const TraceSettings& settings);
     void traceExampleRay();
     /// recordBuild on this thread, then replays it.
     void recordBuild();

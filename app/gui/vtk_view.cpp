@@ -3,6 +3,7 @@
 #include "course/palette.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -113,7 +114,34 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
         rebuildRays();
     });
     connect(&session_, &Session::cursorChanged, this, [this] { rebuildRays(); });
+    // Every change of the camera, whoever made it; only a new view is announced (not, e.g., a
+    // new clipping range).
+    vtkNew<vtkCallbackCommand> onCamera;
+    onCamera->SetClientData(this);
+    onCamera->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+        auto* view = static_cast<VtkView*>(self);
+        const Camera c = view->currentCamera();
+        const Camera& a = view->announcedCamera_;
+        if (c.eye == a.eye && c.lookAt == a.lookAt && c.up == a.up && c.fovDeg == a.fovDeg) return;
+        view->announcedCamera_ = c;
+        emit view->cameraMoved();
+    });
+    renderer_->GetActiveCamera()->AddObserver(vtkCommand::ModifiedEvent, onCamera);
     rebuildScene();
+}
+
+Camera VtkView::currentCamera() const {
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    double p[3], f[3], u[3];
+    cam->GetPosition(p);
+    cam->GetFocalPoint(f);
+    cam->GetViewUp(u);
+    Camera c;
+    c.eye = Vec3(p[0], p[1], p[2]);
+    c.lookAt = Vec3(f[0], f[1], f[2]);
+    c.up = Vec3(u[0], u[1], u[2]);
+    c.fovDeg = cam->GetViewAngle();  // vertical, as VTK's default (no horizontal view angle)
+    return c;
 }
 
 VtkView::~VtkView() = default;
@@ -374,6 +402,8 @@ void VtkView::forward(QMouseEvent* e) {
                                           e->modifiers() & Qt::ShiftModifier);
 }
 void VtkView::mousePressEvent(QMouseEvent* e) {
+    pressAt_.reset();
+    if (e->button() == Qt::LeftButton) pressAt_ = e->position();
     forward(e);
     if (e->button() == Qt::LeftButton) interactor_->LeftButtonPressEvent();
     if (e->button() == Qt::RightButton) interactor_->RightButtonPressEvent();
@@ -385,9 +415,15 @@ void VtkView::mouseReleaseEvent(QMouseEvent* e) {
     if (e->button() == Qt::LeftButton) interactor_->LeftButtonReleaseEvent();
     if (e->button() == Qt::RightButton) interactor_->RightButtonReleaseEvent();
     if (e->button() == Qt::MiddleButton) interactor_->MiddleButtonReleaseEvent();
+    // A click without a drag picks the point (a drag turned the camera instead).
+    if (e->button() == Qt::LeftButton && pressAt_ &&
+        (e->position() - *pressAt_).manhattanLength() <= 3)
+        emit pointPicked(e->position());
+    pressAt_.reset();
     update();
 }
 void VtkView::mouseMoveEvent(QMouseEvent* e) {
+    if (pressAt_ && (e->position() - *pressAt_).manhattanLength() > 3) pressAt_.reset();
     forward(e);
     interactor_->MouseMoveEvent();
     update();

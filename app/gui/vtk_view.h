@@ -6,11 +6,14 @@
 #include "session.h"
 
 #include "raystep/base/i18n.h"
+#include "raystep/scene/camera.h"
 
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
 #include <QWidget>
+
+#include <optional>
 
 class QPainter;
 class vtkActor;
@@ -41,6 +44,15 @@ class VtkView : public QWidget {
     void resetCamera();
     /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
     void orbit(double azimuth, double elevation, double zoom);
+    /// The camera the view shows, as the ray tracer's (eye, lookAt, up, vertical fov): pixel
+    /// (x, y) of a width() x height() image is the ray under widget point (x + 0.5, y + 0.5).
+    Camera currentCamera() const;
+
+  signals:
+    /// The camera changed (turned, moved or zoomed, by the user or by code).
+    void cameraMoved();
+    /// A left click without a drag at `widgetPos`: the pixel under it may be traced.
+    void pointPicked(QPointF widgetPos);
 
   protected:
     void paintEvent(QPaintEvent*) override;
@@ -64,6 +76,9 @@ class VtkView : public QWidget {
     vtkSmartPointer<vtkActor> markersActor_;  // visited voxels or the current node; hit points
     bool dirty_ = true;
     Language lang_ = Language::En;
+    // Ray trace this view: the camera last announced, and the left press a click may end.
+    Camera announcedCamera_;
+    std::optional<QPointF> pressAt_;
 };
 
 }  // namespace raystep::gui

@@ -155,7 +155,7 @@ Color Tracer::pixel(int x, int y, const RenderOptions& options, RayCounters& cou
                     Rec& rec) const {
     const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
     Pcg32 rng(options.seed, pixelIndex);
-    const Camera& cam = scene_.camera;
+    const Camera& cam = options.camera ? *options.camera : scene_.camera;
     if (options.spp == 1)
         return trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
                      RayKind::Primary, 0, kNoId, false, rng, counters, rec);
@@ -179,6 +179,19 @@ Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int 
     opt.height = height;
     opt.trace.bounces = scene.settings.bounces;
     opt.trace.diffuseSamples = scene.settings.diffuseSamples;
+    const Tracer tracer(scene, accel, opt.trace);
+    RayCounters counters;
+    return tracer.renderPixel(x, y, opt, counters, log);
+}
+
+Color tracePixelEvents(const Scene& scene, const Accelerator& accel, const Camera& camera,
+                       const TraceSettings& settings, int x, int y, int width, int height,
+                       EventLog& log) {
+    RenderOptions opt;
+    opt.width = width;
+    opt.height = height;
+    opt.trace = settings;
+    opt.camera = camera;
     const Tracer tracer(scene, accel, opt.trace);
     RayCounters counters;
     return tracer.renderPixel(x, y, opt, counters, log);

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 
 namespace raystep {
 
@@ -24,6 +25,7 @@ struct RenderOptions {
     TraceSettings trace;
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 1;
+    std::optional<Camera> camera;  // another camera than the scene's (the 3D view's)
 };
 
 /// Everything one pixel (or one ray tree) cost.
@@ -89,6 +91,10 @@ struct RenderResult {
 /// diffuse samples; one sample through the pixel's centre): the app's click, the course's pixels.
 Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int y, int width,
                        int height, EventLog& log);
+/// The same pixel seen by another camera, with other trace settings (the app's own view).
+Color tracePixelEvents(const Scene& scene, const Accelerator& accel, const Camera& camera,
+                       const TraceSettings& settings, int x, int y, int width, int height,
+                       EventLog& log);
 
 RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
                     const ProgressFn& progress = {});

@@ -3,6 +3,8 @@
 #include "raystep/base/math.h"
 #include "raystep/base/ray.h"
 
+#include <optional>
+
 namespace raystep {
 
 struct Camera {
@@ -15,5 +17,13 @@ struct Camera {
     /// of the image, (width, height) the bottom-right one; pixel centres are at +0.5.
     Ray generateRay(double x, double y, int width, int height) const;
 };
+
+/// Whether the camera has a view: eye apart from lookAt, up not along the view, fov in (0, 180).
+bool cameraUsable(const Camera& camera);
+
+/// Where the direction `dir` from the eye crosses a width x height image (generateRay's inverse,
+/// in pixel units; it may fall outside the image); nullopt if it points beside or behind the eye.
+std::optional<glm::dvec2> imagePosition(const Camera& camera, const Vec3& dir, int width,
+                                        int height);
 
 }  // namespace raystep

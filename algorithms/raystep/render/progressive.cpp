@@ -1,0 +1,168 @@
+#include "raystep/render/progressive.h"
+
+#include "raystep/base/timer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace raystep {
+
+std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp) {
+    std::vector<ProgressivePass> plan;
+    for (int b = std::max(firstBlock, 1); b >= 1; b /= 2) plan.push_back({b, 1});
+    for (int s = 2; s < 2 * spp; s *= 2) plan.push_back({1, std::min(s, spp)});
+    return plan;
+}
+
+namespace {
+int threadsOf(int wanted) {
+    return wanted > 0 ? wanted : tbb::info::default_concurrency();
+}
+}  // namespace
+
+ProgressiveRender::ProgressiveRender(const Scene& scene, const Accelerator& accel,
+                                     ProgressiveOptions options)
+    : scene_(scene),
+      accel_(accel),
+      options_(options),
+      tracer_(scene, accel, options.trace),
+      threads_(threadsOf(options.threads)) {
+    if (options_.width < 1 || options_.height < 1 || options_.width > kMaxImageSide ||
+        options_.height > kMaxImageSide)
+        throw std::invalid_argument("progressive render: the image size must be 1.." +
+                                    std::to_string(kMaxImageSide) + " a side, got " +
+                                    std::to_string(options_.width) + "x" +
+                                    std::to_string(options_.height));
+    if (options_.spp < 1)
+        throw std::invalid_argument("progressive render: spp must be at least 1, got " +
+                                    std::to_string(options_.spp));
+    if (options_.firstBlock < 1 || (options_.firstBlock & (options_.firstBlock - 1)) != 0)
+        throw std::invalid_argument(
+            "progressive render: the first block must be a power of two, got " +
+            std::to_string(options_.firstBlock));
+    if (!cameraUsable(options_.camera))
+        throw std::invalid_argument("progressive render: the camera has no view direction");
+    plan_ = progressivePlan(options_.firstBlock, options_.spp);
+    const std::size_t n = static_cast<std::size_t>(options_.width) * options_.height;
+    rng_.reserve(n);
+    // The stream Tracer::renderPixel gives the pixel: the same image whatever the passes.
+    for (std::uint64_t i = 0; i < n; ++i) rng_.emplace_back(options_.seed, i);
+    sum_.assign(n, Color(0.0));
+    tests_.assign(n, 0);
+    image_ = Image(options_.width, options_.height);
+    cost_.assign(n, 0);
+}
+
+void ProgressiveRender::sample(int x, int y, int from, int to, RayCounters& counters) {
+    const std::size_t i = static_cast<std::size_t>(y) * options_.width + x;
+    Pcg32& rng = rng_[i];
+    const Camera& cam = options_.camera;
+    const int spp = options_.spp;
+    RayCounters pixel;
+    // Tracer::renderPixel's sampling, sample by sample: the centre for 1 spp, else one jittered
+    // sample in each stratum of a near-square grid, drawn from the pixel's stream in order.
+    if (spp == 1) {
+        sum_[i] += tracer_.trace(cam.generateRay(x + 0.5, y + 0.5, options_.width, options_.height),
+                                 RayKind::Primary, 0, rng, pixel);
+    } else {
+        const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))));
+        const int rows = (spp + cols - 1) / cols;
+        for (int s = from; s < to; ++s) {
+            const double jx = ((s % cols) + rng.uniform()) / cols;
+            const double jy = ((s / cols) + rng.uniform()) / rows;
+            sum_[i] +=
+                tracer_.trace(cam.generateRay(x + jx, y + jy, options_.width, options_.height),
+                              RayKind::Primary, 0, rng, pixel);
+        }
+    }
+    tests_[i] += pixel.traversal.primitiveTests;
+    counters += pixel;
+}
+
+bool ProgressiveRender::nextPass(const ProgressFn& progress) {
+    if (done()) return false;
+    const ProgressivePass pass = plan_[next_];
+    const int w = options_.width, h = options_.height;
+    const bool first = next_ == 0;
+    // The coarse passes trace each pixel's first sample; the refinements add the next ones.
+    const bool coarse = pass.samples == 1;
+    const int from = coarse ? 0 : samplesDone_, to = coarse ? 1 : pass.samples;
+    // Rows of the pass's lattice: every block-th row; a coarse pass after the first skips the
+    // pixels the pass before traced (both coordinates multiples of 2 * block).
+    const int b = pass.block;
+    const int rows = (h + b - 1) / b;
+    const auto traced = [&](int x, int y) {
+        if (!coarse) return true;  // refinement: every pixel
+        if (x % b != 0 || y % b != 0) return false;
+        return first || x % (2 * b) != 0 || y % (2 * b) != 0;
+    };
+
+    std::atomic<bool> stop{false};
+    std::atomic<int> rowsDone{0};
+    std::mutex totalsMutex, progressMutex;
+    double ms = 0.0;
+    {
+        const ScopedTimer timer(ms);
+        tbb::task_arena arena(threads_);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<int>(0, rows, 1),
+                              [&](const tbb::blocked_range<int>& r) {
+                                  for (int row = r.begin(); row != r.end(); ++row) {
+                                      if (stop) return;
+                                      const int y = row * b;
+                                      RayCounters rowCounters;
+                                      for (int x = 0; x < w; x += b)
+                                          if (traced(x, y)) sample(x, y, from, to, rowCounters);
+                                      {
+                                          const std::lock_guard lock(totalsMutex);
+                                          counters_ += rowCounters;
+                                      }
+                                      const int done = ++rowsDone;
+                                      // Reported by whichever worker is free to; the others do not
+                                      // wait.
+                                      if (progress && progressMutex.try_lock()) {
+                                          if (!progress(static_cast<double>(done) / rows))
+                                              stop = true;
+                                          progressMutex.unlock();
+                                      }
+                                  }
+                              });
+        });
+        if (stop) {
+            cancelled_ = true;
+            return false;
+        }
+        samplesDone_ = to;
+        // The complete picture: each pixel shows its block's traced pixel, averaged.
+        const double n = static_cast<double>(samplesDone_);
+        arena.execute([&] {
+            tbb::parallel_for(0, h, [&](int y) {
+                const int cy = y / b * b;
+                for (int x = 0; x < w; ++x) {
+                    const std::size_t c = static_cast<std::size_t>(cy) * w + x / b * b;
+                    const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                    image_.pixels[i] = sum_[c] / n;
+                    cost_[i] = tests_[c];
+                }
+            });
+        });
+    }
+    passMs_.push_back(ms);
+    ++next_;
+    return true;
+}
+
+bool ProgressiveRender::run(const ProgressFn& progress) {
+    while (!done())
+        if (!nextPass(progress)) return false;
+    return !cancelled_;
+}
+
+}  // namespace raystep
