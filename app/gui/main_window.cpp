@@ -58,9 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createStatusBar();
     createActions();
     createMenus();
-    QSettings settings;
-    geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
-    restoreState(settings.value("window/state").toByteArray());
+    restoreLayout();
 }
 
 MainWindow::~MainWindow() {
@@ -253,6 +251,7 @@ void MainWindow::createMenus() {
     lessons->addActions({a.openLessonFile, a.backToLesson, a.lecturer, a.showErrata});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
+    addLayoutActions(view);
 }
 
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
@@ -530,7 +529,8 @@ void MainWindow::openCompare() {
             auto* compare = new CompareWindow(std::move(prepared), pixel, this);
             compare->setWindowFlag(Qt::Window);
             compare->setAttribute(Qt::WA_DeleteOnClose);
-            compare->resize(fitToScreen(QSize(1400, 800)));
+            compare->placeOnScreen(fitToScreen(QSize(1400, 800)),
+                                   fitToScreen(QSize(1 << 16, 1 << 16)));
             compare->show();
             compare_ = compare;
         });
@@ -628,9 +628,7 @@ void MainWindow::exportTrace() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    QSettings settings;
-    settings.setValue("window/geometry", saveGeometry());
-    settings.setValue("window/state", saveState());
+    saveLayout();
     // Stop and join every worker now, and start none after: the window is going away.
     runner_.shutdown();
     if (compare_) compare_->close();

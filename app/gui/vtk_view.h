@@ -37,6 +37,12 @@ class VtkView : public QWidget {
         lang_ = lang;
         update();
     }
+    /// Whether the view draws its caption and its ray legend (compare mode shows them once).
+    void setOverlays(bool caption, bool legend) {
+        caption_ = caption;
+        legend_ = legend;
+        update();
+    }
     /// Back to the scene's own camera.
     void resetCamera();
     /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
@@ -64,6 +70,7 @@ class VtkView : public QWidget {
     vtkSmartPointer<vtkActor> markersActor_;  // visited voxels or the current node; hit points
     bool dirty_ = true;
     Language lang_ = Language::En;
+    bool caption_ = true, legend_ = true;
 };
 
 }  // namespace raystep::gui
