@@ -54,10 +54,12 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
         // One caption and one legend for the three views (the same in each), in the first.
         if (sessions_[i]->is2D()) {
             auto* v = new View2D(*sessions_[i]);
-            v->setLegendShown(i == 0);
+            v->setLanguage(interfaceLanguage());
+            v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
             views_[i] = v;
         } else {
             auto* v = new VtkView(*sessions_[i]);
+            v->setLanguage(interfaceLanguage());
             v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
             views_[i] = v;
         }

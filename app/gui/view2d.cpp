@@ -361,9 +361,10 @@ void View2D::paintEvent(QPaintEvent*) {
     }
     if (legendShown_) drawLegend(g, build);
     g.setPen(QColor(60, 60, 60));
-    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-               QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
-                   structureName(session_.kind()));
+    if (captionShown_)
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+                   QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
+                       structureName(session_.kind()));
 }
 
 double View2D::legendWidth() const {

@@ -50,9 +50,11 @@ class View2D : public QWidget {
         lang_ = lang;
         update();
     }
-    /// Whether the colour legend is drawn (compare mode shows it in one view of three).
-    void setLegendShown(bool on) {
-        legendShown_ = on;
+    /// Whether the scene's name and the colour legend are drawn (compare mode's three views
+    /// have their own titles and show one legend).
+    void setOverlays(bool caption, bool legend) {
+        captionShown_ = caption;
+        legendShown_ = legend;
         update();
     }
     /// The cost chart at the replay's cursor (a build's replay with candidates), else nullopt.
@@ -96,7 +98,7 @@ class View2D : public QWidget {
     Session& session_;
     QList<QPoint> sequence_;  // a sequence answer's cells, in the order clicked
     Language lang_ = Language::En;
-    bool legendShown_ = true;
+    bool legendShown_ = true, captionShown_ = true;
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;

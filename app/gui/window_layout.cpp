@@ -39,7 +39,9 @@ int MainWindow::defaultDockWidth(int windowWidth) {
 
 void MainWindow::sizeForScreen() {
     if (!geometryRestored_) {
-        resize(fitToScreen(QSize(1500, 900)));
+        // On a projector most of the screen (the back rows read it), on a laptop all of it.
+        const QSize room = screen() ? screen()->availableGeometry().size() : QSize(1500, 900);
+        resize(fitToScreen(QSize(1500, 900).expandedTo(room * 0.9)));
         return;
     }
     if (isMaximized() || isFullScreen() || !screen()) return;
