@@ -3,6 +3,7 @@
 // layout. The window's parts are made in main_window.cpp; this file only sizes them.
 #include "main_window.h"
 
+#include "lesson_panel.h"
 #include "vtk_view.h"
 
 #include <QAction>
@@ -21,6 +22,7 @@ namespace raystep::gui {
 namespace {
 // Narrower than this a dock shows "test p..." and nothing else: the layout refuses it.
 constexpr int kDockMinWidth = 180;
+constexpr int kLessonMinWidth = 300;
 // A saved dock narrower than this share of its default is a leftover of a small window.
 constexpr double kDockShrunk = 0.8;
 
@@ -73,6 +75,8 @@ void MainWindow::addLayoutActions(QMenu* view) {
     view->addSeparator();
     view->addAction(resetLayout_);
     for (QDockWidget* d : findChildren<QDockWidget*>()) d->setMinimumWidth(kDockMinWidth);
+    // The exercise box's header ("< Exercise 1 / 9 > Put away") needs this much, or is cut.
+    lesson_->setMinimumWidth(std::max(lesson_->minimumWidth(), kLessonMinWidth));
 }
 
 void MainWindow::restoreLayout() {

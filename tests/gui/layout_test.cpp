@@ -116,12 +116,35 @@ TEST(Layout, TheWindowItsDocksTimelineAndExerciseBoxLieOnTheScreen) {
     // The event rows (a candidate's is long) are cut at the dock's edge, whole in their tooltip.
     auto* list = w.findChild<QListView*>("eventList");
     ASSERT_NE(list, nullptr);
+    // At the dock's least width, whatever this screen's default is.
+    auto* eventsDock = w.findChild<QDockWidget*>("eventsDock");
+    ASSERT_NE(eventsDock, nullptr);
+    w.resizeDocks({eventsDock}, {1}, Qt::Horizontal);
+    ASSERT_TRUE(waitFor([&] { return eventsDock->width() < 200; }));
     ASSERT_GT(list->model()->rowCount(), 2);
     EXPECT_EQ(list->horizontalScrollBar()->maximum(), 0);
     const QModelIndex row = list->model()->index(2, 0);
     EXPECT_EQ(row.data(Qt::ToolTipRole).toString(), row.data().toString());
     EXPECT_GT(list->fontMetrics().horizontalAdvance(row.data().toString()),
               list->viewport()->width());  // long enough to be cut: the test means something
+    w.close();
+}
+
+TEST(Layout, AtItsSmallestTheWindowStillShowsTheWholeExerciseBox) {
+    forgetLayout();
+    MainWindow w;
+    start(w);
+    ASSERT_TRUE(openLesson(w, "6"));
+    const QSize least = w.minimumSizeHint();
+    w.resize(least);
+    ASSERT_TRUE(waitFor([&] { return w.size() == least; }));
+    auto* main = qobject_cast<QSplitter*>(w.centralWidget());
+    ASSERT_NE(main, nullptr);
+    main->setSizes({0, 100000});  // the lesson panel dragged as narrow as it goes
+    const auto* box = w.findChild<QWidget*>("exerciseBox");
+    ASSERT_NE(box, nullptr);
+    ASSERT_TRUE(waitFor([&] { return box->isVisible() && main->sizes()[0] < 400; }));
+    EXPECT_GE(box->width(), box->minimumSizeHint().width());
     w.close();
 }
 
