@@ -4,9 +4,12 @@
 #include "view2d.h"
 #include "vtk_view.h"
 
+#include <QCloseEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
+#include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -48,11 +51,19 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
         auto* title =
             new QLabel(QStringLiteral("<b>%1 %2</b>").arg(structureName(kind), splitNames[i]));
         column->addWidget(title);
-        if (sessions_[i]->is2D())
-            views_[i] = new View2D(*sessions_[i]);
-        else
-            views_[i] = new VtkView(*sessions_[i]);
-        views_[i]->setMinimumSize(300, 240);
+        // One caption and one legend for the three views (the same in each), in the first.
+        if (sessions_[i]->is2D()) {
+            auto* v = new View2D(*sessions_[i]);
+            v->setLanguage(interfaceLanguage());
+            v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
+            views_[i] = v;
+        } else {
+            auto* v = new VtkView(*sessions_[i]);
+            v->setLanguage(interfaceLanguage());
+            v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
+            views_[i] = v;
+        }
+        views_[i]->setMinimumSize(300, 220);
         column->addWidget(views_[i], 1);
         views->addLayout(column, 1);
     }
@@ -93,17 +104,37 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
     table_->setMinimumHeight(table_->horizontalHeader()->height() +
                              table_->rowHeight(0) * table_->rowCount() + 6);
     auto* layout = new QVBoxLayout(this);
+    if (!sessions_[0]->is2D())
+        layout->addWidget(new QLabel(
+            tr("Rasterized by VTK: the same pixel's rays in each tree (drag to rotate a view)")));
     layout->addLayout(views, 1);
     auto* stepRow = new QHBoxLayout;
     stepRow->addWidget(new QLabel(tr("step (the same ray in each)")));
     stepRow->addWidget(slider_, 1);
     layout->addLayout(stepRow);
     layout->addWidget(table_);
+    close_ = new QPushButton(tr("Close"));
+    close_->setObjectName("closeCompare");
+    connect(close_, &QPushButton::clicked, this, &QWidget::close);
+    layout->addWidget(close_, 0, Qt::AlignRight);
     setStep(longest);
     slider_->setValue(longest);
 }
 
 CompareWindow::~CompareWindow() = default;
+
+void CompareWindow::placeOnScreen(QSize fallback, QSize room) {
+    // The size of the last one (clamped: it may have been saved on a larger screen).
+    if (!restoreGeometry(QSettings().value("compare/geometry").toByteArray()))
+        resize(fallback);
+    else
+        resize(size().boundedTo(room));
+}
+
+void CompareWindow::closeEvent(QCloseEvent* e) {
+    QSettings().setValue("compare/geometry", saveGeometry());
+    QWidget::closeEvent(e);
+}
 
 void CompareWindow::setStep(int n) {
     for (auto& s : sessions_) s->setCursor(static_cast<std::size_t>(std::max(n, 0)));

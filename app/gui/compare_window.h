@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 
+class QPushButton;
 class QSlider;
 class QTableWidget;
 
@@ -36,12 +37,21 @@ class CompareWindow : public QWidget {
     QTableWidget* table() const { return table_; }
     /// Puts every replay at step n (each clamped to its own log).
     void setStep(int n);
+    /// The size this window had when last closed (at most `room`: this screen's), else
+    /// `fallback`.
+    void placeOnScreen(QSize fallback, QSize room);
+    QPushButton* closeButton() const { return close_; }
+    QWidget* view(int i) const { return views_[i]; }
+
+  protected:
+    void closeEvent(QCloseEvent*) override;
 
   private:
     std::array<std::unique_ptr<Session>, 3> sessions_;
     std::array<QWidget*, 3> views_{};
     QSlider* slider_ = nullptr;
     QTableWidget* table_ = nullptr;
+    QPushButton* close_ = nullptr;
 };
 
 }  // namespace raystep::gui

@@ -8,9 +8,22 @@
 
 #include <QLineEdit>
 #include <QListView>
+#include <QStyledItemDelegate>
 #include <QVBoxLayout>
 
 namespace raystep::gui {
+
+namespace {
+// Rows as wide as the list, not as their text: a long row is elided (its tooltip holds it
+// whole) instead of pushing a horizontal scroll bar under a narrow dock.
+class ElidedRows : public QStyledItemDelegate {
+  public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+    QSize sizeHint(const QStyleOptionViewItem& o, const QModelIndex& i) const override {
+        return {1, QStyledItemDelegate::sizeHint(o, i).height()};
+    }
+};
+}  // namespace
 
 EventListModel::EventListModel(Session& s, QObject* parent) : QAbstractListModel(parent), s_(s) {
     const auto reset = [this] {
@@ -29,7 +42,7 @@ QVariant EventListModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= static_cast<int>(s_.end())) return {};
     const Event& e = s_.log().events()[index.row()];
     if (role == KindNameRole) return QString::fromUtf8(kEventNames[e.index()].data());
-    if (role != Qt::DisplayRole) return {};
+    if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
     return QStringLiteral("%1  %2")
         .arg(index.row() + 1)
         .arg(QString::fromStdString(eventText(s_.log(), index.row(), interfaceLanguage())));
@@ -72,6 +85,10 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
     list_->setObjectName("eventList");
     list_->setModel(filter_);
     list_->setUniformItemSizes(true);
+    // The row's number, kind and values read from the left: a long row is cut at its end.
+    list_->setItemDelegate(new ElidedRows(list_));
+    list_->setTextElideMode(Qt::ElideRight);
+    list_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     ll->addWidget(list_);
     connect(list_, &QListView::clicked, this, [this](const QModelIndex& i) {
         session_.setCursor(static_cast<std::size_t>(filter_->mapToSource(i).row()) + 1);

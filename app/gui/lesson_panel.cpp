@@ -14,6 +14,7 @@
 #include <QRegularExpressionValidator>
 #include <QShortcut>
 #include <QTableWidget>
+#include <QTextBlock>
 #include <QTextBrowser>
 #include <QTextTable>
 #include <QVBoxLayout>
@@ -24,6 +25,22 @@ namespace raystep::gui {
 namespace {
 QString q(const std::string& s) {
     return QString::fromStdString(s);
+}
+}  // namespace
+
+namespace {
+// Markdown's code blocks are laid out unbroken: in a narrow panel (a 1366x768 laptop) their
+// lines ran off the side. Every line may wrap, at a word if it can, else anywhere.
+void wrapLongLines(QTextBrowser* text) {
+    text->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    QTextCursor c(text->document());
+    for (QTextBlock b = text->document()->begin(); b.isValid(); b = b.next())
+        if (b.blockFormat().nonBreakableLines()) {
+            c.setPosition(b.position());
+            QTextBlockFormat f;
+            f.setNonBreakableLines(false);
+            c.mergeBlockFormat(f);
+        }
 }
 }  // namespace
 
@@ -224,6 +241,7 @@ void LessonPanel::showText(const QString& markdown) {
     noteRow_->hide();
     freeText_ = markdown;
     text_->setMarkdown(markdown);
+    wrapLongLines(text_);
     stepRow_->hide();
     exerciseBox_->hide();
     sweepButton_->hide();
@@ -393,6 +411,7 @@ void LessonPanel::refreshText() {
         prevStep_->setEnabled(step_ > 0);
         nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));
     }
+    wrapLongLines(text_);
     // The step's text is what the lecturer points at: keep it in sight.
     text_->moveCursor(QTextCursor::End);
     text_->ensureCursorVisible();

@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
     // Slides are made at one size; otherwise the user's own size, or one that fits the screen.
     if (!shot.isEmpty())
         window.resize(1500, 900);
-    else if (!window.geometryRestored())
-        window.resize(window.fitToScreen(QSize(1500, 900)));
+    else
+        window.sizeForScreen();
     window.show();
 
     // Opening runs in the background; what the options ask for follows once it is done.

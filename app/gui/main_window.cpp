@@ -105,9 +105,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createActions();
     createMenus();
     createStructureControls();
-    QSettings settings;
-    geometryRestored_ = restoreGeometry(settings.value("window/geometry").toByteArray());
-    restoreState(settings.value("window/state").toByteArray());
+    restoreLayout();
 }
 
 MainWindow::~MainWindow() {
@@ -317,6 +315,7 @@ void MainWindow::createMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
     view->addAction(rayTraceView_);
+    addLayoutActions(view);
 }
 
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
@@ -721,7 +720,8 @@ void MainWindow::openCompare() {
             auto* compare = new CompareWindow(std::move(prepared), pixel, this);
             compare->setWindowFlag(Qt::Window);
             compare->setAttribute(Qt::WA_DeleteOnClose);
-            compare->resize(fitToScreen(QSize(1400, 800)));
+            compare->placeOnScreen(fitToScreen(QSize(1400, 800)),
+                                   fitToScreen(QSize(1 << 16, 1 << 16)));
             compare->show();
             compare_ = compare;
         });
@@ -828,9 +828,7 @@ void MainWindow::exportTrace() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    QSettings settings;
-    settings.setValue("window/geometry", saveGeometry());
-    settings.setValue("window/state", saveState());
+    saveLayout();
     // Stop and join every worker now, and start none after: the window is going away.
     runner_.shutdown();
     if (compare_) compare_->close();

@@ -21,6 +21,8 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QMenu;
+class QSplitter;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
@@ -122,8 +124,22 @@ class MainWindow : public QMainWindow {
     QSize fitToScreen(QSize wanted) const;
     /// Whether a window geometry saved by an earlier run was restored.
     bool geometryRestored() const { return geometryRestored_; }
+    /// At start: the size saved by the last run (Qt clamps it to this screen), else one that
+    /// fits the screen.
+    void sizeForScreen();
+    /// View > Reset layout: the docks back on the right, shown and docked, the docks and the
+    /// splitters at their default sizes for the window's width.
+    void resetLayout();
+    QAction* resetLayoutAction() const { return resetLayout_; }
+    /// The default widths for a window `windowWidth` wide: the lesson panel's and the docks'.
+    static int defaultLessonWidth(int windowWidth);
+    static int defaultDockWidth(int windowWidth);
+    /// True once the first show has put the layout in shape (restored or default sizes).
+    bool layoutSettled() const { return layoutSettled_; }
 
   signals:
+    /// The first show has put the layout in shape (layoutSettled()).
+    void layoutReady();
     /// An openScene or openLesson ended: opened, or not (with why; "cancelled" included).
     void opened(bool ok, const QString& error);
     /// A changeStructure ended: the scene shown with the new structure, or not (with why).
@@ -138,6 +154,7 @@ class MainWindow : public QMainWindow {
 
   protected:
     void closeEvent(QCloseEvent*) override;
+    void showEvent(QShowEvent*) override;
 
   private:
     // The window's parts, made in this order by the constructor.
@@ -151,6 +168,15 @@ class MainWindow : public QMainWindow {
     void createStructureControls();
     /// The chooser and the status bar say what the session's scene uses.
     void syncStructureControls();
+    /// View > Reset layout, and the docks' smallest width (layout: window sizing and memory).
+    void addLayoutActions(QMenu* view);
+    /// The window's size, docks and splitters as the last run left them (QSettings).
+    void restoreLayout();
+    void saveLayout();
+    /// After the first show: default sizes if nothing was saved, and docks saved narrower than
+    /// is readable (a window once shrunk) widened to their default.
+    void settleLayout();
+    QList<QSplitter*> layoutSplitters() const;
     void openFileDialog();
     void exportScreenshot(QWidget* w, const QString& what);
     void exportTrace();
@@ -186,6 +212,9 @@ class MainWindow : public QMainWindow {
     QString lastOpenError_;
     QPointer<CompareWindow> compare_;
     bool geometryRestored_ = false;
+    bool stateRestored_ = false;
+    bool layoutSettled_ = false;
+    QAction* resetLayout_ = nullptr;
     View2D* view2D_ = nullptr;
     VtkView* view3D_ = nullptr;
     ImageView* imageView_ = nullptr;

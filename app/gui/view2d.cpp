@@ -9,6 +9,7 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <cmath>
 
 namespace raystep::gui {
 
@@ -30,6 +31,12 @@ const QColor kTested = role(PaletteRole::Tested);
 const QColor kSkipped = role(PaletteRole::Skipped);
 const QColor kHit = role(PaletteRole::Hit);
 const QColor kRay = colourOf(rayColour(RayKind::Primary));
+// The cost chart: its strip under the picture and the room left of it for the cost values.
+constexpr double kChartHeight = 190.0, kChartAxisRoom = 64.0;
+// Its X and Y curves in two of the palette's colours that no other part of the chart uses.
+const PaletteColour& curveColour(int axis) {
+    return rayColour(axis == 0 ? RayKind::Primary : RayKind::Diffuse);
+}
 }  // namespace
 
 static QString roleName(PaletteRole r) {
@@ -83,12 +90,15 @@ void View2D::fit() const {
     world_.lo -= 0.06 * d;
     world_.hi += 0.06 * d;
     const Vec2 size = world_.diagonal();
-    // A build's replay keeps the bottom strip for the SAH cost chart.
-    const double chart = session_.showingBuild() ? 130.0 : 0.0;
+    // A build's replay keeps the bottom strip for the SAH cost chart, and a left one for its
+    // cost axis' values (the chart's position axis is the view's own x).
+    const bool build = session_.showingBuild();
+    const double chart = build ? kChartHeight : 0.0;
+    const double axis = build ? kChartAxisRoom : 0.0;
     // The legend keeps a strip on the right (when the view is wide enough to spare it).
-    const double legend = width() > 560 ? legendWidth() + 12 : 0.0;
-    scale_ = std::min((width() - 20 - legend) / size.x, (height() - 40 - chart) / size.y);
-    offset_ = QPointF((width() - legend - scale_ * size.x) / 2,
+    const double legend = legendShown_ && width() > 560 ? legendWidth() + 12 : 0.0;
+    scale_ = std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
+    offset_ = QPointF(axis + (width() - axis - legend - scale_ * size.x) / 2,
                       chart + (height() - chart - scale_ * size.y) / 2);
 }
 
@@ -349,11 +359,12 @@ void View2D::paintEvent(QPaintEvent*) {
         }
         g.setFont(font());
     }
-    drawLegend(g, build);
+    if (legendShown_) drawLegend(g, build);
     g.setPen(QColor(60, 60, 60));
-    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-               QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
-                   structureName(session_.kind()));
+    if (captionShown_)
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+                   QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
+                       structureName(session_.kind()));
 }
 
 double View2D::legendWidth() const {
@@ -459,52 +470,184 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
     layerDirty_ = false;
 }
 
-void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
-    // The SAH cost of each candidate against its place in the node, one curve per axis, with
-    // the leaf's cost (not splitting) dashed and the chosen plane marked.
-    if (st.candidates.empty() || !st.buildNode) return;
+std::vector<double> niceTicks(double lo, double hi, int count) {
+    std::vector<double> ticks;
+    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || count < 1) return ticks;
+    const double rough = (hi - lo) / count;
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    double step = 10 * power;
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * power >= rough) {
+            step = m * power;
+            break;
+        }
+    // Multiples of the step: k * step, not a running sum, so 0.1 + 0.2 does not drift.
+    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; ++k)
+        ticks.push_back(k * step);
+    return ticks;
+}
+
+std::optional<CostChart> View2D::costChart() const {
+    const ReplayState& st = session_.state();
+    if (!session_.showingBuild() || st.candidates.empty() || !st.buildNode ||
+        st.buildNode->node >= session_.log().nodes().size() || !session_.scene2D())
+        return std::nullopt;
+    fit();
     const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
-    const QRectF chart(12, height() - 122, std::min(520, width() - 24), 112);
-    g.fillRect(chart, QColor(255, 255, 255, 230));
-    g.setPen(QColor(150, 150, 150));
-    g.drawRect(chart);
-    double lo = kInfinity, hi = 0.0;
-    for (const SplitCandidate& c : st.candidates)
-        lo = std::min(lo, c.sahCost), hi = std::max(hi, c.sahCost);
-    const double leaf = st.chosen ? st.chosen->leafCost : st.buildNode->prims * 5.0;
-    hi = std::max(hi, leaf) * 1.05;
-    lo = std::min(lo, leaf) * 0.95;
-    const auto at = [&](int axis, double pos, double cost) {
-        const double f = (pos - n.lo[axis]) / std::max(n.hi[axis] - n.lo[axis], 1e-300);
-        return QPointF(
-            chart.left() + 6 + f * (chart.width() - 12),
-            chart.bottom() - 6 - (cost - lo) / std::max(hi - lo, 1e-300) * (chart.height() - 22));
-    };
-    const QColor axisColour[2] = {QColor(30, 90, 200), QColor(140, 40, 170)};
+    CostChart c;
+    c.scale = scale_;
+    c.nodeLo = {n.lo[0], n.lo[1]};
+    const double left = toScreen(Vec2(n.lo[0], n.lo[1])).x();
+    const double extent = std::max(n.hi[0] - n.lo[0], n.hi[1] - n.lo[1]) * scale_;
+    const double top = height() - kChartHeight + 30, bottom = height() - 44;
+    c.plot = QRectF(QPointF(left, top),
+                    QPointF(std::min(left + std::max(extent, 40.0), width() - 8.0), bottom));
+    double lo = kInfinity, hi = -kInfinity;
+    bool onAxis[2] = {false, false};
+    for (const SplitCandidate& k : st.candidates) {
+        lo = std::min(lo, k.sahCost), hi = std::max(hi, k.sahCost);
+        onAxis[k.axis & 1] = true;
+    }
+    // The leaf's cost (not splitting) as the kd-tree's default C_isect = 5 makes it until the
+    // choice says it.
+    c.leafCost = st.chosen ? st.chosen->leafCost : st.buildNode->prims * 5.0;
+    lo = std::min(lo, c.leafCost), hi = std::max(hi, c.leafCost);
+    if (hi - lo < 1e-9 * std::max(1.0, std::abs(hi))) lo -= 1, hi += 1;  // one value: a band
+    const double pad = 0.06 * (hi - lo);
+    c.costLo = lo - pad, c.costHi = hi + pad;
+    c.costTicks = niceTicks(c.costLo, c.costHi, std::max(2, int(c.plot.height() / 28)));
+    for (int a = 0; a < 2; ++a)
+        if (onAxis[a])
+            c.positionTicks[a] =
+                niceTicks(n.lo[a], n.hi[a], std::max(2, int((n.hi[a] - n.lo[a]) * scale_ / 70)));
+    return c;
+}
+
+void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
+    // The SAH cost of each candidate against its position, one curve per axis, at the view's
+    // scale under the node; the leaf's cost (not splitting) dashed; the current candidate and
+    // the choice marked with their values.
+    const auto chart = costChart();
+    if (!chart) return;
+    const CostChart& c = *chart;
+    const QFontMetricsF fm(g.font());
+    const QRectF strip(4, height() - kChartHeight + 4, width() - 8, kChartHeight - 8);
+    g.save();
+    g.setPen(QColor(200, 200, 200));
+    g.setBrush(QColor(255, 255, 255, 235));
+    g.drawRoundedRect(strip, 4, 4);
+    const QColor ink(50, 50, 50), faint(225, 225, 225);
+    // The cost axis: its gridlines and values, left of the plot.
+    for (double v : c.costTicks) {
+        const double y = c.at(0, c.nodeLo[0], v).y();
+        g.setPen(QPen(faint, 1));
+        g.drawLine(QPointF(c.plot.left(), y), QPointF(c.plot.right(), y));
+        g.setPen(ink);
+        g.drawText(QRectF(c.plot.left() - kChartAxisRoom, y - fm.height() / 2, kChartAxisRoom - 8,
+                          fm.height()),
+                   Qt::AlignRight | Qt::AlignVCenter, numberText(v, 'g', 4));
+    }
+    g.setPen(QPen(ink, 1));
+    g.drawLine(c.plot.bottomLeft(), c.plot.topLeft());
+    g.drawLine(c.plot.bottomLeft(), c.plot.bottomRight());
+    // The position axes: one row of values per axis with candidates, in its curve's colour.
+    int row = 0;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (c.positionTicks[axis].empty()) continue;
+        const QColor colour = colourOf(curveColour(axis));
+        const double y = c.plot.bottom() + 2 + row * (fm.height() + 1);
+        for (double v : c.positionTicks[axis]) {
+            const double x = c.at(axis, v, c.costLo).x();
+            if (x > c.plot.right() + 1) continue;
+            g.setPen(QPen(colour, 1));
+            g.drawLine(QPointF(x, c.plot.bottom()), QPointF(x, c.plot.bottom() + 3));
+            g.drawText(QRectF(x - 40, y + 2, 80, fm.height()), Qt::AlignHCenter | Qt::AlignTop,
+                       numberText(v, 'g', 4));
+        }
+        g.drawText(QRectF(c.plot.left() - kChartAxisRoom, y + 2, kChartAxisRoom - 8, fm.height()),
+                   Qt::AlignRight | Qt::AlignTop,
+                   axis == 0 ? QStringLiteral("x =") : QStringLiteral("y ="));
+        ++row;
+    }
+    g.setClipRect(c.plot.adjusted(-6, -6, 6, 6));
     // At most about 2,000 points a curve: a screen has no more columns to show.
     const std::size_t stride = std::max<std::size_t>(1, st.candidates.size() / 2000);
     for (int axis = 0; axis < 2; ++axis) {
         QPolygonF line;
         for (std::size_t k = 0; k < st.candidates.size(); k += stride) {
-            const SplitCandidate& c = st.candidates[k];
-            if (c.axis == axis) line << at(axis, c.position, c.sahCost);
+            const SplitCandidate& s = st.candidates[k];
+            if (s.axis == axis) line << c.at(axis, s.position, s.sahCost);
         }
-        g.setPen(QPen(axisColour[axis], 1.5));
+        g.setPen(QPen(colourOf(curveColour(axis)), 1.8));
+        g.setBrush(Qt::NoBrush);
         g.drawPolyline(line);
         if (line.size() < 200)
             for (const QPointF& p : line) g.drawEllipse(p, 2, 2);
     }
     g.setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
-    const double yLeaf = at(0, n.lo[0], leaf).y();
-    g.drawLine(QPointF(chart.left(), yLeaf), QPointF(chart.right(), yLeaf));
+    const double yLeaf = c.at(0, c.nodeLo[0], c.leafCost).y();
+    g.drawLine(QPointF(c.plot.left(), yLeaf), QPointF(c.plot.right(), yLeaf));
+    g.setClipping(false);
+    // A value in a small white box beside its point, kept inside the strip.
+    const auto tag = [&](QPointF p, const QString& text, const QColor& border) {
+        const double w = fm.horizontalAdvance(text) + 8, h = fm.height() + 2;
+        QRectF r(p.x() + 8, p.y() - h - 4, w, h);
+        if (r.right() > strip.right() - 2) r.moveRight(p.x() - 8);
+        if (r.top() < strip.top() + 2) r.moveTop(p.y() + 6);
+        g.setPen(QPen(border, 1));
+        g.setBrush(QColor(255, 255, 255, 240));
+        g.drawRect(r);
+        g.setPen(ink);
+        g.drawText(r, Qt::AlignCenter, text);
+    };
+    const auto axisName = [](int axis) {
+        return axis == 0 ? QStringLiteral("X") : QStringLiteral("Y");
+    };
     if (st.chosen) {
+        const QPointF p = c.at(st.chosen->axis, st.chosen->position, st.chosen->sahCost);
         g.setPen(Qt::NoPen);
         g.setBrush(role(PaletteRole::Chosen));
-        g.drawEllipse(at(st.chosen->axis, st.chosen->position, st.chosen->sahCost), 4, 4);
+        g.drawEllipse(p, 5, 5);
+        tag(p,
+            tr("chosen: %1 = %2, cost %3")
+                .arg(axisName(st.chosen->axis), numberText(st.chosen->position, 'g', 4),
+                     numberText(st.chosen->sahCost, 'g', 4)),
+            role(PaletteRole::Chosen));
+    } else {
+        // The candidate the cursor is at: the last one recorded.
+        const SplitCandidate& k = st.candidates.back();
+        const QPointF p = c.at(k.axis, k.position, k.sahCost);
+        g.setPen(QPen(ink, 2));
+        g.setBrush(Qt::NoBrush);
+        g.drawEllipse(p, 5, 5);
+        tag(p,
+            tr("%1 = %2: cost %3")
+                .arg(axisName(k.axis), numberText(k.position, 'g', 4),
+                     numberText(k.sahCost, 'g', 4)),
+            colourOf(curveColour(k.axis)));
     }
-    g.setPen(QColor(60, 60, 60));
-    g.drawText(chart.adjusted(6, 2, -6, 0), Qt::AlignLeft | Qt::AlignTop,
-               tr("SAH cost of each candidate (X blue, Y purple; dashed: leaf)"));
+    // Title and legend on the strip's top row.
+    double x = strip.left() + 8;
+    const double y = strip.top() + 4;
+    g.setPen(ink);
+    const QString title = tr("SAH cost of each candidate");
+    g.drawText(QPointF(x, y + fm.ascent()), title);
+    x += fm.horizontalAdvance(title) + 16;
+    const auto entry = [&](const QPen& pen, const QString& text) {
+        g.setPen(pen);
+        g.drawLine(QPointF(x, y + fm.height() / 2), QPointF(x + 22, y + fm.height() / 2));
+        g.setPen(ink);
+        g.drawText(QPointF(x + 26, y + fm.ascent()), text);
+        x += 26 + fm.horizontalAdvance(text) + 14;
+    };
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::string_view name = curveColour(axis).name(lang_);
+        entry(QPen(colourOf(curveColour(axis)), 2.5),
+              (axis == 0 ? tr("X split (%1)") : tr("Y split (%1)"))
+                  .arg(QString::fromUtf8(name.data(), name.size())));
+    }
+    entry(QPen(QColor(90, 90, 90), 1, Qt::DashLine), tr("leaf: no split"));
+    g.restore();
 }
 
 }  // namespace raystep::gui

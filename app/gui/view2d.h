@@ -17,6 +17,27 @@
 
 namespace raystep::gui {
 
+/// The SAH cost chart under a build's replay, as drawn: its axes, in widget pixels. The split
+/// position runs along x at the view's own scale, from the node's left edge, so the X curve lies
+/// under the candidate planes above it; the cost runs up.
+struct CostChart {
+    QRectF plot;                                       // where the curves are drawn
+    double costLo = 0, costHi = 1;                     // the cost axis' range, bottom to top
+    std::vector<double> costTicks;                     // labelled values on the cost axis
+    std::array<std::vector<double>, 2> positionTicks;  // per axis (empty: no candidate on it)
+    std::array<double, 2> nodeLo{};  // the node's low edge per axis: at plot.left()
+    double scale = 1;                // pixels per scene unit, the view's
+    double leafCost = 0;             // not splitting (dashed)
+    QPointF at(int axis, double position, double cost) const {
+        return {plot.left() + (position - nodeLo[axis]) * scale,
+                plot.bottom() - (cost - costLo) / (costHi - costLo) * plot.height()};
+    }
+};
+
+/// Round tick values (1, 2 or 5 times a power of ten apart) covering [lo, hi], at most about
+/// `count` of them, all inside the range.
+std::vector<double> niceTicks(double lo, double hi, int count);
+
 class View2D : public QWidget {
     Q_OBJECT
   public:
@@ -28,6 +49,20 @@ class View2D : public QWidget {
     void setLanguage(Language lang) {
         lang_ = lang;
         update();
+    }
+    /// Whether the scene's name and the colour legend are drawn (compare mode's three views
+    /// have their own titles and show one legend).
+    void setOverlays(bool caption, bool legend) {
+        captionShown_ = caption;
+        legendShown_ = legend;
+        update();
+    }
+    /// The cost chart at the replay's cursor (a build's replay with candidates), else nullopt.
+    std::optional<CostChart> costChart() const;
+    /// Where the scene point `p` is drawn (tests line the chart up with the node).
+    QPointF screenOf(const Vec2& p) const {
+        fit();
+        return toScreen(p);
     }
     /// Where the centre of grid cell (x, y) is drawn (tests click there).
     QPointF cellCentre(int x, int y) const;
@@ -63,6 +98,7 @@ class View2D : public QWidget {
     Session& session_;
     QList<QPoint> sequence_;  // a sequence answer's cells, in the order clicked
     Language lang_ = Language::En;
+    bool legendShown_ = true, captionShown_ = true;
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;

@@ -389,10 +389,12 @@ void VtkView::paintEvent(QPaintEvent*) {
     delete[] pixels;
     // The lecture's first slide: this view is rasterized, the image beside it ray traced.
     g.setPen(QColor(230, 230, 230));
-    g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-               tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
+    if (caption_)
+        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+                   tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
     // Which colour is which kind of ray (the lessons name the same colours).
-    if (!session_.showingBuild()) drawRayLegend(g, QPointF(8, 28), /*dark=*/true, lang_);
+    if (legend_ && !session_.showingBuild())
+        drawRayLegend(g, QPointF(8, caption_ ? 28 : 8), /*dark=*/true, lang_);
     dirty_ = false;
 }
 

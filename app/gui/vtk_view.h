@@ -40,6 +40,12 @@ class VtkView : public QWidget {
         lang_ = lang;
         update();
     }
+    /// Whether the view draws its caption and its ray legend (compare mode shows them once).
+    void setOverlays(bool caption, bool legend) {
+        caption_ = caption;
+        legend_ = legend;
+        update();
+    }
     /// Back to the scene's own camera.
     void resetCamera();
     /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
@@ -79,6 +85,7 @@ class VtkView : public QWidget {
     // Ray trace this view: the camera last announced, and the left press a click may end.
     Camera announcedCamera_;
     std::optional<QPointF> pressAt_;
+    bool caption_ = true, legend_ = true;
 };
 
 }  // namespace raystep::gui
