@@ -16,7 +16,6 @@
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkTexture.h>
-#include <vtkTubeFilter.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -58,8 +57,8 @@ vtkSmartPointer<vtkActor> actorOf(vtkPolyData* poly, bool scalars) {
     return actor;
 }
 
-/// Coloured segments, drawn as tubes in flat colour: lines of one pixel vanish on a projector,
-/// and unlit tubes keep the palette's colour exactly (what the legend and the lessons name).
+/// Coloured segments, drawn as wide lines in flat colour: lines of one pixel vanish on a
+/// projector, and unlit lines keep the palette's colour exactly (what the legend names).
 class Segments {
   public:
     Segments() { colours_->SetNumberOfComponents(3); }
@@ -92,18 +91,15 @@ class Segments {
         }
     }
     bool empty() const { return lines_->GetNumberOfCells() == 0; }
-    vtkSmartPointer<vtkActor> tubes(double radius) const {
+    /// Lines `pixels` wide whatever the zoom, shaded as tubes by VTK.
+    vtkSmartPointer<vtkActor> tubes(double pixels) const {
         vtkNew<vtkPolyData> poly;
         poly->SetPoints(points_);
         poly->SetLines(lines_);
         poly->GetCellData()->SetScalars(colours_);
-        vtkNew<vtkTubeFilter> tube;
-        tube->SetInputData(poly);
-        tube->SetRadius(radius);
-        tube->SetNumberOfSides(10);
-        tube->CappingOn();
-        tube->Update();
-        auto actor = actorOf(tube->GetOutput(), true);
+        auto actor = actorOf(poly, true);
+        actor->GetProperty()->SetLineWidth(pixels);
+        actor->GetProperty()->SetRenderLinesAsTubes(true);
         actor->GetProperty()->LightingOff();
         return actor;
     }
@@ -235,7 +231,7 @@ struct EyeFrame {
 };
 
 /// The eye, its frustum up to the image plane, and the traced pixels on that plane.
-void eyeProps(const Scene& s, const EventLog& log, double radius, PropSet& out) {
+void eyeProps(const Scene& s, const EventLog& log, double radius, double linePx, PropSet& out) {
     const Camera& cam = s.camera;
     const EyeFrame e(cam);
     const double dist = 0.3 * glm::length(cam.lookAt - cam.eye);
@@ -252,9 +248,9 @@ void eyeProps(const Scene& s, const EventLog& log, double radius, PropSet& out) 
     Faces plane;
     plane.quad(corners);
     out.props.push_back(plane.actor(structureColour(StructureRole::GridBox), 0.12));
-    out.props.push_back(lines.tubes(0.4 * radius));
-    out.props.push_back(frustum.tubes(0.2 * radius));
-    auto eye = sphereActor(cam.eye, 2.5 * radius, 16);
+    out.props.push_back(lines.tubes(std::max(1.5, 0.5 * linePx)));
+    out.props.push_back(frustum.tubes(std::max(1.0, 0.3 * linePx)));
+    auto eye = sphereActor(cam.eye, 4 * radius, 16);
     eye->GetProperty()->SetColor(1, 1, 1);
     eye->GetProperty()->SetAmbient(0.6);
     out.props.push_back(eye);
@@ -353,41 +349,73 @@ PropSet sceneProps(vtkRenderer* r, const Scene& s) {
     return out;
 }
 
-Bounds3 boundsThatMatter(const Session& session) {
-    Bounds3 b;
+std::vector<Vec3> pointsThatMatter(const Session& session) {
+    std::vector<Vec3> points;
     const Scene* s = session.scene3D();
-    if (!s) return b;
-    b.extend(s->camera.eye);
-    b.extend(s->camera.lookAt);
-    for (const Sphere& sp : s->spheres) {
-        b.extend(sp.center - Vec3(sp.radius));
-        b.extend(sp.center + Vec3(sp.radius));
-    }
+    if (!s) return points;
+    const auto boxCorners = [&](const Vec3& lo, const Vec3& hi) {
+        for (int k = 0; k < 8; ++k)
+            points.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    };
+    points.push_back(s->camera.eye);
+    points.push_back(s->camera.lookAt);
+    for (const Sphere& sp : s->spheres)
+        for (int axis = 0; axis < 3; ++axis)
+            for (const double sign : {-1.0, 1.0}) {
+                Vec3 p = sp.center;
+                p[axis] += sign * sp.radius;
+                points.push_back(p);
+            }
     if (const Accelerator* a = session.accel3D())
-        if (const auto* grid = std::get_if<UniformGrid>(a)) {
-            b.extend(grid->spec().lo);
-            b.extend(grid->spec().hi);
-        }
+        if (const auto* grid = std::get_if<UniformGrid>(a)) boxCorners(grid->spec().lo, grid->spec().hi);
+    Bounds3 b;
+    for (const Vec3& p : points) b.extend(p);
+    // The whole recorded tree (framing stays put while the cursor moves); a ray that leaves
+    // the scene counts for half the scene's size.
     const EventLog& log = session.log();
     const double cap = std::max(glm::length(b.diagonal()), 1e-9);
     const std::vector<double> ends = rayEnds(log, log.events().size(), cap);
-    for (std::size_t r = 0; r < log.rays().size(); ++r) {
-        b.extend(log.rays()[r].origin);
-        b.extend(log.rays()[r].origin + ends[r] * log.rays()[r].dir);
-    }
-    // Floors and walls may reach far: only their part near the rest counts.
-    const Vec3 pad = 0.25 * b.diagonal() + Vec3(1e-9);
+    std::vector<bool> hit(log.rays().size(), false);
+    for (const Event& e : log.events())
+        if (const auto* h = std::get_if<RayHit>(&e))
+            if (h->ray < hit.size()) hit[h->ray] = true;
+    // First what the rays hit; the rays that leave (to a light, or out of the scene) count
+    // for at most half the scene's size after, so a far light does not shrink the picture.
+    for (std::size_t r = 0; r < log.rays().size(); ++r)
+        if (hit[r]) {
+            points.push_back(log.rays()[r].origin);
+            points.push_back(log.rays()[r].origin + ends[r] * log.rays()[r].dir);
+        }
+    for (std::size_t i = 2; i < points.size(); ++i) b.extend(points[i]);
+    const double core = std::max(glm::length(b.diagonal()), 1e-9);
+    const Vec3 pad = 0.1 * b.diagonal() + Vec3(1e-9);
     const Bounds3 near{b.lo - pad, b.hi + pad};
-    Bounds3 clipped = b;
+    for (std::size_t r = 0; r < log.rays().size(); ++r) {
+        if (hit[r]) continue;
+        const RayRecord& ray = log.rays()[r];
+        points.push_back(ray.origin);
+        points.push_back(ray.origin + std::min(ends[r], 0.5 * core / glm::length(ray.dir)) * ray.dir);
+    }
+    // Objects made of triangles (a pyramid, a mesh) count whole; floors and walls, larger than
+    // the rest, only where a ray hits them (they would shrink everything else to a corner).
     for (const Triangle& t : s->triangles) {
         Bounds3 tb;
         tb.extend(t.a);
         tb.extend(t.b);
         tb.extend(t.c);
-        const Bounds3 part = tb.clippedTo(near);
-        if (!part.empty()) clipped.extend(part);
+        if (glm::length(tb.diagonal()) < 0.5 * core && !tb.clippedTo(near).empty()) {
+            points.push_back(t.a);
+            points.push_back(t.b);
+            points.push_back(t.c);
+        }
     }
-    return clipped;
+    return points;
+}
+
+Bounds3 boundsThatMatter(const Session& session) {
+    Bounds3 b;
+    for (const Vec3& p : pointsThatMatter(session)) b.extend(p);
+    return b;
 }
 
 std::vector<Vec3> primitiveCentres(const Scene& s) {
@@ -398,7 +426,7 @@ std::vector<Vec3> primitiveCentres(const Scene& s) {
     return c;
 }
 
-void traceProps(const Session& session, PropSet& trace, PropSet& eye) {
+void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& eye) {
     trace.props.clear();
     eye.props.clear();
     const Scene* s = session.scene3D();
@@ -407,8 +435,8 @@ void traceProps(const Session& session, PropSet& trace, PropSet& eye) {
     const ReplayState& st = session.state();
     const Bounds3 frame = boundsThatMatter(session);
     const double size = std::max(glm::length(frame.diagonal()), 1e-9);
-    const double radius = 0.0035 * size;  // a ray's tube: about 4 px across at the framing
-    eyeProps(*s, log, radius, eye);
+    const double radius = 0.0035 * size;  // hit points and the eye: small beside the scene
+    eyeProps(*s, log, radius, linePx, eye);
 
     // Each ray that has begun by the cursor, from its origin to its hit (or a scene's length).
     std::vector<bool> begun(log.rays().size(), false);
@@ -428,7 +456,7 @@ void traceProps(const Session& session, PropSet& trace, PropSet& eye) {
         const RayRecord& ray = log.rays()[r];
         rays.add(ray.origin, ray.origin + ends[r] * ray.dir, Rgb(rayColour(ray.kind)));
     }
-    if (!rays.empty()) trace.props.push_back(rays.tubes(radius));
+    if (!rays.empty()) trace.props.push_back(rays.tubes(linePx));
     // The hit points found so far, as small white spheres.
     const PaletteColour& hitColour = structureColour(StructureRole::HitPoint);
     int spheres = 0;
@@ -536,7 +564,7 @@ void traceProps(const Session& session, PropSet& trace, PropSet& eye) {
         trace.props.push_back(planes.actor(structureColour(StructureRole::SplitPlane), 0.15));
     if (!currentPlane.empty())
         trace.props.push_back(currentPlane.actor(structureColour(StructureRole::SplitPlane), 0.35));
-    if (!edges.empty()) trace.props.push_back(edges.tubes(0.45 * radius));
+    if (!edges.empty()) trace.props.push_back(edges.tubes(std::max(2.0, 0.6 * linePx)));
 }
 
 }  // namespace raystep::gui

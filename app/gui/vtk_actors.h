@@ -27,11 +27,14 @@ struct PropSet {
 PropSet sceneProps(vtkRenderer* r, const Scene& s);
 
 /// The trace at the session's cursor: `eye` gets the eye, its frustum and the image plane (hidden
-/// when the view looks from the eye); `trace` the rays, hits, structure and tested primitives.
-void traceProps(const Session& session, PropSet& trace, PropSet& eye);
+/// when the view looks from the eye); `trace` the rays (`linePx` wide), hits, structure and tested
+/// primitives.
+void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& eye);
 
-/// The box around what a lecture points at: the eye, the whole recorded ray tree, the spheres,
+/// Points around what a lecture points at: the eye, the whole recorded ray tree, the spheres,
 /// the grid's box and the parts of the larger geometry (floors, walls) near them.
+std::vector<Vec3> pointsThatMatter(const Session& session);
+/// Their bounding box.
 Bounds3 boundsThatMatter(const Session& session);
 
 /// Each primitive's centre (spheres first, then triangles: the ids the exercises name).

@@ -184,8 +184,9 @@ void VtkView::frameBesideEye() {
     const Camera& c = s->camera;
     const Vec3 f = glm::normalize(c.lookAt - c.eye), r = glm::normalize(glm::cross(f, c.up)),
                u = glm::cross(r, f);
-    // To the eye's right, a little above and behind it: the ray runs left to right, side-on.
-    fit(glm::normalize(0.85 * r + 0.45 * u - 0.3 * f), glm::normalize(c.up), 35.0);
+    // To the eye's right, above and behind it: the ray runs left to right, nearly side-on,
+    // and the image plane shows its face.
+    fit(glm::normalize(0.8 * r + 0.4 * u - 0.5 * f), glm::normalize(c.up), 35.0);
     framing_ = Framing::Beside;
     dirty_ = true;
     update();
@@ -195,17 +196,23 @@ void VtkView::fit(const Vec3& toCamera, const Vec3& up, double fovDeg) {
     const Vec3 sx = glm::normalize(glm::cross(-toCamera, up)), sy = glm::cross(sx, -toCamera);
     const double tv = std::tan(fovDeg * std::numbers::pi / 360.0);
     const double th = tv * std::max(1, width()) / std::max(1, height());
-    // The nearest distance at which every corner of what matters is inside the frustum.
-    const Bounds3 b = boundsThatMatter(session_);
-    const Vec3 centre = b.centroid();
+    // Centred on what matters as the camera sees it, at the nearest distance that shows all.
+    const std::vector<Vec3> points = pointsThatMatter(session_);
+    if (points.empty()) return;
+    Vec3 lo(kInfinity), hi(-kInfinity);
+    for (const Vec3& p : points) {
+        const Vec3 q(glm::dot(p, sx), glm::dot(p, sy), glm::dot(p, toCamera));
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+    }
+    const Vec3 mid = 0.5 * (lo + hi);
+    const Vec3 centre = mid.x * sx + mid.y * sy + mid.z * toCamera;
     double distance = 1e-6;
-    for (int k = 0; k < 8; ++k) {
-        const Vec3 q =
-            Vec3(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z) -
-            centre;
+    for (const Vec3& p : points) {
+        const Vec3 q = p - centre;
         const double z = glm::dot(q, toCamera);
         distance = std::max({distance, z + std::abs(glm::dot(q, sx)) / (0.94 * th),
-                             z + std::abs(glm::dot(q, sy)) / (0.88 * tv)});
+                             z + std::abs(glm::dot(q, sy)) / (0.86 * tv)});
     }
     const Vec3 eye = centre + distance * toCamera;
     vtkCamera* cam = renderer_->GetActiveCamera();
@@ -219,7 +226,8 @@ void VtkView::fit(const Vec3& toCamera, const Vec3& up, double fovDeg) {
 void VtkView::rebuildRays() {
     traceProps_.removeFrom(renderer_);
     eyeProps_.removeFrom(renderer_);
-    traceProps(session_, traceProps_, eyeProps_);
+    // Rays about 4 px wide in a 450 px high view, wider on a big one (a projector's back rows).
+    traceProps(session_, std::clamp(height() / 110.0, 3.0, 8.0), traceProps_, eyeProps_);
     traceProps_.addTo(renderer_);
     eyeProps_.addTo(renderer_);
     dirty_ = true;
@@ -231,6 +239,7 @@ void VtkView::resizeEvent(QResizeEvent*) {
     window_->SetSize(std::max(1, width()), std::max(1, height()));
     interactor_->SetSize(std::max(1, width()), std::max(1, height()));
     // A framing fits the view's shape: made again for the new one, unless the user has moved.
+    rebuildRays();
     if (framing_ == Framing::Beside) frameBesideEye();
     if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
     dirty_ = true;
