@@ -4,7 +4,8 @@
 namespace raystep {
 
 namespace {
-constexpr std::array<PaletteColour, kRayKindCount + kPaletteRoleCount + kStructureRoleCount> kPalette{{
+constexpr int kPaletteSize = kRayKindCount + kPaletteRoleCount + kStructureRoleCount;
+constexpr std::array<PaletteColour, kPaletteSize> kPalette{{
     // Rays, on the 3D view's dark background: all bright enough to read there.
     {"primary", 213, 94, 0, "orange-red", "rosso arancio"},  // Okabe-Ito vermilion
     {"shadow", 240, 228, 66, "yellow", "giallo"},

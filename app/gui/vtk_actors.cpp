@@ -214,8 +214,8 @@ std::vector<double> rayEnds(const EventLog& log, std::size_t upTo, double cap) {
         const RayRecord& ray = log.rays()[r];
         const double length = glm::length(ray.dir);
         if (!(ends[r] >= 0) || !std::isfinite(ends[r]))
-            ends[r] = std::isfinite(ray.tMax) && ray.tMax * length < 4 * cap ? ray.tMax
-                                                                               : cap / length;
+            ends[r] =
+                std::isfinite(ray.tMax) && ray.tMax * length < 4 * cap ? ray.tMax : cap / length;
     }
     return ends;
 }
@@ -250,7 +250,7 @@ void eyeProps(const Scene& s, const EventLog& log, double radius, double linePx,
     out.props.push_back(plane.actor(structureColour(StructureRole::GridBox), 0.12));
     out.props.push_back(lines.tubes(std::max(1.5, 0.5 * linePx)));
     out.props.push_back(frustum.tubes(std::max(1.0, 0.3 * linePx)));
-    auto eye = sphereActor(cam.eye, 4 * radius, 16);
+    auto eye = sphereActor(cam.eye, 3 * radius, 16);
     eye->GetProperty()->SetColor(1, 1, 1);
     eye->GetProperty()->SetAmbient(0.6);
     out.props.push_back(eye);
@@ -266,7 +266,8 @@ void eyeProps(const Scene& s, const EventLog& log, double radius, double linePx,
         pixels.quad({p - side * e.r - side * e.u, p + side * e.r - side * e.u,
                      p + side * e.r + side * e.u, p - side * e.r + side * e.u});
     }
-    if (!pixels.empty()) out.props.push_back(pixels.actor(structureColour(StructureRole::HitPoint), 1));
+    if (!pixels.empty())
+        out.props.push_back(pixels.actor(structureColour(StructureRole::HitPoint), 1));
 }
 
 }  // namespace
@@ -367,18 +368,23 @@ std::vector<Vec3> pointsThatMatter(const Session& session) {
                 points.push_back(p);
             }
     if (const Accelerator* a = session.accel3D())
-        if (const auto* grid = std::get_if<UniformGrid>(a)) boxCorners(grid->spec().lo, grid->spec().hi);
+        if (const auto* grid = std::get_if<UniformGrid>(a))
+            boxCorners(grid->spec().lo, grid->spec().hi);
     Bounds3 b;
     for (const Vec3& p : points) b.extend(p);
-    // The whole recorded tree (framing stays put while the cursor moves); a ray that leaves
-    // the scene counts for half the scene's size.
+    // The whole recorded tree (framing stays put while the cursor moves).
     const EventLog& log = session.log();
     const double cap = std::max(glm::length(b.diagonal()), 1e-9);
-    const std::vector<double> ends = rayEnds(log, log.events().size(), cap);
-    std::vector<bool> hit(log.rays().size(), false);
-    for (const Event& e : log.events())
-        if (const auto* h = std::get_if<RayHit>(&e))
+    // Up to an open exercise's limit only: what the student may see.
+    const std::size_t end = std::min(session.end(), log.events().size());
+    const std::vector<double> ends = rayEnds(log, end, cap);
+    std::vector<bool> hit(log.rays().size(), false), begun(log.rays().size(), false);
+    for (std::size_t i = 0; i < end; ++i) {
+        if (const auto* h = std::get_if<RayHit>(&log.events()[i]))
             if (h->ray < hit.size()) hit[h->ray] = true;
+        if (const auto* rb = std::get_if<RayBegin>(&log.events()[i]))
+            if (rb->ray < begun.size()) begun[rb->ray] = true;
+    }
     // First what the rays hit; the rays that leave (to a light, or out of the scene) count
     // for at most half the scene's size after, so a far light does not shrink the picture.
     for (std::size_t r = 0; r < log.rays().size(); ++r)
@@ -391,10 +397,11 @@ std::vector<Vec3> pointsThatMatter(const Session& session) {
     const Vec3 pad = 0.1 * b.diagonal() + Vec3(1e-9);
     const Bounds3 near{b.lo - pad, b.hi + pad};
     for (std::size_t r = 0; r < log.rays().size(); ++r) {
-        if (hit[r]) continue;
+        if (hit[r] || !begun[r]) continue;
         const RayRecord& ray = log.rays()[r];
         points.push_back(ray.origin);
-        points.push_back(ray.origin + std::min(ends[r], 0.5 * core / glm::length(ray.dir)) * ray.dir);
+        points.push_back(ray.origin +
+                         std::min(ends[r], 0.5 * core / glm::length(ray.dir)) * ray.dir);
     }
     // Objects made of triangles (a pyramid, a mesh) count whole; floors and walls, larger than
     // the rest, only where a ray hits them (they would shrink everything else to a corner).

@@ -18,7 +18,6 @@
 
 namespace raystep::gui {
 
-
 QString rayKindName(RayKind kind);
 
 QString rayKindLabel(RayKind kind, Language lang) {
@@ -93,8 +92,8 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
         return b;
     };
     eyeButton_ = button(tr("View from the eye"), tr("Look through the ray tracer's camera"));
-    besideButton_ = button(tr("Beside the eye"),
-                           tr("Look from beside the eye: the primary ray side-on"));
+    besideButton_ =
+        button(tr("Beside the eye"), tr("Look from beside the eye: the primary ray side-on"));
     idsButton_ = button(tr("Primitive ids"), tr("Label each primitive with its id"));
     idsButton_->setCheckable(true);
     connect(eyeButton_, &QToolButton::clicked, this, &VtkView::viewFromEye);
@@ -108,6 +107,11 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
     // A new trace (a lesson's, a clicked pixel's) is framed from beside the eye.
     connect(&session_, &Session::logChanged, this, [this] { frameBesideEye(); });
     connect(&session_, &Session::cursorChanged, this, [this] { rebuildRays(); });
+    // An exercise answered shows more of the tree: the framing grows to hold it.
+    connect(&session_, &Session::limitChanged, this, [this] {
+        if (framing_ == Framing::Beside) frameBesideEye();
+        if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
+    });
     rebuildScene();
     placeButtons();
 }
@@ -170,8 +174,8 @@ void VtkView::orbit(double azimuth, double elevation, double zoom) {
     const double* f = cam->GetFocalPoint();
     const double* up = cam->GetViewUp();
     if (const Scene* s = session_.scene3D())
-        fit(glm::normalize(Vec3(p[0] - f[0], p[1] - f[1], p[2] - f[2])),
-            Vec3(up[0], up[1], up[2]), s->camera.fovDeg);
+        fit(glm::normalize(Vec3(p[0] - f[0], p[1] - f[1], p[2] - f[2])), Vec3(up[0], up[1], up[2]),
+            s->camera.fovDeg);
     cam->Dolly(zoom);
     renderer_->ResetCameraClippingRange();
     dirty_ = true;
@@ -207,12 +211,13 @@ void VtkView::fit(const Vec3& toCamera, const Vec3& up, double fovDeg) {
     }
     const Vec3 mid = 0.5 * (lo + hi);
     const Vec3 centre = mid.x * sx + mid.y * sy + mid.z * toCamera;
+    // Margins keep the caption, legend and buttons (top left and right) off the content.
     double distance = 1e-6;
     for (const Vec3& p : points) {
         const Vec3 q = p - centre;
         const double z = glm::dot(q, toCamera);
-        distance = std::max({distance, z + std::abs(glm::dot(q, sx)) / (0.94 * th),
-                             z + std::abs(glm::dot(q, sy)) / (0.86 * tv)});
+        distance = std::max({distance, z + std::abs(glm::dot(q, sx)) / (0.82 * th),
+                             z + std::abs(glm::dot(q, sy)) / (0.8 * tv)});
     }
     const Vec3 eye = centre + distance * toCamera;
     vtkCamera* cam = renderer_->GetActiveCamera();

@@ -67,8 +67,7 @@ double meanBrightness(const QImage& image, QPointF centre, double radius) {
     int n = 0;
     for (int y = int(centre.y() - radius); y <= int(centre.y() + radius); ++y)
         for (int x = int(centre.x() - radius); x <= int(centre.x() + radius); ++x) {
-            if (!image.rect().contains(x, y) ||
-                std::hypot(x - centre.x(), y - centre.y()) > radius)
+            if (!image.rect().contains(x, y) || std::hypot(x - centre.x(), y - centre.y()) > radius)
                 continue;
             const QColor c = image.pixelColor(x, y);
             sum += (c.red() + c.green() + c.blue()) / 3.0;
