@@ -296,11 +296,11 @@ void VtkView::drawPrimitiveIds(QPainter& g) {
         for (const PrimitiveTest& t : session_.state().tests)
             if (t.prim < tested.size()) tested[t.prim] = true;
     const std::vector<Vec3> centres = primitiveCentres(*s);
+    g.save();  // the bold font stays with the labels, not the legend drawn after
     QFont font = g.font();
     font.setBold(true);
     g.setFont(font);
     const QFontMetrics fm(font);
-    g.save();
     g.setRenderHint(QPainter::Antialiasing);
     int drawn = 0;
     // Tested ones first, so a mesh's many labels never crowd them out.
