@@ -4,7 +4,8 @@
 namespace raystep {
 
 namespace {
-constexpr std::array<PaletteColour, kRayKindCount + kPaletteRoleCount> kPalette{{
+constexpr int kPaletteSize = kRayKindCount + kPaletteRoleCount + kStructureRoleCount;
+constexpr std::array<PaletteColour, kPaletteSize> kPalette{{
     // Rays, on the 3D view's dark background: all bright enough to read there.
     {"primary", 213, 94, 0, "orange-red", "rosso arancio"},  // Okabe-Ito vermilion
     {"shadow", 240, 228, 66, "yellow", "giallo"},
@@ -19,8 +20,17 @@ constexpr std::array<PaletteColour, kRayKindCount + kPaletteRoleCount> kPalette{
     {"hit", 0, 158, 115, "green", "verde"},
     {"candidate", 86, 180, 233, "sky blue", "azzurro"},
     {"chosen", 0, 114, 178, "blue", "blu"},
+    // The 3D view's structures, on its dark background: none shares a hue with a ray.
+    {"grid-box", 200, 200, 200, "light grey", "grigio chiaro"},
+    {"voxel", 0, 114, 178, "blue", "blu"},
+    {"current-voxel", 230, 159, 0, "orange", "arancione"},
+    {"kd-node", 230, 159, 0, "orange", "arancione"},
+    {"split-plane", 0, 114, 178, "blue", "blu"},
+    {"bvh-box", 0, 114, 178, "blue", "blu"},
+    {"tested-primitive", 255, 255, 255, "white", "bianco"},
+    {"hit-point", 255, 255, 255, "white", "bianco"},
 }};
-static_assert(kRayKindCount == 5 && kPaletteRoleCount == 7);
+static_assert(kRayKindCount == 5 && kPaletteRoleCount == 7 && kStructureRoleCount == 8);
 }  // namespace
 
 const PaletteColour& rayColour(RayKind k) {
@@ -29,6 +39,10 @@ const PaletteColour& rayColour(RayKind k) {
 
 const PaletteColour& roleColour(PaletteRole role) {
     return kPalette[kRayKindCount + static_cast<std::size_t>(role)];
+}
+
+const PaletteColour& structureColour(StructureRole role) {
+    return kPalette[kRayKindCount + kPaletteRoleCount + static_cast<std::size_t>(role)];
 }
 
 std::span<const PaletteColour> paletteColours() {

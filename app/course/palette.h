@@ -30,11 +30,28 @@ struct PaletteColour {
 enum class PaletteRole { Visited, Current, Tested, Skipped, Hit, Candidate, Chosen };
 constexpr int kPaletteRoleCount = 7;
 
+/// What the 3D view draws of a structure, besides the rays: each differs from every ray colour.
+/// Roles never shown together may share a colour (the current voxel and the current kd node).
+enum class StructureRole {
+    GridBox,
+    Voxel,
+    CurrentVoxel,
+    KdNode,
+    SplitPlane,
+    BvhBox,
+    TestedPrimitive,
+    HitPoint
+};
+constexpr int kStructureRoleCount = 8;
+
 /// The colour of a ray of kind `k` (3D view, legend).
 const PaletteColour& rayColour(RayKind k);
 /// The colour of a role of the 2D view.
 const PaletteColour& roleColour(PaletteRole role);
-/// Every entry: the ray kinds in RayKind's order, then the roles in PaletteRole's order.
+/// The colour of a structure's role in the 3D view.
+const PaletteColour& structureColour(StructureRole role);
+/// Every entry: the ray kinds in RayKind's order, the roles in PaletteRole's order, then the
+/// structure roles in StructureRole's order.
 std::span<const PaletteColour> paletteColours();
 /// The entry a lesson names by `key` ("primary", "visited", ...), or nullopt.
 std::optional<PaletteColour> paletteColour(std::string_view key);

@@ -154,6 +154,8 @@ void LessonController::applyStep(int index) {
     events_->setFilter(QString::fromStdString(step.filter));
     if (step.camera)
         view3D_->orbit(step.camera->azimuth, step.camera->elevation, step.camera->zoom);
+    else
+        view3D_->frameBesideEye();
     studentProgress_.lessons[lesson_->lesson().id].step = index;
     saveProgress();
 }

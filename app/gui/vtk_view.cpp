@@ -5,48 +5,20 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
+#include <vtkProp.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSphereSource.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolButton>
 #include <QWheelEvent>
 
+#include <numbers>
+
 namespace raystep::gui {
-
-namespace {
-/// One actor drawing coloured line segments (the rays; the voxels, boxes, planes and hits).
-vtkSmartPointer<vtkActor> linesActor(vtkPoints* points, vtkCellArray* lines,
-                                     vtkUnsignedCharArray* colours, double width) {
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    poly->SetLines(lines);
-    poly->GetCellData()->SetScalars(colours);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetLineWidth(width);
-    return actor;
-}
-
-/// A palette colour (course/palette.h, the one table) as VTK's cell colour.
-struct Rgb {
-    unsigned char c[3];
-    explicit Rgb(const PaletteColour& p) : c{p.r, p.g, p.b} {}
-    operator const unsigned char*() const { return c; }
-};
-}  // namespace
 
 QString rayKindName(RayKind kind);
 
@@ -109,9 +81,35 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
     vtkNew<vtkInteractorStyleTrackballCamera> style;
     interactor_->SetInteractorStyle(style);
     interactor_->Initialize();
+    // Over the view, where a lecturer looks: back to the eye, beside it again, the ids.
+    const auto button = [this](const QString& text, const QString& tip) {
+        auto* b = new QToolButton(this);
+        b->setText(text);
+        b->setToolTip(tip);
+        b->setFocusPolicy(Qt::NoFocus);
+        b->setStyleSheet(QStringLiteral(
+            "QToolButton { color: #eee; background: rgba(20, 22, 28, 200); border: 1px solid "
+            "#777; border-radius: 3px; padding: 2px 6px; } QToolButton:checked { background: "
+            "rgba(0, 114, 178, 220); }"));
+        return b;
+    };
+    eyeButton_ = button(tr("View from the eye"), tr("Look through the ray tracer's camera"));
+    besideButton_ =
+        button(tr("Beside the eye"), tr("Look from beside the eye: the primary ray side-on"));
+    idsButton_ = button(tr("Primitive ids"), tr("Label each primitive with its id"));
+    idsButton_->setCheckable(true);
+    connect(eyeButton_, &QToolButton::clicked, this, &VtkView::viewFromEye);
+    connect(besideButton_, &QToolButton::clicked, this, &VtkView::frameBesideEye);
+    connect(idsButton_, &QToolButton::toggled, this, &VtkView::setShowPrimitiveIds);
     connect(&session_, &Session::sceneChanged, this, [this] {
         rebuildScene();
         rebuildRays();
+        frameBesideEye();
+    });
+    // A new trace (a lesson's, a clicked pixel's) is framed from beside the eye, unless the user
+    // placed the camera: a pixel clicked in "ray trace this view" keeps the view it came from.
+    connect(&session_, &Session::logChanged, this, [this] {
+        if (framing_ != Framing::User) frameBesideEye();
     });
     connect(&session_, &Session::cursorChanged, this, [this] { rebuildRays(); });
     // Every change of the camera, whoever made it; only a new view is announced (not, e.g., a
@@ -127,7 +125,29 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
         emit view->cameraMoved();
     });
     renderer_->GetActiveCamera()->AddObserver(vtkCommand::ModifiedEvent, onCamera);
+    // An exercise answered shows more of the tree: the framing grows to hold it.
+    connect(&session_, &Session::limitChanged, this, [this] {
+        if (framing_ == Framing::Beside) frameBesideEye();
+        if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
+    });
     rebuildScene();
+    placeButtons();
+}
+
+void VtkView::placeButtons() {
+    int x = width() - 8;
+    for (QToolButton* b : {idsButton_, besideButton_, eyeButton_}) {
+        const QSize size = b->sizeHint();
+        x -= size.width();
+        b->setGeometry(x, 6, size.width(), size.height());
+        x -= 6;
+    }
+}
+
+void VtkView::setShowPrimitiveIds(bool show) {
+    showIds_ = show;
+    if (idsButton_->isChecked() != show) idsButton_->setChecked(show);
+    update();
 }
 
 Camera VtkView::currentCamera() const {
@@ -148,57 +168,12 @@ VtkView::~VtkView() = default;
 
 void VtkView::rebuildScene() {
     renderer_->RemoveAllViewProps();
-    raysActor_ = nullptr;
-    markersActor_ = nullptr;
-    const Scene* s = session_.scene3D();
-    if (!s) {
-        dirty_ = true;
-        update();
-        return;
-    }
-    for (const Sphere& sp : s->spheres) {
-        vtkNew<vtkSphereSource> src;
-        src->SetCenter(sp.center.x, sp.center.y, sp.center.z);
-        src->SetRadius(sp.radius);
-        src->SetThetaResolution(32);
-        src->SetPhiResolution(16);
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputConnection(src->GetOutputPort());
-        vtkNew<vtkActor> actor;
-        actor->SetMapper(mapper);
-        const Color kd = s->materials[sp.material].kd;
-        actor->GetProperty()->SetColor(kd.x, kd.y, kd.z);
-        actor->GetProperty()->SetOpacity(isBlack(s->materials[sp.material].transparency) ? 1.0
-                                                                                         : 0.45);
-        renderer_->AddActor(actor);
-    }
-    if (!s->triangles.empty()) {
-        vtkNew<vtkPoints> points;
-        vtkNew<vtkCellArray> cells;
-        vtkNew<vtkUnsignedCharArray> colours;
-        colours->SetNumberOfComponents(3);
-        for (const Triangle& t : s->triangles) {
-            vtkIdType ids[3];
-            for (int k = 0; k < 3; ++k) {
-                const Vec3& p = k == 0 ? t.a : (k == 1 ? t.b : t.c);
-                ids[k] = points->InsertNextPoint(p.x, p.y, p.z);
-            }
-            cells->InsertNextCell(3, ids);
-            const Color kd = glm::clamp(s->materials[t.material].kd, 0.0, 1.0) * 255.0;
-            const unsigned char c[3] = {static_cast<unsigned char>(kd.x),
-                                        static_cast<unsigned char>(kd.y),
-                                        static_cast<unsigned char>(kd.z)};
-            colours->InsertNextTypedTuple(c);
-        }
-        vtkNew<vtkPolyData> mesh;
-        mesh->SetPoints(points);
-        mesh->SetPolys(cells);
-        mesh->GetCellData()->SetScalars(colours);
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputData(mesh);
-        vtkNew<vtkActor> actor;
-        actor->SetMapper(mapper);
-        renderer_->AddActor(actor);
+    sceneProps_.props.clear();
+    traceProps_.props.clear();
+    eyeProps_.props.clear();
+    if (const Scene* s = session_.scene3D()) {
+        sceneProps_ = sceneProps(renderer_, *s);
+        sceneProps_.addTo(renderer_);
     }
     resetCamera();
 }
@@ -212,162 +187,98 @@ void VtkView::resetCamera() {
         cam->SetViewAngle(s->camera.fovDeg);
         renderer_->ResetCameraClippingRange();
     }
+    framing_ = Framing::Eye;
     dirty_ = true;
     update();
 }
 
 void VtkView::orbit(double azimuth, double elevation, double zoom) {
     resetCamera();
+    framing_ = Framing::Orbit;
+    orbit_ = {azimuth, elevation, zoom};
     vtkCamera* cam = renderer_->GetActiveCamera();
     cam->Azimuth(azimuth);
     cam->Elevation(elevation);
     cam->OrthogonalizeViewUp();
+    // The lesson's angle, at the distance that shows the eye, its rays and the structure (the
+    // scene camera's own distance left the eye behind the view and the ray's start unseen).
+    const double* p = cam->GetPosition();
+    const double* f = cam->GetFocalPoint();
+    const double* up = cam->GetViewUp();
+    if (const Scene* s = session_.scene3D())
+        fit(glm::normalize(Vec3(p[0] - f[0], p[1] - f[1], p[2] - f[2])), Vec3(up[0], up[1], up[2]),
+            s->camera.fovDeg);
     cam->Dolly(zoom);
     renderer_->ResetCameraClippingRange();
     dirty_ = true;
     update();
 }
 
-void VtkView::rebuildRays() {
-    if (raysActor_) renderer_->RemoveActor(raysActor_);
-    if (markersActor_) renderer_->RemoveActor(markersActor_);
-    raysActor_ = markersActor_ = nullptr;
+void VtkView::frameBesideEye() {
     const Scene* s = session_.scene3D();
-    const EventLog& log = session_.log();
-    // A build has no rays but has boxes and planes to show.
-    if (!s || (log.rays().empty() && !session_.showingBuild())) {
-        dirty_ = true;
-        update();
-        return;
-    }
-    // Each ray that has begun by the cursor, from its origin to its hit (or a scene's length).
-    const ReplayState& st = session_.state();
-    std::vector<double> ends(log.rays().size(), -1.0);
-    std::vector<bool> begun(log.rays().size(), false);
-    for (std::size_t i = 0; i < st.cursor; ++i) {
-        const Event& e = log.events()[i];
-        if (const auto* b = std::get_if<RayBegin>(&e)) begun[b->ray] = true;
-        if (const auto* h = std::get_if<RayHit>(&e)) ends[h->ray] = h->t;
-    }
-    const double sceneSize = glm::length(s->bounds().diagonal());
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> lines;
-    vtkNew<vtkUnsignedCharArray> colours;
-    colours->SetNumberOfComponents(3);
-    for (std::size_t r = 0; r < log.rays().size(); ++r) {
-        if (!begun[r]) continue;
-        const RayRecord& ray = log.rays()[r];
-        double t = ends[r];
-        if (!(t >= 0) || !std::isfinite(t))
-            t = std::isfinite(ray.tMax) ? ray.tMax : sceneSize / glm::length(ray.dir);
-        const Vec3 a = ray.origin, b = ray.origin + t * ray.dir;
-        const vtkIdType ids[2] = {points->InsertNextPoint(a.x, a.y, a.z),
-                                  points->InsertNextPoint(b.x, b.y, b.z)};
-        lines->InsertNextCell(2, ids);
-        colours->InsertNextTypedTuple(Rgb(rayColour(ray.kind)));
-    }
-    raysActor_ = linesActor(points, lines, colours, 2.5);
-    renderer_->AddActor(raysActor_);
+    if (!s) return resetCamera();
+    const Camera& c = s->camera;
+    const Vec3 f = glm::normalize(c.lookAt - c.eye), r = glm::normalize(glm::cross(f, c.up)),
+               u = glm::cross(r, f);
+    // To the eye's right, above and behind it: the ray runs left to right, nearly side-on,
+    // and the image plane shows its face.
+    fit(glm::normalize(0.8 * r + 0.4 * u - 0.5 * f), glm::normalize(c.up), 35.0);
+    framing_ = Framing::Beside;
+    dirty_ = true;
+    update();
+}
 
-    // The current ray's structure: visited voxels (grid) or the node being entered (kd-tree),
-    // as wireframe boxes, and the hit points found so far.
-    vtkNew<vtkPoints> mp;
-    vtkNew<vtkCellArray> ml;
-    vtkNew<vtkUnsignedCharArray> mc;
-    mc->SetNumberOfComponents(3);
-    // Segments between points already inserted, `edges` as pairs of indices into `id`.
-    const auto addEdges = [&](const vtkIdType* id, const auto& edges, const unsigned char* colour) {
-        for (const auto& e : edges) {
-            const vtkIdType pair[2] = {id[e[0]], id[e[1]]};
-            ml->InsertNextCell(2, pair);
-            mc->InsertNextTypedTuple(colour);
-        }
-    };
-    const auto box = [&](const Vec3& lo, const Vec3& hi, const unsigned char* colour) {
-        vtkIdType id[8];
-        for (int k = 0; k < 8; ++k)
-            id[k] =
-                mp->InsertNextPoint(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-        static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
-                                         {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-        addEdges(id, edges, colour);
-    };
-    // A split plane: its outline in the box and the two diagonals, so it reads as a plane.
-    const auto plane = [&](const Vec3& lo, const Vec3& hi, int axis, double at,
-                           const unsigned char* colour) {
-        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-        Vec3 c[4];
-        for (int k = 0; k < 4; ++k) {
-            c[k][axis] = at;
-            c[k][u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-            c[k][v] = (k >= 2) ? hi[v] : lo[v];
-        }
-        vtkIdType id[4];
-        for (int k = 0; k < 4; ++k) id[k] = mp->InsertNextPoint(c[k].x, c[k].y, c[k].z);
-        static const int edges[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
-        addEdges(id, edges, colour);
-    };
-    // The 2D view's roles, from the one palette: visited voxels, the current node, hits, the
-    // build's candidate and chosen planes.
-    const Rgb kVoxel(roleColour(PaletteRole::Visited)), kNode(roleColour(PaletteRole::Current)),
-        kHitMark(roleColour(PaletteRole::Hit)), kCandidate(roleColour(PaletteRole::Candidate)),
-        kChosen(roleColour(PaletteRole::Chosen));
-    const Accelerator* accel = session_.accel3D();
-    if (const auto* grid = accel ? std::get_if<UniformGrid>(accel) : nullptr) {
-        const auto& spec = grid->spec();
-        const Vec3 size(spec.cellSize(0), spec.cellSize(1), spec.cellSize(2));
-        for (const auto& c : st.visitedCells) {
-            const Vec3 lo = spec.lo + Vec3(c[0], c[1], c[2]) * size;
-            box(lo, lo + size, kVoxel);
-        }
-    } else if (const auto* kd = accel ? std::get_if<KdTree3>(accel) : nullptr;
-               kd && st.node && st.node->node < kd->nodes().size()) {
-        // The entered node's box, from the walk over the tree that carries every node's box.
-        const std::uint32_t entered = st.node->node;
-        std::optional<std::pair<KdNode, BoxN<3>>> found;
-        kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<3>& b) {
-            if (id == entered) found.emplace(n, b);
-        });
-        if (found) {
-            const auto& [n, b] = *found;
-            box(b.lo, b.hi, kNode);
-            if (!n.leaf()) plane(b.lo, b.hi, n.axis, n.split, kChosen);
-        }
-    } else if (const auto* bvh = accel ? std::get_if<Bvh3>(accel) : nullptr;
-               bvh && !session_.showingBuild()) {
-        // Object subdivision: every box the ray has entered (they may overlap), the current one
-        // brighter.
-        const Rgb kEntered(roleColour(PaletteRole::Visited));
-        for (const std::uint32_t n : st.nodesEntered)
-            if (n < bvh->nodes().size())
-                box(bvh->nodes()[n].bounds.lo, bvh->nodes()[n].bounds.hi,
-                    st.node && n == st.node->node ? kNode : kEntered);
+void VtkView::fit(const Vec3& toCamera, const Vec3& up, double fovDeg) {
+    const Vec3 sx = glm::normalize(glm::cross(-toCamera, up)), sy = glm::cross(sx, -toCamera);
+    const double tv = std::tan(fovDeg * std::numbers::pi / 360.0);
+    const double th = tv * std::max(1, width()) / std::max(1, height());
+    // Centred on what matters as the camera sees it, at the nearest distance that shows all.
+    const std::vector<Vec3> points = pointsThatMatter(session_);
+    if (points.empty()) return;
+    Vec3 lo(kInfinity), hi(-kInfinity);
+    for (const Vec3& p : points) {
+        const Vec3 q(glm::dot(p, sx), glm::dot(p, sy), glm::dot(p, toCamera));
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
     }
-    // A build's replay: the node being split, the candidate plane of the sweep, the choice.
-    if (session_.showingBuild() && st.buildNode && st.buildNode->node < log.nodes().size()) {
-        const NodeRecord& n = log.nodes()[st.buildNode->node];
-        const Vec3 lo(n.lo[0], n.lo[1], n.lo[2]), hi(n.hi[0], n.hi[1], n.hi[2]);
-        box(lo, hi, kNode);
-        if (!st.candidates.empty())
-            plane(lo, hi, st.candidates.back().axis, st.candidates.back().position, kCandidate);
-        if (st.chosen) plane(lo, hi, st.chosen->axis, st.chosen->position, kChosen);
+    const Vec3 mid = 0.5 * (lo + hi);
+    const Vec3 centre = mid.x * sx + mid.y * sy + mid.z * toCamera;
+    // Margins keep the caption, legend and buttons (top left and right) off the content.
+    double distance = 1e-6;
+    for (const Vec3& p : points) {
+        const Vec3 q = p - centre;
+        const double z = glm::dot(q, toCamera);
+        distance = std::max({distance, z + std::abs(glm::dot(q, sx)) / (0.82 * th),
+                             z + std::abs(glm::dot(q, sy)) / (0.8 * tv)});
     }
-    for (std::size_t r = 0; r < log.rays().size(); ++r) {
-        if (!begun[r] || !(ends[r] >= 0) || !std::isfinite(ends[r])) continue;
-        const RayRecord& ray = log.rays()[r];
-        const Vec3 p = ray.origin + ends[r] * ray.dir;
-        const double m = 0.01 * sceneSize;
-        box(p - Vec3(m), p + Vec3(m), kHitMark);
-    }
-    markersActor_ = linesActor(mp, ml, mc, 1.5);
-    renderer_->AddActor(markersActor_);
+    const Vec3 eye = centre + distance * toCamera;
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    cam->SetFocalPoint(centre.x, centre.y, centre.z);
+    cam->SetPosition(eye.x, eye.y, eye.z);
+    cam->SetViewUp(sy.x, sy.y, sy.z);
+    cam->SetViewAngle(fovDeg);
+    renderer_->ResetCameraClippingRange();
+}
+
+void VtkView::rebuildRays() {
+    traceProps_.removeFrom(renderer_);
+    eyeProps_.removeFrom(renderer_);
+    // Rays about 4 px wide in a 450 px high view, wider on a big one (a projector's back rows).
+    traceProps(session_, std::clamp(height() / 110.0, 3.0, 8.0), traceProps_, eyeProps_);
+    traceProps_.addTo(renderer_);
+    eyeProps_.addTo(renderer_);
     dirty_ = true;
     update();
 }
 
 void VtkView::resizeEvent(QResizeEvent*) {
+    placeButtons();
     window_->SetSize(std::max(1, width()), std::max(1, height()));
     interactor_->SetSize(std::max(1, width()), std::max(1, height()));
+    // A framing fits the view's shape: made again for the new one, unless the user has moved.
+    rebuildRays();
+    if (framing_ == Framing::Beside) frameBesideEye();
+    if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
     dirty_ = true;
 }
 
@@ -379,6 +290,14 @@ void VtkView::paintEvent(QPaintEvent*) {
         g.drawText(rect(), Qt::AlignCenter, tr("The 3D view shows 3D scenes."));
         return;
     }
+    // From the eye itself its glyph would fill the view: hidden there.
+    if (const Scene* s = session_.scene3D()) {
+        const double* p = renderer_->GetActiveCamera()->GetPosition();
+        const bool atEye = glm::length(Vec3(p[0], p[1], p[2]) - s->camera.eye) <
+                           0.05 * glm::length(s->camera.lookAt - s->camera.eye);
+        for (const auto& prop : eyeProps_.props) prop->SetVisibility(!atEye);
+        renderer_->ResetCameraClippingRange();
+    }
     // Render only when something changed; read back RGB (RGBA would come out transparent).
     window_->SetSize(std::max(1, width()), std::max(1, height()));
     window_->Render();
@@ -387,6 +306,7 @@ void VtkView::paintEvent(QPaintEvent*) {
     QImage image(pixels, w, h, 3 * w, QImage::Format_RGB888);
     g.drawImage(rect(), image.mirrored(false, true));
     delete[] pixels;
+    if (showIds_) drawPrimitiveIds(g);
     // The lecture's first slide: this view is rasterized, the image beside it ray traced.
     g.setPen(QColor(230, 230, 230));
     if (caption_)
@@ -398,6 +318,49 @@ void VtkView::paintEvent(QPaintEvent*) {
     dirty_ = false;
 }
 
+void VtkView::drawPrimitiveIds(QPainter& g) {
+    const Scene* s = session_.scene3D();
+    if (!s) return;
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    const double* p = cam->GetPosition();
+    const double* d = cam->GetDirectionOfProjection();
+    const Vec3 pos(p[0], p[1], p[2]), dir(d[0], d[1], d[2]);
+    std::vector<bool> tested(s->primitiveCount(), false);
+    if (!session_.showingBuild())
+        for (const PrimitiveTest& t : session_.state().tests)
+            if (t.prim < tested.size()) tested[t.prim] = true;
+    const std::vector<Vec3> centres = primitiveCentres(*s);
+    g.save();  // the bold font stays with the labels, not the legend drawn after
+    QFont font = g.font();
+    font.setBold(true);
+    g.setFont(font);
+    const QFontMetrics fm(font);
+    g.setRenderHint(QPainter::Antialiasing);
+    int drawn = 0;
+    // Tested ones first, so a mesh's many labels never crowd them out.
+    for (const bool pass : {true, false})
+        for (std::size_t i = 0; i < centres.size() && drawn < 400; ++i) {
+            if (tested[i] != pass || !(glm::dot(centres[i] - pos, dir) > 0)) continue;
+            renderer_->SetWorldPoint(centres[i].x, centres[i].y, centres[i].z, 1.0);
+            renderer_->WorldToDisplay();
+            const double* at = renderer_->GetDisplayPoint();
+            const QPointF c(at[0], height() - at[1]);
+            if (!rect().contains(c.toPoint())) continue;
+            const QString text = QString::number(i);
+            const QRectF box(c.x() - fm.horizontalAdvance(text) / 2.0 - 4,
+                             c.y() - fm.height() / 2.0 - 1, fm.horizontalAdvance(text) + 8,
+                             fm.height() + 2);
+            const PaletteColour& hi = structureColour(StructureRole::TestedPrimitive);
+            g.setPen(Qt::NoPen);
+            g.setBrush(tested[i] ? QColor(hi.r, hi.g, hi.b, 235) : QColor(20, 22, 28, 210));
+            g.drawRoundedRect(box, 3, 3);
+            g.setPen(tested[i] ? QColor(20, 22, 28) : QColor(240, 240, 240));
+            g.drawText(box, Qt::AlignCenter, text);
+            ++drawn;
+        }
+    g.restore();
+}
+
 void VtkView::forward(QMouseEvent* e) {
     interactor_->SetEventInformationFlipY(int(e->position().x()), int(e->position().y()),
                                           e->modifiers() & Qt::ControlModifier,
@@ -406,6 +369,7 @@ void VtkView::forward(QMouseEvent* e) {
 void VtkView::mousePressEvent(QMouseEvent* e) {
     pressAt_.reset();
     if (e->button() == Qt::LeftButton) pressAt_ = e->position();
+    framing_ = Framing::User;
     forward(e);
     if (e->button() == Qt::LeftButton) interactor_->LeftButtonPressEvent();
     if (e->button() == Qt::RightButton) interactor_->RightButtonPressEvent();
@@ -431,6 +395,7 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
     update();
 }
 void VtkView::wheelEvent(QWheelEvent* e) {
+    framing_ = Framing::User;
     if (e->angleDelta().y() > 0)
         interactor_->MouseWheelForwardEvent();
     else

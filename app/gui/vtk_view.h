@@ -2,8 +2,10 @@
 // The 3D view: VTK renders off screen and the widget draws the pixels it reads back, with mouse
 // events forwarded to a VTK interactor (DESIGN.md: the way that works with Qt6 and Debian's VTK
 // under Xvfb). Shows the scene, the recorded rays up to the cursor coloured by kind, the hits,
-// and the current ray's visited voxels (grid) or the kd-tree node it is in.
+// and the current ray's visited voxels (grid) or the kd-tree node it is in. By default it looks
+// from beside the eye, so the primary ray is seen side-on (from the eye it is a point).
 #include "session.h"
+#include "vtk_actors.h"
 
 #include "raystep/base/i18n.h"
 #include "raystep/scene/camera.h"
@@ -16,6 +18,7 @@
 #include <optional>
 
 class QPainter;
+class QToolButton;
 class vtkActor;
 class vtkGenericRenderWindowInteractor;
 class vtkRenderWindow;
@@ -46,13 +49,22 @@ class VtkView : public QWidget {
         legend_ = legend;
         update();
     }
-    /// Back to the scene's own camera.
-    void resetCamera();
     /// The scene's camera turned about its focal point (degrees) and moved closer by `zoom`.
     void orbit(double azimuth, double elevation, double zoom);
     /// The camera the view shows, as the ray tracer's (eye, lookAt, up, vertical fov): pixel
     /// (x, y) of a width() x height() image is the ray under widget point (x + 0.5, y + 0.5).
     Camera currentCamera() const;
+    bool showingPrimitiveIds() const { return showIds_; }
+
+  public slots:
+    /// Back to the scene's own camera: the view from the eye.
+    void resetCamera();
+    void viewFromEye() { resetCamera(); }
+    /// From beside the eye, the scene's up kept: the eye, its image plane, the whole ray tree,
+    /// the structure's boxes and the scene near them in view, the primary ray side-on.
+    void frameBesideEye();
+    /// Labels every primitive in view with its id (the exercises' "primitive 1").
+    void setShowPrimitiveIds(bool show);
 
   signals:
     /// The camera changed (turned, moved or zoomed, by the user or by code).
@@ -73,13 +85,26 @@ class VtkView : public QWidget {
     void forward(QMouseEvent* e);
     void rebuildScene();
     void rebuildRays();
+    /// The primitive ids at their centres' projections, over the rendered image.
+    void drawPrimitiveIds(QPainter& g);
+    void placeButtons();
+    /// Looks along -toCamera (unit) at what matters, from the nearest distance showing all of it.
+    void fit(const Vec3& toCamera, const Vec3& up, double fovDeg);
 
     Session& session_;
     vtkNew<vtkRenderWindow> window_;
     vtkNew<vtkRenderer> renderer_;
     vtkNew<vtkGenericRenderWindowInteractor> interactor_;
-    vtkSmartPointer<vtkActor> raysActor_;
-    vtkSmartPointer<vtkActor> markersActor_;  // visited voxels or the current node; hit points
+    PropSet sceneProps_;  // primitives, light glyphs
+    PropSet traceProps_;  // rays, hits, the structure, tested primitives
+    PropSet eyeProps_;    // the eye, its frustum, image plane and traced pixels
+    QToolButton* eyeButton_ = nullptr;
+    QToolButton* besideButton_ = nullptr;
+    QToolButton* idsButton_ = nullptr;
+    bool showIds_ = false;
+    /// How the camera was last placed, so a resize can place it again for the new shape.
+    enum class Framing { Eye, Beside, Orbit, User } framing_ = Framing::Eye;
+    std::array<double, 3> orbit_{0, 0, 1};
     bool dirty_ = true;
     Language lang_ = Language::En;
     // Ray trace this view: the camera last announced, and the left press a click may end.

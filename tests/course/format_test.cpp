@@ -12,6 +12,7 @@
 
 #include <set>
 #include <string>
+#include <tuple>
 
 namespace raystep {
 namespace {
@@ -98,7 +99,8 @@ TEST(LessonFormat, ColourNamesComeFromThePalette) {
     for (int k = 0; k < kRayKindCount; ++k)
         EXPECT_EQ(rayColour(static_cast<RayKind>(k)).key, kRayKindNames[k]);
     EXPECT_EQ(roleColour(PaletteRole::Chosen).key, "chosen");
-    EXPECT_EQ(paletteColours().size(), 12u);
+    EXPECT_EQ(structureColour(StructureRole::HitPoint).key, "hit-point");
+    EXPECT_EQ(paletteColours().size(), 20u);
 }
 
 // Within one view (the 3D view's rays; the 2D view's roles and its ray, drawn in the primary
@@ -119,6 +121,15 @@ TEST(LessonFormat, ThePalettesColoursAreDistinctWithinAView) {
         view2D.push_back(roleColour(static_cast<PaletteRole>(r)));
     distinct(rays);
     distinct(view2D);
+    // The 3D view's structures (boxes, voxels, planes) never take a ray's colour or name.
+    for (int r = 0; r < kStructureRoleCount; ++r) {
+        const PaletteColour& s = structureColour(static_cast<StructureRole>(r));
+        for (const PaletteColour& ray : rays) {
+            EXPECT_NE(std::tie(s.r, s.g, s.b), std::tie(ray.r, ray.g, ray.b)) << s.key;
+            EXPECT_NE(s.en, ray.en) << s.key;
+            EXPECT_NE(s.it, ray.it) << s.key;
+        }
+    }
 }
 
 TEST(LessonFormat, AFilterMatchesAKindNameOrTheEventsLine) {
