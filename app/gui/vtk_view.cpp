@@ -309,9 +309,14 @@ void VtkView::paintEvent(QPaintEvent*) {
     if (showIds_) drawPrimitiveIds(g);
     // The lecture's first slide: this view is rasterized, the image beside it ray traced.
     g.setPen(QColor(230, 230, 230));
-    if (caption_)
-        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-                   tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"));
+    if (caption_) {
+        // Elided left of the overlay buttons (at 1366x768 the whole caption ran under them).
+        const int right = eyeButton_->isVisible() ? eyeButton_->x() - 8 : width() - 8;
+        const QString caption = g.fontMetrics().elidedText(
+            tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"), Qt::ElideRight,
+            std::max(0, right - 8));
+        g.drawText(QRectF(8, 6, std::max(0, right - 8), 20), Qt::AlignLeft, caption);
+    }
     // Which colour is which kind of ray (the lessons name the same colours).
     if (legend_ && !session_.showingBuild())
         drawRayLegend(g, QPointF(8, caption_ ? 28 : 8), /*dark=*/true, lang_);
