@@ -227,6 +227,9 @@ void MainWindow::createActions() {
     };
     Actions& a = actions_;
     a.open = action(tr("&Open scene..."), QKeySequence::Open, [this] { openFileDialog(); });
+    a.saveScene =
+        action(tr("&Save scene as..."), QKeySequence::SaveAs, [this] { saveSceneDialog(); });
+    a.saveScene->setToolTip(tr("Save the scene made around an opened model as a scene file"));
     a.exportTrace = action(tr("Export &trace..."), QKeySequence::Save, [this] { exportTrace(); });
     a.shotWindow = action(tr("Export screenshot of the &window..."), {},
                           [this] { exportScreenshot(this, tr("window")); });
@@ -301,8 +304,8 @@ void MainWindow::createActions() {
 void MainWindow::createMenus() {
     const Actions& a = actions_;
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addActions(
-        {a.open, a.exportTrace, a.shotWindow, a.shot2D, a.shot3D, a.shotImage, a.exportReport});
+    file->addActions({a.open, a.saveScene, a.exportTrace, a.shotWindow, a.shot2D, a.shot3D,
+                      a.shotImage, a.exportReport});
     file->addSeparator();
     file->addAction(a.quit);
     QMenu* replay = menuBar()->addMenu(tr("&Replay"));

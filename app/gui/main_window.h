@@ -79,6 +79,10 @@ class MainWindow : public QMainWindow {
     std::optional<bool> lastOpenOk() const { return lastOpenOk_; }
     QString lastOpenError() const { return lastOpenError_; }
 
+    /// File > Save scene as: the scene made around an opened model, written as a scene file at
+    /// `path` (*.json) and its mesh as <name>.mesh.obj beside it, both or neither. The one-line
+    /// problem, or an empty string.
+    QString saveModelScene(const QString& path);
     /// B: records the structure's construction in the background, then replays it.
     void replayBuild();
     /// Renders the image of the 3D scene in the background (what the image view shows).
@@ -178,6 +182,8 @@ class MainWindow : public QMainWindow {
     void settleLayout();
     QList<QSplitter*> layoutSplitters() const;
     void openFileDialog();
+    /// File > Save scene as: asks where, then saveModelScene (main_window_models.cpp).
+    void saveSceneDialog();
     void exportScreenshot(QWidget* w, const QString& what);
     void exportTrace();
     /// Shows a scene made by a worker: views, text, the first ray to replay, the render.
@@ -226,8 +232,8 @@ class MainWindow : public QMainWindow {
     LessonController* lessons_ = nullptr;
     /// The menus' actions, made by createActions and placed by createMenus.
     struct Actions {
-        QAction *open, *exportTrace, *shotWindow, *shot2D, *shot3D, *shotImage, *exportReport,
-            *quit;
+        QAction *open, *saveScene, *exportTrace, *shotWindow, *shot2D, *shot3D, *shotImage,
+            *exportReport, *quit;
         QAction *stepForward, *stepBack, *play, *nextOfKind, *replayBuild, *exampleRay, *first,
             *last;
         QAction *openLessonFile, *lecturer, *backToLesson, *showErrata;

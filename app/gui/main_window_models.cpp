@@ -1,15 +1,24 @@
 // The window's structure chooser (brute force, grid, kd-tree, BVH; midpoint, median or SAH
 // splits) and the status bar's structure: the structure a scene or model uses is always shown and
-// chosen here, never inherited silently from a lesson.
+// chosen here, never inherited silently from a lesson. File > Save scene as writes the scene made
+// around an opened model.
 #include "main_window.h"
 
 #include "image_view.h"
 #include "language.h"
 
+#include "raystep/base/file_error.h"
+#include "raystep/render/image.h"
+#include "raystep/scene/model_import.h"
+
 #include <QComboBox>
+#include <QFileDialog>
 #include <QLabel>
+#include <QMessageBox>
 #include <QStatusBar>
 #include <QToolBar>
+
+#include <filesystem>
 
 namespace raystep::gui {
 
@@ -73,6 +82,7 @@ void MainWindow::syncStructureControls() {
     structureBox_->setCurrentIndex(structureBox_->findData(static_cast<int>(kind)));
     splitBox_->setCurrentIndex(splitBox_->findData(static_cast<int>(split)));
     splitBox_->setEnabled(hasSplit(kind));
+    actions_.saveScene->setEnabled(scene && session_.scene3D() && isModelPath(session_.name()));
     if (!scene) {
         structureLabel_->clear();
         return;
@@ -139,6 +149,39 @@ void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
             statusBar()->showMessage(structureStatus());
             emit structureChanged(true, {});
         });
+}
+
+QString MainWindow::saveModelScene(const QString& path) {
+    const Scene* scene = session_.scene3D();
+    // sceneAroundModel puts the model's triangles first and the floor's two last.
+    if (!scene || !isModelPath(session_.name()) || scene->triangles.size() < 2)
+        return tr(
+            "Only the scene made around a model (File > Open of an .obj, .ply, .stl, .gltf "
+            "or .glb) is saved as a scene file");
+    const std::filesystem::path json = path.toStdString();
+    if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
+        return tr("%1: the scene is written as a scene file; name it *.json").arg(path);
+    const std::string meshName = json.stem().string() + ".mesh.obj";
+    const std::string mesh = (json.parent_path() / meshName).string();
+    if (sameFile(mesh, session_.name()) || sameFile(json.string(), session_.name()))
+        return tr("%1: it would write over the model itself").arg(path);
+    try {
+        const SceneFiles files = sceneFilesFor(*scene, scene->triangles.size() - 2, meshName);
+        writeFilesAtomic({{json.string(), files.sceneJson}, {mesh, files.meshObj}});
+    } catch (const std::exception& e) {
+        return QString::fromStdString(printable(e.what(), 4096));
+    }
+    return {};
+}
+
+void MainWindow::saveSceneDialog() {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save scene as"), QString(), tr("Scenes (*.json)"));
+    if (path.isEmpty()) return;
+    if (const QString problem = saveModelScene(path); !problem.isEmpty())
+        QMessageBox::warning(this, tr("Cannot save"), problem);
+    else
+        statusBar()->showMessage(tr("Saved %1 and its mesh beside it").arg(path));
 }
 
 }  // namespace raystep::gui

@@ -1,8 +1,11 @@
 // Models in the app: File > Open's structure (never the lesson's brute force on a big mesh), the
 // structure chooser rebuilding in the background, changing the structure in a lesson as exploring,
-// a bad model file as a dialog that keeps the scene, and `raystep --scene MODEL`.
+// a bad model file as a dialog that keeps the scene, `raystep --scene MODEL`, and File > Save scene
+// as.
 #include "lesson_panel.h"
 #include "main_window.h"
+
+#include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +16,11 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <filesystem>
@@ -176,6 +182,35 @@ TEST(ModelOpen, SceneOptionOpensAModel) {
     EXPECT_NE(why.find("nan_vertex.ply"), std::string::npos) << why;
     EXPECT_NE(why.find("not a finite number"), std::string::npos) << why;
     EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
+// File > Save scene as: the pyramid's scene (its 6 triangles, from the file's own comment, then
+// the floor's 2) written as a scene file and a mesh, loaded back whole; refused for a built-in
+// scene, a name that is not *.json and a folder that does not exist, with nothing written.
+TEST(ModelOpen, SaveSceneAsWritesTheSceneAroundTheModel) {
+    MainWindow w;
+    w.resize(1200, 800);
+    w.show();
+    ASSERT_TRUE(openAsFileOpen(w, "whitted"));  // a scene file already: nothing to save
+    QTemporaryDir dir;
+    const QString json = dir.filePath("pyramid-scene.json");
+    EXPECT_FALSE(w.saveModelScene(json).isEmpty());
+    EXPECT_FALSE(QFileInfo::exists(json));
+    ASSERT_TRUE(openAsFileOpen(w, kModels + "pyramid.obj"));
+    EXPECT_FALSE(w.saveModelScene(dir.filePath("pyramid-scene.txt")).isEmpty());
+    EXPECT_FALSE(w.saveModelScene(dir.filePath("no/such/folder/s.json")).isEmpty());
+    EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+    EXPECT_EQ(w.saveModelScene(json), QString());
+    EXPECT_TRUE(QFileInfo::exists(dir.filePath("pyramid-scene.mesh.obj")));
+    const Scene back = loadSceneFile(json.toStdString());
+    ASSERT_EQ(back.triangles.size(), 6u + 2u);
+    // The pyramid's apex, vertex 5 of the file, is the top of the first triangles' bounds.
+    double top = -1;
+    for (std::size_t i = 0; i < 6; ++i)
+        for (const Vec3& v : {back.triangles[i].a, back.triangles[i].b, back.triangles[i].c})
+            top = std::max(top, v.y);
+    EXPECT_DOUBLE_EQ(top, 3.0);
+    EXPECT_EQ(back.lights.size(), 2u);
 }
 
 }  // namespace
