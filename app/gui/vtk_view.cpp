@@ -132,6 +132,9 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
     });
     rebuildScene();
     placeButtons();
+    // Made for a session that already holds its trace (compare mode's views): framed at once,
+    // not only on the next new trace.
+    if (session_.scene3D()) frameBesideEye();
 }
 
 void VtkView::placeButtons() {
@@ -318,8 +321,13 @@ void VtkView::paintEvent(QPaintEvent*) {
         g.drawText(QRectF(8, 6, std::max(0, right - 8), 20), Qt::AlignLeft, caption);
     }
     // Which colour is which kind of ray (the lessons name the same colours).
-    if (legend_ && !session_.showingBuild())
-        drawRayLegend(g, QPointF(8, caption_ ? 28 : 8), /*dark=*/true, lang_);
+    if (legend_ && !session_.showingBuild()) {
+        // Under the overlay buttons when the view is too narrow for both side by side.
+        double top = caption_ ? 28 : 8;
+        if (eyeButton_->isVisible() && eyeButton_->x() < 280)
+            top = std::max<double>(top, eyeButton_->geometry().bottom() + 6);
+        drawRayLegend(g, QPointF(8, top), /*dark=*/true, lang_);
+    }
     dirty_ = false;
 }
 

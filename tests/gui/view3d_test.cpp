@@ -3,6 +3,7 @@
 // own lights), the primary ray is seen side-on beside the eye, the legend is drawn, the grid's
 // box and voxels show, and the overlay's controls work. Positions on screen are computed here by
 // hand from the scene's pinhole camera, never asked of the view.
+#include "compare_window.h"
 #include "lesson_panel.h"
 #include "main_window.h"
 #include "vtk_view.h"
@@ -13,6 +14,7 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QTest>
 #include <QToolButton>
 
 #include <cmath>
@@ -190,6 +192,30 @@ TEST(View3D, ThePrimaryRayIsSeenSideOnBesideTheEye) {
     putAwayAll(w.lessonPanel());
     w.lessonPanel()->goToStep(0);
     EXPECT_GT(countColour(grab(w.view3D()), primary, 30, kLegend), 400);
+    w.tasks().cancel(TaskKind::Render);
+}
+
+// Compare mode's three 3D views are made for sessions that already hold their trace: each is
+// framed beside the eye at once, so each shows the primary ray (from the eye it was a point).
+TEST(View3D, CompareModesViewsShowThePrimaryRay) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(openLesson(w, "brute-force"));
+    putAwayAll(w.lessonPanel());
+    w.openCompare();
+    ASSERT_TRUE(w.waitUntilIdle());
+    CompareWindow* c = w.compareWindow();
+    ASSERT_NE(c, nullptr);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(c));
+    const PaletteColour& primary = rayColour(RayKind::Primary);
+    for (int i = 0; i < 3; ++i) {
+        QWidget* v = c->view(i);
+        ASSERT_NE(qobject_cast<VtkView*>(v), nullptr);
+        // Only the first view has the legend; its corner is left out in all three.
+        EXPECT_GT(countColour(grab(v), primary, 30, QRect(0, 0, 340, 220)), 150) << "view " << i;
+    }
+    c->close();
     w.tasks().cancel(TaskKind::Render);
 }
 
