@@ -123,6 +123,8 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     nextEx->setMaximumWidth(30);
     exerciseLabel_ = new QLabel;
     exerciseLabel_->setAlignment(Qt::AlignCenter);
+    // "Exercise 1 / 9 (solved)" wraps at the panel's least width rather than being cut.
+    exerciseLabel_->setWordWrap(true);
     // An exercise is open while the student works on it: the replay then stops at its position.
     openButton_ = new QPushButton;
     openButton_->setObjectName("openExercise");

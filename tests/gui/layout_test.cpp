@@ -2,6 +2,7 @@
 // remembers its size and docks, View > Reset layout puts the docks and panels back, the compare
 // window fits and remembers its size, and the SAH cost chart carries labelled axes.
 #include "compare_window.h"
+#include "lesson_panel.h"
 #include "main_window.h"
 #include "timeline.h"
 #include "view2d.h"
@@ -144,6 +145,9 @@ TEST_F(Layout, AtItsSmallestTheWindowStillShowsTheWholeExerciseBox) {
     MainWindow w;
     start(w);
     ASSERT_TRUE(openLesson(w, "6"));
+    // The longest header, a solved exercise's ("Exercise 1 / 9 (solved)"): tDeltaY = 1 / |0.4|.
+    w.lessonPanel()->selectExercise(0);
+    w.lessonPanel()->submit("2.5");
     // As small as the layout lets it be (the hint, or more where the tool bars need it): the
     // width has settled, well inside a student's laptop screen.
     w.resize(w.minimumSizeHint());
