@@ -473,8 +473,8 @@ TEST(Lesson, NoEmptyBulletAfterALessonTextThatEndsInAList) {
     for (QTextBlock b = text->document()->begin(); b.isValid(); b = b.next()) {
         if (!b.textList()) continue;
         ++items;
-        EXPECT_FALSE(b.text().trimmed().isEmpty()) << "an empty list item after: "
-                                                   << b.previous().text().toStdString();
+        EXPECT_FALSE(b.text().trimmed().isEmpty())
+            << "an empty list item after: " << b.previous().text().toStdString();
     }
     EXPECT_GT(items, 5);  // lesson 2's text holds its lists
 }

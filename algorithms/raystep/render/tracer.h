@@ -2,8 +2,8 @@
 // The lecture's algorithm: primary rays, local Phong model with a shadow ray per light,
 // reflection and transparency rays, and Monte Carlo diffuse bounces (colour bleeding).
 #include "raystep/accel/accel.h"
-#include "raystep/render/image.h"
 #include "raystep/base/rng.h"
+#include "raystep/render/image.h"
 #include "raystep/scene/scene.h"
 
 #include <array>
