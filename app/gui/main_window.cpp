@@ -105,6 +105,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createActions();
     createMenus();
     createStructureControls();
+    createLiveLab();
+    createBoard();
+    createPresenter();
     restoreLayout();
 }
 
@@ -303,22 +306,24 @@ void MainWindow::createActions() {
 
 void MainWindow::createMenus() {
     const Actions& a = actions_;
-    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* file = menus_.file = menuBar()->addMenu(tr("&File"));
     file->addActions({a.open, a.saveScene, a.exportTrace, a.shotWindow, a.shot2D, a.shot3D,
                       a.shotImage, a.exportReport});
     file->addSeparator();
     file->addAction(a.quit);
-    QMenu* replay = menuBar()->addMenu(tr("&Replay"));
+    menus_.edit = menuBar()->addMenu(tr("&Edit"));
+    QMenu* replay = menus_.replay = menuBar()->addMenu(tr("&Replay"));
     replay->addActions({a.stepForward, a.stepBack, a.play, a.nextOfKind});
     replay->addSeparator();
     replay->addActions({a.replayBuild, a.exampleRay, a.first, a.last});
-    QMenu* lessons = menuBar()->addMenu(tr("&Lessons"));
+    QMenu* lessons = menus_.lessons = menuBar()->addMenu(tr("&Lessons"));
     lessons_->setLessonsMenu(lessons->addMenu(tr("&Built-in lessons")));
     lessons->addActions({a.openLessonFile, a.backToLesson, a.lecturer, a.showErrata});
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* view = menus_.view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
     view->addAction(rayTraceView_);
     addLayoutActions(view);
+    menus_.help = menuBar()->addMenu(tr("&Help"));
 }
 
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
@@ -365,6 +370,15 @@ void MainWindow::showScene(SceneRef scene, bool renderImage) {
         // A first ray to replay before any click: the image's centre.
         session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
+}
+
+void MainWindow::showLive(SceneRef scene) {
+    ++generation_;
+    runner_.cancel(TaskKind::Render);
+    runner_.cancel(TaskKind::Build);
+    runner_.cancel(TaskKind::Sweep);
+    runner_.cancel(TaskKind::Structure);
+    session_.relive(std::move(scene));
 }
 
 void MainWindow::openFailed(const QString& what, const TaskOutcome& outcome, bool quiet) {

@@ -65,6 +65,13 @@ class MainWindow : public QMainWindow {
     /// (kd-tree and BVH), in the background; in a lesson that is exploring (Esc goes back).
     /// File > Open uses the last choice; before any, a kd-tree with SAH splits.
     void changeStructure(AccelKind kind, SplitMethod split);
+    /// The live controls: the open scene's structure built again as `kind` with `options`. A 2D
+    /// scene is rebuilt at once and shown with showLive (its walk or build recorded again at the
+    /// same step); a 3D one in the background, as changeStructure. Ends with structureChanged.
+    void applyStructure(AccelKind kind, const AccelOptions& options);
+    /// Live lecture mode: shows `scene` (the open one edited or rebuilt) at once, recording again
+    /// what was replayed at the same step (Session::relive); what ran for the old scene stops.
+    void showLive(SceneRef scene);
     /// The structure and options File > Open builds (changeStructure's last choice).
     AccelKind openKind() const;
     AccelOptions openOptions() const;
@@ -168,6 +175,13 @@ class MainWindow : public QMainWindow {
     void createStatusBar();
     void createActions();
     void createMenus();
+    // Live lecture mode, each part in its own file, made after the menus (issue 19):
+    /// The 2D view's editing: ray handles, scene editing, undo/redo (main_window_live.cpp).
+    void createLiveLab();
+    /// The live controls and the board table docks (main_window_board.cpp).
+    void createBoard();
+    /// Presenter mode and Help > Keyboard shortcuts (main_window_presenter.cpp).
+    void createPresenter();
     /// The structure chooser (a tool bar) and the status bar's structure (main_window_models.cpp).
     void createStructureControls();
     /// The chooser and the status bar say what the session's scene uses.
@@ -239,6 +253,13 @@ class MainWindow : public QMainWindow {
         QAction *openLessonFile, *lecturer, *backToLesson, *showErrata;
         QAction *compare, *renderAgain, *heatmap, *resetCamera;
     } actions_{};
+    /// The menu bar's menus, made by createMenus (Edit and Help are filled by the live parts).
+    struct Menus {
+        QMenu *file, *edit, *replay, *lessons, *view, *help;
+    } menus_{};
+    // --- live lab (main_window_live.cpp) members go here ---
+    // --- live controls and board (main_window_board.cpp) members go here ---
+    // --- presenter (main_window_presenter.cpp) members go here ---
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;
     QLabel* structureLabel_ = nullptr;

@@ -113,14 +113,34 @@ AccelOptions MainWindow::openOptions() const {
 void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
     chosenStructure_ = {kind, split};
     splitBox_->setEnabled(hasSplit(kind));
+    AccelOptions options = session_.options();
+    options.kdtree.split = options.bvh.split = split;
+    applyStructure(kind, options);
+}
+
+void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
     if (!session_.hasScene()) {
         emit structureChanged(false, tr("No scene is open."));
         return;
     }
-    AccelOptions options = session_.options();
-    options.kdtree.split = options.bvh.split = split;
+    if (session_.is2D()) {
+        // A 2D scene is small: rebuilt at once, so a live control answers as it is moved.
+        try {
+            showLive(Session::rebuild(session_.sceneRef(), kind, options));
+        } catch (const std::exception& e) {
+            const QString why = QString::fromStdString(e.what());
+            statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
+            syncStructureControls();
+            emit structureChanged(false, why);
+            return;
+        }
+        statusBar()->showMessage(structureStatus());
+        emit structureChanged(true, {});
+        return;
+    }
     const std::uint64_t generation = generation_;
     const bool render = !imageView_->isHidden();
+    const SplitMethod split = kind == AccelKind::Bvh ? options.bvh.split : options.kdtree.split;
     const QString what = hasSplit(kind)
                              ? tr("%1, %2 splits").arg(structureName(kind), splitName(split))
                              : structureName(kind);

@@ -122,6 +122,38 @@ void Session::showLog(LogRef log, LogKind kind) {
     emit cursorChanged(cursor_);
 }
 
+void Session::relive(SceneRef scene) {
+    // Where the cursor was, as "the n-th event of its kind" (a DDA step, a node, a candidate).
+    std::optional<std::size_t> kindAt;
+    std::size_t nth = 0;
+    if (cursor_ > 0) {
+        const auto& events = log_->events();
+        kindAt = events[cursor_ - 1].index();
+        for (std::size_t i = 0; i < cursor_; ++i) nth += events[i].index() == *kindAt;
+    }
+    bool build = logKind_ == LogKind::Build;
+    if (logKind_ == LogKind::Lesson)
+        for (const Event& e : log_->events())
+            if (std::holds_alternative<BuildNode>(e)) {
+                build = true;
+                break;
+            }
+    adopt(std::move(scene));
+    if (build && hasBuild(scene_->kind))
+        recordBuild();
+    else if (is2D())
+        traceExampleRay();
+    if (!kindAt) return;
+    const auto& events = log_->events();
+    std::size_t at = events.size(), seen = 0;
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (events[i].index() == *kindAt && ++seen == nth) {
+            at = i + 1;
+            break;
+        }
+    setCursor(at);
+}
+
 void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
     const std::optional<std::size_t> before = this->limit();
     limitLog_ = limit ? log : nullptr;

@@ -77,6 +77,11 @@ class Session : public QObject {
     void recordBuild();
     /// Replays a log recorded elsewhere (a lesson's trace, a build made by a worker).
     void showLog(LogRef log, LogKind kind);
+    /// Live lecture mode (GUI thread): shows `scene`, the shown one edited or rebuilt with other
+    /// options, and records again what was replayed: the build if a build was shown, else (2D)
+    /// the scene's example ray. The cursor stays at the same step: after as many events of the
+    /// kind just replayed as before (the end if the new log has fewer).
+    void relive(SceneRef scene);
 
     const SceneRef& sceneRef() const { return scene_; }
     const std::variant<Scene, Scene2D>& sceneVariant() const { return scene_->scene; }
