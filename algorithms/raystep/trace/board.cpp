@@ -1,0 +1,374 @@
+#include "raystep/trace/board.h"
+
+#include "raystep/base/format.h"
+
+#include <map>
+#include <type_traits>
+
+namespace raystep {
+
+namespace {
+
+constexpr const char* kAxisNames = "XYZ";
+
+/// The ray an event names, if it names one.
+std::optional<std::uint32_t> rayOf(const Event& event) {
+    return std::visit(
+        [](const auto& e) -> std::optional<std::uint32_t> {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, RayBegin> || std::is_same_v<E, DdaSetup> ||
+                          std::is_same_v<E, DdaCell> || std::is_same_v<E, MailboxSkip> ||
+                          std::is_same_v<E, PrimitiveTest> || std::is_same_v<E, NodeEnter> ||
+                          std::is_same_v<E, NodeSkip> || std::is_same_v<E, RayHit> ||
+                          std::is_same_v<E, RayMiss> || std::is_same_v<E, ShadingTerm>)
+                return e.ray;
+            else
+                return std::nullopt;
+        },
+        event);
+}
+
+/// The node a build event names, if it is one.
+std::optional<std::uint32_t> buildNodeOf(const Event& event) {
+    return std::visit(
+        [](const auto& e) -> std::optional<std::uint32_t> {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, BuildNode> || std::is_same_v<E, SplitCandidate> ||
+                          std::is_same_v<E, SplitChosen> || std::is_same_v<E, LeafMade>)
+                return e.node;
+            else
+                return std::nullopt;
+        },
+        event);
+}
+
+std::string num(double v) {
+    return formatNumber(v);
+}
+
+std::string axesText(unsigned mask, int dims) {
+    std::string out;
+    for (int i = 0; i < dims; ++i)
+        if (mask & (1u << i)) out += std::string(out.empty() ? "" : "+") + kAxisNames[i];
+    return out;
+}
+
+/// What a ray's row collects: its primitive tests and mailbox skips.
+struct Visits {
+    std::vector<PrimitiveTest> tests;
+    std::vector<std::uint32_t> skips;
+};
+
+std::string testsText(const std::vector<PrimitiveTest>& tests, Language lang) {
+    std::string out;
+    for (const PrimitiveTest& t : tests) {
+        if (!out.empty()) out += ", ";
+        const std::string id = std::to_string(t.prim);
+        out += t.hit ? trf(lang, "%1 (hit, t = %2)", {id, num(t.t)}) : id;
+    }
+    return out;
+}
+
+std::string idsText(const std::vector<std::uint32_t>& ids) {
+    std::string out;
+    for (std::uint32_t id : ids) out += (out.empty() ? "" : ", ") + std::to_string(id);
+    return out;
+}
+
+Board rayBoard(const EventLog& log, std::size_t subject, std::uint32_t ray, std::size_t cursor,
+               const BoardOptions& options) {
+    const auto& events = log.events();
+    const Language lang = options.lang;
+    // The ray's events run from its RayBegin to its RayHit or RayMiss, before any other ray's.
+    std::size_t begin = subject;
+    while (begin > 0) {
+        const auto* b = std::get_if<RayBegin>(&events[begin]);
+        if (b && b->ray == ray) break;
+        --begin;
+    }
+    std::size_t end = begin;
+    bool dda = false, tree = false;
+    int dims = log.dims();
+    for (; end < events.size(); ++end) {
+        const Event& e = events[end];
+        if (const auto* b = std::get_if<RayBegin>(&e); b && b->ray != ray) break;
+        if (rayOf(e) != ray) continue;
+        if (const auto* s = std::get_if<DdaSetup>(&e)) {
+            dda = true;
+            dims = s->dims;
+        }
+        dda = dda || std::holds_alternative<DdaCell>(e);
+        tree = tree || std::holds_alternative<NodeEnter>(e);
+        if (std::holds_alternative<RayHit>(e) || std::holds_alternative<RayMiss>(e)) {
+            ++end;
+            break;
+        }
+    }
+    dims = dims == 3 ? 3 : 2;
+
+    Board board;
+    board.ray = ray;
+    board.dims = dims;
+    board.kind = dda ? BoardKind::Dda : tree ? BoardKind::Tree : BoardKind::Tests;
+    switch (board.kind) {
+        case BoardKind::Dda:
+            board.header.push_back(tr(lang, "step"));
+            for (int i = 0; i < dims; ++i) board.header.push_back(std::string(1, kAxisNames[i]));
+            for (int i = 0; i < dims; ++i)
+                board.header.push_back(std::string("tMax") + kAxisNames[i]);
+            for (int i = 0; i < dims; ++i)
+                board.header.push_back(std::string("tDelta") + kAxisNames[i]);
+            board.header.push_back(tr(lang, "stepped"));
+            if (options.primitives) {
+                board.header.push_back(tr(lang, "tested"));
+                board.header.push_back(tr(lang, "mailbox skips"));
+            }
+            break;
+        case BoardKind::Tree:
+            board.header = {tr(lang, "step"), tr(lang, "node"),   "tNear",
+                            "tFar",           tr(lang, "tested"), tr(lang, "mailbox skips")};
+            break;
+        default:
+            board.header = {tr(lang, "step"), tr(lang, "primitive"), tr(lang, "result"), "t"};
+            break;
+    }
+
+    // The rows' own data, turned into text at the end (a row's tests grow after it opens).
+    struct Pending {
+        std::size_t event;
+        std::vector<std::string> lead;  // the cells before the tested and skipped ones
+        Visits visits;
+    };
+    std::vector<Pending> rows;
+    std::optional<DdaSetup> setup;
+    const std::size_t last = std::min(cursor, end);
+    for (std::size_t i = begin; i < last; ++i) {
+        const Event& e = events[i];
+        if (rayOf(e) != ray) continue;
+        if (const auto* s = std::get_if<DdaSetup>(&e)) {
+            setup = *s;
+        } else if (const auto* c = std::get_if<DdaCell>(&e)) {
+            Pending row{i, {std::to_string(rows.size())}, {}};
+            for (int k = 0; k < dims; ++k) row.lead.push_back(std::to_string(c->cell[k]));
+            for (int k = 0; k < dims; ++k) row.lead.push_back(num(c->tMax[k]));
+            for (int k = 0; k < dims; ++k) row.lead.push_back(setup ? num(setup->tDelta[k]) : "");
+            const std::string axes = axesText(c->axes, dims);
+            if (!rows.empty())
+                row.lead.push_back(axes);
+            else  // the first cell: where the ray starts, or the grid face it enters through
+                row.lead.push_back(axes.empty() ? tr(lang, "start")
+                                                : trf(lang, "enters across %1", {axes}));
+            rows.push_back(std::move(row));
+        } else if (const auto* n = std::get_if<NodeEnter>(&e)) {
+            if (board.kind == BoardKind::Tree)
+                rows.push_back({i,
+                                {std::to_string(rows.size()), std::to_string(n->node),
+                                 num(n->tNear), num(n->tFar)},
+                                {}});
+        } else if (const auto* t = std::get_if<PrimitiveTest>(&e)) {
+            if (board.kind == BoardKind::Tests)
+                rows.push_back(
+                    {i,
+                     {std::to_string(rows.size()), std::to_string(t->prim),
+                      t->hit ? tr(lang, "hit") : tr(lang, "miss"), t->hit ? num(t->t) : ""},
+                     {}});
+            else if (!rows.empty())
+                rows.back().visits.tests.push_back(*t);
+        } else if (const auto* m = std::get_if<MailboxSkip>(&e)) {
+            if (board.kind != BoardKind::Tests && !rows.empty())
+                rows.back().visits.skips.push_back(m->prim);
+        }
+    }
+    const bool visitColumns =
+        board.kind == BoardKind::Tree || (board.kind == BoardKind::Dda && options.primitives);
+    for (Pending& p : rows) {
+        BoardRow row{p.event, std::move(p.lead)};
+        if (visitColumns) {
+            row.cells.push_back(testsText(p.visits.tests, lang));
+            row.cells.push_back(idsText(p.visits.skips));
+        }
+        board.rows.push_back(std::move(row));
+    }
+    if (!board.rows.empty()) board.current = board.rows.size() - 1;
+    return board;
+}
+
+Board buildBoard(const EventLog& log, std::size_t cursor, const BoardOptions& options) {
+    const Language lang = options.lang;
+    const auto& events = log.events();
+    Board board;
+    board.kind = BoardKind::Build;
+    board.dims = log.dims() == 3 ? 3 : 2;
+    board.header = {tr(lang, "step"),   tr(lang, "node"),       tr(lang, "parent"),
+                    tr(lang, "depth"),  tr(lang, "primitives"), tr(lang, "candidates"),
+                    tr(lang, "split"),  tr(lang, "SAH cost"),   tr(lang, "leaf cost"),
+                    tr(lang, "outcome")};
+    enum Col { Step, Node, Parent, Depth, Prims, Candidates, Split, Sah, Leaf, Outcome };
+    std::map<std::uint32_t, std::size_t> rowOf;  // node -> its row
+    std::vector<std::size_t> candidates;
+    std::uint32_t lastNode = kNoId;
+    for (std::size_t i = 0; i < std::min(cursor, events.size()); ++i) {
+        const Event& e = events[i];
+        const auto node = buildNodeOf(e);
+        if (!node) continue;
+        lastNode = *node;
+        if (const auto* b = std::get_if<BuildNode>(&e)) {
+            rowOf[b->node] = board.rows.size();
+            candidates.push_back(0);
+            BoardRow row{i, std::vector<std::string>(Outcome + 1)};
+            row.cells[Step] = std::to_string(board.rows.size());
+            row.cells[Node] = std::to_string(b->node);
+            row.cells[Parent] = b->parent == kNoId ? "-" : std::to_string(b->parent);
+            row.cells[Depth] = std::to_string(b->depth);
+            row.cells[Prims] = std::to_string(b->prims);
+            row.cells[Candidates] = "0";
+            board.rows.push_back(std::move(row));
+            continue;
+        }
+        const auto at = rowOf.find(*node);
+        if (at == rowOf.end()) continue;
+        std::vector<std::string>& cells = board.rows[at->second].cells;
+        if (std::holds_alternative<SplitCandidate>(e)) {
+            cells[Candidates] = std::to_string(++candidates[at->second]);
+        } else if (const auto* c = std::get_if<SplitChosen>(&e)) {
+            cells[Split] = std::string(1, kAxisNames[c->axis % 3]) + " = " + num(c->position);
+            cells[Sah] = num(c->sahCost);
+            cells[Leaf] = num(c->leafCost);
+            cells[Outcome] = tr(lang, "split");
+        } else if (const auto* l = std::get_if<LeafMade>(&e)) {
+            cells[Leaf] = num(l->leafCost);
+            const auto reason = static_cast<std::size_t>(l->reason);
+            cells[Outcome] = trf(
+                lang, "leaf (%1)",
+                {reason < kLeafReasonNames.size() ? kLeafReasonNames[reason] : std::string_view()});
+        }
+    }
+    if (const auto at = rowOf.find(lastNode); at != rowOf.end()) board.current = at->second;
+    return board;
+}
+
+}  // namespace
+
+Board makeBoard(const EventLog& log, std::size_t cursor, const BoardOptions& options) {
+    const auto& events = log.events();
+    cursor = std::min(cursor, events.size());
+    // The subject: what the last applied event is about; before any, the log's first subject.
+    std::optional<std::size_t> subject;
+    for (std::size_t i = cursor; i-- > 0;)
+        if (rayOf(events[i]) || buildNodeOf(events[i])) {
+            subject = i;
+            break;
+        }
+    for (std::size_t i = 0; !subject && i < events.size(); ++i)
+        if (rayOf(events[i]) || buildNodeOf(events[i])) subject = i;
+    if (!subject) return {};
+    if (const auto ray = rayOf(events[*subject]))
+        return rayBoard(log, *subject, *ray, cursor, options);
+    return buildBoard(log, cursor, options);
+}
+
+std::optional<BoardFormat> parseBoardFormat(std::string_view name) {
+    if (name == "csv") return BoardFormat::Csv;
+    if (name == "markdown" || name == "md") return BoardFormat::Markdown;
+    if (name == "latex" || name == "tex") return BoardFormat::Latex;
+    return std::nullopt;
+}
+
+std::string csvField(std::string_view text) {
+    // RFC 4180: a field holding a comma, a quote or a line break is quoted, its quotes doubled.
+    if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string markdownCell(std::string_view text) {
+    // A pipe would end the cell and a line break the row; a backslash must not escape the pipe.
+    std::string out;
+    for (char c : text) {
+        if (c == '|')
+            out += "\\|";
+        else if (c == '\\')
+            out += "\\\\";
+        else if (c == '\n' || c == '\r')
+            out += ' ';
+        else
+            out += c;
+    }
+    return out;
+}
+
+std::string latexText(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '\\':
+                out += "\\textbackslash{}";
+                break;
+            case '&':
+            case '%':
+            case '$':
+            case '#':
+            case '_':
+            case '{':
+            case '}':
+                out += '\\';
+                out += c;
+                break;
+            case '~':
+                out += "\\textasciitilde{}";
+                break;
+            case '^':
+                out += "\\textasciicircum{}";
+                break;
+            case '\n':
+            case '\r':
+                out += ' ';
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+std::string formatBoard(const Board& board, BoardFormat format) {
+    if (board.header.empty()) return {};
+    std::vector<const std::vector<std::string>*> lines{&board.header};
+    for (const BoardRow& r : board.rows) lines.push_back(&r.cells);
+    std::string out;
+    switch (format) {
+        case BoardFormat::Csv:
+            for (const auto* cells : lines) {
+                for (std::size_t i = 0; i < cells->size(); ++i)
+                    out += (i ? "," : "") + csvField((*cells)[i]);
+                out += '\n';
+            }
+            break;
+        case BoardFormat::Markdown:
+            for (std::size_t l = 0; l < lines.size(); ++l) {
+                out += '|';
+                for (const std::string& c : *lines[l]) out += ' ' + markdownCell(c) + " |";
+                out += '\n';
+                if (l == 0) {
+                    out += '|';
+                    for (std::size_t i = 0; i < board.header.size(); ++i) out += " --- |";
+                    out += '\n';
+                }
+            }
+            break;
+        case BoardFormat::Latex:
+            out += "\\begin{tabular}{" + std::string(board.header.size(), 'l') + "}\n\\hline\n";
+            for (std::size_t l = 0; l < lines.size(); ++l) {
+                for (std::size_t i = 0; i < lines[l]->size(); ++i)
+                    out += (i ? " & " : "") + latexText((*lines[l])[i]);
+                out += " \\\\\n";
+                if (l == 0) out += "\\hline\n";
+            }
+            out += "\\hline\n\\end{tabular}\n";
+            break;
+    }
+    return out;
+}
+
+}  // namespace raystep
