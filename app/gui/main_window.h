@@ -20,6 +20,7 @@
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QSplitter;
@@ -35,7 +36,9 @@ namespace raystep::gui {
 /// leaves the old file whole). The one-line problem, or an empty string.
 QString savePng(const QImage& image, const QString& path);
 
+class BoardTable;
 class CompareWindow;
+class LiveControls;
 struct FrameBox;
 class EventList;
 class ImageView;
@@ -69,6 +72,9 @@ class MainWindow : public QMainWindow {
     /// scene is rebuilt at once and shown with showLive (its walk or build recorded again at the
     /// same step); a 3D one in the background, as changeStructure. Ends with structureChanged.
     void applyStructure(AccelKind kind, const AccelOptions& options);
+    /// The board dock's table and the live controls (main_window_board.cpp).
+    BoardTable* boardTable() const { return board_; }
+    LiveControls* liveControls() const { return liveControls_; }
     /// Live lecture mode: shows `scene` (the open one edited or rebuilt) at once, recording again
     /// what was replayed at the same step (Session::relive); what ran for the old scene stops.
     void showLive(SceneRef scene);
@@ -259,6 +265,14 @@ class MainWindow : public QMainWindow {
     } menus_{};
     // --- live lab (main_window_live.cpp) members go here ---
     // --- live controls and board (main_window_board.cpp) members go here ---
+    BoardTable* board_ = nullptr;
+    LiveControls* liveControls_ = nullptr;
+    QDockWidget *boardDock_ = nullptr, *liveDock_ = nullptr;
+    /// The live controls asked for `kind` with `options` (a 2D scene's own grid set aside for
+    /// lambda's), built and shown through applyStructure or showLive.
+    void applyLive(AccelKind kind, const AccelOptions& options);
+    /// View > Reset layout's part: the board and the live controls under the views, side by side.
+    void placeBoardDocks();
     // --- presenter (main_window_presenter.cpp) members go here ---
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;

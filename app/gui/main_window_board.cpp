@@ -1,8 +1,82 @@
 // The live controls (structure and its parameters, with the statistics) and the board table.
 #include "main_window.h"
 
+#include "board_table.h"
+#include "live_controls.h"
+
+#include <QDockWidget>
+#include <QMenu>
+#include <QScrollArea>
+#include <QStatusBar>
+
+#include <algorithm>
+
 namespace raystep::gui {
 
-void MainWindow::createBoard() {}
+void MainWindow::createBoard() {
+    board_ = new BoardTable(session_);
+    boardDock_ = new QDockWidget(tr("Board"), this);
+    boardDock_->setObjectName("boardDock");  // saveState/restoreState need a name
+    boardDock_->setWidget(board_);
+
+    liveControls_ = new LiveControls(session_);
+    // A short screen (a laptop) scrolls the controls rather than squeezing them.
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(liveControls_);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    liveDock_ = new QDockWidget(tr("Live controls"), this);
+    liveDock_->setObjectName("liveControlsDock");
+    liveDock_->setWidget(scroll);
+
+    // The right column keeps the window's height; the board and the controls go under the views.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, boardDock_);
+    splitDockWidget(boardDock_, liveDock_, Qt::Horizontal);
+
+    connect(liveControls_, &LiveControls::applyRequested, this,
+            [this](AccelKind kind, const AccelOptions& options) { applyLive(kind, options); });
+    // A build that failed (or was cancelled) leaves the scene as it was: so do the controls.
+    connect(this, &MainWindow::structureChanged, this, [this](bool ok) {
+        if (!ok) liveControls_->sync();
+    });
+    menus_.view->addSeparator();
+    menus_.view->addAction(boardDock_->toggleViewAction());
+    menus_.view->addAction(liveDock_->toggleViewAction());
+}
+
+void MainWindow::applyLive(AccelKind kind, const AccelOptions& options) {
+    const Scene2D* s2 = session_.scene2D();
+    if (s2 && s2->gridRes && kind == AccelKind::Grid && !options.grid.res) {
+        // Lambda's grid asked for: the scene's own grid would win over it (buildAccelerator2D),
+        // so the scene is shown without it.
+        Scene2D copy = *s2;
+        copy.gridRes.reset();
+        try {
+            showLive(Session::prepare(std::move(copy), kind, options));
+        } catch (const std::exception& e) {
+            const QString why = QString::fromStdString(e.what());
+            statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
+            emit structureChanged(false, why);
+            return;
+        }
+        statusBar()->showMessage(structureStatus());
+        emit structureChanged(true, {});
+        return;
+    }
+    applyStructure(kind, options);
+}
+
+void MainWindow::placeBoardDocks() {
+    for (QDockWidget* d : {boardDock_, liveDock_}) {
+        d->setFloating(false);
+        d->show();
+    }
+    addDockWidget(Qt::BottomDockWidgetArea, boardDock_);
+    splitDockWidget(boardDock_, liveDock_, Qt::Horizontal);
+    // A quarter of the height for about eight rows of the table; the controls a fixed column.
+    resizeDocks({boardDock_}, {std::clamp(height() * 27 / 100, 170, 330)}, Qt::Vertical);
+    resizeDocks({liveDock_}, {std::clamp(width() / 4, 300, 440)}, Qt::Horizontal);
+}
 
 }  // namespace raystep::gui

@@ -130,7 +130,10 @@ void MainWindow::settleLayout() {
 }
 
 void MainWindow::resetLayout() {
-    const QList<QDockWidget*> docks = findChildren<QDockWidget*>();
+    QList<QDockWidget*> docks = findChildren<QDockWidget*>();
+    // The board and the live controls have their place under the views (placeBoardDocks).
+    docks.removeAll(boardDock_);
+    docks.removeAll(liveDock_);
     // Made in this order by createDocks: the inspector above the event list, on the right.
     for (QDockWidget* d : docks) {
         d->setFloating(false);
@@ -149,6 +152,7 @@ void MainWindow::resetLayout() {
     if (s[0]) s[0]->setSizes({lesson, centre});
     if (s[1]) s[1]->setSizes({centre * 3 / 5, centre * 2 / 5});
     if (s[2]) s[2]->setSizes({1000, 1000});  // the 3D view and the image, half and half
+    placeBoardDocks();
 }
 
 }  // namespace raystep::gui

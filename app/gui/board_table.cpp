@@ -1,0 +1,280 @@
+// The board dock: the core's board rows (trace/board.h) of the replay at its cursor, in a table.
+#include "board_table.h"
+
+#include "language.h"
+
+#include "course/palette.h"
+
+#include "raystep/base/file_error.h"
+#include "raystep/render/image.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFont>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace raystep::gui {
+
+namespace {
+/// A table view whose Copy key copies the whole board: QTableView takes Ctrl+C for itself (one
+/// cell) before any shortcut sees it.
+class BoardView : public QTableView {
+  public:
+    explicit BoardView(QAction* copy) : copy_(copy) {}
+
+  protected:
+    void keyPressEvent(QKeyEvent* e) override {
+        if (e->matches(QKeySequence::Copy)) {
+            copy_->trigger();
+            e->accept();
+            return;
+        }
+        QTableView::keyPressEvent(e);
+    }
+
+  private:
+    QAction* copy_;
+};
+}  // namespace
+
+int BoardModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(board_.rows.size());
+}
+
+int BoardModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(board_.header.size());
+}
+
+QVariant BoardModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= rowCount({}) || index.column() >= columnCount({}))
+        return {};
+    const bool current = board_.current && *board_.current == std::size_t(index.row());
+    switch (role) {
+        case Qt::DisplayRole:
+        case Qt::ToolTipRole:
+            return QString::fromStdString(board_.rows[index.row()].cells[index.column()]);
+        case Qt::BackgroundRole:
+            if (current) {
+                // The 2D view's colour for the current cell, as a tint the text reads on.
+                const PaletteColour& c = roleColour(PaletteRole::Current);
+                return QColor(c.r, c.g, c.b, 110);
+            }
+            return {};
+        case Qt::FontRole:
+            if (current) {
+                QFont f;
+                f.setBold(true);
+                return f;
+            }
+            return {};
+        case Qt::TextAlignmentRole:
+            return int(Qt::AlignRight | Qt::AlignVCenter);
+        default:
+            return {};
+    }
+}
+
+QVariant BoardModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (role != Qt::DisplayRole || o != Qt::Horizontal || section < 0 || section >= columnCount({}))
+        return {};
+    return QString::fromStdString(board_.header[section]);
+}
+
+void BoardModel::setBoard(Board board) {
+    if (board.header != board_.header || board.kind != board_.kind) {
+        beginResetModel();
+        board_ = std::move(board);
+        endResetModel();
+        return;
+    }
+    // The same columns: the replay stepped; rows come and go at the end, the last may change.
+    const int before = rowCount({}), after = static_cast<int>(board.rows.size());
+    const std::optional<std::size_t> oldCurrent = board_.current;
+    if (after < before) {
+        beginRemoveRows({}, after, before - 1);
+        board_.rows.resize(after);
+        endRemoveRows();
+    }
+    const int kept = std::min(before, after);
+    int firstChanged = kept;
+    for (int r = 0; r < kept; ++r)
+        if (board_.rows[r].cells != board.rows[r].cells) {
+            firstChanged = r;
+            break;
+        }
+    if (after > before) {
+        beginInsertRows({}, before, after - 1);
+        board_.rows = std::move(board.rows);
+        board_.current = board.current;
+        endInsertRows();
+    } else {
+        board_.rows = std::move(board.rows);
+        board_.current = board.current;
+    }
+    board_.ray = board.ray;
+    board_.dims = board.dims;
+    const int columns = columnCount({});
+    if (firstChanged < kept && columns > 0)
+        emit dataChanged(index(firstChanged, 0), index(kept - 1, columns - 1));
+    // The highlight moved: both rows repaint.
+    for (const auto& r : {oldCurrent, board_.current})
+        if (r && int(*r) < rowCount({}) && columns > 0)
+            emit dataChanged(index(int(*r), 0), index(int(*r), columns - 1));
+}
+
+BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* top = new QHBoxLayout;
+    caption_ = new QLabel;
+    caption_->setObjectName("boardCaption");
+    caption_->setWordWrap(true);
+    top->addWidget(caption_, 1);
+    format_ = new QComboBox;
+    format_->setObjectName("boardFormat");
+    format_->addItem(QStringLiteral("CSV"), int(BoardFormat::Csv));
+    format_->addItem(QStringLiteral("Markdown"), int(BoardFormat::Markdown));
+    format_->addItem(QStringLiteral("LaTeX"), int(BoardFormat::Latex));
+    format_->setToolTip(tr("The text Copy puts on the clipboard"));
+    copy_ = new QPushButton(tr("Copy"));
+    copy_->setObjectName("boardCopy");
+    copy_->setToolTip(tr("Copy the board to the clipboard (Ctrl+C in the table)"));
+    export_ = new QPushButton(tr("Export..."));
+    export_->setObjectName("boardExport");
+    export_->setToolTip(tr("Save the board as CSV, Markdown or LaTeX"));
+    top->addWidget(format_);
+    top->addWidget(copy_);
+    top->addWidget(export_);
+    layout->addLayout(top);
+
+    // Ctrl+C in the table copies the whole board (not one cell, as a table view would).
+    auto* copyKey = new QAction(tr("Copy the board"), this);
+    copyKey->setObjectName("boardCopyAction");
+    copyKey->setShortcut(QKeySequence::Copy);
+    copyKey->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    connect(copyKey, &QAction::triggered, this, [this] { copy(); });
+    model_ = new BoardModel(this);
+    view_ = new BoardView(copyKey);
+    view_->addAction(copyKey);
+    view_->setObjectName("boardView");
+    view_->setModel(model_);
+    view_->verticalHeader()->hide();
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    view_->horizontalHeader()->setStretchLastSection(true);
+    view_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    layout->addWidget(view_, 1);
+
+    connect(copy_, &QPushButton::clicked, this, [this] { copy(); });
+    connect(export_, &QPushButton::clicked, this, [this] { exportDialog(); });
+
+    connect(&session_, &Session::cursorChanged, this, [this] { refresh(); });
+    connect(&session_, &Session::logChanged, this, [this] { refresh(); });
+    connect(&session_, &Session::sceneChanged, this, [this] { refresh(); });
+    refresh();
+}
+
+void BoardTable::refresh() {
+    BoardOptions options;
+    options.lang = interfaceLanguage();
+    model_->setBoard(makeBoard(session_.log(), session_.cursor(), options));
+    const Board& b = board();
+    QString what;
+    const QString ray = QString::number(b.ray);
+    switch (b.kind) {
+        case BoardKind::None:
+            what = tr("Nothing recorded yet: R traces the example ray, B replays a build.");
+            break;
+        case BoardKind::Dda:
+            what = tr("Ray %1 walks the grid: a row per cell, as on the slides.").arg(ray);
+            break;
+        case BoardKind::Tree:
+            what = tr("Ray %1 through the tree: a row per node entered, [tNear, tFar].").arg(ray);
+            break;
+        case BoardKind::Tests:
+            what = tr("Ray %1: a row per primitive tested (no structure to walk).").arg(ray);
+            break;
+        case BoardKind::Build:
+            what = tr("The build: a row per node made, with its split or why it is a leaf.");
+            break;
+    }
+    caption_->setText(what);
+    copy_->setEnabled(!b.header.empty());
+    export_->setEnabled(!b.header.empty());
+    const int row = currentRow();
+    if (row >= 0) {
+        view_->selectRow(row);
+        view_->scrollTo(model_->index(row, 0));
+    } else {
+        view_->clearSelection();
+    }
+}
+
+int BoardTable::currentRow() const {
+    const Board& b = board();
+    return b.current ? static_cast<int>(*b.current) : -1;
+}
+
+QString BoardTable::caption() const {
+    return caption_->text();
+}
+
+QString BoardTable::text(BoardFormat format) const {
+    return QString::fromStdString(formatBoard(board(), format));
+}
+
+BoardFormat BoardTable::copyFormat() const {
+    return static_cast<BoardFormat>(format_->currentData().toInt());
+}
+
+void BoardTable::setCopyFormat(BoardFormat format) {
+    format_->setCurrentIndex(format_->findData(int(format)));
+}
+
+void BoardTable::copy() {
+    QApplication::clipboard()->setText(text(copyFormat()));
+}
+
+QString BoardTable::exportTo(const QString& path, BoardFormat format) const {
+    if (board().header.empty()) return tr("The board is empty: there is nothing to export.");
+    try {
+        // The core's writer: a FIFO or a device is refused, a failed write keeps the old file.
+        writeFileAtomic(path.toStdString(), formatBoard(board(), format));
+    } catch (const std::exception& e) {
+        return QString::fromStdString(printable(e.what(), 4096));
+    }
+    return {};
+}
+
+void BoardTable::exportDialog() {
+    const QString csv = tr("CSV (*.csv)"), md = tr("Markdown (*.md)"), tex = tr("LaTeX (*.tex)");
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the board"), QString(),
+                                                      csv + ";;" + md + ";;" + tex, &filter);
+    if (path.isEmpty()) return;
+    // The file's extension decides; without one, the filter chosen in the dialog.
+    BoardFormat format = filter == md    ? BoardFormat::Markdown
+                         : filter == tex ? BoardFormat::Latex
+                                         : BoardFormat::Csv;
+    if (path.endsWith(QLatin1String(".md"), Qt::CaseInsensitive))
+        format = BoardFormat::Markdown;
+    else if (path.endsWith(QLatin1String(".tex"), Qt::CaseInsensitive))
+        format = BoardFormat::Latex;
+    else if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+        format = BoardFormat::Csv;
+    if (const QString problem = exportTo(path, format); !problem.isEmpty())
+        QMessageBox::warning(this, tr("Cannot export"), problem);
+}
+
+}  // namespace raystep::gui

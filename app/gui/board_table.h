@@ -1,0 +1,71 @@
+#pragma once
+// The board dock: the slides' DDA table (or a tree's nodes with [tNear, tFar], or a build's
+// nodes) growing row by row as the replay steps, the current row highlighted and scrolled to;
+// copied (Ctrl+C, a button) or exported as CSV, Markdown or LaTeX. The rows are the core's
+// (trace/board.h), the same `raystep-cli dda --format` prints.
+#include "session.h"
+
+#include "raystep/trace/board.h"
+
+#include <QAbstractTableModel>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTableView;
+
+namespace raystep::gui {
+
+/// The board as a table model: rows grow at the end while the replay steps forward.
+class BoardModel : public QAbstractTableModel {
+  public:
+    using QAbstractTableModel::QAbstractTableModel;
+    int rowCount(const QModelIndex& parent) const override;
+    int columnCount(const QModelIndex& parent) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation o, int role) const override;
+    /// Shows `board`: rows appended or removed at the end when the columns stay, else reset.
+    void setBoard(Board board);
+    const Board& board() const { return board_; }
+
+  private:
+    Board board_;
+};
+
+class BoardTable : public QWidget {
+    Q_OBJECT
+  public:
+    explicit BoardTable(Session& s, QWidget* parent = nullptr);
+
+    const Board& board() const { return model_->board(); }
+    /// The board as text in `format` (what Copy and Export write).
+    QString text(BoardFormat format) const;
+    /// The format the Copy button and Ctrl+C use (the chooser beside them).
+    BoardFormat copyFormat() const;
+    void setCopyFormat(BoardFormat format);
+    /// Copies the board to the clipboard in copyFormat().
+    void copy();
+    /// Writes the board to `path` in `format`: a regular file, written whole or not at all (a
+    /// temporary renamed into place). The one-line problem, or an empty string.
+    QString exportTo(const QString& path, BoardFormat format) const;
+    /// The highlighted row (-1: none) and the table (tests look at them).
+    int currentRow() const;
+    QTableView* view() const { return view_; }
+    /// The line above the table: whose rows these are.
+    QString caption() const;
+
+  private:
+    void refresh();
+    void exportDialog();
+
+    Session& session_;
+    BoardModel* model_;
+    QTableView* view_;
+    QLabel* caption_;
+    QComboBox* format_;
+    QPushButton* copy_;
+    QPushButton* export_;
+};
+
+}  // namespace raystep::gui

@@ -1,0 +1,291 @@
+// The live controls: widgets over AccelOptions, ranges as the core (and the CLI) accept them, so a
+// value the build would refuse cannot be entered.
+#include "live_controls.h"
+
+#include "language.h"
+
+#include "raystep/accel/kdtree_build.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSpinBox>
+
+namespace raystep::gui {
+
+namespace {
+bool hasSplit(AccelKind kind) {
+    return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
+}
+
+QDoubleSpinBox* doubleBox(const char* name, double lo, double hi, double step, int decimals) {
+    auto* b = new QDoubleSpinBox;
+    b->setObjectName(name);
+    b->setRange(lo, hi);
+    b->setSingleStep(step);
+    b->setDecimals(decimals);
+    b->setKeyboardTracking(false);  // typing "12" builds once, not at "1" and again at "12"
+    return b;
+}
+
+QSpinBox* intBox(const char* name, int lo, int hi) {
+    auto* b = new QSpinBox;
+    b->setObjectName(name);
+    b->setRange(lo, hi);
+    b->setKeyboardTracking(false);
+    return b;
+}
+
+/// The resolution of the grid the session shows, if it shows one.
+std::optional<std::array<int, 3>> builtResolution(const Session& s) {
+    if (const Accelerator2D* a = s.accel2D())
+        if (const auto* g = std::get_if<UniformGridT<Scene2DPrims>>(a))
+            return std::array<int, 3>{g->spec().res[0], g->spec().res[1], 1};
+    if (const Accelerator* a = s.accel3D())
+        if (const auto* g = std::get_if<UniformGrid>(a))
+            return std::array<int, 3>{g->spec().res[0], g->spec().res[1], g->spec().res[2]};
+    return std::nullopt;
+}
+}  // namespace
+
+LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(4, 4, 4, 4);
+    grid->setVerticalSpacing(3);
+
+    structure_ = new QComboBox;
+    structure_->setObjectName("liveStructure");
+    for (const AccelKind k :
+         {AccelKind::BruteForce, AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh})
+        structure_->addItem(structureName(k), static_cast<int>(k));
+    split_ = new QComboBox;
+    split_->setObjectName("liveSplit");
+    split_->addItem(tr("midpoint"), static_cast<int>(SplitMethod::Midpoint));
+    split_->addItem(tr("median"), static_cast<int>(SplitMethod::Median));
+    split_->addItem(tr("SAH"), static_cast<int>(SplitMethod::Sah));
+    split_->setToolTip(tr("How the kd-tree or the BVH chooses its split planes"));
+
+    const char* cellNames[3] = {"liveNX", "liveNY", "liveNZ"};
+    auto* cellsRow = new QHBoxLayout;
+    cellsRow->setSpacing(2);
+    for (int i = 0; i < 3; ++i) {
+        cells_[i] = intBox(cellNames[i], 1, GridOptions::kMaxCellsPerAxis);
+        if (i) cellsRow->addWidget(new QLabel(QStringLiteral("x")));
+        cellsRow->addWidget(cells_[i]);
+        connect(cells_[i], &QSpinBox::valueChanged, this, [this] { changed(); });
+    }
+    cellsRow->addStretch();
+    cellsLabel_ = new QLabel(tr("Cells"));
+    cellsLabel_->setToolTip(tr("The grid's cells per axis (NX, NY, NZ)"));
+    byLambda_ = new QCheckBox(tr("By λ"));
+    byLambda_->setObjectName("liveByLambda");
+    byLambda_->setToolTip(
+        tr("Cells from Cleary and Wyvill's rule: λ cells per primitive, in all (else the cells "
+           "per axis above)"));
+    lambda_ = doubleBox("liveLambda", 0.01, 1000.0, 0.5, 2);
+    cTrav_ = doubleBox("liveCTrav", 0.0, 1000.0, 0.5, 2);
+    cTrav_->setToolTip(tr("SAH: the cost of one traversal step (cTrav)"));
+    cIsect_ = doubleBox("liveCIsect", 0.01, 1000.0, 0.5, 2);
+    cIsect_->setToolTip(tr("SAH: the cost of one ray-primitive test (cIsect)"));
+    emptyBonus_ = doubleBox("liveEmptyBonus", 0.0, 1.0, 0.1, 2);
+    emptyBonus_->setToolTip(
+        tr("kd-tree SAH: a split with an empty side costs (1 - bonus) times as much"));
+    leafSize_ = intBox("liveLeafSize", 0, 1000000);
+    leafSize_->setSpecialValueText(tr("auto"));
+    leafSize_->setToolTip(
+        tr("This many primitives or fewer make a leaf (auto: 1 for the SAH, "
+           "4 for midpoint and median)"));
+    maxDepth_ = intBox("liveMaxDepth", 0, kdbuild::kMaxDepthCap);
+    maxDepth_->setSpecialValueText(tr("auto"));
+    maxDepth_->setToolTip(tr("The kd-tree's depth limit (auto: 8 + 1.3 log2 N)"));
+    mailbox_ = new QCheckBox(tr("Mailbox"));
+    mailbox_->setObjectName("liveMailbox");
+    mailbox_->setToolTip(tr("Test each primitive once per ray (grid and kd-tree)"));
+    stats_ = new QLabel;
+    stats_->setObjectName("liveStats");
+    stats_->setWordWrap(true);
+    stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    int row = 0;
+    grid->addWidget(new QLabel(tr("Structure")), row, 0);
+    grid->addWidget(structure_, row, 1);
+    grid->addWidget(new QLabel(tr("Split")), row, 2);
+    grid->addWidget(split_, row++, 3);
+    grid->addWidget(cellsLabel_, row, 0);
+    grid->addLayout(cellsRow, row++, 1, 1, 3);
+    grid->addWidget(byLambda_, row, 0);
+    grid->addWidget(lambda_, row, 1);
+    grid->addWidget(mailbox_, row++, 2, 1, 2);
+    grid->addWidget(new QLabel(QStringLiteral("cTrav")), row, 0);
+    grid->addWidget(cTrav_, row, 1);
+    grid->addWidget(new QLabel(QStringLiteral("cIsect")), row, 2);
+    grid->addWidget(cIsect_, row++, 3);
+    grid->addWidget(new QLabel(tr("Empty bonus")), row, 0);
+    grid->addWidget(emptyBonus_, row, 1);
+    grid->addWidget(new QLabel(tr("Leaf size")), row, 2);
+    grid->addWidget(leafSize_, row++, 3);
+    grid->addWidget(new QLabel(tr("Max depth")), row, 0);
+    grid->addWidget(maxDepth_, row++, 1);
+    grid->addWidget(stats_, row++, 0, 1, 4);
+    grid->setRowStretch(row, 1);
+    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(3, 1);
+
+    connect(structure_, &QComboBox::activated, this, [this] { changed(); });
+    connect(split_, &QComboBox::activated, this, [this] { changed(); });
+    connect(byLambda_, &QCheckBox::toggled, this, [this] { changed(); });
+    connect(mailbox_, &QCheckBox::toggled, this, [this] { changed(); });
+    for (QDoubleSpinBox* b : {lambda_, cTrav_, cIsect_, emptyBonus_})
+        connect(b, &QDoubleSpinBox::valueChanged, this, [this] { changed(); });
+    for (QSpinBox* b : {leafSize_, maxDepth_})
+        connect(b, &QSpinBox::valueChanged, this, [this] { changed(); });
+
+    connect(&session_, &Session::sceneChanged, this, [this] { sync(); });
+    connect(&session_, &Session::logChanged, this, [this] { updateStatistics(); });
+    sync();
+}
+
+AccelKind LiveControls::kind() const {
+    return static_cast<AccelKind>(structure_->currentData().toInt());
+}
+
+AccelOptions LiveControls::options() const {
+    AccelOptions o = session_.options();
+    o.setProgress({});  // the last build's progress belonged to its task
+    const auto split = static_cast<SplitMethod>(split_->currentData().toInt());
+    o.kdtree.split = o.bvh.split = split;
+    if (byLambda_->isChecked()) {
+        o.grid.res.reset();
+        o.grid.lambda = lambda_->value();
+    } else {
+        o.grid.res = std::array<int, 3>{cells_[0]->value(), cells_[1]->value(),
+                                        session_.is2D() ? 1 : cells_[2]->value()};
+    }
+    o.grid.mailbox = o.kdtree.mailbox = mailbox_->isChecked();
+    o.kdtree.cTrav = o.bvh.cTrav = cTrav_->value();
+    o.kdtree.cIsect = o.bvh.cIsect = cIsect_->value();
+    o.kdtree.emptyBonus = emptyBonus_->value();
+    o.kdtree.maxDepth = maxDepth_->value();
+    o.kdtree.leafSize = leafSize_->value();
+    o.bvh.leafSize = leafSize_->value() > 0 ? leafSize_->value() : BvhOptions{}.leafSize;
+    o.bvh.maxLeafSize = std::max(BvhOptions{}.maxLeafSize, o.bvh.leafSize);
+    return o;
+}
+
+void LiveControls::changed() {
+    if (syncing_ || !session_.hasScene()) return;
+    enableForKind();
+    emit applyRequested(kind(), options());
+}
+
+void LiveControls::sync() {
+    syncing_ = true;
+    const AccelKind k = session_.kind();
+    const AccelOptions o = session_.options();
+    structure_->setCurrentIndex(structure_->findData(static_cast<int>(k)));
+    const bool bvh = k == AccelKind::Bvh;
+    split_->setCurrentIndex(split_->findData(static_cast<int>(bvh ? o.bvh.split : o.kdtree.split)));
+    // A 2D scene may name the grid its slides draw: that grid is not lambda's.
+    const Scene2D* s2 = session_.scene2D();
+    const bool byRule = !o.grid.res && !(s2 && s2->gridRes);
+    byLambda_->setChecked(byRule);
+    lambda_->setValue(o.grid.lambda);
+    std::optional<std::array<int, 3>> res = builtResolution(session_);
+    if (!res && o.grid.res) res = o.grid.res;
+    if (!res && s2 && s2->gridRes) res = std::array<int, 3>{s2->gridRes->x, s2->gridRes->y, 1};
+    if (res)
+        for (int i = 0; i < 3; ++i) cells_[i]->setValue((*res)[i]);
+    cells_[2]->setVisible(!session_.is2D());
+    mailbox_->setChecked(k == AccelKind::KdTree ? o.kdtree.mailbox : o.grid.mailbox);
+    cTrav_->setValue(bvh ? o.bvh.cTrav : o.kdtree.cTrav);
+    cIsect_->setValue(bvh ? o.bvh.cIsect : o.kdtree.cIsect);
+    emptyBonus_->setValue(o.kdtree.emptyBonus);
+    leafSize_->setValue(bvh ? o.bvh.leafSize : o.kdtree.leafSize);
+    maxDepth_->setValue(o.kdtree.maxDepth);
+    enableForKind();
+    syncing_ = false;
+    updateStatistics();
+}
+
+void LiveControls::enableForKind() {
+    const AccelKind k = kind();
+    const bool scene = session_.hasScene();
+    const bool isGrid = k == AccelKind::Grid, kd = k == AccelKind::KdTree;
+    structure_->setEnabled(scene);
+    split_->setEnabled(scene && hasSplit(k));
+    byLambda_->setEnabled(scene && isGrid);
+    lambda_->setEnabled(scene && isGrid && byLambda_->isChecked());
+    for (QSpinBox* b : cells_) b->setEnabled(scene && isGrid && !byLambda_->isChecked());
+    mailbox_->setEnabled(scene && (isGrid || kd));
+    // The costs steer the SAH only; the empty bonus and the depth limit are the kd-tree's.
+    const bool sah =
+        hasSplit(k) && static_cast<SplitMethod>(split_->currentData().toInt()) == SplitMethod::Sah;
+    cTrav_->setEnabled(scene && sah);
+    cIsect_->setEnabled(scene && sah);
+    emptyBonus_->setEnabled(scene && sah && kd);
+    leafSize_->setEnabled(scene && hasSplit(k));
+    maxDepth_->setEnabled(scene && kd);
+}
+
+void LiveControls::updateStatistics() {
+    if (!session_.hasScene()) {
+        stats_->clear();
+        return;
+    }
+    std::size_t tests = 0, cells = 0, nodes = 0, skips = 0, built = 0, leaves = 0;
+    for (const Event& e : session_.log().events()) {
+        tests += std::holds_alternative<PrimitiveTest>(e);
+        cells += std::holds_alternative<DdaCell>(e);
+        nodes += std::holds_alternative<NodeEnter>(e);
+        skips += std::holds_alternative<MailboxSkip>(e);
+        built += std::holds_alternative<BuildNode>(e);
+        leaves += std::holds_alternative<LeafMade>(e);
+    }
+    const BuildSummary summary = session_.summary();
+    const TreeStats& t = summary.stats;
+    QStringList lines;
+    switch (session_.kind()) {
+        case AccelKind::Grid:
+            lines << tr("Grid %1: %2 cells, %3 empty, %4 listings")
+                         .arg(QString::fromStdString(summary.description.substr(5)))
+                         .arg(t.nodes)
+                         .arg(t.emptyLeaves)
+                         .arg(t.references);
+            break;
+        case AccelKind::KdTree:
+        case AccelKind::Bvh:
+            lines << tr("%1 nodes, %2 leaves, depth %3; SAH cost %4")
+                         .arg(t.nodes)
+                         .arg(t.leaves)
+                         .arg(t.maxDepth)
+                         .arg(numberText(t.sahCost));
+            break;
+        case AccelKind::BruteForce:
+            lines << tr("Brute force: every primitive for every ray (%1)").arg(t.references);
+            break;
+    }
+    if (built > 0)
+        lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
+    else if (session_.kind() == AccelKind::Grid)
+        lines << tr("Traced: %1 tests, %2 cells visited, %3 mailbox skips")
+                     .arg(tests)
+                     .arg(cells)
+                     .arg(skips);
+    else if (session_.kind() == AccelKind::BruteForce)
+        lines << tr("Traced: %1 tests").arg(tests);
+    else
+        lines << tr("Traced: %1 tests, %2 nodes visited, %3 mailbox skips")
+                     .arg(tests)
+                     .arg(nodes)
+                     .arg(skips);
+    stats_->setText(lines.join('\n'));
+}
+
+QString LiveControls::statistics() const {
+    return stats_->text();
+}
+
+}  // namespace raystep::gui
