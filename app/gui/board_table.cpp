@@ -23,6 +23,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <cctype>
+
 namespace raystep::gui {
 
 namespace {
@@ -77,8 +79,14 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
                 return f;
             }
             return {};
-        case Qt::TextAlignmentRole:
-            return int(Qt::AlignRight | Qt::AlignVCenter);
+        case Qt::TextAlignmentRole: {
+            // Numbers right-aligned, as a table of figures is read; words and lists left.
+            const std::string& c = board_.rows[index.row()].cells[index.column()];
+            const bool number = !c.empty() &&
+                                (std::isdigit(static_cast<unsigned char>(c[0])) || c[0] == '-') &&
+                                c.find_first_of(" ,(") == std::string::npos;
+            return int((number ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter);
+        }
         default:
             return {};
     }
@@ -173,9 +181,17 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     view_->horizontalHeader()->setStretchLastSection(true);
-    view_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    view_->setWordWrap(false);
+    // Rows as tall as a line of text: more of the walk in a short dock.
+    view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 6);
+    view_->setToolTip(tr("Click a row to go back to that step"));
     layout->addWidget(view_, 1);
 
+    // A row clicked: the replay goes back (or on) to the event that opened it.
+    connect(view_, &QTableView::clicked, this, [this](const QModelIndex& i) {
+        if (i.isValid() && i.row() < int(board().rows.size()))
+            session_.setCursor(board().rows[i.row()].event + 1);
+    });
     connect(copy_, &QPushButton::clicked, this, [this] { copy(); });
     connect(export_, &QPushButton::clicked, this, [this] { exportDialog(); });
 

@@ -73,8 +73,19 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     cellsRow->setSpacing(2);
     for (int i = 0; i < 3; ++i) {
         cells_[i] = intBox(cellNames[i], 1, GridOptions::kMaxCellsPerAxis);
-        if (i) cellsRow->addWidget(new QLabel(QStringLiteral("x")));
-        cellsRow->addWidget(cells_[i]);
+        if (i == 2) {
+            // NZ and its "x" together, hidden for a 2D scene.
+            zCells_ = new QWidget;
+            auto* z = new QHBoxLayout(zCells_);
+            z->setContentsMargins(0, 0, 0, 0);
+            z->setSpacing(2);
+            z->addWidget(new QLabel(QStringLiteral("x")));
+            z->addWidget(cells_[i]);
+            cellsRow->addWidget(zCells_);
+        } else {
+            if (i) cellsRow->addWidget(new QLabel(QStringLiteral("x")));
+            cellsRow->addWidget(cells_[i]);
+        }
         connect(cells_[i], &QSpinBox::valueChanged, this, [this] { changed(); });
     }
     cellsRow->addStretch();
@@ -109,16 +120,17 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     stats_->setWordWrap(true);
     stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
+    // The statistics first: on a short screen the rarely used controls scroll, not these.
     int row = 0;
+    grid->addWidget(stats_, row++, 0, 1, 4);
     grid->addWidget(new QLabel(tr("Structure")), row, 0);
     grid->addWidget(structure_, row, 1);
     grid->addWidget(new QLabel(tr("Split")), row, 2);
     grid->addWidget(split_, row++, 3);
     grid->addWidget(cellsLabel_, row, 0);
-    grid->addLayout(cellsRow, row++, 1, 1, 3);
-    grid->addWidget(byLambda_, row, 0);
-    grid->addWidget(lambda_, row, 1);
-    grid->addWidget(mailbox_, row++, 2, 1, 2);
+    grid->addLayout(cellsRow, row, 1);
+    grid->addWidget(byLambda_, row, 2);
+    grid->addWidget(lambda_, row++, 3);
     grid->addWidget(new QLabel(QStringLiteral("cTrav")), row, 0);
     grid->addWidget(cTrav_, row, 1);
     grid->addWidget(new QLabel(QStringLiteral("cIsect")), row, 2);
@@ -128,8 +140,8 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     grid->addWidget(new QLabel(tr("Leaf size")), row, 2);
     grid->addWidget(leafSize_, row++, 3);
     grid->addWidget(new QLabel(tr("Max depth")), row, 0);
-    grid->addWidget(maxDepth_, row++, 1);
-    grid->addWidget(stats_, row++, 0, 1, 4);
+    grid->addWidget(maxDepth_, row, 1);
+    grid->addWidget(mailbox_, row++, 2, 1, 2);
     grid->setRowStretch(row, 1);
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
@@ -198,7 +210,7 @@ void LiveControls::sync() {
     if (!res && s2 && s2->gridRes) res = std::array<int, 3>{s2->gridRes->x, s2->gridRes->y, 1};
     if (res)
         for (int i = 0; i < 3; ++i) cells_[i]->setValue((*res)[i]);
-    cells_[2]->setVisible(!session_.is2D());
+    zCells_->setVisible(!session_.is2D());
     mailbox_->setChecked(k == AccelKind::KdTree ? o.kdtree.mailbox : o.grid.mailbox);
     cTrav_->setValue(bvh ? o.bvh.cTrav : o.kdtree.cTrav);
     cIsect_->setValue(bvh ? o.bvh.cIsect : o.kdtree.cIsect);

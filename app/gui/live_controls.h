@@ -61,6 +61,7 @@ class LiveControls : public QWidget {
     QDoubleSpinBox* lambda_;
     QSpinBox* cells_[3];
     QLabel* cellsLabel_;
+    QWidget* zCells_;  // NZ with its "x" (3D only)
     QDoubleSpinBox* cTrav_;
     QDoubleSpinBox* cIsect_;
     QDoubleSpinBox* emptyBonus_;

@@ -76,7 +76,7 @@ void MainWindow::placeBoardDocks() {
     splitDockWidget(boardDock_, liveDock_, Qt::Horizontal);
     // A quarter of the height for about eight rows of the table; the controls a fixed column.
     resizeDocks({boardDock_}, {std::clamp(height() * 27 / 100, 170, 330)}, Qt::Vertical);
-    resizeDocks({liveDock_}, {std::clamp(width() / 4, 300, 440)}, Qt::Horizontal);
+    resizeDocks({liveDock_}, {std::clamp(width() / 5, 300, 360)}, Qt::Horizontal);
 }
 
 }  // namespace raystep::gui

@@ -4,8 +4,10 @@
 // independent computation (the sorted grid-line crossings) gives, and the Structure tool bar and
 // the controls agree.
 #include "board_table.h"
+#include "lesson_panel.h"
 #include "live_controls.h"
 #include "main_window.h"
+#include "view2d.h"
 
 #include "raystep/base/format.h"
 
@@ -22,6 +24,9 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QProcess>
+#include <QScreen>
+#include <QScrollBar>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -157,6 +162,13 @@ TEST(BoardDock, TheSlidesExampleRowsAreTheCliDdaTable) {
     EXPECT_EQ(selected[0].row(), 2);
     w.stepForward();  // into the next cell's primitives, or the next cell
     EXPECT_GE(w.boardTable()->view()->model()->rowCount(), 3);
+    // A click on row 1 takes the replay back to the step that entered cell (1, 0).
+    QTableView* view = w.boardTable()->view();
+    const QRect r = view->visualRect(view->model()->index(1, 2));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, r.center());
+    EXPECT_EQ(w.boardTable()->view()->model()->rowCount(), 2);
+    EXPECT_EQ(w.boardTable()->currentRow(), 1);
+    EXPECT_TRUE(std::holds_alternative<DdaCell>(s.log().events()[s.cursor() - 1]));
 }
 
 TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
@@ -384,6 +396,77 @@ TEST(BoardDock, CopyAndExportWriteTheBoardSafely) {
     EXPECT_EQ(left, (QStringList{"board.csv", "board.md", "board.tex", "pipe.csv"}));
     // A failed export keeps the old file whole.
     EXPECT_EQ(read(csv).split('\n', Qt::SkipEmptyParts).size(), 8);
+}
+
+}  // namespace
+}  // namespace raystep::gui
+
+namespace raystep::gui {
+namespace {
+
+/// Lessons 6 and 11 taught with the board and the live controls on this screen (ctest runs this
+/// on 1600x1000 and on a 1366x768 laptop screen): both docks under the views, on the screen,
+/// beside the right column, the board's columns whole, the 2D view still large. With
+/// RAYSTEP_SHOT_DIR set, the window is saved there as PNG for a person to look at.
+TEST(LayoutBoard, LessonsSixAndElevenFitWithTheBoardAndTheControls) {
+    QSettings().remove("window");  // the layout as a first start makes it
+    MainWindow w;
+    w.sizeForScreen();
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return w.layoutSettled(); }));
+    const QRect screen = w.screen()->availableGeometry();
+    const auto shot = [&](const char* name) {
+        const QByteArray dir = qgetenv("RAYSTEP_SHOT_DIR");
+        if (dir.isEmpty()) return;
+        QApplication::processEvents();
+        w.grab().save(QString("%1/%2_%3x%4.png")
+                          .arg(QString::fromLocal8Bit(dir), name)
+                          .arg(screen.width())
+                          .arg(screen.height()));
+    };
+    const auto check = [&](const char* where) {
+        SCOPED_TRACE(where);
+        QApplication::processEvents();
+        for (const char* name : {"boardDock", "liveControlsDock"}) {
+            const auto* d = w.findChild<QDockWidget*>(name);
+            ASSERT_NE(d, nullptr);
+            ASSERT_TRUE(d->isVisible()) << name;
+            EXPECT_FALSE(d->isFloating()) << name;
+            EXPECT_TRUE(screen.contains(QRect(d->mapToGlobal(QPoint(0, 0)), d->size()))) << name;
+            EXPECT_GE(d->height(), 150) << name;
+        }
+        EXPECT_GE(w.findChild<QDockWidget*>("liveControlsDock")->width(), 280);
+        // Every column of the slides' table is seen whole, without scrolling sideways.
+        EXPECT_EQ(w.boardTable()->view()->horizontalScrollBar()->maximum(), 0);
+        EXPECT_GE(w.view2D()->height(), 250);
+        EXPECT_GE(w.view2D()->width(), 350);
+    };
+    w.openLesson("6", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    Session& s = w.session();
+    // The lecturer puts the exercises away (an open one holds the replay before its answer).
+    LessonPanel* panel = w.lessonPanel();
+    for (int i = 0; i < static_cast<int>(panel->lesson().exercises.size()); ++i) {
+        panel->selectExercise(i);
+        panel->closeExercise();
+    }
+    std::size_t at = 0;
+    for (int i = 0; i < 5; ++i) at = s.replay().nextOfKind(i ? at + 1 : 0, variantIndex<DdaCell>());
+    s.setCursor(at + 1);
+    ASSERT_EQ(w.boardTable()->board().rows.size(), 5u);  // (0,0) (1,0) (1,1) (2,1) (3,1)
+    check("lesson 6");
+    shot("lesson6");
+    w.openLesson("11", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    w.replayBuild();  // B
+    ASSERT_TRUE(w.waitUntilIdle());
+    ASSERT_TRUE(s.showingBuild());
+    s.setCursor(s.replay().nextOfKind(0, variantIndex<LeafMade>()) + 1);
+    ASSERT_EQ(w.boardTable()->board().kind, BoardKind::Build);
+    check("lesson 11, build replay");
+    shot("lesson11");
+    QSettings().remove("window");
 }
 
 }  // namespace
