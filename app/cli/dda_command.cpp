@@ -6,6 +6,7 @@
 #include "raystep/accel/dda.h"
 #include "raystep/base/format.h"
 #include "raystep/geometry/kernels.h"
+#include "raystep/trace/board.h"
 
 #include <nlohmann/json.hpp>
 
@@ -23,7 +24,10 @@ void addDdaCommand(CLI::App& app, DdaArgs& a) {
     cmd->add_option("--origin", a.origin, "Ray origin")->required();
     cmd->add_option("--dir", a.dir, "Ray direction")->required();
     cmd->add_option("--precision", a.precision, "float or double")->capture_default_str();
-    cmd->add_flag("--json", a.json, "Print the steps as JSON");
+    auto* json = cmd->add_flag("--json", a.json, "Print the steps as JSON");
+    cmd->add_option("--format", a.format,
+                    "Print the steps as the GUI's board: csv, markdown or latex")
+        ->excludes(json);
 }
 
 namespace {
@@ -88,6 +92,29 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
         std::printf(first ? "]\n}\n" : "\n  ]\n}\n");
         return 0;
     }
+    if (!a.format.empty()) {
+        // The board's rows, streamed (a walk of millions of cells is never held); the format
+        // was checked by runDda.
+        const BoardFormat format = *parseBoardFormat(a.format);
+        BoardOptions options;
+        options.primitives = false;  // a walk without a scene tests nothing
+        std::fputs(formatBoardStart(ddaHeader(N, options), format).c_str(), stdout);
+        std::array<double, 3> tDelta{0.0, 0.0, 0.0};
+        for (int i = 0; i < N; ++i) tDelta[i] = double(dda.tDelta()[i]);
+        std::size_t step = 0;
+        for (bool more = dda.valid(); more && !std::ferror(stdout); more = dda.next()) {
+            DdaCell c{0, static_cast<std::uint8_t>(dda.axesTaken()), {0, 0, 0}, {0.0, 0.0, 0.0}};
+            for (int i = 0; i < N; ++i) {
+                c.cell[i] = dda.cell()[i];
+                c.tMax[i] = double(dda.tMax()[i]);
+            }
+            std::fputs(
+                formatBoardLine(ddaCells(step++, c, tDelta, N, Language::En), format).c_str(),
+                stdout);
+        }
+        std::fputs(formatBoardEnd(format).c_str(), stdout);
+        return 0;
+    }
     const auto num = [](T v) {
         if (!std::isfinite(v)) return std::string("inf");
         return formatNumber(double(v));
@@ -129,6 +156,8 @@ int walk(const DdaArgs& a, const std::vector<double>& res, const std::vector<dou
 }  // namespace
 
 int runDda(const DdaArgs& a) {
+    if (!a.format.empty() && !parseBoardFormat(a.format))
+        return fail("--format " + a.format + ": expected csv, markdown or latex");
     const auto res = parseNumbers(a.grid);
     if (!res || (res->size() != 2 && res->size() != 3))
         return fail("--grid " + a.grid + ": expected NX,NY or NX,NY,NZ");

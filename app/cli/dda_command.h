@@ -11,6 +11,7 @@ struct DdaArgs {
     std::string grid, min, max, origin, dir;
     std::string precision = "double";
     bool json = false;
+    std::string format;  // csv, markdown or latex: the board's table (trace/board.h)
 };
 
 void addDdaCommand(CLI::App& app, DdaArgs& args);

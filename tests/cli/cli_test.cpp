@@ -660,6 +660,36 @@ TEST_F(Cli, DdaStreamsLongWalksInBoundedMemory) {
     EXPECT_EQ(nlohmann::json::parse(r.out)["steps"].size(), 6u);
 }
 
+// dda --format: the GUI board's table. By hand, 4 x 3 unit cells from (0.5, 0.25) along
+// (1, 0.6): tDelta (1, 1/0.6 = 1.66667), cells (0,0) -X-> (1,0) -Y-> (1,1) -X-> (2,1) -X-> (3,1)
+// -Y-> (3,2); tMaxX = 0.5, 1.5, 2.5, 3.5 and tMaxY = 0.75/0.6 = 1.25, then 2.91667.
+TEST_F(Cli, DdaFormatPrintsTheBoard) {
+    const std::string walk = "dda --grid 4,3 --min 0,0 --max 4,3 --origin 0.5,0.25 --dir 1,0.6";
+    CliRun r = run(walk + " --format csv");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out,
+              "step,X,Y,tMaxX,tMaxY,tDeltaX,tDeltaY,stepped\n"
+              "0,0,0,0.5,1.25,1,1.66667,start\n"
+              "1,1,0,1.5,1.25,1,1.66667,X\n"
+              "2,1,1,1.5,2.91667,1,1.66667,Y\n"
+              "3,2,1,2.5,2.91667,1,1.66667,X\n"
+              "4,3,1,3.5,2.91667,1,1.66667,X\n"
+              "5,3,2,3.5,4.58333,1,1.66667,Y\n");
+    r = run(walk + " --format markdown");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out.substr(0, r.out.find('\n', r.out.find('\n') + 1) + 1),
+              "| step | X | Y | tMaxX | tMaxY | tDeltaX | tDeltaY | stepped |\n"
+              "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    r = run(walk + " --format latex");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("\\begin{tabular}{llllllll}\n", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("5 & 3 & 2 & 3.5 & 4.58333 & 1 & 1.66667 & Y \\\\\n"), std::string::npos)
+        << r.out;
+    expectBadInput(walk + " --format html", "--format html");
+    const CliRun both = run(walk + " --format csv --json");
+    EXPECT_EQ(both.code, 2) << both.err;
+}
+
 TEST_F(Cli, DdaBadInput) {
     const std::string box = " --min 0,0 --max 3,3 --origin 0.5,0.5 --dir 1,1";
     expectBadInput("dda --grid 3" + box, "NX,NY or NX,NY,NZ");

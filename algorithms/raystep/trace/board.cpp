@@ -2,6 +2,8 @@
 
 #include "raystep/base/format.h"
 
+#include <cmath>
+#include <limits>
 #include <map>
 #include <type_traits>
 
@@ -10,6 +12,9 @@ namespace raystep {
 namespace {
 
 constexpr const char* kAxisNames = "XYZ";
+// A cell before any set-up (a log cut short): its tDelta unknown.
+constexpr double kNaNDelta = std::numeric_limits<double>::quiet_NaN();
+constexpr std::array<double, 3> kNoDelta = {kNaNDelta, kNaNDelta, kNaNDelta};
 
 /// The ray an event names, if it names one.
 std::optional<std::uint32_t> rayOf(const Event& event) {
@@ -112,17 +117,7 @@ Board rayBoard(const EventLog& log, std::size_t subject, std::uint32_t ray, std:
     board.kind = dda ? BoardKind::Dda : tree ? BoardKind::Tree : BoardKind::Tests;
     switch (board.kind) {
         case BoardKind::Dda:
-            board.header.push_back(tr(lang, "step"));
-            for (int i = 0; i < dims; ++i) board.header.push_back(std::string(1, kAxisNames[i]));
-            for (int i = 0; i < dims; ++i)
-                board.header.push_back(std::string("tMax") + kAxisNames[i]);
-            for (int i = 0; i < dims; ++i)
-                board.header.push_back(std::string("tDelta") + kAxisNames[i]);
-            board.header.push_back(tr(lang, "stepped"));
-            if (options.primitives) {
-                board.header.push_back(tr(lang, "tested"));
-                board.header.push_back(tr(lang, "mailbox skips"));
-            }
+            board.header = ddaHeader(dims, options);
             break;
         case BoardKind::Tree:
             board.header = {tr(lang, "step"), tr(lang, "node"),   "tNear",
@@ -148,16 +143,8 @@ Board rayBoard(const EventLog& log, std::size_t subject, std::uint32_t ray, std:
         if (const auto* s = std::get_if<DdaSetup>(&e)) {
             setup = *s;
         } else if (const auto* c = std::get_if<DdaCell>(&e)) {
-            Pending row{i, {std::to_string(rows.size())}, {}};
-            for (int k = 0; k < dims; ++k) row.lead.push_back(std::to_string(c->cell[k]));
-            for (int k = 0; k < dims; ++k) row.lead.push_back(num(c->tMax[k]));
-            for (int k = 0; k < dims; ++k) row.lead.push_back(setup ? num(setup->tDelta[k]) : "");
-            const std::string axes = axesText(c->axes, dims);
-            if (!rows.empty())
-                row.lead.push_back(axes);
-            else  // the first cell: where the ray starts, or the grid face it enters through
-                row.lead.push_back(axes.empty() ? tr(lang, "start")
-                                                : trf(lang, "enters across %1", {axes}));
+            Pending row{
+                i, ddaCells(rows.size(), *c, setup ? setup->tDelta : kNoDelta, dims, lang), {}};
             rows.push_back(std::move(row));
         } else if (const auto* n = std::get_if<NodeEnter>(&e)) {
             if (board.kind == BoardKind::Tree)
@@ -249,6 +236,34 @@ Board buildBoard(const EventLog& log, std::size_t cursor, const BoardOptions& op
 
 }  // namespace
 
+std::vector<std::string> ddaHeader(int dims, const BoardOptions& options) {
+    const Language lang = options.lang;
+    std::vector<std::string> h{tr(lang, "step")};
+    for (int i = 0; i < dims; ++i) h.push_back(std::string(1, kAxisNames[i]));
+    for (int i = 0; i < dims; ++i) h.push_back(std::string("tMax") + kAxisNames[i]);
+    for (int i = 0; i < dims; ++i) h.push_back(std::string("tDelta") + kAxisNames[i]);
+    h.push_back(tr(lang, "stepped"));
+    if (options.primitives) {
+        h.push_back(tr(lang, "tested"));
+        h.push_back(tr(lang, "mailbox skips"));
+    }
+    return h;
+}
+
+std::vector<std::string> ddaCells(std::size_t step, const DdaCell& c,
+                                  const std::array<double, 3>& tDelta, int dims, Language lang) {
+    std::vector<std::string> cells{std::to_string(step)};
+    for (int k = 0; k < dims; ++k) cells.push_back(std::to_string(c.cell[k]));
+    for (int k = 0; k < dims; ++k) cells.push_back(num(c.tMax[k]));
+    for (int k = 0; k < dims; ++k) cells.push_back(std::isnan(tDelta[k]) ? "" : num(tDelta[k]));
+    const std::string axes = axesText(c.axes, dims);
+    if (step > 0)
+        cells.push_back(axes);
+    else  // the first cell: where the ray starts, or the grid face it enters through
+        cells.push_back(axes.empty() ? tr(lang, "start") : trf(lang, "enters across %1", {axes}));
+    return cells;
+}
+
 Board makeBoard(const EventLog& log, std::size_t cursor, const BoardOptions& options) {
     const auto& events = log.events();
     cursor = std::min(cursor, events.size());
@@ -332,43 +347,50 @@ std::string latexText(std::string_view text) {
     return out;
 }
 
-std::string formatBoard(const Board& board, BoardFormat format) {
-    if (board.header.empty()) return {};
-    std::vector<const std::vector<std::string>*> lines{&board.header};
-    for (const BoardRow& r : board.rows) lines.push_back(&r.cells);
+std::string formatBoardStart(const std::vector<std::string>& header, BoardFormat format) {
+    switch (format) {
+        case BoardFormat::Csv:
+            return formatBoardLine(header, format);
+        case BoardFormat::Markdown: {
+            std::string out = formatBoardLine(header, format) + '|';
+            for (std::size_t i = 0; i < header.size(); ++i) out += " --- |";
+            return out + '\n';
+        }
+        case BoardFormat::Latex:
+            return "\\begin{tabular}{" + std::string(header.size(), 'l') + "}\n\\hline\n" +
+                   formatBoardLine(header, format) + "\\hline\n";
+    }
+    return {};
+}
+
+std::string formatBoardLine(const std::vector<std::string>& cells, BoardFormat format) {
     std::string out;
     switch (format) {
         case BoardFormat::Csv:
-            for (const auto* cells : lines) {
-                for (std::size_t i = 0; i < cells->size(); ++i)
-                    out += (i ? "," : "") + csvField((*cells)[i]);
-                out += '\n';
-            }
-            break;
+            for (std::size_t i = 0; i < cells.size(); ++i)
+                out += (i ? "," : "") + csvField(cells[i]);
+            return out + '\n';
         case BoardFormat::Markdown:
-            for (std::size_t l = 0; l < lines.size(); ++l) {
-                out += '|';
-                for (const std::string& c : *lines[l]) out += ' ' + markdownCell(c) + " |";
-                out += '\n';
-                if (l == 0) {
-                    out += '|';
-                    for (std::size_t i = 0; i < board.header.size(); ++i) out += " --- |";
-                    out += '\n';
-                }
-            }
-            break;
+            out += '|';
+            for (const std::string& c : cells) out += ' ' + markdownCell(c) + " |";
+            return out + '\n';
         case BoardFormat::Latex:
-            out += "\\begin{tabular}{" + std::string(board.header.size(), 'l') + "}\n\\hline\n";
-            for (std::size_t l = 0; l < lines.size(); ++l) {
-                for (std::size_t i = 0; i < lines[l]->size(); ++i)
-                    out += (i ? " & " : "") + latexText((*lines[l])[i]);
-                out += " \\\\\n";
-                if (l == 0) out += "\\hline\n";
-            }
-            out += "\\hline\n\\end{tabular}\n";
-            break;
+            for (std::size_t i = 0; i < cells.size(); ++i)
+                out += (i ? " & " : "") + latexText(cells[i]);
+            return out + " \\\\\n";
     }
     return out;
+}
+
+std::string formatBoardEnd(BoardFormat format) {
+    return format == BoardFormat::Latex ? "\\hline\n\\end{tabular}\n" : "";
+}
+
+std::string formatBoard(const Board& board, BoardFormat format) {
+    if (board.header.empty()) return {};
+    std::string out = formatBoardStart(board.header, format);
+    for (const BoardRow& r : board.rows) out += formatBoardLine(r.cells, format);
+    return out + formatBoardEnd(format);
 }
 
 }  // namespace raystep

@@ -8,6 +8,7 @@
 #include "raystep/base/i18n.h"
 #include "raystep/trace/events.h"
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -57,6 +58,17 @@ std::optional<BoardFormat> parseBoardFormat(std::string_view name);
 /// The board as text: CSV (RFC 4180 quoting), a Markdown pipe table (pipes escaped) or a LaTeX
 /// tabular (special characters escaped). Every line ends with '\n'.
 std::string formatBoard(const Board& board, BoardFormat format);
+
+/// The pieces of a board, for a writer that streams a long walk row by row (`raystep-cli dda
+/// --format`) instead of holding it: makeBoard and formatBoard are made of them.
+/// The DDA board's columns, and a row's cells for the `step`-th cell of a walk.
+std::vector<std::string> ddaHeader(int dims, const BoardOptions& options);
+std::vector<std::string> ddaCells(std::size_t step, const DdaCell& cell,
+                                  const std::array<double, 3>& tDelta, int dims, Language lang);
+/// The text before the rows (with the header), one row's line, and the text after the rows.
+std::string formatBoardStart(const std::vector<std::string>& header, BoardFormat format);
+std::string formatBoardLine(const std::vector<std::string>& cells, BoardFormat format);
+std::string formatBoardEnd(BoardFormat format);
 
 /// One cell's text as each format writes it (the escaping formatBoard applies).
 std::string csvField(std::string_view text);
