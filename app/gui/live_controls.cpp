@@ -112,7 +112,7 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     maxDepth_ = intBox("liveMaxDepth", 0, kdbuild::kMaxDepthCap);
     maxDepth_->setSpecialValueText(tr("auto"));
     maxDepth_->setToolTip(tr("The kd-tree's depth limit (auto: 8 + 1.3 log2 N)"));
-    mailbox_ = new QCheckBox(tr("Mailbox"));
+    mailbox_ = new QCheckBox(tr("Mailboxing"));
     mailbox_->setObjectName("liveMailbox");
     mailbox_->setToolTip(tr("Test each primitive once per ray (grid and kd-tree)"));
     stats_ = new QLabel;

@@ -268,6 +268,9 @@ class MainWindow : public QMainWindow {
     BoardTable* board_ = nullptr;
     LiveControls* liveControls_ = nullptr;
     QDockWidget *boardDock_ = nullptr, *liveDock_ = nullptr;
+    /// Whether the docks were last shown for a 2D scene (they follow the kind of scene: shown
+    /// with the lecture's 2D pictures, hidden beside the 3D view and image, which need the room).
+    std::optional<bool> boardFor2D_;
     /// The live controls asked for `kind` with `options` (a 2D scene's own grid set aside for
     /// lambda's), built and shown through applyStructure or showLive.
     void applyLive(AccelKind kind, const AccelOptions& options);

@@ -40,6 +40,14 @@ void MainWindow::createBoard() {
     connect(this, &MainWindow::structureChanged, this, [this](bool ok) {
         if (!ok) liveControls_->sync();
     });
+    // Shown with a 2D scene, hidden with a 3D one (View > Board shows them there too); a user's
+    // choice holds until the kind of scene changes.
+    connect(&session_, &Session::sceneChanged, this, [this] {
+        if (!session_.hasScene() || boardFor2D_ == session_.is2D()) return;
+        boardFor2D_ = session_.is2D();
+        boardDock_->setVisible(*boardFor2D_);
+        liveDock_->setVisible(*boardFor2D_);
+    });
     menus_.view->addSeparator();
     menus_.view->addAction(boardDock_->toggleViewAction());
     menus_.view->addAction(liveDock_->toggleViewAction());
@@ -68,9 +76,10 @@ void MainWindow::applyLive(AccelKind kind, const AccelOptions& options) {
 }
 
 void MainWindow::placeBoardDocks() {
+    const bool shown = !session_.hasScene() || session_.is2D();
     for (QDockWidget* d : {boardDock_, liveDock_}) {
         d->setFloating(false);
-        d->show();
+        d->setVisible(shown);
     }
     addDockWidget(Qt::BottomDockWidgetArea, boardDock_);
     splitDockWidget(boardDock_, liveDock_, Qt::Horizontal);

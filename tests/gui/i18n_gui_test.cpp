@@ -54,7 +54,9 @@ bool sameInBothLanguages(const QString& text) {
     static const std::set<QString> kWords = {"raystep", "pixel",   "SAH",   "DDA",   "BVH",
                                              "File",    "tMaxX",   "tMaxY", "tMaxZ", "tDeltaX",
                                              "tDeltaY", "tDeltaZ", "stepX", "stepY", "stepZ",
-                                             "t_enter", "t_exit",  "NL",    "NR"};
+                                             "t_enter", "t_exit",  "NL",    "NR",
+                                             // the board's formats, the SAH's cost symbols
+                                             "CSV", "Markdown", "LaTeX", "cTrav", "cIsect"};
     QString rest = text;
     rest.remove(QLatin1Char('&'));
     // Names of techniques Italian courses use as they are.
