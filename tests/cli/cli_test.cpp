@@ -647,12 +647,12 @@ TEST_F(Cli, DdaStreamsLongWalksInBoundedMemory) {
     const std::vector<std::string> walk = {"dda",       "--grid", "100000,100000", "--min",
                                            "0,0",       "--max",  "1,1",           "--origin",
                                            "5e-6,3e-6", "--dir",  "1,0.7"};
-    for (const bool json : {true, false}) {
+    for (const std::string& how : {"--json", "", "--format=csv"}) {
         std::vector<std::string> args = walk;
-        if (json) args.push_back("--json");
+        if (!how.empty()) args.push_back(how);
         const auto [code, peakKb] = runMeasured(args);
-        EXPECT_EQ(code, 0) << json;
-        EXPECT_LT(peakKb, 64 * 1024) << json;
+        EXPECT_EQ(code, 0) << how;
+        EXPECT_LT(peakKb, 64 * 1024) << how;
     }
     // The stream is the same JSON: by hand, 4 x 3 cells from (0.5, 0.25) along (1, 0.6) visit 6.
     const CliRun r = run("dda --grid 4,3 --min 0,0 --max 4,3 --origin 0.5,0.25 --dir 1,0.6 --json");

@@ -178,6 +178,11 @@ TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
     AccelOptions options;
     options.grid.res = std::array<int, 3>{4, 2, 4};
     ASSERT_TRUE(openScene(w, "lecture-dda3d", AccelKind::Grid, options));
+    // Beside a 3D scene the docks start hidden (its 3D view and image need the room).
+    auto* dock = w.findChild<QDockWidget*>("boardDock");
+    ASSERT_NE(dock, nullptr);
+    EXPECT_FALSE(dock->isVisible());
+    EXPECT_FALSE(w.findChild<QDockWidget*>("liveControlsDock")->isVisible());
     Session& s = w.session();
     s.tracePixel(144, 108, 320, 240);
     // The primary ray up to its hit (the shadow ray comes after it).
@@ -199,6 +204,10 @@ TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
     EXPECT_EQ(column(b, "Y"), (Strings{"1", "1", "1", "0", "0"}));
     EXPECT_EQ(column(b, "Z"), (Strings{"3", "2", "2", "2", "1"}));
     EXPECT_EQ(column(b, "stepped"), (Strings{"enters across Z", "Z", "X", "Y", "Z"}));
+    // A 2D scene shows them again.
+    ASSERT_TRUE(openScene(w, "lecture-grid", AccelKind::Grid));
+    EXPECT_TRUE(dock->isVisible());
+    EXPECT_TRUE(w.findChild<QDockWidget*>("liveControlsDock")->isVisible());
 }
 
 /// The cells the ray (0.4, 0.4) + t (0.8, 0.4) crosses in the grid [0, 6] x [0, 4] (the scene's
