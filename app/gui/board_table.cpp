@@ -201,7 +201,14 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     refresh();
 }
 
+void BoardTable::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    if (stale_) refresh();
+}
+
 void BoardTable::refresh() {
+    stale_ = !isVisible();
+    if (stale_) return;
     BoardOptions options;
     options.lang = interfaceLanguage();
     model_->setBoard(makeBoard(session_.log(), session_.cursor(), options));

@@ -55,7 +55,12 @@ class BoardTable : public QWidget {
     /// The line above the table: whose rows these are.
     QString caption() const;
 
+  protected:
+    void showEvent(QShowEvent* e) override;
+
   private:
+    /// The rows at the session's cursor; while hidden only marked stale (a 3D trace's ray may
+    /// hold tens of thousands of tests, and the timeline moves the cursor many times a second).
     void refresh();
     void exportDialog();
 
@@ -66,6 +71,7 @@ class BoardTable : public QWidget {
     QComboBox* format_;
     QPushButton* copy_;
     QPushButton* export_;
+    bool stale_ = false;
 };
 
 }  // namespace raystep::gui

@@ -183,6 +183,7 @@ TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
     ASSERT_NE(dock, nullptr);
     EXPECT_FALSE(dock->isVisible());
     EXPECT_FALSE(w.findChild<QDockWidget*>("liveControlsDock")->isVisible());
+    dock->show();  // View > Board
     Session& s = w.session();
     s.tracePixel(144, 108, 320, 240);
     // The primary ray up to its hit (the shadow ray comes after it).
@@ -204,6 +205,15 @@ TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
     EXPECT_EQ(column(b, "Y"), (Strings{"1", "1", "1", "0", "0"}));
     EXPECT_EQ(column(b, "Z"), (Strings{"3", "2", "2", "2", "1"}));
     EXPECT_EQ(column(b, "stepped"), (Strings{"enters across Z", "Z", "X", "Y", "Z"}));
+    // Hidden, it waits; shown again, it shows the rows at the cursor (the shadow ray's now).
+    dock->hide();
+    const std::size_t shadow = s.replay().nextOfKind(1, variantIndex<RayBegin>());
+    ASSERT_LT(shadow, s.size());
+    s.setCursor(shadow + 1);
+    EXPECT_EQ(w.boardTable()->board().ray, 0u);
+    dock->show();
+    QApplication::processEvents();
+    EXPECT_EQ(w.boardTable()->board().ray, 1u);
     // A 2D scene shows them again.
     ASSERT_TRUE(openScene(w, "lecture-grid", AccelKind::Grid));
     EXPECT_TRUE(dock->isVisible());
