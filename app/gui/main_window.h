@@ -42,6 +42,7 @@ class ImageView;
 class Inspector;
 class LessonController;
 class LessonPanel;
+class ShortcutsDialog;
 class Timeline;
 class View2D;
 class VtkView;
@@ -69,6 +70,10 @@ class MainWindow : public QMainWindow {
     /// scene is rebuilt at once and shown with showLive (its walk or build recorded again at the
     /// same step); a 3D one in the background, as changeStructure. Ends with structureChanged.
     void applyStructure(AccelKind kind, const AccelOptions& options);
+    /// Help > Keyboard shortcuts (F1, ?): opens the list of every key, made from the window's
+    /// actions and shortcuts as they are now; the one open, or null (main_window_presenter.cpp).
+    void showShortcuts();
+    ShortcutsDialog* shortcutsDialog() const;
     /// Live lecture mode: shows `scene` (the open one edited or rebuilt) at once, recording again
     /// what was replayed at the same step (Session::relive); what ran for the old scene stops.
     void showLive(SceneRef scene);
@@ -260,6 +265,14 @@ class MainWindow : public QMainWindow {
     // --- live lab (main_window_live.cpp) members go here ---
     // --- live controls and board (main_window_board.cpp) members go here ---
     // --- presenter (main_window_presenter.cpp) members go here ---
+    /// View > zoom, full screen, presenter mode, high contrast; Help > Keyboard shortcuts.
+    struct PresenterActions {
+        QAction *zoomIn, *zoomOut, *resetZoom, *fullScreen, *presenterMode, *highContrast,
+            *shortcuts;
+    } presenterActions_{};
+    QPointer<ShortcutsDialog> shortcuts_;
+    /// The View menu's checks follow the presentation (changed elsewhere: another window).
+    void syncPresenterActions();
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;
     QLabel* structureLabel_ = nullptr;

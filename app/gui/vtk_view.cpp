@@ -1,6 +1,7 @@
 #include "vtk_view.h"
 
 #include "course/palette.h"
+#include "presentation.h"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
@@ -130,6 +131,18 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
         if (framing_ == Framing::Beside) frameBesideEye();
         if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
     });
+    // Presenter mode (presentation.h): labels' font, line widths, and black for high contrast.
+    const auto restyle = [this] {
+        setFont(presentation().labelFont());
+        if (presentation().highContrast())
+            renderer_->SetBackground(0, 0, 0);
+        else
+            renderer_->SetBackground(0.12, 0.13, 0.16);
+        placeButtons();
+        rebuildRays();
+    };
+    restyle();
+    connect(&presentation(), &Presentation::changed, this, restyle);
     rebuildScene();
     placeButtons();
     // Made for a session that already holds its trace (compare mode's views): framed at once,
