@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QSettings>
+#include <QWidget>
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,11 @@ QFont scaled(QFont f, double factor) {
 }
 }  // namespace
 
-Presentation::Presentation() : base_(QApplication::font()) {}
+Presentation::Presentation() : base_(QApplication::font()) {
+    // At first use (the first view being made), before the window's other widgets are: each is
+    // made in the remembered font (a dock's title takes its font once, when it is made).
+    restore();
+}
 
 Presentation& Presentation::instance() {
     // Made after the QApplication (its font is the 100% one) and gone with the process.
@@ -85,7 +90,13 @@ void Presentation::restore() {
 void Presentation::apply() {
     setPaletteVariant(highContrast_ ? PaletteVariant::HighContrast : PaletteVariant::Standard);
     const QFont font = scaled(base_, zoom_ / 100.0);
-    if (QApplication::font() != font) QApplication::setFont(font);
+    if (QApplication::font() != font) {
+        QApplication::setFont(font);
+        // A widget with a style sheet keeps the font it was polished with: given the new one.
+        for (QWidget* w : QApplication::allWidgets())
+            if (!w->styleSheet().isEmpty() && !w->styleSheet().contains(QLatin1String("font")))
+                w->setFont(font);
+    }
     emit changed();
 }
 

@@ -98,6 +98,10 @@ TEST_F(Presenter, ZoomKeysScaleTheAppFontAndTheNextWindowStartsAtTheRememberedZo
     // Qt hands the application's font to its widgets by posted events: waited for.
     EXPECT_TRUE(waitFor([&] { return QFontInfo(w.lessonPanel()->font()).pixelSize() > panelPx; }));
     EXPECT_GT(QFontInfo(w.view2D()->font()).pixelSize(), labelPx);  // the views' labels too
+    // A label with a style sheet of its own (the quiz cue) grows too.
+    const auto* cue = w.findChild<QWidget*>("quizCue");
+    ASSERT_NE(cue, nullptr);
+    EXPECT_TRUE(waitFor([&] { return QFontInfo(cue->font()).pixelSize() > panelPx; }));
     QTest::keyClick(&w, Qt::Key_Equal, Qt::ControlModifier);
     EXPECT_NEAR(sizeOf(QApplication::font()), base * 1.25, 0.01);
     EXPECT_EQ(QSettings().value("presenter/zoom").toInt(), 125);
