@@ -21,7 +21,7 @@
 namespace raystep::gui {
 
 namespace {
-// i18n: the gesture table's texts are translated where they are shown (gestureRows).
+// The gesture table's texts are translated where they are shown (translated, gestureRows).
 constexpr std::array kGestures{
     Gesture{QT_TRANSLATE_NOOP("raystep", "Lesson panel"),
             nullptr,
@@ -59,6 +59,7 @@ constexpr std::array kGestures{
 };
 
 QString translated(const char* english) {
+    // i18n: the texts of kGestures above, each marked with QT_TRANSLATE_NOOP.
     return QCoreApplication::translate("raystep", english);
 }
 
