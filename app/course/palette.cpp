@@ -1,6 +1,8 @@
 // The palette's entries: Okabe-Ito (Okabe & Ito 2008, "Color Universal Design") and a grey.
 #include "course/palette.h"
 
+#include <atomic>
+
 namespace raystep {
 
 namespace {
@@ -30,27 +32,73 @@ constexpr std::array<PaletteColour, kPaletteSize> kPalette{{
     {"tested-primitive", 255, 255, 255, "white", "bianco"},
     {"hit-point", 255, 255, 255, "white", "bianco"},
 }};
+// High contrast: the same keys and names, each shade moved away from its background (WCAG
+// contrast ratio up on the 2D view's white for the roles and the primary ray, on black for the
+// rays and structures), hue kept so the name stays true.
+constexpr std::array<PaletteColour, kPaletteSize> kHighContrast{{
+    {"primary", 220, 65, 0, "orange-red", "rosso arancio"},
+    {"shadow", 255, 240, 40, "yellow", "giallo"},
+    {"reflection", 90, 210, 255, "sky blue", "azzurro"},
+    {"refraction", 255, 140, 210, "pink", "rosa"},
+    {"diffuse", 0, 155, 85, "green", "verde"},
+    {"visited", 255, 210, 0, "yellow", "giallo"},
+    {"current", 240, 125, 0, "orange", "arancione"},
+    {"tested", 215, 40, 140, "pink", "rosa"},
+    {"skipped", 105, 105, 105, "grey", "grigio"},
+    {"hit", 0, 140, 60, "green", "verde"},
+    {"candidate", 0, 155, 240, "sky blue", "azzurro"},
+    {"chosen", 0, 85, 200, "blue", "blu"},
+    {"grid-box", 235, 235, 235, "light grey", "grigio chiaro"},
+    {"voxel", 40, 150, 255, "blue", "blu"},
+    {"current-voxel", 255, 180, 0, "orange", "arancione"},
+    {"kd-node", 255, 180, 0, "orange", "arancione"},
+    {"split-plane", 40, 150, 255, "blue", "blu"},
+    {"bvh-box", 40, 150, 255, "blue", "blu"},
+    {"tested-primitive", 255, 255, 255, "white", "bianco"},
+    {"hit-point", 255, 255, 255, "white", "bianco"},
+}};
 static_assert(kRayKindCount == 5 && kPaletteRoleCount == 7 && kStructureRoleCount == 8);
+
+// Read by the GUI thread's views and by lesson loading on workers: atomic.
+std::atomic<PaletteVariant> gVariant{PaletteVariant::Standard};
+
+const std::array<PaletteColour, kPaletteSize>& table() {
+    return gVariant.load(std::memory_order_relaxed) == PaletteVariant::HighContrast ? kHighContrast
+                                                                                    : kPalette;
+}
 }  // namespace
 
+void setPaletteVariant(PaletteVariant v) {
+    gVariant.store(v, std::memory_order_relaxed);
+}
+
+PaletteVariant paletteVariant() {
+    return gVariant.load(std::memory_order_relaxed);
+}
+
 const PaletteColour& rayColour(RayKind k) {
-    return kPalette[static_cast<std::size_t>(k)];
+    return table()[static_cast<std::size_t>(k)];
 }
 
 const PaletteColour& roleColour(PaletteRole role) {
-    return kPalette[kRayKindCount + static_cast<std::size_t>(role)];
+    return table()[kRayKindCount + static_cast<std::size_t>(role)];
 }
 
 const PaletteColour& structureColour(StructureRole role) {
-    return kPalette[kRayKindCount + kPaletteRoleCount + static_cast<std::size_t>(role)];
+    return table()[kRayKindCount + kPaletteRoleCount + static_cast<std::size_t>(role)];
 }
 
 std::span<const PaletteColour> paletteColours() {
+    return table();
+}
+
+std::span<const PaletteColour> paletteColours(PaletteVariant v) {
+    if (v == PaletteVariant::HighContrast) return kHighContrast;
     return kPalette;
 }
 
 std::optional<PaletteColour> paletteColour(std::string_view key) {
-    for (const PaletteColour& c : kPalette)
+    for (const PaletteColour& c : table())
         if (c.key == key) return c;
     return std::nullopt;
 }

@@ -44,6 +44,15 @@ enum class StructureRole {
 };
 constexpr int kStructureRoleCount = 8;
 
+/// Which table the views draw with. The high-contrast one is for a projector that washes colours
+/// out: each entry keeps its key and its name (a lesson's "{colour:primary}" still says what is
+/// drawn), only its shade changes, to one further from the background it is drawn on (the 2D
+/// view's white, the 3D view's black in high contrast).
+enum class PaletteVariant { Standard, HighContrast };
+/// The table rayColour, roleColour, structureColour and paletteColour read (Standard at start).
+void setPaletteVariant(PaletteVariant v);
+PaletteVariant paletteVariant();
+
 /// The colour of a ray of kind `k` (3D view, legend).
 const PaletteColour& rayColour(RayKind k);
 /// The colour of a role of the 2D view.
@@ -53,6 +62,8 @@ const PaletteColour& structureColour(StructureRole role);
 /// Every entry: the ray kinds in RayKind's order, the roles in PaletteRole's order, then the
 /// structure roles in StructureRole's order.
 std::span<const PaletteColour> paletteColours();
+/// The same entries of a given variant, in the same order.
+std::span<const PaletteColour> paletteColours(PaletteVariant v);
 /// The entry a lesson names by `key` ("primary", "visited", ...), or nullopt.
 std::optional<PaletteColour> paletteColour(std::string_view key);
 

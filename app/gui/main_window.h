@@ -45,6 +45,7 @@ class ImageView;
 class Inspector;
 class LessonController;
 class LessonPanel;
+class ShortcutsDialog;
 class Timeline;
 class View2D;
 class VtkView;
@@ -75,6 +76,10 @@ class MainWindow : public QMainWindow {
     /// The board dock's table and the live controls (main_window_board.cpp).
     BoardTable* boardTable() const { return board_; }
     LiveControls* liveControls() const { return liveControls_; }
+    /// Help > Keyboard shortcuts (F1, ?): opens the list of every key, made from the window's
+    /// actions and shortcuts as they are now; the one open, or null (main_window_presenter.cpp).
+    void showShortcuts();
+    ShortcutsDialog* shortcutsDialog() const;
     /// Live lecture mode: shows `scene` (the open one edited or rebuilt) at once, recording again
     /// what was replayed at the same step (Session::relive); what ran for the old scene stops.
     void showLive(SceneRef scene);
@@ -277,6 +282,14 @@ class MainWindow : public QMainWindow {
     /// View > Reset layout's part: the board and the live controls under the views, side by side.
     void placeBoardDocks();
     // --- presenter (main_window_presenter.cpp) members go here ---
+    /// View > zoom, full screen, presenter mode, high contrast; Help > Keyboard shortcuts.
+    struct PresenterActions {
+        QAction *zoomIn, *zoomOut, *resetZoom, *fullScreen, *presenterMode, *highContrast,
+            *shortcuts;
+    } presenterActions_{};
+    QPointer<ShortcutsDialog> shortcuts_;
+    /// The View menu's checks follow the presentation (changed elsewhere: another window).
+    void syncPresenterActions();
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;
     QLabel* structureLabel_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include "course/palette.h"
 #include "language.h"
+#include "presentation.h"
 
 #include <QMouseEvent>
 
@@ -14,9 +15,6 @@
 namespace raystep::gui {
 
 namespace {
-const QColor kBackground(250, 250, 247);
-const QColor kGridLine(200, 200, 200);
-const QColor kPrimitive(60, 60, 70);  // untouched primitives: ink, not a role
 QColor colourOf(const PaletteColour& c, int alpha = 255) {
     return QColor(c.r, c.g, c.b, alpha);
 }
@@ -24,15 +22,41 @@ QColor colourOf(const PaletteColour& c, int alpha = 255) {
 QColor role(PaletteRole r, int alpha = 255) {
     return colourOf(roleColour(r), alpha);
 }
-// Visited cells as a light tint of the palette's colour, so the grid and labels stay readable.
-const QColor kVisited = role(PaletteRole::Visited, 120);
-const QColor kCurrent = role(PaletteRole::Current, 200);
-const QColor kTested = role(PaletteRole::Tested);
-const QColor kSkipped = role(PaletteRole::Skipped);
-const QColor kHit = role(PaletteRole::Hit);
-const QColor kRay = colourOf(rayColour(RayKind::Primary));
+/// The picture's colours as the palette (standard or high contrast) has them now.
+struct Ink {
+    QColor background, gridLine, primitive, label;
+    QColor visited, current, tested, skipped, hit, ray;
+};
+Ink ink() {
+    const bool high = presentation().highContrast();
+    Ink k;
+    // High contrast: a white page, darker lines and labels (a projector washes greys out).
+    k.background = high ? QColor(255, 255, 255) : QColor(250, 250, 247);
+    k.gridLine = high ? QColor(140, 140, 140) : QColor(200, 200, 200);
+    k.primitive = high ? QColor(15, 15, 20) : QColor(60, 60, 70);  // ink, not a role
+    k.label = high ? QColor(20, 20, 20) : QColor(120, 120, 120);
+    // Visited cells as a light tint of the palette's colour, so the grid and labels stay readable.
+    k.visited = role(PaletteRole::Visited, high ? 170 : 120);
+    k.current = role(PaletteRole::Current, 200);
+    k.tested = role(PaletteRole::Tested);
+    k.skipped = role(PaletteRole::Skipped);
+    k.hit = role(PaletteRole::Hit);
+    k.ray = colourOf(rayColour(RayKind::Primary));
+    return k;
+}
+/// A pen width (or a mark's radius) as drawn: wider in presenter mode.
+double px(double width) {
+    return width * presentation().lineScale();
+}
 // The cost chart: its strip under the picture and the room left of it for the cost values.
-constexpr double kChartHeight = 190.0, kChartAxisRoom = 64.0;
+// Both grow with the label font (presenter mode, UI zoom): a plot about 116 px high between the
+// title's row and two rows of values, and about four lines' height for a value like "0.1234".
+double chartHeight(const QFontMetricsF& fm) {
+    return 116 + (fm.height() + 14) + 2 * (fm.height() + 1) + 12;
+}
+double chartAxisRoom(const QFontMetricsF& fm) {
+    return 4 * fm.height();
+}
 // Its X and Y curves in two of the palette's colours that no other part of the chart uses.
 const PaletteColour& curveColour(int axis) {
     return rayColour(axis == 0 ? RayKind::Primary : RayKind::Diffuse);
@@ -80,6 +104,14 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
         layerDirty_ = true;
         indexBuild();
     });
+    // Presenter mode: the labels' font (zoomed, larger), line widths and palette.
+    const auto restyle = [this] {
+        setFont(presentation().labelFont());
+        layerDirty_ = true;
+        update();
+    };
+    restyle();
+    connect(&presentation(), &Presentation::changed, this, restyle);
 }
 
 void View2D::fit() const {
@@ -93,8 +125,8 @@ void View2D::fit() const {
     // A build's replay keeps the bottom strip for the SAH cost chart, and a left one for its
     // cost axis' values (the chart's position axis is the view's own x).
     const bool build = session_.showingBuild();
-    const double chart = build ? kChartHeight : 0.0;
-    const double axis = build ? kChartAxisRoom : 0.0;
+    const double chart = build ? chartHeight(QFontMetricsF(font())) : 0.0;
+    const double axis = build ? chartAxisRoom(QFontMetricsF(font())) : 0.0;
     // The legend keeps a strip on the right (when the view is wide enough to spare it).
     const double legend = legendShown_ && width() > 560 ? legendWidth() + 12 : 0.0;
     scale_ = std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
@@ -179,7 +211,9 @@ void View2D::indexBuild() {
 void View2D::paintEvent(QPaintEvent*) {
     QPainter g(this);
     g.setRenderHint(QPainter::Antialiasing);
-    g.fillRect(rect(), kBackground);
+    const Ink ink = raystep::gui::ink();
+    const QFontMetricsF fm(font());
+    g.fillRect(rect(), ink.background);
     const Scene2D* s = session_.scene2D();
     if (!s) {
         g.drawText(rect(), Qt::AlignCenter, tr("The 2D view shows the lecture's 2D scenes."));
@@ -202,8 +236,8 @@ void View2D::paintEvent(QPaintEvent*) {
     // What moves with the cursor goes under the cached lines: visited and current cells, the
     // tree node being entered.
     if (grid) {
-        for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), kVisited);
-        if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), kCurrent);
+        for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), ink.visited);
+        if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), ink.current);
     } else if (kd && st.node && st.node->node < kdBoxes_.size()) {
         const BoxN<2>& box = kdBoxes_[st.node->node];
         g.fillRect(QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
@@ -224,7 +258,7 @@ void View2D::paintEvent(QPaintEvent*) {
             const Vec2 b = axis == 0 ? Vec2(pos, n.hi[1]) : Vec2(n.hi[0], pos);
             g.drawLine(toScreen(a), toScreen(b));
         };
-        g.setPen(QPen(QColor(90, 90, 100), 1.5));
+        g.setPen(QPen(QColor(90, 90, 100), px(1.5)));
         const std::size_t chosenSoFar = static_cast<std::size_t>(
             std::lower_bound(chosenAt_.begin(), chosenAt_.end(), st.cursor) - chosenAt_.begin());
         if (chosenSoFar <= kAllSplitsUpTo) {
@@ -243,12 +277,12 @@ void View2D::paintEvent(QPaintEvent*) {
         const NodeRecord& n = session_.log().nodes()[st.buildNode->node];
         const QRectF box(toScreen(Vec2(n.lo[0], n.hi[1])), toScreen(Vec2(n.hi[0], n.lo[1])));
         g.fillRect(box, role(PaletteRole::Current, 50));
-        g.setPen(QPen(role(PaletteRole::Current), 2));
+        g.setPen(QPen(role(PaletteRole::Current), px(2)));
         g.drawRect(box);
         // The most recent candidates (a big node has thousands; the chart shows them all).
         constexpr std::size_t kShown = 256;
         const std::size_t from = st.candidates.size() > kShown ? st.candidates.size() - kShown : 0;
-        g.setPen(QPen(role(PaletteRole::Candidate, 110), 1));  // solid: dashes rasterize slowly
+        g.setPen(QPen(role(PaletteRole::Candidate, 110), px(1)));  // solid: dashes rasterize slowly
         for (std::size_t k = from; k < st.candidates.size(); ++k) {
             const SplitCandidate& c = st.candidates[k];
             const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
@@ -256,7 +290,7 @@ void View2D::paintEvent(QPaintEvent*) {
             g.drawLine(toScreen(a), toScreen(b));
         }
         if (st.chosen) {
-            g.setPen(QPen(role(PaletteRole::Chosen), 3));
+            g.setPen(QPen(role(PaletteRole::Chosen), px(3)));
             const auto& c = *st.chosen;
             const Vec2 a = c.axis == 0 ? Vec2(c.position, n.lo[1]) : Vec2(n.lo[0], c.position);
             const Vec2 b = c.axis == 0 ? Vec2(c.position, n.hi[1]) : Vec2(n.hi[0], c.position);
@@ -266,12 +300,12 @@ void View2D::paintEvent(QPaintEvent*) {
 
     // Primitives: tested ones orange, skipped by the mailbox grey, the nearest hit green.
     const auto colourOf = [&](std::uint32_t p) {
-        if (st.nearestT && st.nearestPrim == p) return kHit;
+        if (st.nearestT && st.nearestPrim == p) return ink.hit;
         for (auto q : st.mailboxSkips)
-            if (q == p) return kSkipped;
+            if (q == p) return ink.skipped;
         for (const auto& t : st.tests)
-            if (t.prim == p) return kTested;
-        return kPrimitive;
+            if (t.prim == p) return ink.tested;
+        return ink.primitive;
     };
     g.drawPixmap(0, 0, layer_);
     // Then the few that the replay has touched, in their colour, over the neutral ones.
@@ -283,7 +317,7 @@ void View2D::paintEvent(QPaintEvent*) {
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     for (std::uint32_t p : touched) {
         if (p >= s->primitiveCount()) continue;
-        g.setPen(QPen(colourOf(p), p == st.nearestPrim ? 3.0 : 2.0));
+        g.setPen(QPen(colourOf(p), px(p == st.nearestPrim ? 3.0 : 2.0)));
         drawPrimitive(g, p);
     }
 
@@ -292,18 +326,19 @@ void View2D::paintEvent(QPaintEvent*) {
         const RayRecord& r = session_.log().rays().front();
         const Vec2 o(r.origin.x, r.origin.y), d(r.dir.x, r.dir.y);
         const double tFar = (world_.diagonal().x + world_.diagonal().y) / glm::length(d);
-        g.setPen(QPen(QColor(kRay.red(), kRay.green(), kRay.blue(), 70), 1.5, Qt::DashLine));
+        g.setPen(QPen(QColor(ink.ray.red(), ink.ray.green(), ink.ray.blue(), 70), px(1.5),
+                      Qt::DashLine));
         g.drawLine(toScreen(o), toScreen(o + tFar * d));
         double reached = 0.0;
         if (st.ddaCell) reached = std::min(st.ddaCell->tMax[0], st.ddaCell->tMax[1]);
         if (st.node) reached = std::max(reached, st.node->tFar);
         if (st.nearestT && (st.hit || st.missed)) reached = *st.nearestT;
         if (std::isfinite(reached) && reached > 0) {
-            g.setPen(QPen(kRay, 2.5));
+            g.setPen(QPen(ink.ray, px(2.5)));
             g.drawLine(toScreen(o), toScreen(o + reached * d));
         }
-        g.setBrush(kRay);
-        g.drawEllipse(toScreen(o), 4, 4);
+        g.setBrush(ink.ray);
+        g.drawEllipse(toScreen(o), px(4), px(4));
         // tMax as labelled ticks on the ray.
         if (st.ddaCell) {
             const Vec2 n = glm::normalize(Vec2(-d.y, d.x));
@@ -312,7 +347,7 @@ void View2D::paintEvent(QPaintEvent*) {
                 if (!std::isfinite(t)) continue;
                 const Vec2 p = o + t * d;
                 const QPointF a = toScreen(p + 0.12 * n), b = toScreen(p - 0.12 * n);
-                g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), 2));
+                g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), px(2)));
                 g.drawLine(a, b);
                 g.drawText(a + QPointF(4, -4),
                            (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
@@ -323,19 +358,21 @@ void View2D::paintEvent(QPaintEvent*) {
                     const double d0 = std::max(0.0, t - st.ddaSetup->tDelta[axis]);
                     const Vec2 side = (axis == 0 ? 0.22 : -0.22) * n;
                     const QPointF p0 = toScreen(o + d0 * d + side), p1 = toScreen(p + side);
-                    g.setPen(QPen(g.pen().color(), 1));
+                    g.setPen(QPen(g.pen().color(), px(1)));
                     g.drawLine(p0, p1);
                     g.drawLine(p0, toScreen(o + d0 * d + 0.6 * side));
                     g.drawLine(p1, toScreen(p + 0.6 * side));
-                    g.drawText((p0 + p1) / 2 + (axis == 0 ? QPointF(-20, -6) : QPointF(4, 14)),
+                    // Above the bracket for X, below it for Y, whatever the label font's size.
+                    g.drawText((p0 + p1) / 2 + (axis == 0 ? QPointF(-fm.height(), -fm.descent() - 3)
+                                                          : QPointF(4, fm.ascent() + 3)),
                                axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"));
                 }
             }
         }
         if (st.nearestT) {
-            g.setBrush(kHit);
+            g.setBrush(ink.hit);
             g.setPen(Qt::NoPen);
-            g.drawEllipse(toScreen(o + *st.nearestT * d), 5, 5);
+            g.drawEllipse(toScreen(o + *st.nearestT * d), px(5), px(5));
         }
     }
     if (build) drawCostChart(g, st);
@@ -351,7 +388,7 @@ void View2D::paintEvent(QPaintEvent*) {
             const QRectF cell = cellRect({sequence_[k].x(), sequence_[k].y(), 0}).normalized();
             const double r = std::min(cell.width(), cell.height()) * 0.22;
             const QPointF c = cell.center() + QPointF(cell.width() * 0.25, -cell.height() * 0.25);
-            g.setPen(QPen(QColor(30, 30, 30), 1.5));
+            g.setPen(QPen(QColor(30, 30, 30), px(1.5)));
             g.setBrush(QColor(255, 255, 255, 230));
             g.drawEllipse(c, r, r);
             g.drawText(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r), Qt::AlignCenter,
@@ -360,9 +397,9 @@ void View2D::paintEvent(QPaintEvent*) {
         g.setFont(font());
     }
     if (legendShown_) drawLegend(g, build);
-    g.setPen(QColor(60, 60, 60));
+    g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(60, 60, 60));
     if (captionShown_)
-        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
+        g.drawText(QRectF(8, 6, width() - 16, fm.height() + 2), Qt::AlignLeft,
                    QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
                        structureName(session_.kind()));
 }
@@ -371,7 +408,7 @@ double View2D::legendWidth() const {
     double w = 0;
     for (int r = 0; r < kPaletteRoleCount; ++r)
         w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r), lang_)));
-    return w + 14 + 16;
+    return w + fontMetrics().height() + 16;
 }
 
 void View2D::drawLegend(QPainter& g, bool build) const {
@@ -382,19 +419,22 @@ void View2D::drawLegend(QPainter& g, bool build) const {
                 {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
                 {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
     } else {
-        rows = {{kRay, QStringLiteral("%1 (%2)").arg(
-                           tr("the ray"),
-                           QString::fromUtf8(rayColour(RayKind::Primary).name(lang_).data()))}};
-        rows.emplace_back(kVisited, roleLabel(PaletteRole::Visited, lang_));
-        rows.emplace_back(kCurrent, roleLabel(PaletteRole::Current, lang_));
+        rows = {
+            {ink().ray, QStringLiteral("%1 (%2)").arg(
+                            tr("the ray"),
+                            QString::fromUtf8(rayColour(RayKind::Primary).name(lang_).data()))}};
+        rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
+        rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
         for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
             rows.emplace_back(role(r), roleLabel(r, lang_));
     }
     const QFontMetrics fm(g.font());
-    const double row = fm.height() + 2, swatch = 14;
+    const double row = fm.height() + 2, swatch = fm.height() - 2;
     double w = 0;
     for (const auto& r : rows) w = std::max<double>(w, fm.horizontalAdvance(r.second));
-    const QRectF box(width() - (w + swatch + 22), 28, w + swatch + 16, row * rows.size() + 8);
+    // Under the caption's line, whatever the font's size.
+    const QRectF box(width() - (w + swatch + 22), fm.height() + 12, w + swatch + 16,
+                     row * rows.size() + 8);
     g.save();
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 225));
@@ -404,7 +444,7 @@ void View2D::drawLegend(QPainter& g, bool build) const {
         g.setPen(Qt::NoPen);
         g.setBrush(rows[k].first);
         g.drawRect(QRectF(box.left() + 6, y + (row - swatch) / 2, swatch, swatch));
-        g.setPen(QColor(40, 40, 40));
+        g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(40, 40, 40));
         g.drawText(QRectF(box.left() + 10 + swatch, y, w + 4, row),
                    Qt::AlignLeft | Qt::AlignVCenter, rows[k].second);
     }
@@ -428,9 +468,11 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
     layer_.fill(Qt::transparent);
     QPainter lp(&layer_);
     lp.setRenderHint(QPainter::Antialiasing, s->primitiveCount() < 5000);
+    const Ink ink = raystep::gui::ink();
+    const QFontMetricsF fm(font());
     if (grid) {
         const auto& spec = grid->spec();
-        lp.setPen(QPen(kGridLine, 1));
+        lp.setPen(QPen(ink.gridLine, px(1)));
         for (int i = 0; i <= spec.res.x; ++i) {
             const double x = spec.lo.x + i * spec.cellSize(0);
             lp.drawLine(toScreen(Vec2(x, spec.lo.y)), toScreen(Vec2(x, spec.hi.y)));
@@ -440,21 +482,26 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
             lp.drawLine(toScreen(Vec2(spec.lo.x, y)), toScreen(Vec2(spec.hi.x, y)));
         }
         // Cell indices along the edges, as on the board.
-        lp.setPen(QColor(120, 120, 120));
-        for (int i = 0; i < spec.res.x; ++i)
-            lp.drawText(toScreen(Vec2(spec.lo.x + (i + 0.45) * spec.cellSize(0), spec.lo.y)) +
-                            QPointF(-3, 14),
-                        QString::number(i));
-        for (int j = 0; j < spec.res.y; ++j)
+        // Centred under (x) and left of (y) their cells, at any label size.
+        lp.setPen(ink.label);
+        for (int i = 0; i < spec.res.x; ++i) {
+            const QString n = QString::number(i);
+            lp.drawText(toScreen(Vec2(spec.lo.x + (i + 0.5) * spec.cellSize(0), spec.lo.y)) +
+                            QPointF(-fm.horizontalAdvance(n) / 2, fm.ascent() + 2),
+                        n);
+        }
+        for (int j = 0; j < spec.res.y; ++j) {
+            const QString n = QString::number(j);
             lp.drawText(toScreen(Vec2(spec.lo.x, spec.lo.y + (j + 0.5) * spec.cellSize(1))) +
-                            QPointF(-14, 4),
-                        QString::number(j));
+                            QPointF(-fm.horizontalAdvance(n) - 5, fm.ascent() / 2 - 1),
+                        n);
+        }
     }
     kdBoxes_.clear();
     if (kd && !kd->nodes().empty()) {
         // Every node's box (for the node being entered) and the split lines.
         kdBoxes_.resize(kd->nodes().size());
-        lp.setPen(QPen(kGridLine, 1));
+        lp.setPen(QPen(ink.gridLine, px(1)));
         kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<2>& box) {
             kdBoxes_[id] = box;
             if (n.leaf()) return;
@@ -464,7 +511,7 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
             if (!session_.showingBuild()) lp.drawLine(toScreen(a), toScreen(b));
         });
     }
-    lp.setPen(QPen(kPrimitive, 2.0));
+    lp.setPen(QPen(ink.primitive, px(2.0)));
     for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) drawPrimitive(lp, p);
     layerSize_ = size();
     layerDirty_ = false;
@@ -499,7 +546,9 @@ std::optional<CostChart> View2D::costChart() const {
     c.nodeLo = {n.lo[0], n.lo[1]};
     const double left = toScreen(Vec2(n.lo[0], n.lo[1])).x();
     const double extent = std::max(n.hi[0] - n.lo[0], n.hi[1] - n.lo[1]) * scale_;
-    const double top = height() - kChartHeight + 30, bottom = height() - 44;
+    const QFontMetricsF fm(font());
+    const double top = height() - chartHeight(fm) + fm.height() + 14,
+                 bottom = height() - 2 * (fm.height() + 1) - 12;
     c.plot = QRectF(QPointF(left, top),
                     QPointF(std::min(left + std::max(extent, 40.0), width() - 8.0), bottom));
     double lo = kInfinity, hi = -kInfinity;
@@ -531,7 +580,8 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
     if (!chart) return;
     const CostChart& c = *chart;
     const QFontMetricsF fm(g.font());
-    const QRectF strip(4, height() - kChartHeight + 4, width() - 8, kChartHeight - 8);
+    const double axisRoom = chartAxisRoom(fm);
+    const QRectF strip(4, height() - chartHeight(fm) + 4, width() - 8, chartHeight(fm) - 8);
     g.save();
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 235));
@@ -543,8 +593,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
         g.setPen(QPen(faint, 1));
         g.drawLine(QPointF(c.plot.left(), y), QPointF(c.plot.right(), y));
         g.setPen(ink);
-        g.drawText(QRectF(c.plot.left() - kChartAxisRoom, y - fm.height() / 2, kChartAxisRoom - 8,
-                          fm.height()),
+        g.drawText(QRectF(c.plot.left() - axisRoom, y - fm.height() / 2, axisRoom - 8, fm.height()),
                    Qt::AlignRight | Qt::AlignVCenter, numberText(v, 'g', 4));
     }
     g.setPen(QPen(ink, 1));
@@ -564,7 +613,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
             g.drawText(QRectF(x - 40, y + 2, 80, fm.height()), Qt::AlignHCenter | Qt::AlignTop,
                        numberText(v, 'g', 4));
         }
-        g.drawText(QRectF(c.plot.left() - kChartAxisRoom, y + 2, kChartAxisRoom - 8, fm.height()),
+        g.drawText(QRectF(c.plot.left() - axisRoom, y + 2, axisRoom - 8, fm.height()),
                    Qt::AlignRight | Qt::AlignTop,
                    axis == 0 ? QStringLiteral("x =") : QStringLiteral("y ="));
         ++row;
@@ -578,7 +627,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
             const SplitCandidate& s = st.candidates[k];
             if (s.axis == axis) line << c.at(axis, s.position, s.sahCost);
         }
-        g.setPen(QPen(colourOf(curveColour(axis)), 1.8));
+        g.setPen(QPen(colourOf(curveColour(axis)), px(1.8)));
         g.setBrush(Qt::NoBrush);
         g.drawPolyline(line);
         if (line.size() < 200)

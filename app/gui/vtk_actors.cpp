@@ -1,4 +1,5 @@
 #include "vtk_actors.h"
+#include "presentation.h"
 
 #include "course/palette.h"
 
@@ -434,6 +435,9 @@ std::vector<Vec3> primitiveCentres(const Scene& s) {
 }
 
 void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& eye) {
+    // Presenter mode: thicker rays and edges, larger hit points (for a projector's back rows).
+    const double presenter = presentation().lineScale();
+    linePx *= presenter;
     trace.props.clear();
     eye.props.clear();
     const Scene* s = session.scene3D();
@@ -442,7 +446,7 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
     const ReplayState& st = session.state();
     const Bounds3 frame = boundsThatMatter(session);
     const double size = std::max(glm::length(frame.diagonal()), 1e-9);
-    const double radius = 0.0035 * size;  // hit points and the eye: small beside the scene
+    const double radius = 0.0035 * size * presenter;  // hit points, the eye: small in the scene
     eyeProps(*s, log, radius, linePx, eye);
 
     // Each ray that has begun by the cursor, from its origin to its hit (or a scene's length).

@@ -1,6 +1,7 @@
 #include "vtk_view.h"
 
 #include "course/palette.h"
+#include "presentation.h"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
@@ -130,6 +131,18 @@ VtkView::VtkView(Session& session, QWidget* parent) : QWidget(parent), session_(
         if (framing_ == Framing::Beside) frameBesideEye();
         if (framing_ == Framing::Orbit) orbit(orbit_[0], orbit_[1], orbit_[2]);
     });
+    // Presenter mode (presentation.h): labels' font, line widths, and black for high contrast.
+    const auto restyle = [this] {
+        setFont(presentation().labelFont());
+        if (presentation().highContrast())
+            renderer_->SetBackground(0, 0, 0);
+        else
+            renderer_->SetBackground(0.12, 0.13, 0.16);
+        placeButtons();
+        rebuildRays();
+    };
+    restyle();
+    connect(&presentation(), &Presentation::changed, this, restyle);
     rebuildScene();
     placeButtons();
     // Made for a session that already holds its trace (compare mode's views): framed at once,
@@ -318,12 +331,14 @@ void VtkView::paintEvent(QPaintEvent*) {
         const QString caption = g.fontMetrics().elidedText(
             tr("Rasterization (VTK, OpenGL): the scene and the recorded rays"), Qt::ElideRight,
             std::max(0, right - 8));
-        g.drawText(QRectF(8, 6, std::max(0, right - 8), 20), Qt::AlignLeft, caption);
+        // As high as the label font (presenter mode's is larger): not cut at the top.
+        g.drawText(QRectF(8, 6, std::max(0, right - 8), g.fontMetrics().height() + 2),
+                   Qt::AlignLeft, caption);
     }
     // Which colour is which kind of ray (the lessons name the same colours).
     if (legend_ && !session_.showingBuild()) {
         // Under the overlay buttons when the view is too narrow for both side by side.
-        double top = caption_ ? 28 : 8;
+        double top = caption_ ? g.fontMetrics().height() + 12 : 8;
         if (eyeButton_->isVisible() && eyeButton_->x() < 280)
             top = std::max<double>(top, eyeButton_->geometry().bottom() + 6);
         drawRayLegend(g, QPointF(8, top), /*dark=*/true, lang_);

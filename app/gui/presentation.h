@@ -1,0 +1,70 @@
+#pragma once
+// Presenter mode (issue 19): how the app is shown on a projector. One per application, as the
+// application's font is: the UI zoom (the whole app's font, and so the views' labels), presenter
+// mode (thicker lines and larger labels in the 2D and 3D views) and the high-contrast palette
+// (course/palette.h). Each is remembered in QSettings ("presenter/...") and restored at start.
+#include <QFont>
+#include <QObject>
+
+#include <array>
+
+namespace raystep::gui {
+
+class Presentation : public QObject {
+    Q_OBJECT
+  public:
+    /// The zoom steps Ctrl++ and Ctrl+- go through, in percent of the system's font.
+    static constexpr std::array<int, 11> kZoomSteps{70,  80,  90,  100, 110, 125,
+                                                    150, 175, 200, 250, 300};
+    static constexpr int kDefaultZoom = 100;
+    /// Presenter mode's factors for the views' line widths and label fonts.
+    static constexpr double kPresenterLineScale = 2.0, kPresenterLabelScale = 1.4;
+
+    /// The application's one presentation (made on first use, after the QApplication).
+    static Presentation& instance();
+
+    int zoomPercent() const { return zoom_; }
+    bool presenterMode() const { return presenter_; }
+    bool highContrast() const { return highContrast_; }
+    /// What the views multiply their pen widths by (presenter mode: thicker lines).
+    double lineScale() const { return presenter_ ? kPresenterLineScale : 1.0; }
+    /// What the views multiply their label fonts by, over the zoomed application font.
+    double labelScale() const { return presenter_ ? kPresenterLabelScale : 1.0; }
+    /// The application's font at 100% (the system's, as it was before any zoom).
+    QFont baseFont() const { return base_; }
+    /// The font a view draws its labels in: the zoomed application font times labelScale().
+    QFont labelFont() const;
+
+  public slots:
+    /// The next zoom step up or down (at the ends: stays), and back to 100%.
+    void zoomIn();
+    void zoomOut();
+    void resetZoom();
+    /// Sets the zoom (clamped to the steps' range) and applies it to the application's font.
+    void setZoomPercent(int percent);
+    void setPresenterMode(bool on);
+    void setHighContrast(bool on);
+    /// Reads the three settings from QSettings (defaults where none) and applies them.
+    void restore();
+
+  signals:
+    /// Any of the three changed (after the application font and the palette are set).
+    void changed();
+
+  private:
+    Presentation();
+    void apply();
+    void save() const;
+
+    QFont base_;
+    int zoom_ = kDefaultZoom;
+    bool presenter_ = false;
+    bool highContrast_ = false;
+};
+
+/// Presentation::instance().
+inline Presentation& presentation() {
+    return Presentation::instance();
+}
+
+}  // namespace raystep::gui
