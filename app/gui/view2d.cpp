@@ -368,7 +368,7 @@ void View2D::paintEvent(QPaintEvent*) {
         }
         g.setFont(font());
     }
-    if (!build) drawHandles(g);
+    drawHandles(g);
     if (legendShown_) drawLegend(g, build);
     g.setPen(QColor(60, 60, 60));
     if (captionShown_)

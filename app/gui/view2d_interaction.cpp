@@ -129,10 +129,11 @@ std::optional<QPointF> View2D::tipHandle() const {
 
 View2D::Target View2D::targetAt(QPointF p) const {
     const Scene2D* s = session_.scene2D();
-    if (!s || !live_ || session_.showingBuild()) return {};
+    if (!s || !live_) return {};
     fit();
     const auto near = [&](QPointF a, double r) { return QLineF(a, p).length() <= r; };
-    if (s->exampleRay) {
+    // A build's replay draws no ray: only the primitives can be taken (lesson 11 edits them).
+    if (s->exampleRay && !session_.showingBuild()) {
         if (near(*tipHandle(), kHandleRadius)) return {Grab::Tip, 0};
         if (near(toScreen(s->exampleRay->origin), kHandleRadius)) return {Grab::Origin, 0};
     }
@@ -392,7 +393,7 @@ void View2D::drawHandles(QPainter& g) const {
         }
     }
     // The ray's direction as an arrow from its origin, with a ring at each end to take.
-    if (s->exampleRay) {
+    if (s->exampleRay && !session_.showingBuild()) {
         const QPointF o = toScreen(s->exampleRay->origin), tip = *tipHandle();
         g.setPen(QPen(ray, 2.5));
         g.drawLine(o, tip);

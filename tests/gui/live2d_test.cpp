@@ -7,6 +7,8 @@
 #include "main_window.h"
 #include "view2d.h"
 
+#include "course/palette.h"
+
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -328,6 +330,82 @@ TEST(Live2D, AnEditedSceneSavedOpensAgainAsEdited) {
     EXPECT_EQ(s.scene2D()->exampleRay->origin, Vec2(0.5, 1.0));
     EXPECT_EQ(s.scene2D()->circles[1].center, Vec2(4.5, 1.5));
     QFile::remove(path);
+}
+
+TEST(Live2D, EditingWhileTheBuildIsReplayedRecordsTheBuildAgain) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    w.openScene("lecture-kdtree", AccelKind::KdTree, /*quiet=*/true, {}, /*render=*/false);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    Session& s = w.session();
+    s.recordBuild();  // B: lesson 11's build replay
+    ASSERT_TRUE(s.showingBuild());
+    const std::uint32_t before = s.scene2D()->primitiveCount();
+    const auto rootPrims = [&] {
+        for (const Event& e : s.log().events())
+            if (const auto* b = std::get_if<BuildNode>(&e)) return b->prims;
+        return std::uint32_t(0);
+    };
+    ASSERT_EQ(rootPrims(), before);
+    ASSERT_TRUE(act(w, "live2dAddCircle"));
+    act(w, "live2dAddCircle")->trigger();
+    EXPECT_TRUE(s.showingBuild());  // still the build, recorded again over the new scene
+    EXPECT_EQ(rootPrims(), before + 1);
+    // The big circle (1.5, 6) r 0.5 dragged by its middle while the build shows.
+    w.view2D()->setSnapToCorners(false);
+    drag(w.view2D(), w.view2D()->screenOf(Vec2(1.5, 6.0)), w.view2D()->screenOf(Vec2(3.0, 5.0)));
+    EXPECT_NEAR(s.scene2D()->circles[10].center.x, 3.0, 0.05);
+    EXPECT_TRUE(s.showingBuild());
+}
+
+/// The window as a lecturer sees it, written to $RAYSTEP_SHOT_DIR/<name>.png when that is set
+/// (to look at by hand, at each screen size); the checks hold either way.
+QImage shot(MainWindow& w, const char* name) {
+    QApplication::processEvents();
+    const QImage image = w.grab().toImage();
+    if (const QByteArray dir = qgetenv("RAYSTEP_SHOT_DIR"); !dir.isEmpty())
+        image.save(QDir(QString::fromLocal8Bit(dir)).filePath(QString::fromLatin1(name) + ".png"));
+    return image;
+}
+
+TEST(Live2D, LessonSixWhileDraggingAndEditing) {
+    MainWindow w;
+    w.resize(w.fitToScreen(QSize(1920, 1080)));
+    w.show();
+    w.openLesson("6", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    Session& s = w.session();
+    View2D* view = w.view2D();
+    const QColor ray(rayColour(RayKind::Primary).r, rayColour(RayKind::Primary).g,
+                     rayColour(RayKind::Primary).b);
+    // The origin handle is drawn over the ray's origin, in the ray's colour.
+    const auto rayAt = [&](Vec2 p) {
+        const QImage v = view->grab().toImage();
+        const QPoint at = view->screenOf(p).toPoint();
+        return QColor(v.pixel(at)) == ray;
+    };
+    EXPECT_TRUE(rayAt(s.scene2D()->exampleRay->origin));
+    shot(w, "l6_start");
+    // Mid-drag (the button still down): the walk is recorded again already.
+    const QPoint from = view->screenOf(Vec2(0.4, 0.4)).toPoint();
+    const QPoint to = view->screenOf(Vec2(0.5, 1.6)).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, {}, from);
+    QTest::mouseMove(view, (from + to) / 2);
+    QTest::mouseMove(view, to);
+    EXPECT_NEAR(s.scene2D()->exampleRay->origin.y, 1.6, 0.05);
+    EXPECT_TRUE(rayAt(s.scene2D()->exampleRay->origin));
+    shot(w, "l6_dragging_origin");
+    QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+    // Editing: the circle in cell (2, 0) dragged up into (2, 1), then a new circle added.
+    drag(view, view->screenOf(Vec2(2.5, 0.5)), view->screenOf(Vec2(2.5, 1.5)));
+    ASSERT_TRUE(act(w, "live2dAddCircle"));
+    act(w, "live2dAddCircle")->trigger();
+    wheel(view, view->screenOf(Vec2(2.5, 1.5)), 2);
+    ASSERT_TRUE(view->selected());
+    const QImage edited = shot(w, "l6_edited_zoomed");
+    EXPECT_FALSE(edited.isNull());
+    EXPECT_EQ(s.scene2D()->circles.size(), 6u);
 }
 
 }  // namespace
