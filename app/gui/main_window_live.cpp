@@ -48,8 +48,11 @@ void MainWindow::createLiveLab() {
     QAction* undoAction = undo->createUndoAction(this, tr("&Undo"));
     undoAction->setObjectName("live2dUndoAction");
     undoAction->setShortcuts(QKeySequence::Undo);
+    // The tool bar's button keeps one short label (the menu says what would be undone).
+    undoAction->setIconText(tr("Undo"));
     QAction* redoAction = undo->createRedoAction(this, tr("&Redo"));
     redoAction->setObjectName("live2dRedoAction");
+    redoAction->setIconText(tr("Redo"));
     redoAction->setShortcuts(
         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
 
