@@ -142,6 +142,11 @@ void MainWindow::createLiveLab() {
     const QList<QAction*> editing = {addCircle, addSegment, snapCorners, snapAngle, fit, save2D};
     const auto follow = [this, editing] {
         for (QAction* a : editing) a->setEnabled(session_.is2D());
+        // The gesture that gives a scene its example ray, said where the user looks.
+        if (const Scene2D* s = session_.scene2D(); s && !s->exampleRay)
+            statusBar()->showMessage(
+                tr("This 2D scene has no example ray: Shift+drag in the 2D view draws one, from "
+                   "where the drag starts to where it ends"));
     };
     connect(&session_, &Session::sceneChanged, this, follow);
     follow();

@@ -18,6 +18,7 @@
 #include <QDir>
 #include <QFile>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -357,6 +358,36 @@ TEST(Live2D, EditingWhileTheBuildIsReplayedRecordsTheBuildAgain) {
     drag(w.view2D(), w.view2D()->screenOf(Vec2(1.5, 6.0)), w.view2D()->screenOf(Vec2(3.0, 5.0)));
     EXPECT_NEAR(s.scene2D()->circles[10].center.x, 3.0, 0.05);
     EXPECT_TRUE(s.showingBuild());
+}
+
+TEST(Live2D, ShiftDragGivesASceneWithoutARayItsExampleRay) {
+    // A scene file with no ray: one segment across cells of 1 x 1, from (0, 0) to (4, 2).
+    const QString path = QDir::temp().filePath(
+        QStringLiteral("raystep-noray-%1.json").arg(QCoreApplication::applicationPid()));
+    {
+        QFile f(path);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(
+            R"({"dimensions": 2, "grid": [4, 2], "segments": [{"from": [0, 0], "to": [4, 2]}]})");
+    }
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(openGrid(w, path));
+    Session& s = w.session();
+    ASSERT_FALSE(s.scene2D()->exampleRay);
+    EXPECT_TRUE(w.statusBar()->currentMessage().contains("Shift+drag"));
+    View2D* view = w.view2D();
+    act(w, "live2dSnapCorners")->setChecked(true);
+    // From the centre of cell (0, 1) to the corner (2, 0): o = (0.5, 1.5), d = (1.5, -1.5).
+    drag(view, view->screenOf(Vec2(0.5, 1.5)), view->screenOf(Vec2(2.0, 0.0)), Qt::ShiftModifier);
+    ASSERT_TRUE(s.scene2D()->exampleRay);
+    EXPECT_EQ(s.scene2D()->exampleRay->origin, Vec2(0.5, 1.5));
+    EXPECT_EQ(s.scene2D()->exampleRay->dir, Vec2(1.5, -1.5));
+    // By hand: x = 1 and y = 1 both at t = 1/3 (a tie, to (1, 0)); the segment y = x / 2 is hit
+    // where 1.5 - 1.5 t = (0.5 + 1.5 t) / 2, t = 5/9, x = 4/3: in cell (1, 0), the walk ends.
+    EXPECT_EQ(recordedCells(s), (std::vector<std::array<int, 2>>{{0, 1}, {1, 0}}));
+    QFile::remove(path);
 }
 
 /// The window as a lecturer sees it, written to $RAYSTEP_SHOT_DIR/<name>.png when that is set
