@@ -46,6 +46,7 @@ class Inspector;
 class LessonController;
 class LessonPanel;
 class ShortcutsDialog;
+class Live2D;
 class Timeline;
 class View2D;
 class VtkView;
@@ -83,6 +84,8 @@ class MainWindow : public QMainWindow {
     /// Live lecture mode: shows `scene` (the open one edited or rebuilt) at once, recording again
     /// what was replayed at the same step (Session::relive); what ran for the old scene stops.
     void showLive(SceneRef scene);
+    /// The 2D view's live editing: its scene edits and their undo stack (main_window_live.cpp).
+    Live2D* live2D() const { return live2d_; }
     /// The structure and options File > Open builds (changeStructure's last choice).
     AccelKind openKind() const;
     AccelOptions openOptions() const;
@@ -269,6 +272,9 @@ class MainWindow : public QMainWindow {
         QMenu *file, *edit, *replay, *lessons, *view, *help;
     } menus_{};
     // --- live lab (main_window_live.cpp) members go here ---
+    Live2D* live2d_ = nullptr;
+    /// File > Save 2D scene as: asks where, then Live2D::save.
+    void save2DSceneDialog();
     // --- live controls and board (main_window_board.cpp) members go here ---
     BoardTable* board_ = nullptr;
     LiveControls* liveControls_ = nullptr;

@@ -98,6 +98,7 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
     connect(&session_, &Session::cursorChanged, this, [this] { update(); });
     connect(&session_, &Session::sceneChanged, this, [this] {
         layerDirty_ = true;
+        sceneShown();
         update();
     });
     connect(&session_, &Session::logChanged, this, [this] {
@@ -115,12 +116,17 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
 }
 
 void View2D::fit() const {
-    const Scene2D* s = session_.scene2D();
-    world_ = s->bounds();
-    if (s->exampleRay) world_.extend(s->exampleRay->origin);
-    const Vec2 d = glm::max(world_.diagonal(), Vec2(1e-9));
-    world_.lo -= 0.06 * d;
-    world_.hi += 0.06 * d;
+    // The fitted box is kept until another scene is shown (or Fit): a live edit does not move
+    // the picture under the mouse.
+    if (needFit_) {
+        const Scene2D* s = session_.scene2D();
+        world_ = s->bounds();
+        if (s->exampleRay) world_.extend(s->exampleRay->origin);
+        const Vec2 d = glm::max(world_.diagonal(), Vec2(1e-9));
+        world_.lo -= 0.06 * d;
+        world_.hi += 0.06 * d;
+        needFit_ = false;
+    }
     const Vec2 size = world_.diagonal();
     // A build's replay keeps the bottom strip for the SAH cost chart, and a left one for its
     // cost axis' values (the chart's position axis is the view's own x).
@@ -129,9 +135,13 @@ void View2D::fit() const {
     const double axis = build ? chartAxisRoom(QFontMetricsF(font())) : 0.0;
     // The legend keeps a strip on the right (when the view is wide enough to spare it).
     const double legend = legendShown_ && width() > 560 ? legendWidth() + 12 : 0.0;
-    scale_ = std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
-    offset_ = QPointF(axis + (width() - axis - legend - scale_ * size.x) / 2,
-                      chart + (height() - chart - scale_ * size.y) / 2);
+    const double fitted =
+        std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
+    // Then the user's zoom and pan (zoomAt keeps the point under the cursor in place).
+    scale_ = fitted * zoom_;
+    offset_ = QPointF(axis + (width() - axis - legend - fitted * size.x) / 2,
+                      chart + (height() - chart - fitted * size.y) / 2) +
+              pan_;
 }
 
 QPointF View2D::toScreen(const Vec2& p) const {
@@ -174,10 +184,6 @@ QPointF View2D::cellCentre(int x, int y) const {
 void View2D::setSequence(const QList<QPoint>& cells) {
     sequence_ = cells;
     update();
-}
-
-void View2D::mousePressEvent(QMouseEvent* e) {
-    if (const auto c = cellAt(e->position())) emit cellClicked((*c)[0], (*c)[1]);
 }
 
 void View2D::indexBuild() {
@@ -325,7 +331,10 @@ void View2D::paintEvent(QPaintEvent*) {
     if (!build && !session_.log().rays().empty()) {
         const RayRecord& r = session_.log().rays().front();
         const Vec2 o(r.origin.x, r.origin.y), d(r.dir.x, r.dir.y);
-        const double tFar = (world_.diagonal().x + world_.diagonal().y) / glm::length(d);
+        // Far enough to leave the visible part, whatever the zoom and pan.
+        const Vec2 seen = toWorld(QPointF(width(), 0)) - toWorld(QPointF(0, height()));
+        const double tFar =
+            (glm::length(seen) + glm::length(toWorld(rect().center()) - o)) / glm::length(d);
         g.setPen(QPen(QColor(ink.ray.red(), ink.ray.green(), ink.ray.blue(), 70), px(1.5),
                       Qt::DashLine));
         g.drawLine(toScreen(o), toScreen(o + tFar * d));
@@ -396,6 +405,7 @@ void View2D::paintEvent(QPaintEvent*) {
         }
         g.setFont(font());
     }
+    drawHandles(g);
     if (legendShown_) drawLegend(g, build);
     g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(60, 60, 60));
     if (captionShown_)

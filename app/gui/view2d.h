@@ -38,6 +38,8 @@ struct CostChart {
 /// `count` of them, all inside the range.
 std::vector<double> niceTicks(double lo, double hi, int count);
 
+class Live2D;
+
 class View2D : public QWidget {
     Q_OBJECT
   public:
@@ -67,6 +69,35 @@ class View2D : public QWidget {
     /// Where the centre of grid cell (x, y) is drawn (tests click there).
     QPointF cellCentre(int x, int y) const;
 
+    // The view transform and direct manipulation (view2d_interaction.cpp). The transform is kept:
+    // fitted when a new scene is shown, not on a live edit of the same one (the picture would
+    // jump under a drag), then zoomed and panned by the user.
+    /// Fits the scene and its example ray's origin in the view (View > Fit the 2D view, F).
+    void fitView();
+    /// Zooms by `factor` about the widget point `about`, which stays over the same scene point.
+    void zoomAt(QPointF about, double factor);
+    /// Moves the picture by `delta` pixels.
+    void panBy(QPointF delta);
+    /// The zoom relative to the fitted view (1: fitted).
+    double zoom() const { return zoom_; }
+    /// The scene point under a widget point.
+    Vec2 worldOf(QPointF widgetPoint) const {
+        fit();
+        return toWorld(widgetPoint);
+    }
+    /// The live lab that takes this view's drags and edits (none: the view only shows).
+    void setLive(Live2D* live);
+    /// Snap a dragged point to the grid's cell corners and centres (the tie case); snap the
+    /// ray's direction to multiples of 15 degrees.
+    void setSnapToCorners(bool on) { snapCorners_ = on; }
+    void setSnapToAngle(bool on) { snapAngle_ = on; }
+    /// The primitive selected for editing (circles first, then segments), if any.
+    std::optional<std::uint32_t> selected() const { return selected_; }
+    void setSelected(std::optional<std::uint32_t> prim);
+    /// Where the ray's direction handle is drawn: the tip of the arrow o + k d (k = 1 unless the
+    /// arrow would be too short on screen to grab). Nullopt without an example ray.
+    std::optional<QPointF> tipHandle() const;
+
   public slots:
     /// The cells a student has clicked for a sequence exercise, numbered in order on the grid.
     void setSequence(const QList<QPoint>& cells);
@@ -74,10 +105,15 @@ class View2D : public QWidget {
   signals:
     /// A click on a grid cell (the lessons' "predict the next cell", "order the cells").
     void cellClicked(int x, int y);
+    /// The selection changed (the Delete action follows it).
+    void selectionChanged();
 
   protected:
     void paintEvent(QPaintEvent*) override;
     void mousePressEvent(QMouseEvent*) override;
+    void mouseMoveEvent(QMouseEvent*) override;
+    void mouseReleaseEvent(QMouseEvent*) override;
+    void wheelEvent(QWheelEvent*) override;
 
   private:
     QPointF toScreen(const Vec2& p) const;
@@ -86,7 +122,27 @@ class View2D : public QWidget {
     /// The colour roles of the picture (the palette's), top right.
     void drawLegend(QPainter& g, bool build) const;
     double legendWidth() const;
-    void fit() const;  // the scene-to-widget mapping for the current size
+    /// The scene-to-widget mapping for the current size: the kept view (fitted on a new scene,
+    /// then zoomed and panned), with room for the legend and the cost chart.
+    void fit() const;
+    /// The live lab's marks over the picture: the ray's handles, the selected primitive's.
+    void drawHandles(QPainter& g) const;
+    /// What a press at a widget point takes hold of.
+    enum class Grab { None, Origin, Tip, NewRay, Circle, Rim, SegmentA, SegmentB, Segment };
+    struct Target {
+        Grab grab = Grab::None;
+        std::uint32_t prim = 0;
+    };
+    Target targetAt(QPointF widgetPoint) const;
+    /// The tip handle's k: the arrow o + k d is at least about 40 pixels long.
+    double tipScale() const;
+    /// A dragged scene point after the snaps in force (cell corners and centres).
+    Vec2 snapPoint(Vec2 p) const;
+    /// One frame of a drag: the scene with the grabbed part where the mouse is.
+    void dragTo(QPointF widgetPoint);
+    void updateCursor(QPointF widgetPoint);
+    /// A scene was shown: refit unless it is a live edit or a rebuild of the one shown.
+    void sceneShown();
 
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
     /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
@@ -108,9 +164,29 @@ class View2D : public QWidget {
     std::vector<std::uint32_t> buildParent_;
     std::vector<std::pair<int, double>> splitOf_;  // per node: axis (-1: none) and position
     std::vector<std::size_t> splitAt_;             // per node: the event that chose its split
-    mutable BoxN<2> world_;                        // what is shown, in scene units
+    mutable BoxN<2> world_;                        // what is fitted, in scene units
     mutable double scale_ = 1.0;
     mutable QPointF offset_;
+    // The kept view: fitted box, zoom and pan; refitted when another scene is shown.
+    mutable bool needFit_ = true;
+    double zoom_ = 1.0;
+    QPointF pan_;
+    std::optional<Scene2D> shown_;  // the primitives and ray last shown (a new scene or an edit)
+    // Direct manipulation.
+    Live2D* live_ = nullptr;
+    bool snapCorners_ = false, snapAngle_ = false;
+    std::optional<std::uint32_t> selected_;
+    struct Drag {
+        Target target;
+        QPointF press;          // where the button went down
+        Vec2 grabOffset{0.0};   // the grabbed point minus the scene point under the press
+        double tipScale = 1.0;  // the tip handle's k at the press
+        Scene2D start;          // the scene at the press
+        bool moving = false;    // past the drag distance: not a click
+        bool pan = false;
+        QPointF last;  // a pan's previous point
+    };
+    std::optional<Drag> drag_;
 };
 
 }  // namespace raystep::gui
