@@ -23,6 +23,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cctype>
 
 namespace raystep::gui {
@@ -80,12 +81,10 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
             }
             return {};
         case Qt::TextAlignmentRole: {
-            // Numbers right-aligned, as a table of figures is read; words and lists left.
-            const std::string& c = board_.rows[index.row()].cells[index.column()];
-            const bool number = !c.empty() &&
-                                (std::isdigit(static_cast<unsigned char>(c[0])) || c[0] == '-') &&
-                                c.find_first_of(" ,(") == std::string::npos;
-            return int((number ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter);
+            // Columns of figures right-aligned, as a table of figures is read; a column of
+            // words or lists left, all of it ("8" under "0, 8" reads as a list too).
+            return int((numericColumn(index.column()) ? Qt::AlignRight : Qt::AlignLeft) |
+                       Qt::AlignVCenter);
         }
         default:
             return {};
@@ -98,8 +97,23 @@ QVariant BoardModel::headerData(int section, Qt::Orientation o, int role) const 
     return QString::fromStdString(board_.header[section]);
 }
 
+bool BoardModel::numericColumn(int c) const {
+    if (numeric_.size() != board_.header.size()) numeric_.assign(board_.header.size(), -1);
+    if (numeric_[c] < 0) {
+        const auto number = [](const std::string& v) {
+            return v.empty() ||
+                   ((std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-') &&
+                    v.find_first_of(" ,(") == std::string::npos);
+        };
+        numeric_[c] = std::all_of(board_.rows.begin(), board_.rows.end(),
+                                  [&](const BoardRow& r) { return number(r.cells[c]); });
+    }
+    return numeric_[c] > 0;
+}
+
 void BoardModel::setBoard(Board board) {
     if (board.header != board_.header || board.kind != board_.kind) {
+        numeric_.clear();
         beginResetModel();
         board_ = std::move(board);
         endResetModel();
@@ -108,6 +122,9 @@ void BoardModel::setBoard(Board board) {
     // The same columns: the replay stepped; rows come and go at the end, the last may change.
     const int before = rowCount({}), after = static_cast<int>(board.rows.size());
     const std::optional<std::size_t> oldCurrent = board_.current;
+    std::vector<bool> wasNumeric;
+    for (int c = 0; c < columnCount({}); ++c) wasNumeric.push_back(numericColumn(c));
+    numeric_.clear();  // rows come and go: a column's kind is looked at again
     if (after < before) {
         beginRemoveRows({}, after, before - 1);
         board_.rows.resize(after);
@@ -132,6 +149,9 @@ void BoardModel::setBoard(Board board) {
     board_.ray = board.ray;
     board_.dims = board.dims;
     const int columns = columnCount({});
+    for (int c = 0; c < columns; ++c)
+        if (numericColumn(c) != wasNumeric[c] && after > 0)  // the whole column realigns
+            emit dataChanged(index(0, c), index(after - 1, c), {Qt::TextAlignmentRole});
     if (firstChanged < kept && columns > 0)
         emit dataChanged(index(firstChanged, 0), index(kept - 1, columns - 1));
     // The highlight moved: both rows repaint.

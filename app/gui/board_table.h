@@ -30,7 +30,10 @@ class BoardModel : public QAbstractTableModel {
     const Board& board() const { return board_; }
 
   private:
+    /// Whether every cell of column `c` is a number (a figure column, right-aligned), cached.
+    bool numericColumn(int c) const;
     Board board_;
+    mutable std::vector<signed char> numeric_;  // per column: -1 not known yet, 0, 1
 };
 
 class BoardTable : public QWidget {

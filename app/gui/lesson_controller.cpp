@@ -272,9 +272,11 @@ void LessonController::showReplayText() {
 
 QString LessonController::replayDescription() const {
     if (!lesson_->hasLesson()) return {};
-    // The structure chooser's pick: the lesson's trace is about another structure.
+    // The structure chooser's pick, or a live edit: the lesson's trace is about another scene.
     if (lessonScene_ && session_.sceneRef() != lessonScene_)
-        return tr("the lesson's scene with another structure (%1)")
+        return (session_.kind() != lessonScene_->kind
+                    ? tr("the lesson's scene with another structure (%1)")
+                    : tr("the lesson's scene, changed live (%1)"))
             .arg(structureName(session_.kind()));
     if (session_.logRef() == lesson_->lessonLog()) return {};
     switch (session_.logKind()) {

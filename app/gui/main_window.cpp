@@ -456,6 +456,9 @@ void MainWindow::createRenderSettings() {
     sppBox_ = box(tr("&Samples per pixel"), "renderSpp", 1, 4096,
                   tr("Jittered samples per pixel: the last pass of the progressive render"));
     addToolBar(Qt::TopToolBarArea, renderBar_);
+    // A 2D scene has no image to render: its settings would only take the lecturer's room.
+    connect(&session_, &Session::sceneChanged, this,
+            [this] { renderBar_->setVisible(!session_.is2D()); });
 }
 
 void MainWindow::syncRenderSettings(const Scene& scene) {

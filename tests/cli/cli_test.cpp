@@ -647,7 +647,7 @@ TEST_F(Cli, DdaStreamsLongWalksInBoundedMemory) {
     const std::vector<std::string> walk = {"dda",       "--grid", "100000,100000", "--min",
                                            "0,0",       "--max",  "1,1",           "--origin",
                                            "5e-6,3e-6", "--dir",  "1,0.7"};
-    for (const std::string& how : {"--json", "", "--format=csv"}) {
+    for (const std::string how : {"--json", "", "--format=csv"}) {
         std::vector<std::string> args = walk;
         if (!how.empty()) args.push_back(how);
         const auto [code, peakKb] = runMeasured(args);

@@ -124,7 +124,9 @@ void expectBoardIsTheCliTable(const Board& b, const CliTable& cli) {
             EXPECT_EQ(column(b, std::string("tMax") + axes[k])[i], cli.rows[i].tMax[k]);
             EXPECT_EQ(column(b, std::string("tDelta") + axes[k])[i], cli.tDelta[k]);
         }
-        if (i + 1 < b.rows.size()) EXPECT_EQ(column(b, "stepped")[i + 1], cli.rows[i].next);
+        if (i + 1 < b.rows.size()) {
+            EXPECT_EQ(column(b, "stepped")[i + 1], cli.rows[i].next);
+        }
     }
 }
 
