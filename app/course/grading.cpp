@@ -46,7 +46,7 @@ void validateLesson(const Lesson& lesson) {
     addStepNotes(noted, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
     const bool is2D = std::holds_alternative<Scene2D>(*run.scene);
     for (const LessonView v : lesson.views)
-        if ((v == LessonView::View2D) != is2D)
+        if (v != LessonView::Board && (v == LessonView::View2D) != is2D)
             throw LessonError(lesson.file, 0, "views",
                               std::string(lessonViewName(v)) + " does not fit a " +
                                   (is2D ? "2D" : "3D") + " scene");

@@ -50,8 +50,10 @@ constexpr NameTable<Quantity, 17> kQuantities{{{Quantity::TMaxX, "tMax.x"},
                                                {Quantity::CandidatePL, "candidate.pL"},
                                                {Quantity::CandidatePR, "candidate.pR"},
                                                {Quantity::CandidateCost, "candidate.sahCost"}}};
-constexpr NameTable<LessonView, 3> kViews{
-    {{LessonView::View2D, "2d"}, {LessonView::View3D, "3d"}, {LessonView::Image, "image"}}};
+constexpr NameTable<LessonView, 4> kViews{{{LessonView::View2D, "2d"},
+                                           {LessonView::View3D, "3d"},
+                                           {LessonView::Image, "image"},
+                                           {LessonView::Board, "board"}}};
 
 std::optional<std::size_t> eventKindNamed(std::string_view name) {
     for (std::size_t i = 0; i < kEventNames.size(); ++i)
@@ -710,11 +712,11 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     readTrace(r, root["trace"], "trace", l.trace);
     ifPresent(root, "", "views", [&](const json& v, const std::string& p) {
         if (!v.is_array() || v.empty())
-            r.fail(p, "expected a list of views: \"2d\", \"3d\", \"image\"");
+            r.fail(p, "expected a list of views: \"2d\", \"3d\", \"image\", \"board\"");
         for (std::size_t i = 0; i < v.size(); ++i) {
             const std::string ep = JsonLineMap::element(p, i);
             const auto view = valueNamed(kViews, r.string(v[i], ep));
-            if (!view) r.fail(ep, "expected \"2d\", \"3d\" or \"image\"");
+            if (!view) r.fail(ep, "expected \"2d\", \"3d\", \"image\" or \"board\"");
             l.views.push_back(*view);
         }
     });

@@ -53,8 +53,9 @@ struct ReplayPosition {
     int nth = 1;                // ... its nth occurrence (1-based)
 };
 
-enum class LessonView { View2D, View3D, Image };
-std::string_view lessonViewName(LessonView v);  // "2d", "3d", "image"
+// Board: the board table dock (the slides' DDA table), beside a 2D or a 3D scene.
+enum class LessonView { View2D, View3D, Image, Board };
+std::string_view lessonViewName(LessonView v);  // "2d", "3d", "image", "board"
 
 /// The 3D view's camera for a step: degrees around the scene's centre, and a zoom factor.
 struct LessonCamera {

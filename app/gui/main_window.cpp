@@ -620,6 +620,10 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             session_.showLog(o.trace, LessonController::logKind(lesson));
             showViews(shows(LessonView::View2D), shows(LessonView::View3D),
                       shows(LessonView::Image));
+            // The board beside a 2D lesson, or where the lesson asks (the 3D DDA's table); the
+            // live controls beside a 2D one.
+            boardDock_->setVisible(session_.is2D() || shows(LessonView::Board));
+            liveDock_->setVisible(session_.is2D());
             lessons_->show(o.lesson, o.trace);
             // The pixel the lesson traces, marked on the image in the lesson's own image size.
             if (lesson.trace.kind == LessonTrace::Kind::Pixel)

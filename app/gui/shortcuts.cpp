@@ -106,8 +106,13 @@ QList<QKeySequence> keysOf(const Gesture& g) {
 
 QString keysText(const QList<QKeySequence>& keys) {
     QStringList out;
-    for (const QKeySequence& k : keys)
-        if (!k.isEmpty()) out << k.toString(QKeySequence::NativeText);
+    for (const QKeySequence& k : keys) {
+        if (k.isEmpty()) continue;
+        QString text = k.toString(QKeySequence::NativeText);
+        // Qt's Italian writes Home as an arrow (a Mac keyboard's): the key's word reads better.
+        text.replace(QChar(0x2196), translated(QT_TRANSLATE_NOOP("raystep", "Home")));
+        out << text;
+    }
     return out.join(QStringLiteral(", "));
 }
 

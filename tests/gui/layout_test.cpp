@@ -1,6 +1,7 @@
 // The window fits the screen it opens on (ctest runs this file on a 1366x768 laptop screen too),
 // remembers its size and docks, View > Reset layout puts the docks and panels back, the compare
 // window fits and remembers its size, and the SAH cost chart carries labelled axes.
+#include "gui_testing.h"
 #include "compare_window.h"
 #include "lesson_panel.h"
 #include "main_window.h"
@@ -30,17 +31,6 @@
 
 namespace raystep::gui {
 namespace {
-
-/// Processes events until `done` holds (false after `ms`): a wait on a condition, not a sleep.
-bool waitFor(const std::function<bool()>& done, int ms = 20000) {
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (clock.elapsed() > ms) return false;
-        QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
-    }
-    return true;
-}
 
 void forgetLayout() {
     QSettings settings;

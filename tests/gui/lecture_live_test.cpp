@@ -261,5 +261,51 @@ TEST(Lecture, LessonElevenTaughtLiveFromTheApp) {
     shot(w, "lecture11_cisect20");
 }
 
+TEST(Lecture, LessonSevenPutsTheThirdAxisOnTheBoard) {
+    MainWindow w;
+    w.resize(w.fitToScreen(QSize(1920, 1080)));
+    w.show();
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    w.openLesson("7", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    QTest::keyClick(&w, Qt::Key_L, Qt::ControlModifier);
+    // The lesson lists the board beside its 3D view and image; the live controls are 2D's.
+    BoardTable* board = w.boardTable();
+    ASSERT_TRUE(board);
+    EXPECT_TRUE(board->isVisible());
+    EXPECT_FALSE(w.liveControls()->isVisible());
+    // The first ray's walk: the cursor after its last DDA cell.
+    const Session& s = w.session();
+    std::size_t lastCell = 0;
+    std::vector<std::array<int, 3>> cells;
+    std::uint32_t ray = kNoId;
+    for (std::size_t i = 0; i < s.log().events().size(); ++i)
+        if (const auto* c = std::get_if<DdaCell>(&s.log().events()[i])) {
+            if (ray == kNoId) ray = c->ray;
+            if (c->ray != ray) break;
+            cells.push_back({c->cell[0], c->cell[1], c->cell[2]});
+            lastCell = i;
+        }
+    ASSERT_GT(cells.size(), 1u);
+    w.session().setCursor(lastCell + 1);
+    QApplication::processEvents();
+    const Board& b = board->board();
+    for (const char* name : {"Z", "tMaxZ", "tDeltaZ"})
+        EXPECT_NE(std::find(b.header.begin(), b.header.end(), name), b.header.end()) << name;
+    const auto x = column(b, "X"), y = column(b, "Y"), z = column(b, "Z");
+    ASSERT_EQ(z.size(), cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        EXPECT_EQ(std::stoi(x[i]), cells[i][0]) << i;
+        EXPECT_EQ(std::stoi(y[i]), cells[i][1]) << i;
+        EXPECT_EQ(std::stoi(z[i]), cells[i][2]) << i;
+    }
+    shot(w, "lecture7_board");
+    // Another lesson without the board beside its 3D scene: the board goes.
+    w.openLesson("9", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    EXPECT_FALSE(board->isVisible());
+}
+
 }  // namespace
 }  // namespace raystep::gui
