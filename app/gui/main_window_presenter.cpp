@@ -31,12 +31,12 @@ void MainWindow::createPresenter() {
     a.zoomOut = action(tr("Zoom &out"), "zoomOut", {QKeySequence(Qt::CTRL | Qt::Key_Minus)});
     a.resetZoom =
         action(tr("&Actual size (zoom 100%)"), "resetZoom", {QKeySequence(Qt::CTRL | Qt::Key_0)});
-    a.fullScreen = action(tr("&Full screen"), "fullScreen", {QKeySequence(Qt::Key_F11)});
+    a.fullScreen = action(tr("F&ull screen"), "fullScreen", {QKeySequence(Qt::Key_F11)});
     a.fullScreen->setCheckable(true);
     a.presenterMode =
         action(tr("&Presenter mode (thicker lines, larger labels)"), "presenterMode", {});
     a.presenterMode->setCheckable(true);
-    a.highContrast = action(tr("&High contrast palette"), "highContrast", {});
+    a.highContrast = action(tr("High con&trast palette"), "highContrast", {});
     a.highContrast->setCheckable(true);
     // ? as typed: with Shift on most keyboards. A text box keeps the key (it types a ?).
     a.shortcuts = action(tr("&Keyboard shortcuts"), "keyboardShortcuts",

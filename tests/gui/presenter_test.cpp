@@ -394,7 +394,7 @@ TEST_F(Presenter, ShortcutsDialogInItalian) {
     const auto gestures = rowsOf(d.gesturesTable());
     EXPECT_TRUE(std::any_of(gestures.begin(), gestures.end(), [](const auto& row) {
         return row.first == QStringLiteral("Rotellina") &&
-               row.second == QStringLiteral("Ingrandisci o riduci l'immagine");
+               row.second == QStringLiteral("Ingrandisce o riduce l'immagine");
     }));
     // The Home key by its Italian word, not Qt's arrow.
     EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [](const auto& row) {
