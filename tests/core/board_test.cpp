@@ -154,6 +154,21 @@ TEST(Board, ABuildListsItsNodes) {
               (Strings{"1", "1", "0", "1", "5", "0", "", "", "25", "leaf (sah_cheaper)"}));
     EXPECT_EQ(b.current, 1u);
     EXPECT_EQ(makeBoard(log, 4).current, 0u);  // the chosen split is node 0's
+    // In Italian every leaf's reason is in words (lesson 11 sends students to this column).
+    BoardOptions it;
+    it.lang = Language::It;
+    for (auto reason : {LeafReason::FewPrimitives, LeafReason::MaxDepth, LeafReason::SahCheaper,
+                        LeafReason::NoSplit, LeafReason::NoProgress}) {
+        EventLog leaf;
+        leaf(BuildNode{0, kNoId, 0, 2});
+        leaf(LeafMade{0, reason, 2, 0, 10.0});
+        const std::string outcome = makeBoard(leaf, 2, it).rows.at(0).cells.back();
+        EXPECT_EQ(outcome.rfind("foglia (", 0), 0u) << outcome;
+        EXPECT_EQ(outcome.find('_'), std::string::npos) << outcome;
+        if (reason == LeafReason::SahCheaper) {
+            EXPECT_EQ(outcome, "foglia (la foglia costa meno di ogni taglio)");
+        }
+    }
 }
 
 TEST(Board, ItalianWordsNumbersAsTheCliPrintsThem) {

@@ -11,6 +11,24 @@ namespace raystep {
 
 namespace {
 
+/// Why a node is a leaf, as the board's outcome: the reason's name in English (as in the trace
+/// file), its words in Italian (as the inspector's line has them).
+std::string leafOutcome(LeafReason reason, Language lang) {
+    switch (reason) {
+        case LeafReason::FewPrimitives:
+            return tr(lang, "leaf (few_primitives)");
+        case LeafReason::MaxDepth:
+            return tr(lang, "leaf (max_depth)");
+        case LeafReason::SahCheaper:
+            return tr(lang, "leaf (sah_cheaper)");
+        case LeafReason::NoSplit:
+            return tr(lang, "leaf (no_split)");
+        case LeafReason::NoProgress:
+            return tr(lang, "leaf (no_progress)");
+    }
+    return tr(lang, "leaf");
+}
+
 constexpr const char* kAxisNames = "XYZ";
 // A cell before any set-up (a log cut short): its tDelta unknown.
 constexpr double kNaNDelta = std::numeric_limits<double>::quiet_NaN();
@@ -224,10 +242,7 @@ Board buildBoard(const EventLog& log, std::size_t cursor, const BoardOptions& op
             cells[Outcome] = tr(lang, "split");
         } else if (const auto* l = std::get_if<LeafMade>(&e)) {
             cells[Leaf] = num(l->leafCost);
-            const auto reason = static_cast<std::size_t>(l->reason);
-            cells[Outcome] = trf(
-                lang, "leaf (%1)",
-                {reason < kLeafReasonNames.size() ? kLeafReasonNames[reason] : std::string_view()});
+            cells[Outcome] = leafOutcome(l->reason, lang);
         }
     }
     if (const auto at = rowOf.find(lastNode); at != rowOf.end()) board.current = at->second;
