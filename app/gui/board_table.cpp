@@ -101,9 +101,8 @@ bool BoardModel::numericColumn(int c) const {
     if (numeric_.size() != board_.header.size()) numeric_.assign(board_.header.size(), -1);
     if (numeric_[c] < 0) {
         const auto number = [](const std::string& v) {
-            return v.empty() ||
-                   ((std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-') &&
-                    v.find_first_of(" ,(") == std::string::npos);
+            return v.empty() || ((std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-') &&
+                                 v.find_first_of(" ,(") == std::string::npos);
         };
         numeric_[c] = std::all_of(board_.rows.begin(), board_.rows.end(),
                                   [&](const BoardRow& r) { return number(r.cells[c]); });

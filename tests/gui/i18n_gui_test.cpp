@@ -51,12 +51,11 @@ struct Shown {
 /// (Italian uses them), "mailboxing" (the slides' word), single letters (labels), and the
 /// board's symbols the inspector writes as the slides do (tMaxX, tDeltaX, stepX, t_enter, NL).
 bool sameInBothLanguages(const QString& text) {
-    static const std::set<QString> kWords = {"raystep", "pixel",   "SAH",   "DDA",   "BVH",
-                                             "File",    "tMaxX",   "tMaxY", "tMaxZ", "tDeltaX",
-                                             "tDeltaY", "tDeltaZ", "stepX", "stepY", "stepZ",
-                                             "t_enter", "t_exit",  "NL",    "NR",
-                                             // the board's formats, the SAH's cost symbols
-                                             "CSV", "Markdown", "LaTeX", "cTrav", "cIsect"};
+    static const std::set<QString> kWords = {
+        "raystep", "pixel", "SAH", "DDA", "BVH", "File", "tMaxX", "tMaxY", "tMaxZ", "tDeltaX",
+        "tDeltaY", "tDeltaZ", "stepX", "stepY", "stepZ", "t_enter", "t_exit", "NL", "NR",
+        // the board's formats, the SAH's cost symbols
+        "CSV", "Markdown", "LaTeX", "cTrav", "cIsect"};
     QString rest = text;
     rest.remove(QLatin1Char('&'));
     // Names of techniques Italian courses use as they are.

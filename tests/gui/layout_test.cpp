@@ -1,8 +1,8 @@
 // The window fits the screen it opens on (ctest runs this file on a 1366x768 laptop screen too),
 // remembers its size and docks, View > Reset layout puts the docks and panels back, the compare
 // window fits and remembers its size, and the SAH cost chart carries labelled axes.
-#include "gui_testing.h"
 #include "compare_window.h"
+#include "gui_testing.h"
 #include "lesson_panel.h"
 #include "main_window.h"
 #include "timeline.h"
