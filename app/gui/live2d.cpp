@@ -27,25 +27,6 @@ bool sameShapes(const Scene2D& a, const Scene2D& b) {
 }
 
 namespace {
-/// Where a replay's cursor is, as "after the n-th event of its kind" (Session::relive's rule).
-using Step = Live2D::Step;
-Step stepOf(const Session& s) {
-    Step at;
-    if (s.cursor() == 0) return at;
-    const auto& events = s.log().events();
-    at.kind = events[s.cursor() - 1].index();
-    for (std::size_t i = 0; i < s.cursor(); ++i) at.nth += events[i].index() == *at.kind;
-    return at;
-}
-void seek(Session& s, const Step& at) {
-    if (!at.kind) return s.setCursor(0);
-    const auto& events = s.log().events();
-    std::size_t seen = 0;
-    for (std::size_t i = 0; i < events.size(); ++i)
-        if (events[i].index() == *at.kind && ++seen == at.nth) return s.setCursor(i + 1);
-    s.setCursor(events.size());
-}
-
 /// One edit on the history: the scene before and after it.
 class SceneEdit : public QUndoCommand {
   public:
@@ -103,7 +84,7 @@ bool Live2D::show(const Scene2D& scene) {
     changing_ = false;
     // A drag's frames all keep the step the replay was at when it began: a frame whose walk is
     // shorter must not move the cursor for the frames after it.
-    if (before_) seek(session_, gestureStep_);
+    if (before_) session_.seekStep(gestureStep_);
     return true;
 }
 
@@ -111,7 +92,7 @@ void Live2D::begin(const QString& what) {
     if (const Scene2D* s = scene()) {
         before_ = *s;
         gestureText_ = what;
-        gestureStep_ = stepOf(session_);
+        gestureStep_ = session_.step();
     }
 }
 

@@ -24,12 +24,6 @@ class Live2D : public QObject {
     using ShowFn = std::function<void(SceneRef)>;
     Live2D(Session& session, ShowFn show, QObject* parent = nullptr);
 
-    /// A replay's step: after the n-th event of a kind (none: at the start).
-    struct Step {
-        std::optional<std::size_t> kind;
-        std::size_t nth = 0;
-    };
-
     QUndoStack* undoStack() { return &undo_; }
     /// The shown 2D scene (what an edit starts from), or null in 3D.
     const Scene2D* scene() const { return session_.scene2D(); }
@@ -65,7 +59,7 @@ class Live2D : public QObject {
     bool changing_ = false;
     std::optional<Scene2D> before_;  // the scene at the start of a gesture
     QString gestureText_;
-    Step gestureStep_;             // the replay's step when the gesture began
+    Session::Step gestureStep_;    // the replay's step when the gesture began
     std::optional<Scene2D> last_;  // the scene this object last showed
 };
 

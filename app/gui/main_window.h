@@ -196,6 +196,9 @@ class MainWindow : public QMainWindow {
     void createBoard();
     /// Presenter mode and Help > Keyboard shortcuts (main_window_presenter.cpp).
     void createPresenter();
+    /// A 2D structure built by `build` on this thread and shown live; the status bar and
+    /// structureChanged say how it ended (a failed build leaves the scene and the controls).
+    void showLiveBuild(const std::function<SceneRef()>& build);
     /// The structure chooser (a tool bar) and the status bar's structure (main_window_models.cpp).
     void createStructureControls();
     /// The chooser and the status bar say what the session's scene uses.

@@ -7,7 +7,6 @@
 #include <QDockWidget>
 #include <QMenu>
 #include <QScrollArea>
-#include <QStatusBar>
 
 #include <algorithm>
 
@@ -60,16 +59,7 @@ void MainWindow::applyLive(AccelKind kind, const AccelOptions& options) {
         // so the scene is shown without it.
         Scene2D copy = *s2;
         copy.gridRes.reset();
-        try {
-            showLive(Session::prepare(std::move(copy), kind, options));
-        } catch (const std::exception& e) {
-            const QString why = QString::fromStdString(e.what());
-            statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
-            emit structureChanged(false, why);
-            return;
-        }
-        statusBar()->showMessage(structureStatus());
-        emit structureChanged(true, {});
+        showLiveBuild([&] { return Session::prepare(std::move(copy), kind, options); });
         return;
     }
     applyStructure(kind, options);

@@ -125,17 +125,7 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
     }
     if (session_.is2D()) {
         // A 2D scene is small: rebuilt at once, so a live control answers as it is moved.
-        try {
-            showLive(Session::rebuild(session_.sceneRef(), kind, options));
-        } catch (const std::exception& e) {
-            const QString why = QString::fromStdString(e.what());
-            statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
-            syncStructureControls();
-            emit structureChanged(false, why);
-            return;
-        }
-        statusBar()->showMessage(structureStatus());
-        emit structureChanged(true, {});
+        showLiveBuild([&] { return Session::rebuild(session_.sceneRef(), kind, options); });
         return;
     }
     const std::uint64_t generation = generation_;
@@ -169,6 +159,20 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
             statusBar()->showMessage(structureStatus());
             emit structureChanged(true, {});
         });
+}
+
+void MainWindow::showLiveBuild(const std::function<SceneRef()>& build) {
+    try {
+        showLive(build());
+    } catch (const std::exception& e) {
+        const QString why = QString::fromStdString(e.what());
+        statusBar()->showMessage(tr("The structure was not built: %1").arg(why));
+        syncStructureControls();
+        emit structureChanged(false, why);
+        return;
+    }
+    statusBar()->showMessage(structureStatus());
+    emit structureChanged(true, {});
 }
 
 QString MainWindow::saveModelScene(const QString& path) {

@@ -123,14 +123,7 @@ void Session::showLog(LogRef log, LogKind kind) {
 }
 
 void Session::relive(SceneRef scene) {
-    // Where the cursor was, as "the n-th event of its kind" (a DDA step, a node, a candidate).
-    std::optional<std::size_t> kindAt;
-    std::size_t nth = 0;
-    if (cursor_ > 0) {
-        const auto& events = log_->events();
-        kindAt = events[cursor_ - 1].index();
-        for (std::size_t i = 0; i < cursor_; ++i) nth += events[i].index() == *kindAt;
-    }
+    const Step at = step();
     bool build = logKind_ == LogKind::Build;
     if (logKind_ == LogKind::Lesson)
         for (const Event& e : log_->events())
@@ -143,15 +136,25 @@ void Session::relive(SceneRef scene) {
         recordBuild();
     else if (is2D())
         traceExampleRay();
-    if (!kindAt) return;
+    seekStep(at);
+}
+
+Session::Step Session::step() const {
+    Step at;
+    if (cursor_ == 0) return at;
     const auto& events = log_->events();
-    std::size_t at = events.size(), seen = 0;
+    at.kind = events[cursor_ - 1].index();
+    for (std::size_t i = 0; i < cursor_; ++i) at.nth += events[i].index() == *at.kind;
+    return at;
+}
+
+void Session::seekStep(const Step& at) {
+    if (!at.kind) return setCursor(0);
+    const auto& events = log_->events();
+    std::size_t seen = 0;
     for (std::size_t i = 0; i < events.size(); ++i)
-        if (events[i].index() == *kindAt && ++seen == nth) {
-            at = i + 1;
-            break;
-        }
-    setCursor(at);
+        if (events[i].index() == *at.kind && ++seen == at.nth) return setCursor(i + 1);
+    setCursor(events.size());
 }
 
 void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {

@@ -82,6 +82,16 @@ class Session : public QObject {
     /// the scene's example ray. The cursor stays at the same step: after as many events of the
     /// kind just replayed as before (the end if the new log has fewer).
     void relive(SceneRef scene);
+    /// A replay's step, as a log of the same kind has it again: after the n-th event of a kind
+    /// (none: at the start).
+    struct Step {
+        std::optional<std::size_t> kind;
+        std::size_t nth = 0;
+    };
+    /// Where the cursor is, as a step.
+    Step step() const;
+    /// The cursor after the step's event in the log replayed now (its end if the log has fewer).
+    void seekStep(const Step& at);
 
     const SceneRef& sceneRef() const { return scene_; }
     const std::variant<Scene, Scene2D>& sceneVariant() const { return scene_->scene; }
