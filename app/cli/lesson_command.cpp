@@ -51,7 +51,7 @@ void addLessonCommand(CLI::App& app, LessonArgs& a) {
         "sweep", "Run a lesson's grid sweep: the same rays at each grid resolution, as a table");
     a.sweep->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
     a.sweep->add_flag("--json", a.json, "Print the rows as JSON");
-    for (CLI::App* c : {a.show, a.check})
+    for (CLI::App* c : {a.show, a.check, a.key})
         c->add_option("--lang", a.lang, "Language of the texts: en or it")->capture_default_str();
 }
 
@@ -99,12 +99,13 @@ int show(Lesson l, Language lang) {
     return 0;
 }
 
-int key(const Lesson& l) {
+/// The answer key; in Italian the numbers with a decimal comma, as a student there types them.
+int key(const Lesson& l, Language lang) {
     const LessonRun run = runLesson(l);
     const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
     nlohmann::ordered_json answers = nlohmann::ordered_json::object();
     for (const Exercise& ex : l.exercises)
-        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file, &sweep));
+        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file, &sweep), lang);
     const nlohmann::ordered_json out = {{"lesson", l.id}, {"answers", answers}};
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
@@ -228,7 +229,7 @@ int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
                 a.lesson.c_str(), l.number, l.id.c_str(), l.steps.size(), l.exercises.size());
             return 0;
         }
-        if (a.key->parsed()) return key(l);
+        if (a.key->parsed()) return key(l, *lang);
         if (a.sweep->parsed()) return sweep(l, a.json);
         return check(l, a, *lang);
     } catch (const FileError& e) {

@@ -2,6 +2,7 @@
 // student's answers file read and graded against the lesson's trace.
 #include "course/grading.h"
 
+#include "course/answer_leaks.h"
 #include "course/compute.h"
 #include "course/exercise.h"
 #include "course/lesson_trace.h"
@@ -51,7 +52,7 @@ void validateLesson(const Lesson& lesson) {
                               std::string(lessonViewName(v)) + " does not fit a " +
                                   (is2D ? "2D" : "3D") + " scene");
     // Last, so a lesson that fails only here has passed every other check.
-    checkNoAnswerGivenAway(lesson, *run.log);
+    checkNoAnswerGivenAway(noted, *run.log, run.scene.get(), &sweep);
 }
 
 std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run) {
@@ -80,35 +81,40 @@ void checkComputePrompts(const Lesson& lesson) {
 }
 
 namespace {
-/// The ways a number can be written where a student reads it.
-std::vector<std::string> writtenForms(double v) {
-    std::vector<std::string> forms;
-    for (const Language lang : {Language::En, Language::It}) {
-        forms.push_back(formatNumber(v, lang));
-        for (int digits = 2; digits <= 4; ++digits) forms.push_back(formatNumber(v, lang, digits));
-    }
-    return forms;
-}
+/// A text a student may read while an exercise is open: where it is, and whether it is the
+/// exercise's own prompt (which may ask what it names, and state a compute's given numbers).
+struct Shown {
+    std::string place;
+    LocalText text;
+    bool ownPrompt = false;
+    TextRole role = TextRole::Prose;  // how the text names primitives (course/answer_leaks.h)
+};
 
-/// Whether `text` writes the number `form` as a number of its own (not inside a longer one).
-bool writes(std::string_view text, const std::string& form) {
-    const auto digitLike = [](char c) { return (c >= '0' && c <= '9'); };
-    for (std::size_t at = text.find(form); at != std::string_view::npos;
-         at = text.find(form, at + 1)) {
-        const std::size_t end = at + form.size();
-        const bool before = at > 0 && (digitLike(text[at - 1]) || text[at - 1] == '.' ||
-                                       (text[at - 1] == ',' && at > 1 && digitLike(text[at - 2])));
-        const bool after =
-            end < text.size() &&
-            (digitLike(text[end]) || ((text[end] == '.' || text[end] == ',') &&
-                                      end + 1 < text.size() && digitLike(text[end + 1])));
-        if (!before && !after) return true;
+void addErrata(std::vector<Shown>& out, const std::string& at, const std::vector<Erratum>& errata) {
+    for (std::size_t k = 0; k < errata.size(); ++k) {
+        const std::string e = at + "errata[" + std::to_string(k) + "].";
+        out.push_back({e + "slide", errata[k].slide});
+        out.push_back({e + "correct", errata[k].correct});
+        out.push_back({e + "why", errata[k].why});
     }
-    return false;
 }
 }  // namespace
 
-void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log) {
+void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log, const LessonScene* scene,
+                            const std::vector<GridSweepRow>* sweep) {
+    const bool swept = sweep && !sweep->empty();
+    // The explanation of each exercise, shown once it is answered (or after three tries): a
+    // student reads it before the exercises after it.
+    std::vector<LocalText> explanations(lesson.exercises.size());
+    for (std::size_t j = 0; j < lesson.exercises.size(); ++j) {
+        const Exercise& ex = lesson.exercises[j];
+        if (ex.kind == ExerciseKind::SweepPick && !swept) continue;
+        if (!resolvePosition(ex.at, log)) continue;  // validateLesson names it
+        explanations[j].en =
+            checkAnswer(ex, log, Answer{}, Language::En, lesson.file, sweep, scene).feedback;
+        explanations[j].it =
+            checkAnswer(ex, log, Answer{}, Language::It, lesson.file, sweep, scene).feedback;
+    }
     for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
         const Exercise& ex = lesson.exercises[i];
         const std::string key = "exercises[" + std::to_string(i) + "]";
@@ -118,37 +124,60 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log) {
             throw LessonError(lesson.file, ex.line, key + ".at",
                               "the answer's event comes before the exercise's position, so it is "
                               "on screen while the exercise is open");
-        if (ex.kind != ExerciseKind::Value && ex.kind != ExerciseKind::Compute) continue;
-        const double answer = referenceAnswer(ex, log, lesson.file).numbers.at(0);
-        if (answer == std::floor(answer) && std::abs(answer) <= 1.0) continue;
-        // Where a student reads before answering: (place, text).
-        std::vector<std::pair<std::string, const LocalText*>> texts{{"text", &lesson.text}};
-        for (std::size_t k = 0; k < lesson.errata.size(); ++k) {
-            texts.push_back(
-                {"errata[" + std::to_string(k) + "].correct", &lesson.errata[k].correct});
-            texts.push_back({"errata[" + std::to_string(k) + "].why", &lesson.errata[k].why});
+        if (ex.kind == ExerciseKind::SweepPick && !swept) continue;
+        const AnswerForms forms = answerForms(ex, log, lesson.file, scene, sweep);
+        // Where a student reads before answering: the lesson's text and errata, the steps the
+        // replay may show while the exercise holds it (all of them for an exercise that does not
+        // hold it), every exercise's prompt, hints and options, the explanations of those before.
+        std::vector<Shown> shown{{"text", lesson.text}};
+        addErrata(shown, "", lesson.errata);
+        const auto limit = quizLimit(ex, log);
+        for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+            const LessonStep& s = lesson.steps[k];
+            const auto stepAt = resolvePosition(s.at, log);
+            if (limit && (!stepAt || *stepAt > *limit)) continue;
+            const std::string sk = "steps[" + std::to_string(k) + "]";
+            shown.push_back({sk + ".text", s.text});
+            if (!s.note.en.empty()) shown.push_back({sk + ".note", s.note});
+            addErrata(shown, sk + ".", s.errata);
         }
-        // Every step: a student pages through them while the exercise is open.
-        for (std::size_t k = 0; k < lesson.steps.size(); ++k)
-            texts.push_back({"steps[" + std::to_string(k) + "].text", &lesson.steps[k].text});
-        texts.push_back({key + ".prompt", &ex.prompt});
-        for (std::size_t k = 0; k < ex.hints.size(); ++k)
-            texts.push_back({key + ".hint[" + std::to_string(k) + "]", &ex.hints[k]});
-        const auto forms = writtenForms(answer);
+        for (std::size_t j = 0; j < lesson.exercises.size(); ++j) {
+            const Exercise& other = lesson.exercises[j];
+            const std::string ok = "exercises[" + std::to_string(j) + "]";
+            const TextRole role =
+                other.kind == ExerciseKind::Compute ? TextRole::GivenData : TextRole::Exercise;
+            shown.push_back({ok + ".prompt", other.prompt, j == i, role});
+            for (std::size_t k = 0; k < other.hints.size(); ++k)
+                shown.push_back(
+                    {ok + ".hint[" + std::to_string(k) + "]", other.hints[k], false, role});
+            for (std::size_t k = 0; k < other.choices.size(); ++k) {
+                const std::string ck = ok + ".choices[" + std::to_string(k) + "]";
+                shown.push_back({ck + ".text", other.choices[k].text, false, role});
+                shown.push_back({ck + ".why", other.choices[k].why, false, role});
+            }
+            if (j < i && !explanations[j].en.empty())
+                shown.push_back({ok + "'s explanation", explanations[j]});
+        }
         // A compute exercise's own data may equal its answer; the prompt must state them.
-        const bool givenEqualsAnswer = ex.kind == ExerciseKind::Compute &&
-                                       std::any_of(ex.given.numbers.begin(), ex.given.numbers.end(),
-                                                   [&](double g) { return g == answer; });
-        for (const auto& [place, text] : texts) {
-            if (givenEqualsAnswer && place == key + ".prompt") continue;
-            for (const Language lang : {Language::En, Language::It})
-                for (const std::string& form : forms)
-                    if (writes(text->in(lang), form))
-                        throw LessonError(lesson.file, ex.line, key,
-                                          "its answer " + formatNumber(answer) + " is written in " +
-                                              place + "." + std::string(languageCode(lang)) +
-                                              " as \"" + form +
-                                              "\", which the student reads before answering");
+        const bool givenEqualsAnswer =
+            ex.kind == ExerciseKind::Compute &&
+            std::any_of(ex.given.numbers.begin(), ex.given.numbers.end(),
+                        [&](double g) { return !forms.numbers.empty() && g == forms.numbers[0]; });
+        for (const Shown& s : shown) {
+            if (givenEqualsAnswer && s.ownPrompt) continue;
+            for (const Language lang : {Language::En, Language::It}) {
+                // An Italian text left out shows the English, checked already.
+                if (lang == Language::It && s.text.it.empty()) continue;
+                const auto found = findAnswer(forms, s.text.in(lang), s.role);
+                if (!found) continue;
+                const bool explanation = s.place.find("explanation") != std::string::npos;
+                throw LessonError(lesson.file, ex.line, key,
+                                  "its answer " + forms.describe + " is written in " + s.place +
+                                      (explanation ? " (" + std::string(languageCode(lang)) + ")"
+                                                   : "." + std::string(languageCode(lang))) +
+                                      " as \"" + printable(*found, 120) +
+                                      "\", which the student reads before answering");
+            }
         }
     }
 }

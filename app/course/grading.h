@@ -1,6 +1,7 @@
 #pragma once
 // Grading a course: a lesson checked whole (`raystep-cli lesson validate`), and a student's
 // answers file graded against the lesson's trace.
+#include "course/exercise.h"
 #include "course/grid_sweep.h"
 #include "course/lesson.h"
 #include "course/lesson_trace.h"
@@ -24,13 +25,17 @@ void validateLesson(const Lesson& lesson);
 std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run);
 
 /// Quiz mode's checks (also in validateLesson): each exercise's answer lies after its own position
-/// (the replay stops there while it is open), and no number of a value or compute answer (as
-/// formatNumber writes it in either language, or rounded to 2 to 4 significant digits) is written
-/// in the lesson's text, its errata, any step (a student pages through them while the exercise
-/// is open), its prompt or its hints.
-/// Throws LessonError naming the exercise and where its answer shows. Whole answers 0 and 1 are
-/// exempt: they are in every formula.
-void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log);
+/// (the replay stops there while it is open), and no text a student reads before answering gives
+/// the answer (course/answer_leaks.h: its number as a text prints it, its cell or cells in order,
+/// its node order, its test's outcome named with the primitive, its plane, its resolution). The
+/// texts: the lesson's text and errata, the steps at or before the exercise's position with their
+/// notes and errata (every step for an exercise the replay does not wait for), every exercise's
+/// prompt, hints and options, and the explanations of the exercises before it. Throws LessonError
+/// naming the exercise and where its answer shows. Whole answers 0 and 1 are exempt: they are in
+/// every formula. `scene` names a tested primitive's kind; `sweep`, a sweep_pick's rows.
+void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log,
+                            const LessonScene* scene = nullptr,
+                            const std::vector<GridSweepRow>* sweep = nullptr);
 
 /// A compute exercise's prompt must state its data: every given number is written in the prompt,
 /// in both languages. Throws LessonError naming the exercise and the missing number.

@@ -674,11 +674,11 @@ TEST(Quiz, TheReplayLimitIsTheExercisesPosition) {
 }
 
 TEST(Quiz, AnAnswerWrittenInTheLessonIsFound) {
-    // tDelta.y = 1 / 0.4 = 2.5: a step that writes "2.5" gives it.
+    // tDelta.y = 1 / 0.4 = 2.5: a step shown with the exercise that writes "2.5" gives it.
     const auto lesson = [](const std::string& stepText, const std::string& hint) {
         return loadLessonText(
             lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"" + stepText +
-                       "\"}, \"at\": \"end\"}],\n\"exercises\": [{\"id\": \"d\", \"type\": "
+                       "\"}, \"at\": \"start\"}],\n\"exercises\": [{\"id\": \"d\", \"type\": "
                        "\"value\", \"quantity\": \"tDelta.y\",\n \"prompt\": {\"en\": \"?\"}, "
                        "\"hint\": {\"en\": \"" +
                        hint + "\", \"it\": \"" + hint + "\"}}]"),
