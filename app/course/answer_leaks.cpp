@@ -339,14 +339,19 @@ std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     for (std::uint32_t p = 0; p < scene.primitiveCount(); ++p)
         if (p != prim && scene.materialOf(p).name == name) return {};
     std::vector<std::string> names{lowerAscii(name)};
-    static const std::pair<std::string_view, std::initializer_list<std::string_view>> kItalian[] = {
+    struct Italian {
+        const char* en;
+        std::array<const char*, 3> it;  // padded with nullptr
+    };
+    static constexpr Italian kItalian[] = {
         {"mirror", {"specchio"}},        {"glass", {"vetro"}},
         {"red", {"rossa", "rosso"}},     {"green", {"verde"}},
         {"white", {"bianca", "bianco"}}, {"gold", {"oro", "dorata", "dorato"}},
         {"floor", {"pavimento"}}};
-    for (const auto& [en, it] : kItalian)
-        if (names[0] == en)
-            for (const std::string_view w : it) names.emplace_back(w);
+    for (const Italian& m : kItalian)
+        if (names[0] == m.en)
+            for (const char* w : m.it)
+                if (w) names.emplace_back(w);
     return names;
 }
 
@@ -424,10 +429,10 @@ AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::stri
 }
 
 std::optional<std::string> findAnswer(const AnswerForms& f, std::string_view text, TextRole role) {
-    // Numbers, in both readings of the decimal comma.
-    for (const double answer : f.numbers)
-        for (const auto& tokens : bothReadings(text))
-            for (const Token& t : tokens)
+    // Numbers, with either decimal mark ("3,25" is a decimal, not two numbers, in any text).
+    if (!f.numbers.empty())
+        for (const Token& t : numberTokens(text, true))
+            for (const double answer : f.numbers)
                 if (gives(t, answer, f.tolerance)) return excerpt(text, t.begin, t.end);
     // A cell, or a walk's cells in order (others may stand between them).
     if (!f.cells.empty()) {
@@ -467,20 +472,19 @@ std::optional<std::string> findAnswer(const AnswerForms& f, std::string_view tex
         }
     // A split plane: "y = 2.96", "y=2,96".
     if (f.plane)
-        for (const auto& tokens : bothReadings(text))
-            for (const Token& t : tokens) {
-                std::size_t at = skipBlanksBack(text, t.begin);
-                if (at == 0 || text[at - 1] != '=') continue;
-                at = skipBlanksBack(text, at - 1);
-                if (at == 0 || text[at - 1] != "xyz"[f.plane->axis] ||
-                    (at > 1 && isLetter(text[at - 2])))
-                    continue;
-                const bool same =
-                    sameNumber(t.value, f.plane->position) ||
-                    (t.significant >= 3 && std::abs(t.value - f.plane->position) <=
-                                               0.5 * std::pow(10.0, -t.decimals) * (1.0 + 1e-9));
-                if (same) return excerpt(text, at - 1, t.end);
-            }
+        for (const Token& t : numberTokens(text, true)) {
+            std::size_t at = skipBlanksBack(text, t.begin);
+            if (at == 0 || text[at - 1] != '=') continue;
+            at = skipBlanksBack(text, at - 1);
+            if (at == 0 || text[at - 1] != "xyz"[f.plane->axis] ||
+                (at > 1 && isLetter(text[at - 2])))
+                continue;
+            const bool same =
+                sameNumber(t.value, f.plane->position) ||
+                (t.significant >= 3 && std::abs(t.value - f.plane->position) <=
+                                           0.5 * std::pow(10.0, -t.decimals) * (1.0 + 1e-9));
+            if (same) return excerpt(text, at - 1, t.end);
+        }
     // A sweep's resolution: "8 x 8 x 8", "8 cells per axis", "8 celle per asse".
     if (f.resolution) {
         const std::vector<Token> tokens = numberTokens(text, false);

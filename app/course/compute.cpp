@@ -238,13 +238,20 @@ std::string computeWorking(const Exercise& ex, Language lang) {
                    ") / " + n(q("n.dir")) + " = " + n(q("t")) + ".";
         }
         case Shape::Box: {
-            std::string s = tr(lang, "Per axis, the slab's times (min − o) / d and (max − o) / d:");
+            // t_enter's working gives the entries only: the exits would answer t_exit.
+            const bool enter = what == "t_enter";
+            std::string s =
+                enter ? tr(lang,
+                           "Per axis, the slab's entry time, the smaller of (min − o) / d and "
+                           "(max − o) / d:")
+                      : tr(lang, "Per axis, the slab's times (min − o) / d and (max − o) / d:");
             for (int i = 0; i < 3; ++i) {
                 if (g.d[i] == 0.0) continue;
                 double t0 = (g.lo[i] - g.o[i]) / g.d[i], t1 = (g.hi[i] - g.o[i]) / g.d[i];
                 if (t0 > t1) std::swap(t0, t1);
-                s += std::string(" ") + axisLetter(i) + " [" + n(t0) +
-                     (lang == Language::It ? "; " : ", ") + n(t1) + "]";
+                s += std::string(" ") + axisLetter(i) + " " +
+                     (enter ? n(t0)
+                            : "[" + n(t0) + (lang == Language::It ? "; " : ", ") + n(t1) + "]");
             }
             return s + "; " +
                    (what == "t_enter"

@@ -237,10 +237,12 @@ Reference reference(const Context& c, Language lang) {
                                 "The nearest intersection of the ray is with primitive %1, at t = "
                                 "%2.",
                                 {std::to_string(e->second.prim), n(v)})
+                          // Only the coordinate asked: the other may be the next exercise's.
                           : trf(lang,
-                                "On primitive %1 the intersection has barycentric coordinates u = "
-                                "%2, v = %3 (the point is (1 − u − v) a + u b + v c).",
-                                {std::to_string(e->second.prim), n(e->second.u), n(e->second.v)});
+                                "On primitive %1 the intersection has the barycentric coordinate "
+                                "%2 = %3 (the point is (1 − u − v) a + u b + v c).",
+                                {std::to_string(e->second.prim), q == Quantity::HitU ? "u" : "v",
+                                 n(v)});
             } else if (q == Quantity::TestT) {
                 std::optional<std::pair<std::size_t, PrimitiveTest>> hit;
                 for (std::size_t i = c.at; i < log.events().size() && !hit; ++i)
