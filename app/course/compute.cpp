@@ -337,6 +337,17 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
                 return trf(lang, "%1 is B² − 4AC with C = |o − c|², without − R².", {n(given)});
             if (what == "discriminant" && close(given, b * b - a * q("c")))
                 return trf(lang, "%1 is B² − AC: the discriminant is B² − 4AC.", {n(given)});
+            // The half-b form (b = B/2: t = (-b -+ sqrt(b^2 - AC)) / A) mixed with the textbook's.
+            if (what == "b" && b != 0.0 && close(given, b / 2))
+                return trf(lang,
+                           "%1 is d·(o − c), the half-b form's b = B/2: the textbook quadratic's B "
+                           "is 2 d·(o − c) = %2.",
+                           {n(given), n(right)});
+            if (what == "discriminant" && right != 0.0 && close(given, right / 4))
+                return trf(lang,
+                           "%1 is b² − AC with b = B/2, the half-b form's discriminant: a quarter "
+                           "of B² − 4AC = %2.",
+                           {n(given), n(right)});
             if (what == "t0" || what == "t1" || what == "t") {
                 const double t0 = q("t0"), t1 = q("t1");
                 const double other = close(right, t0) ? t1 : t0;
@@ -347,12 +358,30 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
                                "front of the origin.",
                                {n(given), n(t0), n(t1)});
                 const double sq = std::sqrt(std::max(0.0, q("discriminant")));
-                for (const double unhalved : {-b - sq, -b + sq})
+                for (const double unhalved : {-b - sq, -b + sq}) {
                     if (close(given, unhalved))
                         return trf(lang,
                                    "%1 is −B ∓ √Δ without the division by 2A (the slide leaves out "
                                    "/2A): divide by 2A = %2.",
                                    {n(given), n(2 * a)});
+                    // Half the division: by 2 or by A alone (the same when A = 2).
+                    if (close(given, unhalved / 2))
+                        return trf(lang,
+                                   "%1 is (−B ∓ √Δ) / 2: divided by 2 but not by A = %2 (d is not "
+                                   "a unit vector): t = (−B ∓ √Δ) / 2A = %3.",
+                                   {n(given), n(a), n(right)});
+                    if (close(given, unhalved / a))
+                        return trf(lang,
+                                   "%1 is (−B ∓ √Δ) / A: divided by A but not by 2: t = (−B ∓ √Δ) "
+                                   "/ 2A = %2.",
+                                   {n(given), n(right)});
+                    if (close(given, unhalved / (4 * a)))
+                        return trf(lang,
+                                   "%1 is half the root: with the half-b form (b = B/2 = %2) the "
+                                   "root is (−b ∓ √(b² − AC)) / A, divided by A alone; dividing by "
+                                   "2A halves it.",
+                                   {n(given), n(b / 2)});
+                }
             }
             break;
         }

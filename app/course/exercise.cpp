@@ -429,6 +429,125 @@ Reference reference(const Context& c, Language lang) {
     return ref;
 }
 
+/// The near and far roots of ray `ray` against primitive `prim` when it is a circle or a sphere
+/// of the scene (a = d.d, b = (o - c).d, c' = |o - c|^2 - r^2, t = (-b -+ sqrt(b^2 - a c')) / a).
+std::optional<std::pair<double, double>> roundRoots(const Context& c, std::uint32_t ray,
+                                                    std::uint32_t prim) {
+    if (!c.scene || ray >= c.log.rays().size()) return std::nullopt;
+    const RayRecord& r = c.log.rays()[ray];
+    Vec3 center{0.0};
+    double radius = 0.0;
+    if (const auto* s2 = std::get_if<Scene2D>(c.scene); s2 && s2->isCircle(prim)) {
+        center = Vec3(s2->circles[prim].center.x, s2->circles[prim].center.y, 0.0);
+        radius = s2->circles[prim].radius;
+    } else if (const auto* s3 = std::get_if<Scene>(c.scene); s3 && s3->isSphere(prim)) {
+        center = s3->spheres[prim].center;
+        radius = s3->spheres[prim].radius;
+    } else {
+        return std::nullopt;
+    }
+    const Vec3 oc = r.origin - center;
+    const double a = glm::dot(r.dir, r.dir), b = glm::dot(oc, r.dir);
+    const double disc = b * b - a * (glm::dot(oc, oc) - radius * radius);
+    if (!(a > 0.0) || disc < 0.0) return std::nullopt;
+    return std::pair{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
+}
+
+/// The slip a wrong t of a hit betrays: the far root of a circle or sphere (with the scene), or
+/// the root halved or doubled by a missing or extra division.
+std::string rootSlip(const Context& c, double given, double right, std::uint32_t ray,
+                     std::uint32_t prim, Language lang) {
+    const auto n = [&](double v) { return formatNumber(v, lang); };
+    const auto near = [&](double v) { return close(given, v, c.ex.tolerance); };
+    if (const auto roots = roundRoots(c, ray, prim);
+        roots && !near(right) && near(roots->second) && roots->second != right) {
+        if (std::holds_alternative<Scene2D>(*c.scene))
+            return trf(lang,
+                       "%1 is the far root, where the ray leaves the circle: the intersection is "
+                       "the near one, t = %2.",
+                       {n(given), n(right)});
+        return trf(lang,
+                   "%1 is the far root, where the ray leaves the sphere: the intersection is the "
+                   "near one, t = %2.",
+                   {n(given), n(right)});
+    }
+    if (right == 0.0) return "";
+    if (near(right / 2))
+        return trf(lang,
+                   "%1 is half of t = %2: with the half-b form, b = (o − c)·d, the root is "
+                   "(−b − √(b² − a c′)) / a; dividing by 2a as well halves it.",
+                   {n(given), n(right)});
+    if (near(2 * right))
+        return trf(lang,
+                   "%1 is twice t = %2: the root (−B − √(B² − 4AC)) / 2A divides by 2A (the slide "
+                   "leaves out /2A); with the half-b form, b = B/2, it divides by a alone.",
+                   {n(given), n(right)});
+    return "";
+}
+
+/// The slip a wrong next cell betrays: a cell outside the grid on the entry face, the slides'
+/// detour on a tie, one axis of a tie alone, or a step along an axis whose tMax is not the least.
+std::string nextCellSlip(const Context& c, const Answer& given, std::size_t source, Language lang) {
+    const int dims = c.log.dims();
+    const auto* next = std::get_if<DdaCell>(&c.log.events()[source]);
+    if (!next || static_cast<int>(given.numbers.size()) != dims) return "";
+    std::array<std::int32_t, 3> mine{0, 0, 0};
+    for (int i = 0; i < dims; ++i) mine[i] = static_cast<std::int32_t>(given.numbers[i]);
+    const auto setup = previousEvent<DdaSetup>(c.log, source);
+    if (!setup || setup->ray != next->ray) return "";
+    const auto moved = [&](const std::array<std::int32_t, 3>& from, int axis, int by) {
+        std::array<std::int32_t, 3> to = from;
+        to[axis] += by;
+        return to;
+    };
+    const std::string cell = cellText(mine, dims);
+    const auto before = previousEvent<DdaCell>(c.log, source);
+    if (!before || before->ray != next->ray) {
+        // The first cell, entered through a face (axes): the one on the face's outside is off.
+        const RayRecord* r = next->ray < c.log.rays().size() ? &c.log.rays()[next->ray] : nullptr;
+        for (int a = 0; r && a < dims; ++a)
+            if ((next->axes >> a & 1u) && mine == moved(next->cell, a, -setup->step[a]))
+                return trf(lang,
+                           "%1 lies outside the grid, off by one on the entry face: the ray comes "
+                           "in through the face %2 = %3, so the first cell is the one on the "
+                           "inside, %4.",
+                           {cell, axisName(a),
+                            formatNumber(r->origin[a] + setup->tEnter * r->dir[a], lang),
+                            cellText(next->cell, dims)});
+        return "";
+    }
+    const std::string right = cellText(next->cell, dims);
+    unsigned tied = 0;
+    for (int a = 0; a < dims; ++a) tied += next->axes >> a & 1u;
+    for (int a = 0; a < dims; ++a) {
+        if (mine != moved(before->cell, a, setup->step[a])) continue;
+        if (tied > 1 && (next->axes >> a & 1u)) {
+            if (dims == 2 && a == 1)
+                return trf(lang,
+                           "%1 is the slides' conservative detour: on a tie their `if (tMaxX < "
+                           "tMaxY)` is false and steps Y alone, into a cell the ray only touches "
+                           "at a corner. The exact walk steps X and Y at once, to %2.",
+                           {cell, right});
+            return trf(
+                lang,
+                "%1 steps along %2 alone: on a tie the ray leaves the cell through a "
+                "corner, and the exact walk steps along %3 at once, to %4.",
+                {cell, std::string(1, "XYZ"[a]), feedback::axesWords(lang, next->axes), right});
+        }
+        if (tied == 1 && !(next->axes >> a & 1u)) {
+            int least = 0;
+            while (!(next->axes >> least & 1u)) ++least;
+            return trf(lang,
+                       "%1 is a step along %2, but in %3 the smallest tMax is tMax%4 = %5 "
+                       "(tMax%2 = %6): the walk steps along %4.",
+                       {cell, std::string(1, "XYZ"[a]), cellText(before->cell, dims),
+                        std::string(1, "XYZ"[least]), formatNumber(before->tMax[least], lang),
+                        formatNumber(before->tMax[a], lang)});
+        }
+    }
+    return "";
+}
+
 /// Counts of all events of the kind in the range, and of the right kind in the whole trace.
 std::string countSlip(const Context& c, double given, double right, Language lang) {
     const std::size_t end = rangeEnd(c);
@@ -477,6 +596,39 @@ std::string valueSlip(const Context& c, double given, double right, std::size_t 
                            "%1 is the tMax.%2 of the cell before: after a step along %2, tMax.%2 "
                            "grows by tDelta.%2 = %3.",
                            {n(given), axisName(axis), n(delta)});
+        }
+        // One step too far: the next cell's tMax, once the walk has left this one.
+        if (const auto next = cell ? nextEvent<DdaCell>(c.log, source + 1) : std::nullopt;
+            next && next->second.ray == cell->ray && next->second.tMax[axis] != right &&
+            near(next->second.tMax[axis]))
+            return trf(lang,
+                       "%1 is tMax.%2 one step later, in %3: in %4 the ray crosses the next %2 "
+                       "boundary at t = %5.",
+                       {n(given), axisName(axis), cellText(next->second.cell, c.log.dims()),
+                        cellText(cell->cell, c.log.dims()), n(right)});
+    }
+    if (q == Quantity::HitU || q == Quantity::HitV) {
+        const auto* hit = std::get_if<RayHit>(&c.log.events()[source]);
+        const double other = hit ? (q == Quantity::HitU ? hit->v : hit->u) : right;
+        if (hit && other != right && near(other))
+            return q == Quantity::HitU
+                       ? trf(lang,
+                             "%1 is v, not u: u weighs corner b, v corner c (p = (1 − u − v) a + "
+                             "u b + v c).",
+                             {n(given)})
+                       : trf(lang,
+                             "%1 is u, not v: u weighs corner b, v corner c (p = (1 − u − v) a + "
+                             "u b + v c).",
+                             {n(given)});
+    }
+    if (q == Quantity::HitT || q == Quantity::TestT) {
+        const auto* hit = std::get_if<RayHit>(&c.log.events()[source]);
+        const auto* test = std::get_if<PrimitiveTest>(&c.log.events()[source]);
+        if (hit || test) {
+            const std::uint32_t ray = hit ? hit->ray : test->ray;
+            const std::uint32_t prim = hit ? hit->prim : test->prim;
+            if (const std::string s = rootSlip(c, given, right, ray, prim, lang); !s.empty())
+                return s;
         }
     }
     if (q == Quantity::HitT) {
@@ -857,6 +1009,9 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
             case ExerciseKind::Count:
                 v.slip = countSlip(c, given, ref.numbers[0], lang);
                 break;
+            case ExerciseKind::NextCell:
+                v.slip = nextCellSlip(c, answer, *r.source, lang);
+                break;
             case ExerciseKind::Sequence:
                 v.slip = sequenceSlip(c, answer, ref, lang);
                 break;
@@ -902,9 +1057,13 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 break;
             }
             case ExerciseKind::HitOrMiss:
-                if (answer.hit == ref.hit && ref.hit == true && !ref.numbers.empty())
-                    v.slip = trf(lang, "It is an intersection, but not at t = %1.",
-                                 {formatNumber(given, lang)});
+                if (answer.hit == ref.hit && ref.hit == true && !ref.numbers.empty()) {
+                    const auto* t = std::get_if<PrimitiveTest>(&log.events()[*r.source]);
+                    v.slip = t ? rootSlip(c, given, ref.numbers[0], t->ray, t->prim, lang) : "";
+                    if (v.slip.empty())
+                        v.slip = trf(lang, "It is an intersection, but not at t = %1.",
+                                     {formatNumber(given, lang)});
+                }
                 break;
             default:
                 break;

@@ -145,6 +145,16 @@ std::string raysOfKind(Language lang, RayKind k) {
     return tr(lang, "Rays");
 }
 
+std::string axesWords(Language lang, unsigned axes, const std::string& prefix) {
+    std::vector<std::string> names;
+    for (int i = 0; i < 3; ++i)
+        if (axes & (1u << i)) names.push_back(prefix + "XYZ"[i]);
+    if (names.empty()) return "";
+    std::string head = names[0];
+    for (std::size_t i = 1; i + 1 < names.size(); ++i) head += ", " + names[i];
+    return names.size() == 1 ? head : trf(lang, "%1 and %2", {head, names.back()});
+}
+
 std::string nextCell(Language lang, const std::optional<DdaCell>& before, const DdaCell& next,
                      int dims) {
     if (!before)
@@ -152,15 +162,17 @@ std::string nextCell(Language lang, const std::optional<DdaCell>& before, const 
                    "The walk starts in the cell that holds the ray's entry point (t_enter): %1.",
                    {cellText(next.cell, dims)});
     std::string tmax;
+    // In Italian the comma is the decimal mark: "tMaxX = 3,25; tMaxY = 4".
     for (int i = 0; i < dims; ++i)
-        tmax += std::string(i ? ", " : "") + "tMax" + "XYZ"[i] + " = " +
-                formatNumber(before->tMax[i], lang);
+        tmax += std::string(i ? (lang == Language::It ? "; " : ", ") : "") + "tMax" + "XYZ"[i] +
+                " = " + formatNumber(before->tMax[i], lang);
     const std::string axes = axesText(next.axes);
     if (axes.size() > 1)
         return trf(lang,
-                   "In cell %1 the DDA compares %2: %3 tie for the smallest, so it steps in %3 at "
-                   "once to %4 (the ray passes through a corner).",
-                   {cellText(before->cell, dims), tmax, axes, cellText(next.cell, dims)});
+                   "In cell %1 the DDA compares %2: %3 are equal and the smallest, so it steps "
+                   "along %4 at once, to %5 (the ray passes through a corner).",
+                   {cellText(before->cell, dims), tmax, axesWords(lang, next.axes, "tMax"),
+                    axesWords(lang, next.axes), cellText(next.cell, dims)});
     return trf(lang,
                "In cell %1 the DDA compares %2: the smallest is along %3, so it steps in %3 to %4.",
                {cellText(before->cell, dims), tmax, axes, cellText(next.cell, dims)});

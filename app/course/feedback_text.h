@@ -27,6 +27,8 @@ std::string eventsCounted(Language lang, std::size_t kind);
 /// A ray kind as the slides name it, plural: "Shadow rays" / "Raggi d'ombra".
 std::string raysOfKind(Language lang, RayKind k);
 
+/// The axes of a step in words, each with `prefix`: "X and Y", "tMaxX and tMaxY" ("X e Y").
+std::string axesWords(Language lang, unsigned axes, const std::string& prefix = "");
 /// NextCell: where the walk starts (no cell `before`), or which tMax was smallest in `before`.
 std::string nextCell(Language lang, const std::optional<DdaCell>& before, const DdaCell& next,
                      int dims);
