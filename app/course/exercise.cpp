@@ -932,6 +932,76 @@ std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& 
     return reference(contextOf(ex, log, lessonFile, nullptr), Language::En).source;
 }
 
+std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Language lang) {
+    std::string advice;
+    switch (ex.kind) {
+        case ExerciseKind::Compute:
+            advice = tr(lang,
+                        "Work it again by hand from the data the prompt gives: the trace does "
+                        "not hold them.");
+            break;
+        case ExerciseKind::Choice:
+            advice = tr(lang,
+                        "Read each option again and ask what the lecture's algorithm does in "
+                        "that case.");
+            break;
+        case ExerciseKind::SweepPick:
+            advice = tr(lang,
+                        "Work out the metric for every row of the sweep's table and compare "
+                        "them all.");
+            break;
+        default:
+            if (!replayHeld) {
+                advice = tr(lang, "Step the replay and look at the inspector.");
+                break;
+            }
+            // Held at the exercise's position: what is on screen there is what there is to use.
+            switch (ex.kind) {
+                case ExerciseKind::NextCell:
+                    advice = tr(lang,
+                                "The replay waits here until you answer: compare the "
+                                "current cell's tMax in the inspector.");
+                    break;
+                case ExerciseKind::Sequence:
+                    advice = ex.ofNodes ? tr(lang,
+                                             "The replay waits here until you answer: work out "
+                                             "each node's [tNear, tFar] by hand, the nearer "
+                                             "child first.")
+                                        : tr(lang,
+                                             "The replay waits here until you answer: work out the "
+                                             "walk by hand, comparing the tMax at every cell.");
+                    break;
+                case ExerciseKind::Value:
+                    advice = tr(lang,
+                                "The replay waits here until you answer: put the ray's "
+                                "numbers from the inspector into the formula.");
+                    break;
+                case ExerciseKind::Count:
+                    advice = tr(lang,
+                                "The replay waits here until you answer: work out from the "
+                                "scene in the view what the rest of the trace must hold.");
+                    break;
+                case ExerciseKind::HitOrMiss:
+                    advice = tr(lang,
+                                "The replay waits here until you answer: solve the test by "
+                                "hand with the ray's and the primitive's numbers.");
+                    break;
+                case ExerciseKind::PickSplit:
+                    advice = tr(lang,
+                                "The replay waits here until you answer: compare the costs "
+                                "of the candidates listed.");
+                    break;
+                default:
+                    break;
+            }
+    }
+    if (hintLeft) {
+        advice += ' ';
+        advice += tr(lang, "Or ask for a hint.");
+    }
+    return advice;
+}
+
 std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log) {
     if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
         ex.kind == ExerciseKind::SweepPick)

@@ -57,6 +57,13 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                     const std::string& lessonFile, const std::vector<GridSweepRow>* sweep = nullptr,
                     const LessonScene* scene = nullptr);
 
+/// What a wrong answer's feedback advises for the next try, in `lang`: the panel shows it after
+/// "Not right yet (try k of 3)." when no slip is named. By the exercise's kind; `replayHeld`: quiz
+/// mode holds the replay at the exercise's position (it is open and not yet answered right);
+/// `hintLeft`: Hint would show one more. Never "step the replay" while the replay is held, nor for
+/// a compute, choice or sweep_pick exercise, whose answer is not in the trace.
+std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Language lang);
+
 /// Quiz mode: while `ex` is open (not yet answered right), the replay must not pass this cursor
 /// (its `at`, resolved in `log`). nullopt for the kinds whose answer is not in the trace (choice,
 /// compute, sweep_pick) or when the position is not in the trace.

@@ -120,5 +120,34 @@ TEST(Slips, TheSlidesTieAnswerAndOneAxisOfATie) {
     EXPECT_TRUE(has(slipFor("6", "next-cell", "2,2"), "(2, 2) is a step along Y, but in (2, 1)"));
 }
 
+TEST(RetryAdvice, NeverStepTheReplayWhileHeldNorForAnAnswerOutsideTheTrace) {
+    for (const Lesson& l : builtinLessons())
+        for (const Exercise& ex : l.exercises)
+            for (const bool held : {false, true})
+                for (const bool hint : {false, true}) {
+                    SCOPED_TRACE(l.id + " " + ex.id + (held ? " held" : "") +
+                                 (hint ? " hint" : ""));
+                    const std::string en = retryAdvice(ex, held, hint, Language::En);
+                    const std::string it = retryAdvice(ex, held, hint, Language::It);
+                    const bool inTrace = ex.kind != ExerciseKind::Compute &&
+                                         ex.kind != ExerciseKind::Choice &&
+                                         ex.kind != ExerciseKind::SweepPick;
+                    // Step the replay only when it can be stepped and the answer is in it.
+                    EXPECT_EQ(has(en, "Step the replay"), inTrace && !held) << en;
+                    EXPECT_EQ(has(it, "Fai avanzare la riproduzione"), inTrace && !held) << it;
+                    EXPECT_EQ(has(en, "waits here until you answer"), inTrace && held) << en;
+                    EXPECT_EQ(has(en, "Or ask for a hint."), hint) << en;
+                    EXPECT_EQ(has(it, "Oppure chiedi un suggerimento."), hint) << it;
+                    EXPECT_NE(en, it);
+                }
+    // By kind: a compute exercise is worked from its prompt, a sweep from its table.
+    const Lesson l12 = loadLesson("12");
+    EXPECT_TRUE(has(retryAdvice(*l12.exercise("sphere-t"), false, false, Language::En),
+                    "from the data the prompt gives"));
+    const Lesson l6 = loadLesson("6");
+    EXPECT_TRUE(has(retryAdvice(*l6.exercise("next-cell"), true, false, Language::En),
+                    "compare the current cell's tMax"));
+}
+
 }  // namespace
 }  // namespace raystep
