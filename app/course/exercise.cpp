@@ -932,6 +932,16 @@ std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& 
     return reference(contextOf(ex, log, lessonFile, nullptr), Language::En).source;
 }
 
+std::string answerPlaceholder(const Exercise& ex, int dims, Language lang) {
+    if (ex.kind == ExerciseKind::NextCell)
+        return dims == 3 ? tr(lang, "X,Y,Z (the voxel's indices)")
+                         : tr(lang, "X,Y (or click the cell in the 2D view)");
+    if (ex.kind != ExerciseKind::Sequence) return "";
+    if (ex.ofNodes) return tr(lang, "node ids in order, e.g. 0 1 4");
+    return dims == 3 ? tr(lang, "voxels in order, e.g. 0,0,0; 1,0,0")
+                     : tr(lang, "cells in order, e.g. 0,0; 1,0 (or click them in the 2D view)");
+}
+
 std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Language lang) {
     std::string advice;
     switch (ex.kind) {

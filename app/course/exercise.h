@@ -57,6 +57,11 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                     const std::string& lessonFile, const std::vector<GridSweepRow>* sweep = nullptr,
                     const LessonScene* scene = nullptr);
 
+/// The answer box's placeholder for a cell or a sequence, in `lang`: the cell's indices for the
+/// trace's `dims` (X,Y or X,Y,Z), and the 2D view's click only where there is one. Empty for the
+/// other kinds.
+std::string answerPlaceholder(const Exercise& ex, int dims, Language lang);
+
 /// What a wrong answer's feedback advises for the next try, in `lang`: the panel shows it after
 /// "Not right yet (try k of 3)." when no slip is named. By the exercise's kind; `replayHeld`: quiz
 /// mode holds the replay at the exercise's position (it is open and not yet answered right);

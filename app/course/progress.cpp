@@ -100,9 +100,36 @@ void mergeProgress(Progress& into, const Progress& saved) {
     }
 }
 
-std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang) {
+bool recordAnswer(LessonProgress& lesson, const std::string& exerciseId, const std::string& answer,
+                  bool correct) {
+    LessonProgress::ExerciseRecord& rec = lesson.exercises[exerciseId];
+    if (rec.correct) return true;
+    ++rec.attempts;
+    rec.correct = correct;
+    rec.answer = answer;
+    return false;
+}
+
+namespace {
+/// A student's text inside a Markdown table cell: one line, no cell break.
+std::string markdownCell(const std::string& text) {
+    std::string out;
+    for (const char c : printable(text, 80)) {
+        if (c == '|' || c == '*' || c == '_' || c == '`' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out;
+}
+}  // namespace
+
+std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang,
+                           const ReportHeader& header) {
     std::ostringstream s;
     s << "# " << tr(lang, "raystep: progress") << "\n\n";
+    if (!header.student.empty())
+        s << trf(lang, "Student: %1", {markdownCell(header.student)}) << "  \n";
+    if (!header.date.empty()) s << trf(lang, "Date: %1", {markdownCell(header.date)}) << "\n";
+    if (!header.student.empty() || !header.date.empty()) s << "\n";
     s << "| " << tr(lang, "Lesson") << " | " << tr(lang, "Exercises") << " | " << tr(lang, "Done")
       << " | " << tr(lang, "Right") << " | " << tr(lang, "Attempts") << " |\n";
     s << "|---|---:|---:|---:|---:|\n";
@@ -127,6 +154,26 @@ std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons
       << trf(lang, "Total: %1 / %2 exercises right, %3 attempted.",
              {std::to_string(right), std::to_string(total), std::to_string(done)})
       << "\n";
+    // Per exercise, for the lessons worked on: the lecturer sees where each student stopped.
+    for (const Lesson& l : lessons) {
+        const auto lp = p.lessons.find(l.id);
+        if (lp == p.lessons.end() || lp->second.exercises.empty()) continue;
+        s << "\n## " << l.number << ". " << l.title.in(lang) << "\n\n";
+        s << "| " << tr(lang, "Exercise") << " | " << tr(lang, "Result") << " | "
+          << tr(lang, "Attempts") << " | " << tr(lang, "Last answer") << " |\n";
+        s << "|---|---|---:|---|\n";
+        for (std::size_t i = 0; i < l.exercises.size(); ++i) {
+            const Exercise& ex = l.exercises[i];
+            const auto e = lp->second.exercises.find(ex.id);
+            const bool tried = e != lp->second.exercises.end() && e->second.attempts > 0;
+            const std::string result = !tried              ? tr(lang, "not attempted")
+                                       : e->second.correct ? tr(lang, "solved")
+                                                           : tr(lang, "not solved yet");
+            s << "| " << i + 1 << ". " << ex.id << " | " << result << " | "
+              << (tried ? std::to_string(e->second.attempts) : "") << " | "
+              << (tried ? markdownCell(e->second.answer) : "") << " |\n";
+        }
+    }
     return s.str();
 }
 

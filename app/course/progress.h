@@ -34,7 +34,22 @@ std::string progressToJson(const Progress& p);
 /// its attempts are the larger count (with that run's answer), lessons and exercises only one
 /// knows are kept, and `into`'s own steps win. Records already in `into` do not move.
 void mergeProgress(Progress& into, const Progress& saved);
-/// A report for a course: per lesson, exercises done, right, attempts (Markdown).
-std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang);
+/// Records an answer in `lesson` (the app's one rule, so that no caller gets it wrong): until the
+/// exercise is first answered right, each answer is an attempt and is kept; once it is right, a
+/// later answer, wrong or right, neither counts as an attempt nor replaces the right answer.
+/// Returns whether the exercise was solved before this answer.
+bool recordAnswer(LessonProgress& lesson, const std::string& exerciseId, const std::string& answer,
+                  bool correct);
+
+/// Who the report is for and when it was made (the caller's clock: the report is deterministic).
+struct ReportHeader {
+    std::string student;  // as the student typed it; empty: not given
+    std::string date;     // e.g. "2025-03-14"; empty: not given
+};
+/// A report for a course (Markdown): the student's name and the date, a table per lesson of
+/// exercises done, right and attempts, then per lesson worked on, each exercise: right or not
+/// yet, the attempts it took and the last answer given.
+std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons, Language lang,
+                           const ReportHeader& header = {});
 
 }  // namespace raystep

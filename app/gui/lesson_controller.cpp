@@ -8,15 +8,19 @@
 #include "lesson_panel.h"
 #include "vtk_view.h"
 
+#include <QDate>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QLockFile>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSaveFile>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 
@@ -189,6 +193,16 @@ void LessonController::saveProgress() {
 }
 
 void LessonController::exportProgressReport() {
+    // The report names its student and its date (the name is remembered for the next export).
+    QSettings settings;
+    bool named = false;
+    const QString student = QInputDialog::getText(
+        &window_, tr("Export progress report"), tr("Your name, for the report:"), QLineEdit::Normal,
+        settings.value(QStringLiteral("report/student")).toString(), &named);
+    if (!named) return;
+    settings.setValue(QStringLiteral("report/student"), student);
+    const ReportHeader header{student.trimmed().toStdString(),
+                              QDate::currentDate().toString(Qt::ISODate).toStdString()};
     const QString path =
         QFileDialog::getSaveFileName(&window_, tr("Export progress report"),
                                      QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
@@ -196,7 +210,7 @@ void LessonController::exportProgressReport() {
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) ||
         f.write(QByteArray::fromStdString(
-            progressReport(studentProgress_, builtinLessons(), lang_))) < 0 ||
+            progressReport(studentProgress_, builtinLessons(), lang_, header))) < 0 ||
         !f.commit())
         QMessageBox::warning(&window_, tr("Cannot save"), tr("Could not write %1").arg(path));
 }

@@ -504,12 +504,10 @@ void LessonPanel::refreshExercise() {
     }
     switch (ex.kind) {
         case ExerciseKind::NextCell:
-            answer_->setPlaceholderText(tr("X,Y (or click the cell in the 2D view)"));
+            answer_->setPlaceholderText(q(answerPlaceholder(ex, log_ ? log_->dims() : 2, lang_)));
             break;
         case ExerciseKind::Sequence:
-            answer_->setPlaceholderText(
-                ex.ofNodes ? tr("node ids in order, e.g. 0 1 4")
-                           : tr("cells in order, e.g. 0,0; 1,0 (or click them in the 2D view)"));
+            answer_->setPlaceholderText(q(answerPlaceholder(ex, log_ ? log_->dims() : 2, lang_)));
             clearButton_->setVisible(!ex.ofNodes);
             break;
         case ExerciseKind::Compute: {
@@ -642,11 +640,9 @@ void LessonPanel::check() {
         feedback_->setText(q(e.what()));
         return;
     }
-    LessonProgress::ExerciseRecord& rec = record(exercise_);
-    const bool wasSolved = rec.correct;
-    ++rec.attempts;
-    rec.correct = rec.correct || v.correct;
-    rec.answer = typed.toStdString();
+    // The course's rule (recordAnswer): once solved, an answer is no attempt and is not kept.
+    const bool wasSolved = recordAnswer(*progress_, ex.id, typed.toStdString(), v.correct);
+    const LessonProgress::ExerciseRecord& rec = record(exercise_);
     feedback_->setProperty("correct", v.correct);
     // Right: why, from the trace. Wrong: try again; the explanation after three tries.
     if (v.correct) {

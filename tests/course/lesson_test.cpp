@@ -530,6 +530,50 @@ TEST(Lessons, ProgressRoundTripsAndABadFileIsNamed) {
     }
 }
 
+TEST(Lessons, NoAttemptCountsOnceAnExerciseIsSolved) {
+    LessonProgress l;
+    EXPECT_FALSE(recordAnswer(l, "next-cell", "2,2", false));
+    EXPECT_FALSE(recordAnswer(l, "next-cell", "3,1", true));
+    // Solved: a wrong click afterwards is neither an attempt nor the answer kept.
+    EXPECT_TRUE(recordAnswer(l, "next-cell", "4,1", false));
+    EXPECT_TRUE(recordAnswer(l, "next-cell", "3,1", true));
+    const auto& rec = l.exercises.at("next-cell");
+    EXPECT_TRUE(rec.correct);
+    EXPECT_EQ(rec.attempts, 2);
+    EXPECT_EQ(rec.answer, "3,1");
+    // Not yet solved: every answer counts and the last one is kept.
+    recordAnswer(l, "tdelta-y", "2.4", false);
+    recordAnswer(l, "tdelta-y", "2.6", false);
+    EXPECT_EQ(l.exercises.at("tdelta-y").attempts, 2);
+    EXPECT_EQ(l.exercises.at("tdelta-y").answer, "2.6");
+    EXPECT_FALSE(l.exercises.at("tdelta-y").correct);
+}
+
+TEST(Lessons, TheProgressReportNamesTheStudentTheDateAndEachExercise) {
+    Progress p;
+    LessonProgress& l6 = p.lessons["grid-2d-dda"];
+    recordAnswer(l6, "next-cell", "2,2", false);
+    recordAnswer(l6, "next-cell", "3,1", true);
+    recordAnswer(l6, "next-cell", "9,9", false);  // after solving: not counted
+    recordAnswer(l6, "tdelta-y", "2|5", false);   // a student's '|' cannot break the table
+    const std::string en =
+        progressReport(p, builtinLessons(), Language::En, {"Ada Lovelace", "2025-03-14"});
+    EXPECT_NE(en.find("Student: Ada Lovelace"), std::string::npos) << en;
+    EXPECT_NE(en.find("Date: 2025-03-14"), std::string::npos) << en;
+    // The summary row: 2 done, 1 right, 2 + 1 = 3 attempts.
+    EXPECT_NE(en.find(" | 2 | 1 | 3 |"), std::string::npos) << en;
+    EXPECT_NE(en.find("## 6. The uniform grid and the 2D DDA, step by step"), std::string::npos);
+    EXPECT_NE(en.find("| 4. next-cell | solved | 2 | 3,1 |"), std::string::npos) << en;
+    EXPECT_NE(en.find("| 1. tdelta-y | not solved yet | 1 | 2\\|5 |"), std::string::npos) << en;
+    EXPECT_NE(en.find("| 2. tmax-y-start | not attempted |  |  |"), std::string::npos) << en;
+    // Lessons not worked on have no section.
+    EXPECT_EQ(en.find("## 8."), std::string::npos);
+    const std::string it =
+        progressReport(p, builtinLessons(), Language::It, {"Ada Lovelace", "2025-03-14"});
+    EXPECT_NE(it.find("Studente: Ada Lovelace"), std::string::npos) << it;
+    EXPECT_NE(it.find("| 4. next-cell | risolto | 2 | 3,1 |"), std::string::npos) << it;
+}
+
 // One cell holds every primitive: each ray of the fan (all start inside the grid) walks that one
 // cell and tests all 13 primitives (5 circles, 8 segments); 8 x 8 cells test fewer and walk more.
 TEST(Lessons, TheGridSweepAtOneCellTestsEverything) {
