@@ -188,7 +188,9 @@ std::string computeWorking(const Exercise& ex, Language lang) {
         const auto it = e.q.find(name);
         return it == e.q.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
     };
+    // An operand in brackets when negative ("2 (-2) · 7"); a result or a listed value plain.
     const auto n = [&](double v) { return num(v, lang); };
+    const auto v = [&](double x) { return formatNumber(x == 0.0 ? 0.0 : x, lang); };
     const std::string& what = ex.computeQuantity;
     const V3 o = vec(g.o), d = vec(g.d);
     switch (g.shape) {
@@ -196,46 +198,46 @@ std::string computeWorking(const Exercise& ex, Language lang) {
             const V3 f = o - vec(g.center);
             if (what == "a")
                 return "A = d·d = " + n(d.x) + "² + " + n(d.y) + "² + " + n(d.z) +
-                       "² = " + n(q("a")) + ".";
+                       "² = " + v(q("a")) + ".";
             if (what == "b")
                 return "B = 2 d·(o − c) = 2 (" + n(d.x) + " · " + n(f.x) + " + " + n(d.y) + " · " +
-                       n(f.y) + " + " + n(d.z) + " · " + n(f.z) + ") = " + n(q("b")) + ".";
+                       n(f.y) + " + " + n(d.z) + " · " + n(f.z) + ") = " + v(q("b")) + ".";
             if (what == "c")
                 return "C = |o − c|² − R² = " + n(f.x) + "² + " + n(f.y) + "² + " + n(f.z) +
-                       "² − " + n(g.radius) + "² = " + n(q("c")) + ".";
-            const std::string abc = "A = " + n(q("a")) + ", B = " + n(q("b")) +
-                                    ", C = " + n(q("c")) + "; Δ = B² − 4AC = " + n(q("b")) +
+                       "² − " + n(g.radius) + "² = " + v(q("c")) + ".";
+            const std::string abc = "A = " + v(q("a")) + ", B = " + v(q("b")) +
+                                    ", C = " + v(q("c")) + "; Δ = B² − 4AC = " + n(q("b")) +
                                     "² − 4 · " + n(q("a")) + " · " + n(q("c")) + " = " +
-                                    n(q("discriminant"));
+                                    v(q("discriminant"));
             if (what == "discriminant") return abc + ".";
-            const std::string roots = abc + "; t0 = (−B − √Δ) / 2A = " + n(q("t0")) +
-                                      ", t1 = (−B + √Δ) / 2A = " + n(q("t1"));
+            const std::string roots = abc + "; t0 = (−B − √Δ) / 2A = " + v(q("t0")) +
+                                      ", t1 = (−B + √Δ) / 2A = " + v(q("t1"));
             if (what == "t0" || what == "t1") return roots + ".";
             return roots + "; " +
                    trf(lang, "t is the smaller root in front of the origin (t > 0): %1.",
-                       {n(q("t"))});
+                       {v(q("t"))});
         }
         case Shape::Triangle: {
             const V3 a = vec(g.tri[0]), b = vec(g.tri[1]), c = vec(g.tri[2]);
             const V3 nn = glm::cross(b - a, c - a);
             std::string s =
-                "n = (b − a) × (c − a) = " + tuple(nn, lang) + "; n·d = " + n(q("n.dir"));
+                "n = (b − a) × (c − a) = " + tuple(nn, lang) + "; n·d = " + v(q("n.dir"));
             if (what == "n.dir") return s + ".";
             s += "; t = (n·a − n·o) / n·d = (" + n(glm::dot(nn, a)) + " − " + n(glm::dot(nn, o)) +
-                 ") / " + n(q("n.dir")) + " = " + n(q("t"));
+                 ") / " + n(q("n.dir")) + " = " + v(q("t"));
             if (what == "t") return s + ".";
             const double t = q("t");
             const V3 p = o + t * d;
-            s += "; p = o + t d = " + tuple(p, lang) + "; |n|² = " + n(glm::dot(nn, nn));
-            if (what == "u") return s + "; u = n·((p − a) × (c − a)) / |n|² = " + n(q("u")) + ".";
-            return s + "; v = n·((b − a) × (p − a)) / |n|² = " + n(q("v")) + ".";
+            s += "; p = o + t d = " + tuple(p, lang) + "; |n|² = " + v(glm::dot(nn, nn));
+            if (what == "u") return s + "; u = n·((p − a) × (c − a)) / |n|² = " + v(q("u")) + ".";
+            return s + "; v = n·((b − a) × (p − a)) / |n|² = " + v(q("v")) + ".";
         }
         case Shape::Plane: {
             const V3 nn = vec(g.normal);
-            std::string s = "n·d = " + n(q("n.dir"));
+            std::string s = "n·d = " + v(q("n.dir"));
             if (what == "n.dir") return s + ".";
             return s + "; t = (k − n·o) / (n·d) = (" + n(g.k) + " − " + n(glm::dot(nn, o)) +
-                   ") / " + n(q("n.dir")) + " = " + n(q("t")) + ".";
+                   ") / " + n(q("n.dir")) + " = " + v(q("t")) + ".";
         }
         case Shape::Box: {
             // t_enter's working gives the entries only: the exits would answer t_exit.
@@ -250,44 +252,47 @@ std::string computeWorking(const Exercise& ex, Language lang) {
                 double t0 = (g.lo[i] - g.o[i]) / g.d[i], t1 = (g.hi[i] - g.o[i]) / g.d[i];
                 if (t0 > t1) std::swap(t0, t1);
                 s += std::string(" ") + axisLetter(i) + " " +
-                     (enter ? n(t0)
-                            : "[" + n(t0) + (lang == Language::It ? "; " : ", ") + n(t1) + "]");
+                     (enter ? v(t0)
+                            : "[" + v(t0) + (lang == Language::It ? "; " : ", ") + v(t1) + "]");
             }
             return s + "; " +
                    (what == "t_enter"
                         ? trf(lang, "t_enter is the largest entry (0 if the origin is inside): %1.",
-                              {n(q("t_enter"))})
-                        : trf(lang, "t_exit is the smallest exit: %1.", {n(q("t_exit"))}));
+                              {v(q("t_enter"))})
+                        : trf(lang, "t_exit is the smallest exit: %1.", {v(q("t_exit"))}));
         }
         case Shape::Grid: {
             const int i = axisOf(what);
             const std::string a = axisLetter(i);
             if (what.rfind("tDelta.", 0) == 0)
                 return "tDelta." + a + " = " + tr(lang, "cell size") + " / |d." + a +
-                       "| = " + n(g.hi[i]) + " / |" + n(g.d[i]) + "| = " + n(q(what.c_str())) + ".";
+                       "| = " + n(g.hi[i]) + " / |" + v(g.d[i]) + "| = " + v(q(what.c_str())) + ".";
             const double tEnter = q("t_enter");
             const double p = g.o[i] + tEnter * g.d[i];
             std::string s =
                 trf(lang, "The ray enters the grid at t_enter = %1, at %2 = %3 along %4",
-                    {n(tEnter), a, n(p), a}) +
+                    {v(tEnter), a, v(p), a}) +
                 "; cell." + a + " = ⌊(" + n(p) + " − " + n(g.lo[i]) + ") / " + n(g.hi[i]) + "⌋";
-            if (g.d[i] < 0)
+            // Only a point on a boundary has a cell below it to choose.
+            const double across = (p - g.lo[i]) / g.hi[i];
+            if (g.d[i] < 0 &&
+                std::abs(across - std::round(across)) <= 1e-9 * std::max(1.0, std::abs(across)))
                 s += " " + tr(lang, "(on a face, the cell below it, since d is negative)");
-            s += " = " + n(q(("cell." + a).c_str()));
+            s += " = " + v(q(("cell." + a).c_str()));
             if (what.rfind("cell.", 0) == 0) return s + ".";
             const double cell = q(("cell." + a).c_str());
             const double bound = g.lo[i] + (g.d[i] > 0 ? cell + 1 : cell) * g.hi[i];
-            return s + "; " + trf(lang, "the next boundary ahead is at %1 = %2", {a, n(bound)}) +
+            return s + "; " + trf(lang, "the next boundary ahead is at %1 = %2", {a, v(bound)}) +
                    ": tMax." + a + " = (" + n(bound) + " − " + n(g.o[i]) + ") / " + n(g.d[i]) +
-                   " = " + n(q(what.c_str())) + ".";
+                   " = " + v(q(what.c_str())) + ".";
         }
         case Shape::Node: {
             const std::string area = g.dims == 2 ? tr(lang, "perimeter") : tr(lang, "surface area");
             std::string s =
                 trf(lang, "Area = the box's %1: Area(C) = %2, Area(L) = %3, Area(R) = %4",
-                    {area, n(q("area")), n(q("areaL")), n(q("areaR"))}) +
-                "; P(L|C) = Area(L) / Area(C) = " + n(q("pL")) +
-                ", P(R|C) = Area(R) / Area(C) = " + n(q("pR"));
+                    {area, v(q("area")), v(q("areaL")), v(q("areaR"))}) +
+                "; P(L|C) = Area(L) / Area(C) = " + v(q("pL")) +
+                ", P(R|C) = Area(R) / Area(C) = " + v(q("pR"));
             if (what != "sahCost") return s + ".";
             s +=
                 "; " +
@@ -297,7 +302,7 @@ std::string computeWorking(const Exercise& ex, Language lang) {
                      std::to_string(g.nr)});
             if (g.nl == 0 || g.nr == 0)
                 s += " · (1 − " + n(g.emptyBonus) + ") " + tr(lang, "(a side is empty: the bonus)");
-            return s + " = " + n(q("sahCost")) + ".";
+            return s + " = " + v(q("sahCost")) + ".";
         }
     }
     return "";

@@ -86,6 +86,12 @@ std::optional<E> previousEvent(const EventLog& log, std::size_t before) {
     return std::nullopt;
 }
 
+/// An option's text before its why: without its own full stop ("... the nearest one.: The").
+std::string optionText(std::string text) {
+    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) text.pop_back();
+    return text;
+}
+
 /// "a".."f" for options 0..5.
 std::string letter(int i) {
     return std::string(1, static_cast<char>('a' + i));
@@ -129,6 +135,9 @@ std::string rangeText(const Exercise& ex, Language lang) {
     if (ex.until && ex.until->mode != ReplayPosition::Mode::End)
         parts.push_back(describePosition(*ex.until, lang));
     if (parts.empty()) return tr(lang, "in the whole trace");
+    // Only the end given: the range runs from the start up to it, not after it.
+    if (parts.size() == 1 && ex.at.mode == ReplayPosition::Mode::Start)
+        return trf(lang, "from the start until %1", {parts[0]});
     if (parts.size() == 1) return parts[0];
     return trf(lang, "%1 and %2", {parts[0], parts[1]});
 }
@@ -364,7 +373,7 @@ Reference reference(const Context& c, Language lang) {
             a.numbers.push_back(c.ex.answer);
             const ChoiceOption& right = c.ex.choices.at(static_cast<std::size_t>(c.ex.answer));
             why = trf(lang, "The right answer is %1) %2: %3",
-                      {letter(c.ex.answer), right.text.in(lang), right.why.in(lang)});
+                      {letter(c.ex.answer), optionText(right.text.in(lang)), right.why.in(lang)});
             break;
         }
         case ExerciseKind::Sequence: {
@@ -680,6 +689,9 @@ std::string sequenceSlip(const Context& c, const Answer& given, const Answer& ri
     std::size_t k = 0;
     while (k < items && k < gave && item(given, k) == item(right, k)) ++k;
     if (k == items && k == gave) return "";
+    if (k == gave && gave == 1)
+        return trf(lang, "Your order stops after 1 item; the trace goes on with %1.",
+                   {item(right, k)});
     if (k == gave)
         return trf(lang, "Your order stops after %1 items; the trace goes on with %2.",
                    {std::to_string(gave), item(right, k)});
@@ -1098,9 +1110,9 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
             case ExerciseKind::Choice: {
                 if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;
                 const auto& chosen = ex.choices[static_cast<std::size_t>(given)];
-                v.slip = trf(
-                    lang, "%1) %2: %3",
-                    {letter(static_cast<int>(given)), chosen.text.in(lang), chosen.why.in(lang)});
+                v.slip = trf(lang, "%1) %2: %3",
+                             {letter(static_cast<int>(given)), optionText(chosen.text.in(lang)),
+                              chosen.why.in(lang)});
                 break;
             }
             case ExerciseKind::SweepPick: {

@@ -10,6 +10,7 @@
 #include "raystep/base/json_reader.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -192,6 +193,14 @@ std::string readLessonFile(const std::string& path, const std::string& what) {
     }
 }
 
+/// A number as the sheet writes it: the shortest text that reads back as it (0.4, not
+/// 0.40000000000000002), so a report echoes what the student gave.
+std::string shortest(double v) {
+    char buf[32];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
+}
+
 AnswerSheet readAnswerSheet(std::string_view text, const std::string& fileName) {
     auto parsed = detail::parseJsonFile<LessonError>(text, fileName);
     const json& root = parsed.root;
@@ -223,17 +232,10 @@ AnswerSheet readAnswerSheet(std::string_view text, const std::string& fileName) 
         } else if (v.is_boolean()) {
             t = v.get<bool>() ? "hit" : "miss";
         } else if (v.is_number()) {
-            std::ostringstream s;
-            s.precision(17);
-            s << r.number(v, p);  // finite, checked
-            t = s.str();
+            t = shortest(r.number(v, p));  // finite, checked
         } else if (v.is_array()) {
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                std::ostringstream s;
-                s.precision(17);
-                s << r.number(v[i], JsonLineMap::element(p, i));
-                t += (i ? "," : "") + s.str();
-            }
+            for (std::size_t i = 0; i < v.size(); ++i)
+                t += (i ? "," : "") + shortest(r.number(v[i], JsonLineMap::element(p, i)));
         } else {
             r.fail(p, "expected a number, a list of numbers, a string or true/false");
         }

@@ -120,6 +120,62 @@ TEST(Slips, TheSlidesTieAnswerAndOneAxisOfATie) {
     EXPECT_TRUE(has(slipFor("6", "next-cell", "2,2"), "(2, 2) is a step along Y, but in (2, 1)"));
 }
 
+/// The explanation of exercise `id` of lesson `lesson` for the answer `typed`.
+std::string feedbackFor(const std::string& lesson, const std::string& id, const std::string& typed,
+                        Language lang = Language::En) {
+    const Lesson l = loadLesson(lesson);
+    const LessonRun run = runLesson(l);
+    const Exercise* ex = l.exercise(id);
+    std::string why;
+    const auto answer = parseAnswer(*ex, typed, &why, lang);
+    EXPECT_TRUE(answer.has_value()) << why;
+    return checkAnswer(*ex, *run.log, answer.value_or(Answer{}), lang, l.file, nullptr,
+                       run.scene.get())
+        .feedback;
+}
+
+// lessons.md F5 and F8: the explanations' wording and numbers.
+TEST(Feedback, ACountUpToAnEventSaysFromTheStart) {
+    // L9's centre ray walks (2,2,4) (2,2,3) (2,2,2) (2,2,1) up to its hit: 4 (Appendix A).
+    const std::string en = feedbackFor("9", "cells-walked", "3");
+    EXPECT_TRUE(has(en, "Cells visited from the start until after the 1st intersection found: 4."))
+        << en;
+    const std::string it = feedbackFor("9", "cells-walked", "3", Language::It);
+    EXPECT_TRUE(has(it, "dall'inizio fino a dopo la 1ª intersezione trovata: 4.")) << it;
+}
+
+TEST(Feedback, NumbersAsWrittenNegativesBracketedOnlyAsOperands) {
+    // B = 2 (0 · 0 + 0 · 1 + (-2) · 7) = -28: the operand in brackets, the result not.
+    const std::string b = feedbackFor("12", "sphere-b", "-27");
+    EXPECT_TRUE(has(b, "(-2) · 7) = -28.")) << b;
+    // The slab test's entries and exits are listed plainly: z [-1.2, 6.8].
+    EXPECT_TRUE(has(feedbackFor("7", "slab-exit", "7"), "z [-1.2, 6.8]"));
+    // An answers file's 0.4 is echoed as 0.4.
+    const AnswerSheet sheet = loadAnswerSheet(
+        R"({"lesson": 6, "answers": {"tdelta-y": 0.4, "next-cell": [3, 1]}})", "s.json");
+    EXPECT_EQ(sheet.answers.at("tdelta-y"), "0.4");
+    EXPECT_EQ(sheet.answers.at("next-cell"), "3,1");
+}
+
+TEST(Feedback, AChoiceAndItsWhyAreJoinedOnce) {
+    const std::string f = feedbackFor("6", "first-hit", "a");
+    EXPECT_FALSE(has(f, ".:")) << f;
+    EXPECT_TRUE(has(f, "holds the nearest one: The cells come in order")) << f;
+}
+
+TEST(Feedback, OneItemIsSingular) {
+    const std::string en = feedbackFor("6", "walk-on", "3,2");
+    EXPECT_TRUE(has(en, "Your order stops after 1 item; the trace goes on with (4, 2).")) << en;
+    EXPECT_TRUE(has(feedbackFor("6", "walk-on", "3,2", Language::It), "dopo 1 elemento;"));
+}
+
+TEST(Feedback, TheCellBelowOnlyForAPointOnAFace) {
+    // L6's ray starts inside cell X = 3 (3 < 3.7 < 4): no face to choose a side of.
+    EXPECT_FALSE(has(feedbackFor("6", "tmax-negative", "1"), "on a face"));
+    // L7's ray enters the box through the face y = 2 going down: the cell below it, Y = 7.
+    EXPECT_TRUE(has(feedbackFor("7", "first-cell-outside", "8"), "on a face, the cell below it"));
+}
+
 TEST(RetryAdvice, NeverStepTheReplayWhileHeldNorForAnAnswerOutsideTheTrace) {
     for (const Lesson& l : builtinLessons())
         for (const Exercise& ex : l.exercises)
