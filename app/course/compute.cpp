@@ -336,8 +336,8 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
                 (close(given, glm::dot(fd, fd)) || close(given, glm::dot(fd, fd) - r2)))
                 return trf(lang,
                            "%1 uses the direction d where the origin o belongs (the slide's C = "
-                           "||dir − c||² is a typo): C = |o − c|² − R² = %2.",
-                           {n(given), n(right)});
+                           "||dir − c||² is a typo): C = |o − c|² − R².",
+                           {n(given)});
             if (what == "discriminant" && close(given, b * b - 4 * a * glm::dot(f, f)))
                 return trf(lang, "%1 is B² − 4AC with C = |o − c|², without − R².", {n(given)});
             if (what == "discriminant" && close(given, b * b - a * q("c")))
@@ -346,22 +346,22 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
             if (what == "b" && b != 0.0 && close(given, b / 2))
                 return trf(lang,
                            "%1 is d·(o − c), the half-b form's b = B/2: the textbook quadratic's B "
-                           "is 2 d·(o − c) = %2.",
-                           {n(given), n(right)});
+                           "is 2 d·(o − c).",
+                           {n(given)});
             if (what == "discriminant" && right != 0.0 && close(given, right / 4))
                 return trf(lang,
                            "%1 is b² − AC with b = B/2, the half-b form's discriminant: a quarter "
-                           "of B² − 4AC = %2.",
-                           {n(given), n(right)});
+                           "of B² − 4AC.",
+                           {n(given)});
             if (what == "t0" || what == "t1" || what == "t") {
                 const double t0 = q("t0"), t1 = q("t1");
                 const double other = close(right, t0) ? t1 : t0;
                 if (close(given, other))
                     return trf(lang,
-                               "%1 is the other root: t0 = %2 is where the ray enters the sphere, "
-                               "t1 = %3 where it leaves; the intersection is the smaller root in "
+                               "%1 is the other root: of t0, where the ray enters the sphere, and "
+                               "t1, where it leaves, the intersection is the smaller root in "
                                "front of the origin.",
-                               {n(given), n(t0), n(t1)});
+                               {n(given)});
                 const double sq = std::sqrt(std::max(0.0, q("discriminant")));
                 for (const double unhalved : {-b - sq, -b + sq}) {
                     if (close(given, unhalved))
@@ -373,13 +373,13 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
                     if (close(given, unhalved / 2))
                         return trf(lang,
                                    "%1 is (−B ∓ √Δ) / 2: divided by 2 but not by A = %2 (d is not "
-                                   "a unit vector): t = (−B ∓ √Δ) / 2A = %3.",
-                                   {n(given), n(a), n(right)});
+                                   "a unit vector): t = (−B ∓ √Δ) / 2A.",
+                                   {n(given), n(a)});
                     if (close(given, unhalved / a))
                         return trf(lang,
                                    "%1 is (−B ∓ √Δ) / A: divided by A but not by 2: t = (−B ∓ √Δ) "
-                                   "/ 2A = %2.",
-                                   {n(given), n(right)});
+                                   "/ 2A.",
+                                   {n(given)});
                     if (close(given, unhalved / (4 * a)))
                         return trf(lang,
                                    "%1 is half the root: with the half-b form (b = B/2 = %2) the "

@@ -473,24 +473,24 @@ std::string rootSlip(const Context& c, double given, double right, std::uint32_t
         if (std::holds_alternative<Scene2D>(*c.scene))
             return trf(lang,
                        "%1 is the far root, where the ray leaves the circle: the intersection is "
-                       "the near one, t = %2.",
-                       {n(given), n(right)});
+                       "the near one.",
+                       {n(given)});
         return trf(lang,
                    "%1 is the far root, where the ray leaves the sphere: the intersection is the "
-                   "near one, t = %2.",
-                   {n(given), n(right)});
+                   "near one.",
+                   {n(given)});
     }
     if (right == 0.0) return "";
     if (near(right / 2))
         return trf(lang,
-                   "%1 is half of t = %2: with the half-b form, b = (o − c)·d, the root is "
-                   "(−b − √(b² − a c′)) / a; dividing by 2a as well halves it.",
-                   {n(given), n(right)});
+                   "%1 is half the root: one division by 2 too many. The root is (−B − √(B² − "
+                   "4AC)) / 2A, or with the half-b form, b = B/2, (−b − √(b² − AC)) / A.",
+                   {n(given)});
     if (near(2 * right))
         return trf(lang,
-                   "%1 is twice t = %2: the root (−B − √(B² − 4AC)) / 2A divides by 2A (the slide "
-                   "leaves out /2A); with the half-b form, b = B/2, it divides by a alone.",
-                   {n(given), n(right)});
+                   "%1 is twice the root: the root (−B − √(B² − 4AC)) / 2A divides by 2A (the "
+                   "slide leaves out /2A); with the half-b form, b = B/2, it divides by A alone.",
+                   {n(given)});
     return "";
 }
 
@@ -518,14 +518,12 @@ std::string nextCellSlip(const Context& c, const Answer& given, std::size_t sour
             if ((next->axes >> a & 1u) && mine == moved(next->cell, a, -setup->step[a]))
                 return trf(lang,
                            "%1 lies outside the grid, off by one on the entry face: the ray comes "
-                           "in through the face %2 = %3, so the first cell is the one on the "
-                           "inside, %4.",
+                           "in through the face %2 = %3, so the first cell is the one on its "
+                           "inside.",
                            {cell, axisName(a),
-                            formatNumber(r->origin[a] + setup->tEnter * r->dir[a], lang),
-                            cellText(next->cell, dims)});
+                            formatNumber(r->origin[a] + setup->tEnter * r->dir[a], lang)});
         return "";
     }
-    const std::string right = cellText(next->cell, dims);
     unsigned tied = 0;
     for (int a = 0; a < dims; ++a) tied += next->axes >> a & 1u;
     for (int a = 0; a < dims; ++a) {
@@ -535,22 +533,19 @@ std::string nextCellSlip(const Context& c, const Answer& given, std::size_t sour
                 return trf(lang,
                            "%1 is the slides' conservative detour: on a tie their `if (tMaxX < "
                            "tMaxY)` is false and steps Y alone, into a cell the ray only touches "
-                           "at a corner. The exact walk steps X and Y at once, to %2.",
-                           {cell, right});
+                           "at a corner. The exact walk does not enter it.",
+                           {cell});
             return trf(
                 lang,
-                "%1 steps along %2 alone: on a tie the ray leaves the cell through a "
-                "corner, and the exact walk steps along %3 at once, to %4.",
-                {cell, std::string(1, "XYZ"[a]), feedback::axesWords(lang, next->axes), right});
+                "%1 is a step along %2 alone: on a tie the ray leaves the cell through a "
+                "corner, and the exact walk steps along every tied axis at once.",
+                {cell, std::string(1, "XYZ"[a])});
         }
         if (tied == 1 && !(next->axes >> a & 1u)) {
-            int least = 0;
-            while (!(next->axes >> least & 1u)) ++least;
             return trf(lang,
-                       "%1 is a step along %2, but in %3 the smallest tMax is tMax%4 = %5 "
-                       "(tMax%2 = %6): the walk steps along %4.",
+                       "%1 is a step along %2, but in %3 tMax%2 = %4 is not the smallest tMax: "
+                       "the walk steps along the axis whose boundary comes first.",
                        {cell, std::string(1, "XYZ"[a]), cellText(before->cell, dims),
-                        std::string(1, "XYZ"[least]), formatNumber(before->tMax[least], lang),
                         formatNumber(before->tMax[a], lang)});
         }
     }
@@ -611,10 +606,9 @@ std::string valueSlip(const Context& c, double given, double right, std::size_t 
             next && next->second.ray == cell->ray && next->second.tMax[axis] != right &&
             near(next->second.tMax[axis]))
             return trf(lang,
-                       "%1 is tMax.%2 one step later, in %3: in %4 the ray crosses the next %2 "
-                       "boundary at t = %5.",
-                       {n(given), axisName(axis), cellText(next->second.cell, c.log.dims()),
-                        cellText(cell->cell, c.log.dims()), n(right)});
+                       "%1 is tMax.%2 one step later, once the walk has left this cell: in %3, "
+                       "tMax.%2 is where the ray crosses this cell's own far %2 boundary.",
+                       {n(given), axisName(axis), cellText(cell->cell, c.log.dims())});
     }
     if (q == Quantity::HitU || q == Quantity::HitV) {
         const auto* hit = std::get_if<RayHit>(&c.log.events()[source]);
@@ -1005,8 +999,9 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
                     break;
                 case ExerciseKind::HitOrMiss:
                     advice = tr(lang,
-                                "The replay waits here until you answer: solve the test by "
-                                "hand with the ray's and the primitive's numbers.");
+                                "The replay waits here until you answer: look where the ray "
+                                "goes in the views, or solve the test by hand with the "
+                                "ray's and the primitive's numbers.");
                     break;
                 case ExerciseKind::PickSplit:
                     advice = tr(lang,
