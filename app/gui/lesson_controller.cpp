@@ -83,6 +83,7 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
 void LessonController::replaceLesson() {
     replacing_ = true;
     session_.setLimit(nullptr, std::nullopt);
+    session_.setHideAhead(false);
 }
 
 void LessonController::show(const Lesson& lesson, const LogRef& trace) {
@@ -135,6 +136,8 @@ void LessonController::backToLesson() {
 
 void LessonController::updateQuizLimit() {
     const LogRef& log = lesson_->lessonLog();
+    // Presenting: a question to the room lists and counts nothing past the cursor.
+    session_.setHideAhead(lesson_->asksTheRoom());
     if (!lesson_->hasLesson() || !log) {
         session_.setLimit(nullptr, std::nullopt);
         return;

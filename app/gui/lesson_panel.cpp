@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QRegularExpressionValidator>
+#include <QResizeEvent>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QShortcut>
@@ -32,23 +33,36 @@ QString q(const std::string& s) {
 
 namespace {
 // The exercise's prompt, hints and feedback: as tall as they are, up to the room the lesson text
-// leaves (then they scroll), so a long feedback never pushes the step's text out of sight.
+// leaves (then they scroll), so a long feedback never pushes the step's text out of sight. Its
+// least height follows the content: the layout gives it all of it (up to the cap) before the text.
 class ExerciseScroll : public QScrollArea {
   public:
     using QScrollArea::QScrollArea;
-    QSize sizeHint() const override {
+    /// The content's height at this width, capped at `cap`.
+    void fit(int cap) {
+        cap_ = cap;
         const QWidget* w = widget();
-        if (!w) return QScrollArea::sizeHint();
-        const int width = std::max(1, viewport()->width());
-        const int h = w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
-        return {w->sizeHint().width(), std::min(h + 2 * frameWidth(), maximumHeight())};
+        if (!w) return;
+        const int width = std::max(1, this->width() - 2 * frameWidth());
+        const int content =
+            w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
+        const int h = std::min(content + 2 * frameWidth(), cap_);
+        if (h != minimumHeight() || h != maximumHeight()) setFixedHeight(h);
     }
-    QSize minimumSizeHint() const override { return {0, std::min(sizeHint().height(), 60)}; }
     bool eventFilter(QObject* o, QEvent* e) override {
-        // The body's layout changed (a hint, the feedback): ask the panel for room again.
-        if (o == widget() && e->type() == QEvent::LayoutRequest) updateGeometry();
+        // The body's layout changed (a hint, the feedback): as tall as it now is.
+        if (o == widget() && e->type() == QEvent::LayoutRequest) fit(cap_);
         return QScrollArea::eventFilter(o, e);
     }
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override {
+        QScrollArea::resizeEvent(e);
+        if (e->size().width() != e->oldSize().width()) fit(cap_);  // the text wraps anew
+    }
+
+  private:
+    int cap_ = 200;
 };
 
 // Markdown's code blocks are laid out unbroken: in a narrow panel (a 1366x768 laptop) their
@@ -426,6 +440,12 @@ std::optional<std::pair<int, std::size_t>> LessonPanel::heldBy() const {
     return held;
 }
 
+bool LessonPanel::asksTheRoom() const {
+    return hasLesson_ && mode_ == LessonMode::Presenting && exerciseOpen_ && !revealed_ &&
+           !lesson_.exercises.empty() && !solved(exercise_) && log_ &&
+           quizLimit(lesson_.exercises[exercise_], *log_).has_value();
+}
+
 std::optional<int> LessonPanel::quizExercise() const {
     if (!hasLesson_ || !exerciseOpen_ || mode_ != LessonMode::Quiz || lesson_.exercises.empty() ||
         solved(exercise_))
@@ -519,7 +539,7 @@ void LessonPanel::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     // The exercise box scrolls before the lesson text loses its room: at most about 2/5 of the
     // panel for the prompt, hints and feedback.
-    exerciseScroll_->setMaximumHeight(std::max(80, height() * 3 / 10));
+    static_cast<ExerciseScroll*>(exerciseScroll_)->fit(std::max(80, height() * 3 / 10));
 }
 
 bool LessonPanel::eventFilter(QObject* o, QEvent* e) {
@@ -600,6 +620,7 @@ void LessonPanel::refreshExercise() {
     feedback_->clear();
     feedback_->setStyleSheet({});
     hintsShown_ = 0;
+    revealed_ = false;
     hints_->clear();
     hints_->hide();
     hintButton_->setEnabled(!ex.hints.empty());
@@ -934,6 +955,11 @@ void LessonPanel::revealAnswer() {
     }
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
+    exerciseScroll_->ensureWidgetVisible(feedback_);
+    if (!revealed_) {
+        revealed_ = true;
+        emit quizChanged();  // presenting: what lies past the cursor may show now
+    }
 }
 
 void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {

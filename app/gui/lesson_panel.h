@@ -102,6 +102,9 @@ class LessonPanel : public QWidget {
     std::vector<int> heldExercises() const;
     /// The held exercise whose position comes first, and that position (the replay's limit).
     std::optional<std::pair<int, std::size_t>> heldBy() const;
+    /// Presenting mode: the shown exercise is a question to the room (open, unsolved, its answer
+    /// in the trace and not revealed): nothing past the cursor is listed or counted meanwhile.
+    bool asksTheRoom() const;
     /// Lessons > Show notes on the slides: the errata boxes under the texts.
     void setShowErrata(bool on);
     bool showErrata() const { return showErrata_; }
@@ -174,6 +177,7 @@ class LessonPanel : public QWidget {
     std::set<int> putAway_;  // exercises the student chose to look past (Put away)
     bool showErrata_ = true;
     int hintsShown_ = 0;
+    bool revealed_ = false;  // Show answer pressed on the shown exercise (presenting)
     int step_ = 0;
     int exercise_ = 0;
     /// This exercise's record in the progress (made on first use).

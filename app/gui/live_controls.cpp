@@ -281,10 +281,14 @@ void LiveControls::updateStatistics() {
             lines << tr("Brute force: every primitive for every ray (%1)").arg(t.references);
             break;
     }
-    if (session_.limit()) {
-        // The rest waits with the replay: a count up to an exercise's position reads as the
-        // whole, so none is shown until the exercise is answered or put away.
-        lines << tr("Traced: the counts wait until the exercise is answered or put away");
+    if (session_.hiding()) {
+        // The rest waits with the replay: a count up to an exercise's position (or the cursor,
+        // presenting) reads as the whole, so none is shown until the exercise is answered or
+        // put away.
+        lines << (session_.limit()
+                      ? tr("Traced: the counts wait until the exercise is answered or put away")
+                      : tr("Traced: the counts wait until the question is answered or its "
+                           "answer shown"));
     } else if (built > 0)
         lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
     else if (session_.kind() == AccelKind::Grid)

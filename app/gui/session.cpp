@@ -168,6 +168,12 @@ void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
     if (cursor_ > end()) setCursor(end());
 }
 
+void Session::setHideAhead(bool on) {
+    if (on == hideAhead_) return;
+    hideAhead_ = on;
+    emit limitChanged();
+}
+
 std::optional<std::size_t> Session::limit() const {
     if (!limit_) return std::nullopt;
     if (limitLog_ == log_) return limit_;
@@ -181,6 +187,8 @@ void Session::setCursor(std::size_t cursor) {
     cursor_ = cursor;
     replay_->seek(cursor);
     emit cursorChanged(cursor_);
+    // What is shown ends at the cursor: it moved with it.
+    if (hideAhead_) emit limitChanged();
 }
 
 }  // namespace raystep::gui

@@ -134,10 +134,17 @@ class Session : public QObject {
     std::optional<std::size_t> limit() const;
     /// How far the cursor may go: the limit, else the end of the log.
     std::size_t end() const { return limit().value_or(size()); }
-    /// What may be shown of the replayed log: its events before end(). Every view, list and
-    /// count that reads past the cursor reads this, never the whole log.
+    /// Presenting mode: while a question to the room is open, nothing past the cursor is shown
+    /// (the event list's later rows, the counts of the whole trace), though the cursor is free.
+    void setHideAhead(bool on);
+    /// Whether part of the log is not shown now (a quiz limit, or hidden ahead).
+    bool hiding() const { return shownEvents().size() < size(); }
+    /// What may be shown of the replayed log: its events before end(), and before the cursor
+    /// while hiding ahead. Every view, list and count that reads past the cursor reads this,
+    /// never the whole log.
     std::span<const Event> shownEvents() const {
-        return std::span<const Event>(log_->events()).first(end());
+        return std::span<const Event>(log_->events())
+            .first(hideAhead_ ? std::min(cursor_, end()) : end());
     }
     std::size_t cursor() const { return cursor_; }
     const ReplayState& state() const { return replay_->state(); }
@@ -152,7 +159,8 @@ class Session : public QObject {
     void sceneChanged();
     void logChanged();
     void cursorChanged(std::size_t cursor);
-    /// The quiz limit was set, moved or lifted (the event list shows up to end()).
+    /// The quiz limit was set, moved or lifted, or hiding ahead began or ended: what
+    /// shownEvents() holds changed (the event list shows it).
     void limitChanged();
 
   private:
@@ -163,6 +171,7 @@ class Session : public QObject {
     std::size_t cursor_ = 0;
     LogRef limitLog_;  // the log the limit belongs to (a lesson's trace)
     std::optional<std::size_t> limit_;
+    bool hideAhead_ = false;
 };
 
 }  // namespace raystep::gui

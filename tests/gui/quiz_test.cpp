@@ -29,6 +29,7 @@
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -52,10 +53,14 @@ bool openLesson(MainWindow& w, const QString& lesson) {
     return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
 }
 
-struct Window {
+/// No answer from an earlier test: the progress file goes before the window reads it.
+struct NoProgress {
+    NoProgress() { forgetProgress(); }
+};
+
+struct Window : NoProgress {
     MainWindow w;
     explicit Window(QSize size = {1500, 900}) {
-        forgetProgress();
         w.resize(size);
         w.show();
         w.activateWindow();
@@ -410,6 +415,15 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         p->selectExercise(1);
         EXPECT_TRUE(p->exerciseText().contains("which cell comes next"));
         EXPECT_TRUE(p->feedback().isEmpty());  // no answer shown
+        // The question open: the list and the counts stop at the cursor (the list's next row,
+        // the count of cells, would answer it), wherever the lecturer moves it.
+        w.eventList()->setFilter({});
+        EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(s.cursor()));
+        EXPECT_TRUE(w.liveControls()->statistics().contains("the counts wait"))
+            << w.liveControls()->statistics().toStdString();
+        QTest::keyClick(&w, Qt::Key_Right);
+        EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(s.cursor()));
+        QTest::keyClick(&w, Qt::Key_Left);
         // Three wrong answers: never the answer (the next cell is (2, 2), by hand above).
         for (const char* wrong : {"3,1", "1,2", "3,2"}) {
             EXPECT_FALSE(p->submit(wrong));
@@ -422,6 +436,7 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         EXPECT_TRUE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
         EXPECT_TRUE(p->feedback().contains("2, 2") || p->feedback().contains("2,2"))
             << p->feedback().toStdString();
+        EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(s.size()));  // revealed: all of it
         // Another exercise: its answer is hidden again.
         p->selectExercise(0);
         EXPECT_FALSE(p->feedback().startsWith("Answer: ")) << p->feedback().toStdString();
@@ -507,6 +522,65 @@ TEST(Layout1366, TheStepTextStaysInSightWhenTheExerciseGrows) {
         SCOPED_TRACE(i);
         EXPECT_TRUE(stepInSight());
     }
+}
+
+/// The window as the user sees it, to $RAYSTEP_SHOT_DIR/<name>-<screen width>.png.
+void shot(MainWindow& w, const QString& name) {
+    QTest::qWait(300);  // let the views paint
+    const QByteArray dir = qgetenv("RAYSTEP_SHOT_DIR");
+    const QString file =
+        QDir(QString::fromLocal8Bit(dir))
+            .filePath(QStringLiteral("%1-%2.png").arg(name).arg(w.screen()->size().width()));
+    EXPECT_TRUE(w.grab().save(file)) << file.toStdString();
+}
+
+// Screenshots to look at (not a check): lesson 8 held, lesson 6 presenting, a lesson switch, a
+// later prompt waiting, lesson 6's step text beside a long feedback. Only with RAYSTEP_SHOT_DIR.
+TEST(Shots, WhatTheStudentAndTheLecturerSee) {
+    if (qgetenv("RAYSTEP_SHOT_DIR").isEmpty()) GTEST_SKIP() << "RAYSTEP_SHOT_DIR not set";
+    forgetProgress();
+    QSettings().remove("lessons/mode");
+    MainWindow w;
+    w.sizeForScreen();
+    w.show();
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));  // the window's keys need it active
+    ASSERT_TRUE(openLesson(w, "8"));
+    shot(w, "l8-held");
+    LessonPanel* p = w.lessonPanel();
+    QTest::keyClick(&w, Qt::Key_R);  // refused: the note says why
+    shot(w, "l8-R-refused");
+    p->selectExercise(1);
+    shot(w, "l8-ex2-waits");
+    // Lesson 1, then lesson 2 by the picker, Page Down.
+    ASSERT_TRUE(openLesson(w, "1"));
+    w.tasks().cancel(TaskKind::Render);
+    auto* picker = p->findChild<QComboBox*>("lessonPicker");
+    picker->setFocus();
+    QTest::keyClick(picker, Qt::Key_Down);
+    ASSERT_TRUE(w.waitUntilIdle());
+    QTest::keyClick(&w, Qt::Key_PageDown);
+    shot(w, "switch-l1-l2-pgdn");
+    // Lesson 6, a wrong answer and every hint (quiz mode), then a step with notes.
+    ASSERT_TRUE(openLesson(w, "6"));
+    p->selectExercise(0);
+    p->submit("1");
+    p->submit("2");
+    for (int k = 0; k < 3; ++k)
+        for (const char* name : {"Hint", "Next hint"})
+            if (QPushButton* b = buttonNamed(p, name); b && b->isEnabled()) {
+                QTest::mouseClick(b, Qt::LeftButton);
+                break;
+            }
+    shot(w, "l6-quiz-hints");
+    // Presenting: free steps, the question to the room.
+    w.setLessonMode(LessonMode::Presenting);
+    p->selectExercise(3);
+    p->goToStep(4);
+    shot(w, "l6-presenting");
+    QTest::mouseClick(buttonNamed(p, "Show answer"), Qt::LeftButton);
+    shot(w, "l6-presenting-revealed");
+    w.setLessonMode(LessonMode::Quiz);
 }
 
 // A bad --lesson at start-up (nothing open before it): the "Nothing is open" page, as a bad
