@@ -31,7 +31,7 @@ EventListModel::EventListModel(Session& s, QObject* parent) : QAbstractListModel
         endResetModel();
     };
     connect(&s_, &Session::logChanged, this, reset);
-    connect(&s_, &Session::limitChanged, this, reset);
+    connect(&s_, &Session::shownChanged, this, reset);
 }
 
 int EventListModel::rowCount(const QModelIndex& parent) const {
@@ -96,7 +96,7 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
         session_.setCursor(static_cast<std::size_t>(filter_->mapToSource(i).row()) + 1);
     });
     connect(&session_, &Session::cursorChanged, this, [this] { showCursor(); });
-    connect(&session_, &Session::limitChanged, this, [this] { showCursor(); });
+    connect(&session_, &Session::shownChanged, this, [this] { showCursor(); });
 }
 
 void EventList::setFilter(const QString& text) {

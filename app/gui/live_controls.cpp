@@ -157,7 +157,7 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
 
     connect(&session_, &Session::sceneChanged, this, [this] { sync(); });
     connect(&session_, &Session::logChanged, this, [this] { updateStatistics(); });
-    connect(&session_, &Session::limitChanged, this, [this] { updateStatistics(); });
+    connect(&session_, &Session::shownChanged, this, [this] { updateStatistics(); });
     sync();
 }
 

@@ -119,6 +119,7 @@ void Session::showLog(LogRef log, LogKind kind) {
     cursor_ = 0;
     emit logChanged();
     emit limitChanged();  // the held log is shown up to its limit, another one not at all
+    emit shownChanged();
     emit cursorChanged(cursor_);
 }
 
@@ -165,13 +166,14 @@ void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
     limit_ = limit;
     if (this->limit() == before) return;
     emit limitChanged();
+    emit shownChanged();
     if (cursor_ > end()) setCursor(end());
 }
 
 void Session::setHideAhead(bool on) {
     if (on == hideAhead_) return;
     hideAhead_ = on;
-    emit limitChanged();
+    emit shownChanged();
 }
 
 std::optional<std::size_t> Session::limit() const {
@@ -188,7 +190,7 @@ void Session::setCursor(std::size_t cursor) {
     replay_->seek(cursor);
     emit cursorChanged(cursor_);
     // What is shown ends at the cursor: it moved with it.
-    if (hideAhead_) emit limitChanged();
+    if (hideAhead_) emit shownChanged();
 }
 
 }  // namespace raystep::gui

@@ -159,9 +159,11 @@ class Session : public QObject {
     void sceneChanged();
     void logChanged();
     void cursorChanged(std::size_t cursor);
-    /// The quiz limit was set, moved or lifted, or hiding ahead began or ended: what
-    /// shownEvents() holds changed (the event list shows it).
+    /// The quiz limit was set, moved or lifted (the timeline ends at end()).
     void limitChanged();
+    /// What shownEvents() holds changed: the limit, hiding ahead, or the cursor while hiding
+    /// ahead (the event list's rows, the live controls' counts).
+    void shownChanged();
 
   private:
     SceneRef scene_;
