@@ -330,7 +330,11 @@ void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* p
     exercise_ = 0;
     while (exercise_ + 1 < static_cast<int>(lesson.exercises.size()) && solved(exercise_))
         ++exercise_;
-    exerciseOpen_ = !lesson.exercises.empty() && !solved(exercise_);
+    // Presenting, it waits closed for the lecturer to ask it (Try it takes the replay to its
+    // position): opened at once beside the step the lecture was at, the views could hold its
+    // answer while the room reads the question.
+    exerciseOpen_ =
+        !lesson.exercises.empty() && !solved(exercise_) && mode_ != LessonMode::Presenting;
     putAway_.clear();
     refreshText();
     refreshExercise();

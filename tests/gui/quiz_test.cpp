@@ -447,8 +447,15 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         ASSERT_TRUE(w.waitUntilIdle());
         EXPECT_NE(w.compareWindow(), nullptr);
         if (w.compareWindow()) w.compareWindow()->close();
-        // B in a build lesson.
+        // A lesson opened presenting: its first exercise waits closed until the lecturer asks
+        // it (the views beside the step could hold its answer); Try it goes to its position.
         ASSERT_TRUE(openLesson(w, writeLesson(dir, "build.json", kBuildLesson)));
+        EXPECT_FALSE(p->exerciseOpen());
+        EXPECT_FALSE(p->findChild<QLabel*>("prompt")->isVisible());
+        QTest::mouseClick(buttonNamed(p, "Try it"), Qt::LeftButton);
+        EXPECT_TRUE(p->exerciseOpen());
+        EXPECT_EQ(s.cursor(), 0u);  // the root's split is asked from the start
+        // B in a build lesson.
         const LogRef build = p->lessonLog();
         QTest::keyClick(&w, Qt::Key_B);
         ASSERT_TRUE(w.waitUntilIdle());
