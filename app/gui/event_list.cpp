@@ -31,16 +31,17 @@ EventListModel::EventListModel(Session& s, QObject* parent) : QAbstractListModel
         endResetModel();
     };
     connect(&s_, &Session::logChanged, this, reset);
-    connect(&s_, &Session::limitChanged, this, reset);
+    connect(&s_, &Session::shownChanged, this, reset);
 }
 
 int EventListModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : static_cast<int>(s_.end());
+    return parent.isValid() ? 0 : static_cast<int>(s_.shownEvents().size());
 }
 
 QVariant EventListModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || index.row() >= static_cast<int>(s_.end())) return {};
-    const Event& e = s_.log().events()[index.row()];
+    const auto shown = s_.shownEvents();
+    if (!index.isValid() || index.row() >= static_cast<int>(shown.size())) return {};
+    const Event& e = shown[index.row()];
     if (role == KindNameRole) return QString::fromUtf8(kEventNames[e.index()].data());
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
     return QStringLiteral("%1  %2")
@@ -54,10 +55,11 @@ void EventFilter::setText(const QString& text) {
 }
 
 bool EventFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
-    if (parent.isValid() || row >= static_cast<int>(s_.end())) return false;
+    const auto shown = s_.shownEvents();
+    if (parent.isValid() || row >= static_cast<int>(shown.size())) return false;
     // The lessons' rule (course/lesson_trace.h), so a step's filter shows what validation saw;
     // and the line as this list shows it (in the app's language).
-    return eventMatchesFilter(s_.log().events()[row], s_.log().dims(), text_) ||
+    return eventMatchesFilter(shown[row], s_.log().dims(), text_) ||
            sourceModel()
                ->index(row, 0)
                .data()
@@ -94,7 +96,7 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
         session_.setCursor(static_cast<std::size_t>(filter_->mapToSource(i).row()) + 1);
     });
     connect(&session_, &Session::cursorChanged, this, [this] { showCursor(); });
-    connect(&session_, &Session::limitChanged, this, [this] { showCursor(); });
+    connect(&session_, &Session::shownChanged, this, [this] { showCursor(); });
 }
 
 void EventList::setFilter(const QString& text) {

@@ -84,9 +84,16 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
     connect(&session_, &Session::logChanged, this, [this] { showReplayText(); });
 }
 
+void LessonController::replaceLesson() {
+    replacing_ = true;
+    session_.setLimit(nullptr, std::nullopt);
+    session_.setHideAhead(false);
+}
+
 void LessonController::show(const Lesson& lesson, const LogRef& trace) {
     // The panel records answers into this lesson's progress (std::map entries do not move) and
     // grades them against its own share of the trace.
+    replacing_ = false;
     lessonScene_ = session_.sceneRef();
     lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id]);
     if (trace)
@@ -133,6 +140,8 @@ void LessonController::backToLesson() {
 
 void LessonController::updateQuizLimit() {
     const LogRef& log = lesson_->lessonLog();
+    // Presenting: a question to the room lists and counts nothing past the cursor.
+    session_.setHideAhead(lesson_->asksTheRoom());
     if (!lesson_->hasLesson() || !log) {
         session_.setLimit(nullptr, std::nullopt);
         return;
@@ -272,12 +281,14 @@ void LessonController::showSceneIntro() {
 }
 
 void LessonController::showReplayText() {
+    // The new lesson's scene and trace, not something the old lesson explores.
+    if (replacing_) return;
     if (lesson_->hasLesson()) {
         const QString exploring = replayDescription();
         // The step's filter is about the lesson's trace: exploring shows every event (going
         // back to the lesson sets the step's filter again).
         if (!exploring.isEmpty() && !lesson_->exploring()) events_->setFilter({});
-        lesson_->setReplayNote(exploring);
+        lesson_->setReplayNote(exploring, session_.held());
     } else if (session_.showingBuild()) {
         lesson_->showText(
             lectureText(QStringLiteral("building")).arg(structureName(session_.kind())));

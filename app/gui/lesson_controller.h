@@ -41,6 +41,9 @@ class LessonController : public QObject {
                      const std::uint64_t& generation, LessonPanel* panel, EventList* events,
                      VtkView* view3D);
 
+    /// A new lesson's scene is about to be shown (its open has finished): the old lesson's hold
+    /// and its notes about the replay end here, not on the new lesson's scene and trace.
+    void replaceLesson();
     /// Shows a lesson whose trace the session now replays, at the step the progress was at.
     void show(const Lesson& lesson, const LogRef& trace);
     /// The text beside a scene opened by hand: its name, description and how to replay it.
@@ -93,7 +96,8 @@ class LessonController : public QObject {
     EventList* events_;
     VtkView* view3D_;
     QMenu* lessonsMenu_ = nullptr;
-    SceneRef lessonScene_;  // the lesson's scene and structure, as its trace was recorded
+    SceneRef lessonScene_;    // the lesson's scene and structure, as its trace was recorded
+    bool replacing_ = false;  // between replaceLesson and show: the old lesson says nothing
     Language lang_ = Language::En;
     Progress studentProgress_;
     QString progressPath_;

@@ -12,6 +12,9 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QRegularExpressionValidator>
+#include <QResizeEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QTableWidget>
 #include <QTextBlock>
@@ -29,6 +32,39 @@ QString q(const std::string& s) {
 }  // namespace
 
 namespace {
+// The exercise's prompt, hints and feedback: as tall as they are, up to the room the lesson text
+// leaves (then they scroll), so a long feedback never pushes the step's text out of sight. Its
+// least height follows the content: the layout gives it all of it (up to the cap) before the text.
+class ExerciseScroll : public QScrollArea {
+  public:
+    using QScrollArea::QScrollArea;
+    /// The content's height at this width, capped at `cap`.
+    void fit(int cap) {
+        cap_ = cap;
+        const QWidget* w = widget();
+        if (!w) return;
+        const int width = std::max(1, this->width() - 2 * frameWidth());
+        const int content =
+            w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
+        const int h = std::min(content + 2 * frameWidth(), cap_);
+        if (h != minimumHeight() || h != maximumHeight()) setFixedHeight(h);
+    }
+    bool eventFilter(QObject* o, QEvent* e) override {
+        // The body's layout changed (a hint, the feedback): as tall as it now is.
+        if (o == widget() && e->type() == QEvent::LayoutRequest) fit(cap_);
+        return QScrollArea::eventFilter(o, e);
+    }
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override {
+        QScrollArea::resizeEvent(e);
+        if (e->size().width() != e->oldSize().width()) fit(cap_);  // the text wraps anew
+    }
+
+  private:
+    int cap_ = 200;
+};
+
 // Markdown's code blocks are laid out unbroken: in a narrow panel (a 1366x768 laptop) their
 // lines ran off the side. Every line may wrap, at a word if it can, else anywhere.
 void wrapLongLines(QTextBrowser* text) {
@@ -59,6 +95,9 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_ = new QTextBrowser;
     text_->setObjectName("lessonText");
     text_->setOpenExternalLinks(true);
+    // A few lines of the step's text however tall the exercise box grows (1366x768).
+    text_->setMinimumHeight(120);
+    text_->installEventFilter(this);
     layout->addWidget(text_, 1);
 
     // Shown while the student explores (a pixel click, R, B): the one way back to the lesson.
@@ -78,6 +117,14 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     connect(back, &QPushButton::clicked, this, &LessonPanel::lessonTraceRequested);
     noteRow_->hide();
     layout->addWidget(noteRow_);
+    // An action refused while an exercise holds the replay: why, where the student looks.
+    heldLabel_ = new QLabel;
+    heldLabel_->setObjectName("heldNote");
+    heldLabel_->setWordWrap(true);
+    heldLabel_->setStyleSheet(
+        QStringLiteral("#heldNote { background: #fff4d6; color: #5a4300; padding: 4px 6px; }"));
+    heldLabel_->hide();
+    layout->addWidget(heldLabel_);
 
     stepRow_ = new QWidget;
     auto* sr = new QHBoxLayout(stepRow_);
@@ -93,7 +140,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
         connect(new QShortcut(QKeySequence(key), this), &QShortcut::activated, this,
                 [this, delta = delta] {
                     QPushButton* b = delta < 0 ? prevStep_ : nextStep_;
-                    if (b->isEnabled() && stepRow_->isEnabled() && stepRow_->isVisible())
+                    if (b->isEnabled() && stepRow_->isEnabled() && !stepRow_->isHidden())
                         goToStep(step_ + delta);
                 });
     stepLabel_ = new QLabel;
@@ -148,10 +195,22 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     exploreNote_->setWordWrap(true);
     exploreNote_->setStyleSheet(QStringLiteral("color: #5a4300"));
     el->addWidget(exploreNote_);
+    waitNote_ = new QLabel;
+    waitNote_->setObjectName("waitNote");
+    waitNote_->setWordWrap(true);
+    waitNote_->setStyleSheet(QStringLiteral("color: #5a4300"));
+    el->addWidget(waitNote_);
     exerciseBody_ = new QWidget;
     auto* body = new QVBoxLayout(exerciseBody_);
     body->setContentsMargins(0, 0, 0, 0);
-    el->addWidget(exerciseBody_);
+    exerciseScroll_ = new ExerciseScroll;
+    exerciseScroll_->setObjectName("exerciseScroll");
+    exerciseScroll_->setFrameShape(QFrame::NoFrame);
+    exerciseScroll_->setWidgetResizable(true);
+    exerciseScroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    exerciseScroll_->setWidget(exerciseBody_);
+    el->addWidget(exerciseScroll_);
+    QVBoxLayout* box = el;
     el = body;  // the prompt, the answer and the feedback go in the body
     prompt_ = new QLabel;
     prompt_->setObjectName("prompt");
@@ -210,9 +269,13 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     feedback_->setWordWrap(true);
     feedback_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     el->addWidget(feedback_);
-    // The buttons last: the box grows upwards as hints and feedback come, and the buttons stay
-    // where the student's mouse is (Hint pressed again reveals the next one).
-    el->addLayout(br);
+    // The buttons last, under the scrolled part: the box grows upwards as hints and feedback
+    // come, and the buttons stay where the student's mouse is (Hint pressed again reveals the
+    // next one).
+    buttonRow_ = new QWidget;
+    buttonRow_->setLayout(br);
+    br->setContentsMargins(0, 0, 0, 0);
+    box->addWidget(buttonRow_);
     layout->addWidget(exerciseBox_);
 
     sweepButton_ = new QPushButton(tr("Run the sweep"));
@@ -240,63 +303,84 @@ void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
     exploring_ = exerciseOpen_ = false;
-    noteRow_->hide();
+    heldNote_.clear();
+    stepAnchor_ = -1;
     freeText_ = markdown;
     text_->setMarkdown(markdown);
     wrapLongLines(text_);
-    stepRow_->hide();
-    exerciseBox_->hide();
-    sweepButton_->hide();
-    sweepTable_->hide();
     picker_->setCurrentIndex(0);
+    updateWidgets();
     emit quizChanged();
 }
 
 void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress) {
     lesson_ = lesson;
     log_ = std::move(log);
-    noteRow_->hide();
     hasLesson_ = true;
+    // A new lesson starts on its own trace: whatever the last one explored or was told ends.
     exploring_ = false;
+    heldNote_.clear();
     ownProgress_ = {};
     sweepRows_.clear();
     progress_ = progress ? progress : &ownProgress_;
     picker_->setCurrentIndex(std::max(0, picker_->findData(q(lesson.id))));
-    stepRow_->setVisible(!lesson.steps.empty());
-    exerciseBox_->setVisible(!lesson.exercises.empty());
-    sweepButton_->setVisible(lesson.sweep.has_value());
-    sweepTable_->hide();
     step_ = std::clamp(progress_->step, 0, std::max(0, int(lesson.steps.size()) - 1));
     // A lesson opens on its first unsolved exercise, open: the replay stops at its position,
     // so the steps cannot show its answer before the student predicts it ("Put away" frees it).
     exercise_ = 0;
     while (exercise_ + 1 < static_cast<int>(lesson.exercises.size()) && solved(exercise_))
         ++exercise_;
-    exerciseOpen_ = !lesson.exercises.empty() && !solved(exercise_);
+    // Presenting, it waits closed for the lecturer to ask it (Try it takes the replay to its
+    // position): opened at once beside the step the lecture was at, the views could hold its
+    // answer while the room reads the question.
+    exerciseOpen_ =
+        !lesson.exercises.empty() && !solved(exercise_) && mode_ != LessonMode::Presenting;
     putAway_.clear();
     refreshText();
     refreshExercise();
+    updateWidgets();
     emit quizChanged();
 }
 
-void LessonPanel::setReplayNote(const QString& what) {
+void LessonPanel::setReplayNote(const QString& what, bool hidden) {
     exploring_ = hasLesson_ && !what.isEmpty();
-    if (exploring_)
-        note_->setText(tr("You are exploring %1. The lesson's steps and exercises are about its "
-                          "own trace: they wait until you go back.")
-                           .arg(what));
-    noteRow_->setVisible(exploring_);
-    stepRow_->setEnabled(!exploring_);
-    if (hasLesson_) updateExerciseBox();
+    if (exploring_) {
+        heldNote_.clear();
+        note_->setText(
+            tr("You are exploring %1. The lesson's steps and exercises are about its "
+               "own trace: they wait until you go back.")
+                .arg(what) +
+            (hidden ? QStringLiteral(" ") +
+                          tr("An exercise holds the replay: nothing of this trace is shown until "
+                             "you go back and answer it or put it away.")
+                    : QString()));
+    }
+    updateWidgets();
 }
 
 QString LessonPanel::replayNote() const {
     return noteRow_->isHidden() ? QString() : note_->text();
 }
 
-void LessonPanel::setLecturerMode(bool on) {
-    lecturer_ = on;
-    if (hasLesson_) refreshExercise();
+void LessonPanel::showHeldNote(const QString& text) {
+    heldNote_ = text;
+    updateWidgets();
+}
+
+QString LessonPanel::heldNote() const {
+    return heldLabel_->isHidden() ? QString() : heldLabel_->text();
+}
+
+void LessonPanel::setMode(LessonMode mode) {
+    if (mode == mode_) return;
+    mode_ = mode;
+    heldNote_.clear();
+    if (hasLesson_) {
+        // What the held exercises allow changes: the steps' texts and the prompts that wait.
+        refreshText();
+        refreshExercise();
+        updateWidgets();
+    }
     emit quizChanged();
 }
 
@@ -308,31 +392,44 @@ void LessonPanel::setShowErrata(bool on) {
 void LessonPanel::goToStep(int index) {
     if (!hasLesson_ || lesson_.steps.empty()) return;
     step_ = std::clamp(index, 0, static_cast<int>(lesson_.steps.size()) - 1);
+    heldNote_.clear();
     refreshText();
+    updateWidgets();
     emit stepShown(step_);
 }
 
 void LessonPanel::selectExercise(int index) {
     if (!hasLesson_ || lesson_.exercises.empty()) return;
     exercise_ = std::clamp(index, 0, static_cast<int>(lesson_.exercises.size()) - 1);
-    exerciseOpen_ = true;
-    putAway_.erase(exercise_);
+    heldNote_.clear();
+    // One after a held exercise waits, closed: its prompt may state the held one's answer.
+    const bool waits = waitingFor(exercise_).has_value();
+    exerciseOpen_ = !waits;
+    if (!waits) putAway_.erase(exercise_);
     refreshExercise();
+    updateWidgets();
     emit quizChanged();
-    emit exerciseShown(exercise_);
+    if (!waits) emit exerciseShown(exercise_);
 }
 
 void LessonPanel::closeExercise() {
     if (!exerciseOpen_) return;
     exerciseOpen_ = false;
     putAway_.insert(exercise_);
-    updateExerciseBox();
+    heldNote_.clear();
+    updateWidgets();
     emit quizChanged();
+}
+
+std::optional<int> LessonPanel::waitingFor(int index) const {
+    for (const int i : heldExercises())
+        if (i < index) return i;
+    return std::nullopt;
 }
 
 std::vector<int> LessonPanel::heldExercises() const {
     std::vector<int> held;
-    if (!hasLesson_ || lecturer_) return held;
+    if (!hasLesson_ || mode_ != LessonMode::Quiz) return held;
     for (int i = 0; i < static_cast<int>(lesson_.exercises.size()); ++i)
         if (!solved(i) && !putAway_.count(i)) held.push_back(i);
     return held;
@@ -347,8 +444,14 @@ std::optional<std::pair<int, std::size_t>> LessonPanel::heldBy() const {
     return held;
 }
 
+bool LessonPanel::asksTheRoom() const {
+    return hasLesson_ && mode_ == LessonMode::Presenting && exerciseOpen_ && !revealed_ &&
+           !lesson_.exercises.empty() && !solved(exercise_) && log_ &&
+           quizLimit(lesson_.exercises[exercise_], *log_).has_value();
+}
+
 std::optional<int> LessonPanel::quizExercise() const {
-    if (!hasLesson_ || !exerciseOpen_ || lecturer_ || lesson_.exercises.empty() ||
+    if (!hasLesson_ || !exerciseOpen_ || mode_ != LessonMode::Quiz || lesson_.exercises.empty() ||
         solved(exercise_))
         return std::nullopt;
     return exercise_;
@@ -386,73 +489,146 @@ void LessonPanel::refreshText() {
     QTextCursor at(text_->document());
     at.movePosition(QTextCursor::End);
     appendErrata(at, lesson_.errata);
+    stepAnchor_ = -1;
     if (!lesson_.steps.empty()) {
         const LessonStep& step = lesson_.steps[step_];
-        // A step past an unsolved exercise's position tells what comes after it: its text waits
-        // with the replay (a step may name the next cell or the count the exercise asks for).
+        // A step past an unsolved exercise's position tells what comes after it: its text, its
+        // computed note and its notes on the slides wait with the replay (a step may name the
+        // next cell or the count the exercise asks for).
         const auto held = heldBy();
         const auto stepAt = log_ ? resolvePosition(step.at, *log_) : std::nullopt;
+        const bool waits = held && stepAt && *stepAt > held->second;
         const QString text =
-            held && stepAt && *stepAt > held->second
-                ? tr("This step comes after exercise %1: answer it, or put it away, to read it.")
-                      .arg(held->first + 1)
-                : q(step.text.in(lang_));
+            waits ? tr("This step comes after exercise %1: answer it, or put it away, to read it.")
+                        .arg(held->first + 1)
+                  : q(step.text.in(lang_));
         QString md = QStringLiteral("\n---\n\n**%1 %2 / %3.** %4\n")
                          .arg(tr("Step"))
                          .arg(step_ + 1)
                          .arg(lesson_.steps.size())
                          .arg(text);
         // A computed note (the slides' DDA loop beside the exact walk), as a quote under the step.
-        if (!step.note.en.empty()) md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
+        if (!waits && !step.note.en.empty())
+            md += QStringLiteral("\n> %1\n").arg(q(step.note.in(lang_)));
         at.movePosition(QTextCursor::End);
         // A plain block: one inserted after a text ending in a list would be an empty bullet.
         at.insertBlock(QTextBlockFormat(), QTextCharFormat());
+        stepAnchor_ = at.position();
         at.insertMarkdown(md);
-        appendErrata(at, step.errata);
+        if (!waits) appendErrata(at, step.errata);
         stepLabel_->setText(tr("Step %1 / %2").arg(step_ + 1).arg(lesson_.steps.size()));
-        prevStep_->setEnabled(step_ > 0);
-        nextStep_->setEnabled(step_ + 1 < static_cast<int>(lesson_.steps.size()));
     }
     wrapLongLines(text_);
-    // The step's text is what the lecturer points at: keep it in sight.
+    keepStepInView();
+}
+
+void LessonPanel::keepStepInView() {
+    if (stepAnchor_ < 0) {
+        text_->moveCursor(QTextCursor::Start);
+        return;
+    }
+    // The step's text is what the lecturer points at: in sight, from its heading down, however
+    // long the notes on the slides under it are. From the end back to the heading: the
+    // smallest scroll that shows it puts the heading at the top when the whole does not fit.
     text_->moveCursor(QTextCursor::End);
+    text_->ensureCursorVisible();
+    QTextCursor c(text_->document());
+    // The rule (---) the markdown puts first: the step's own heading is the block after it.
+    c.setPosition(std::min(stepAnchor_, text_->document()->characterCount() - 1));
+    text_->setTextCursor(c);
     text_->ensureCursorVisible();
 }
 
-void LessonPanel::updateExerciseBox() {
-    if (lesson_.exercises.empty()) return;
-    exerciseLabel_->setText(tr("Exercise %1 / %2%3")
-                                .arg(exercise_ + 1)
-                                .arg(lesson_.exercises.size())
-                                .arg(solved(exercise_) ? tr(" (solved)") : QString()));
-    openButton_->setText(exerciseOpen_ ? tr("Put away") : tr("Try it"));
-    openButton_->setToolTip(
-        exerciseOpen_ ? tr("Put the exercise away: the replay may then go past its position")
-                      : tr("Open the exercise: the replay stops at its position "
-                           "until you answer"));
-    // While exploring, the exercises wait: they are graded against the lesson's own trace, and
-    // the open one's prompt is put aside (the explored trace may hold its answer); Back to the
-    // lesson shows it again, with its limit.
-    exerciseBody_->setVisible(exerciseOpen_ && !exploring_);
-    exerciseHeader_->setEnabled(!exploring_);
-    exerciseBody_->setEnabled(!exploring_);
-    exploreNote_->setVisible(exploring_);
+void LessonPanel::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    // The exercise box scrolls before the lesson text loses its room: at most about 2/5 of the
+    // panel for the prompt, hints and feedback.
+    static_cast<ExerciseScroll*>(exerciseScroll_)->fit(std::max(80, height() * 3 / 10));
+}
+
+bool LessonPanel::eventFilter(QObject* o, QEvent* e) {
+    // The text's room changed (the exercise box grew or shrank, the window was resized): the
+    // step's text back in sight.
+    if (o == text_ && e->type() == QEvent::Resize && hasLesson_) keepStepInView();
+    return QWidget::eventFilter(o, e);
+}
+
+void LessonPanel::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    if (hasLesson_) keepStepInView();
+}
+
+void LessonPanel::updateWidgets() {
+    // Every part's state from the panel's: whatever changed it (a lesson switch, exploring,
+    // the mode, an answer), nothing is left as an earlier state set it.
+    const bool steps = hasLesson_ && !lesson_.steps.empty();
+    const bool exercises = hasLesson_ && !lesson_.exercises.empty();
+    noteRow_->setVisible(hasLesson_ && exploring_);
+    heldLabel_->setText(heldNote_);
+    heldLabel_->setVisible(hasLesson_ && !exploring_ && !heldNote_.isEmpty());
+    stepRow_->setVisible(steps);
+    stepRow_->setEnabled(steps && !exploring_);
+    prevStep_->setEnabled(steps && step_ > 0);
+    nextStep_->setEnabled(steps && step_ + 1 < static_cast<int>(lesson_.steps.size()));
+    sweepButton_->setVisible(hasLesson_ && lesson_.sweep.has_value());
+    sweepTable_->setVisible(hasLesson_ && lesson_.sweep.has_value() && !sweepRows_.empty());
+    exerciseBox_->setVisible(exercises);
+    if (exercises) {
+        exerciseBox_->setTitle(mode_ == LessonMode::Presenting ? tr("Question for the room")
+                               : mode_ == LessonMode::Lecturer ? tr("Exercise (answers shown)")
+                                                               : tr("Exercise"));
+        exerciseLabel_->setText(tr("Exercise %1 / %2%3")
+                                    .arg(exercise_ + 1)
+                                    .arg(lesson_.exercises.size())
+                                    .arg(solved(exercise_) ? tr(" (solved)") : QString()));
+        const auto waits = waitingFor(exercise_);
+        openButton_->setText(exerciseOpen_ ? tr("Put away") : tr("Try it"));
+        const bool quiz = mode_ == LessonMode::Quiz;
+        openButton_->setToolTip(
+            exerciseOpen_ ? (quiz ? tr("Put the exercise away: the replay may then go past its "
+                                       "position")
+                                  : tr("Put the exercise away"))
+                          : (quiz ? tr("Open the exercise: the replay stops at its position "
+                                       "until you answer")
+                                  : tr("Open the exercise: the replay goes to its position")));
+        openButton_->setVisible(!waits);
+        if (waits)
+            waitNote_->setText(tr("Exercise %1 waits for exercise %2: answer that one, or put "
+                                  "it away, to read this one.")
+                                   .arg(exercise_ + 1)
+                                   .arg(*waits + 1));
+        // While exploring, the exercises wait: they are graded against the lesson's own trace,
+        // and the open one's prompt is put aside (the explored trace may hold its answer); Back
+        // to the lesson shows it again, with its limit.
+        const bool working = exerciseOpen_ && !exploring_ && !waits;
+        exerciseHeader_->setEnabled(!exploring_);
+        exploreNote_->setVisible(exploring_);
+        waitNote_->setVisible(!exploring_ && waits);
+        exerciseScroll_->setVisible(working);
+        buttonRow_->setVisible(working);
+        revealButton_->setVisible(mode_ != LessonMode::Quiz);
+    }
+    if (exploringSaid_ != exploring_) {
+        exploringSaid_ = exploring_;
+        emit exploringChanged(exploring_);
+    }
 }
 
 void LessonPanel::refreshExercise() {
     if (lesson_.exercises.empty()) return;
     const Exercise& ex = lesson_.exercises[exercise_];
-    updateExerciseBox();
-    prompt_->setText(q(ex.prompt.in(lang_)));
+    // An exercise that waits for a held one shows nothing of itself: no prompt, hint or choice.
+    const bool waits = waitingFor(exercise_).has_value();
+    prompt_->setText(waits ? QString() : q(ex.prompt.in(lang_)));
     answer_->clear();
     feedback_->clear();
     feedback_->setStyleSheet({});
     hintsShown_ = 0;
+    revealed_ = false;
     hints_->clear();
     hints_->hide();
     hintButton_->setEnabled(!ex.hints.empty());
     hintButton_->setText(tr("Hint"));
-    revealButton_->setVisible(lecturer_);
     const bool split = ex.kind == ExerciseKind::PickSplit;
     candidates_->setVisible(split);
     answer_->setVisible(!split);
@@ -465,7 +641,7 @@ void LessonPanel::refreshExercise() {
         sequence_.clear();
         emit sequenceChanged(sequence_);
     }
-    if (split && log_) {
+    if (split && log_ && !waits) {
         // The candidates without their cost: computing it is the exercise.
         for (const SplitCandidate& c : splitCandidates(ex, *log_))
             candidates_->addItem(
@@ -482,7 +658,7 @@ void LessonPanel::refreshExercise() {
         choiceGroup_->removeButton(b);
         delete b;
     }
-    if (ex.kind == ExerciseKind::Choice) {
+    if (ex.kind == ExerciseKind::Choice && !waits) {
         for (std::size_t k = 0; k < ex.choices.size(); ++k) {
             auto* b = new QRadioButton(QStringLiteral("%1) %2")
                                            .arg(QChar('a' + static_cast<int>(k)))
@@ -533,7 +709,7 @@ void LessonPanel::refreshExercise() {
         case ExerciseKind::PickSplit:
             break;
     }
-    if (lecturer_ && log_) revealAnswer();
+    if (mode_ == LessonMode::Lecturer && log_ && !waits) revealAnswer();
 }
 
 void LessonPanel::fillCell(int x, int y) {
@@ -598,9 +774,17 @@ void LessonPanel::check() {
         feedback_->setText(exploreNote_->text());
         return;
     }
+    // One after a held exercise waits (its prompt is not shown; a script may still call).
+    if (waitingFor(exercise_)) {
+        feedback_->setProperty("correct", false);
+        feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
+        feedback_->setText(waitNote_->text());
+        return;
+    }
+    heldNote_.clear();
     if (!exerciseOpen_) {
         exerciseOpen_ = true;  // answering an exercise is working on it
-        updateExerciseBox();
+        updateWidgets();
         emit quizChanged();
     }
     const Exercise& ex = lesson_.exercises[exercise_];
@@ -648,23 +832,25 @@ void LessonPanel::check() {
     if (v.correct) {
         feedback_->setStyleSheet(QStringLiteral("color: #1a7f37"));
         feedback_->setText(tr("Right. %1").arg(q(v.feedback)));
-    } else if (wasSolved) {
+    } else if (wasSolved && mode_ != LessonMode::Presenting) {
         // Solved before: the attempt is not counted against the student.
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
         feedback_->setText(tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback)));
     } else {
         feedback_->setStyleSheet(QStringLiteral("color: #c62828"));
-        // A slip the answer betrays is named at once, with the student's own numbers.
+        // A slip the answer betrays is named at once, with the student's own numbers; else
+        // where the answer can be worked out. The answer itself: after three tries in quiz
+        // mode, at once in lecturer mode, never in front of the room (Show answer reveals it).
+        const QString advice =
+            v.slip.empty() ? retryAdvice(ex.kind, replayHeldBeforeAnswer()) : q(v.slip);
         feedback_->setText(
-            rec.attempts >= 3 || lecturer_
+            mode_ == LessonMode::Presenting ? tr("Not right yet. %1").arg(advice)
+            : rec.attempts >= 3 || mode_ == LessonMode::Lecturer
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
-            : v.slip.empty()
-                ? tr("Not right yet (try %1 of 3). Step the replay and look at the "
-                     "inspector, or ask for a hint.")
-                      .arg(rec.attempts)
-                : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(q(v.slip)));
+                : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(advice));
     }
-    updateExerciseBox();
+    updateWidgets();
+    exerciseScroll_->ensureWidgetVisible(feedback_);
     emit answered(q(ex.id), v.correct, typed);
     // Answered right: the replay may go past the exercise now.
     if (v.correct && !wasSolved) emit quizChanged();
@@ -692,6 +878,7 @@ void LessonPanel::hint() {
                      .arg(q(ex.hints[k].in(lang_)));
     hints_->setText(shown.join(QStringLiteral("\n\n")));
     hints_->show();
+    exerciseScroll_->ensureWidgetVisible(hints_);
     const bool more = hintsShown_ < static_cast<int>(ex.hints.size());
     hintButton_->setEnabled(more);
     hintButton_->setText(more ? tr("Next hint") : tr("No more hints"));
@@ -718,8 +905,40 @@ const std::vector<GridSweepRow>* LessonPanel::sweepRows() const {
     return sweepRows_.empty() ? nullptr : &sweepRows_;
 }
 
+bool LessonPanel::replayHeldBeforeAnswer() const {
+    if (!log_ || mode_ != LessonMode::Quiz) return false;
+    const auto held = heldBy();
+    const auto answerAt = answerEventIndex(lesson_.exercises[exercise_], *log_, lesson_.file);
+    return held && answerAt && *answerAt >= held->second;
+}
+
+QString retryAdvice(ExerciseKind kind, bool held) {
+    switch (kind) {
+        case ExerciseKind::Compute:
+            return LessonPanel::tr(
+                "Go through the computation again, one term at a time, or ask for a hint.");
+        case ExerciseKind::Choice:
+            return LessonPanel::tr(
+                "Read the options again against the lesson's text, or ask "
+                "for a hint.");
+        case ExerciseKind::SweepPick:
+            return LessonPanel::tr("Read the sweep's table again, or ask for a hint.");
+        default:
+            // The replay stops before the answer: what it shows so far is what to reason from.
+            return held ? LessonPanel::tr(
+                              "Work it out from what the replay shows up to here "
+                              "(the view, the inspector), or ask for a hint.")
+                        : LessonPanel::tr(
+                              "Step the replay and look at the inspector, or ask "
+                              "for a hint.");
+    }
+}
+
 void LessonPanel::revealAnswer() {
-    if (!log_) return;
+    // Quiz mode: the answer comes after three tries, never from a button.
+    if (!log_ || !hasLesson_ || lesson_.exercises.empty() || mode_ == LessonMode::Quiz ||
+        waitingFor(exercise_))
+        return;
     const Exercise& ex = lesson_.exercises[exercise_];
     if (ex.kind == ExerciseKind::SweepPick && !sweepRows()) {
         feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
@@ -736,6 +955,11 @@ void LessonPanel::revealAnswer() {
     }
     feedback_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     feedback_->setText(tr("Answer: %1. %2").arg(q(v.expected), q(v.feedback)));
+    exerciseScroll_->ensureWidgetVisible(feedback_);
+    if (!revealed_) {
+        revealed_ = true;
+        emit quizChanged();  // presenting: what lies past the cursor may show now
+    }
 }
 
 void LessonPanel::showSweep(const std::vector<GridSweepRow>& rows) {

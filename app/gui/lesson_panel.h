@@ -26,10 +26,22 @@ class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QScrollArea;
 class QTableWidget;
 class QTextBrowser;
 
 namespace raystep::gui {
+
+/// Who a lesson is run for. Quiz: a student answers; every unsolved exercise holds the replay at
+/// its position and the prompts after it. Presenting: a lecturer in front of the room; every
+/// step and view is free, the exercises are questions to the room, an answer is shown only when
+/// the lecturer reveals that one. Lecturer: preparing; every answer is shown.
+enum class LessonMode { Quiz, Presenting, Lecturer };
+
+/// A wrong answer's advice, by the exercise's kind: where the answer can be worked out. Never
+/// "step the replay" while the replay is held before the answer, nor for the kinds whose answer
+/// is not in the trace (compute, choice, sweep_pick).
+QString retryAdvice(ExerciseKind kind, bool held);
 
 class LessonPanel : public QWidget {
     Q_OBJECT
@@ -48,24 +60,36 @@ class LessonPanel : public QWidget {
     const LogRef& lessonLog() const { return log_; }
     /// The replay shows something else than the lesson's trace (`what`, e.g. "pixel (3, 4)"):
     /// the student explores. Say so, offer the one way back, and disable the steps and the
-    /// exercises (they are about the lesson's own trace). An empty `what` ends it.
-    void setReplayNote(const QString& what);
+    /// exercises (they are about the lesson's own trace). An empty `what` ends it. `hidden`:
+    /// an exercise holds the replay, so the explored trace is not shown (Session::limit).
+    void setReplayNote(const QString& what, bool hidden = false);
     QString replayNote() const;
     bool exploring() const { return exploring_; }
+    /// An action refused because an exercise holds the replay (a pixel click, B, R, C): why,
+    /// until the student next steps, picks an exercise or answers.
+    void showHeldNote(const QString& text);
+    QString heldNote() const;
     /// The picker shows the open lesson again (after a pick that could not be opened).
     void syncPicker();
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
     void showText(const QString& markdown);
     bool hasLesson() const { return hasLesson_; }
     const Lesson& lesson() const { return lesson_; }
-    void setLecturerMode(bool on);
-    bool lecturerMode() const { return lecturer_; }
+    void setMode(LessonMode mode);
+    LessonMode mode() const { return mode_; }
+    /// Lecturer mode on, or back to quiz mode.
+    void setLecturerMode(bool on) { setMode(on ? LessonMode::Lecturer : LessonMode::Quiz); }
+    bool lecturerMode() const { return mode_ == LessonMode::Lecturer; }
 
     int step() const { return step_; }
     int exercise() const { return exercise_; }
     void goToStep(int index);
-    /// Shows and opens exercise `index` (the replay goes to its position).
+    /// Shows and opens exercise `index` (the replay goes to its position); in quiz mode, one
+    /// after a held exercise is shown closed, its prompt waiting (waitingFor).
     void selectExercise(int index);
+    /// Quiz mode: the held exercise before `index` whose answer the prompt and hints of `index`
+    /// wait for (a later prompt may state an earlier answer); nullopt when none holds it.
+    std::optional<int> waitingFor(int index) const;
     /// Puts the open exercise away: the student chooses to look past its position (the other
     /// unsolved exercises still hold the replay at theirs).
     void closeExercise();
@@ -74,10 +98,13 @@ class LessonPanel : public QWidget {
     /// right, lecturer mode off), if any.
     std::optional<int> quizExercise() const;
     /// The exercises that hold the replay: every unsolved one the student has not put away
-    /// (none in lecturer mode). The replay stops at the earliest of their positions.
+    /// (quiz mode only). The replay stops at the earliest of their positions.
     std::vector<int> heldExercises() const;
     /// The held exercise whose position comes first, and that position (the replay's limit).
     std::optional<std::pair<int, std::size_t>> heldBy() const;
+    /// Presenting mode: the shown exercise is a question to the room (open, unsolved, its answer
+    /// in the trace and not revealed): nothing past the cursor is listed or counted meanwhile.
+    bool asksTheRoom() const;
     /// Lessons > Show notes on the slides: the errata boxes under the texts.
     void setShowErrata(bool on);
     bool showErrata() const { return showErrata_; }
@@ -85,6 +112,9 @@ class LessonPanel : public QWidget {
     QString hintsText() const;
     /// Types an answer and checks it (what the Check button does); true if right.
     bool submit(const QString& answer);
+    /// Shows the answer of the shown exercise (the Show answer button; presenting and lecturer
+    /// modes only).
+    void revealAnswer();
     QString feedback() const;
     QString exerciseText() const;
     void showSweep(const std::vector<GridSweepRow>& rows);
@@ -106,19 +136,31 @@ class LessonPanel : public QWidget {
     void sweepRequested();
     /// The cells of a sequence answer so far (the 2D view numbers them); empty when none.
     void sequenceChanged(const QList<QPoint>& cells);
+    /// The student started or stopped exploring (the window's Back to the lesson follows).
+    void exploringChanged(bool exploring);
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override;
+    bool eventFilter(QObject* o, QEvent* e) override;
+    void showEvent(QShowEvent* e) override;
 
   private:
     void refreshText();
     void refreshExercise();
     void check();
     void hint();
-    void revealAnswer();
+    /// Whether the shown exercise's answer lies past where the replay is held.
+    bool replayHeldBeforeAnswer() const;
     /// What the student answered, as text parseAnswer reads ("" when nothing is chosen yet).
     QString typedAnswer() const;
     /// The sweep's rows for grading a sweep_pick, or null before the sweep has run.
     const std::vector<GridSweepRow>* sweepRows() const;
-    /// The exercise box's parts, enabled and shown for the exercise's state.
-    void updateExerciseBox();
+    /// Every part's enabled and shown state (the steps, the notes, the exercise box), derived
+    /// from the panel's state alone; called after every change of it.
+    void updateWidgets();
+    /// Scrolls the lesson text so the step's own text is in sight (its heading at the top when
+    /// the whole does not fit), not the notes under it.
+    void keepStepInView();
     /// The lesson's or a step's slide errata, as marked boxes at the end of the text.
     void appendErrata(QTextCursor& at, const std::vector<Erratum>& errata);
 
@@ -126,12 +168,16 @@ class LessonPanel : public QWidget {
     Lesson lesson_;
     LogRef log_;
     bool hasLesson_ = false;
-    bool lecturer_ = false;
+    LessonMode mode_ = LessonMode::Quiz;
     bool exploring_ = false;
+    std::optional<bool> exploringSaid_;  // what exploringChanged last said
+    QString heldNote_;
+    int stepAnchor_ = -1;  // where the step's text starts in the lesson text
     bool exerciseOpen_ = false;
     std::set<int> putAway_;  // exercises the student chose to look past (Put away)
     bool showErrata_ = true;
     int hintsShown_ = 0;
+    bool revealed_ = false;  // Show answer pressed on the shown exercise (presenting)
     int step_ = 0;
     int exercise_ = 0;
     /// This exercise's record in the progress (made on first use).
@@ -145,6 +191,7 @@ class LessonPanel : public QWidget {
     QTextBrowser* text_ = nullptr;
     QWidget* noteRow_ = nullptr;
     QLabel* note_ = nullptr;
+    QLabel* heldLabel_ = nullptr;
     QWidget* stepRow_ = nullptr;
     QLabel* stepLabel_ = nullptr;
     QPushButton* prevStep_ = nullptr;
@@ -154,7 +201,10 @@ class LessonPanel : public QWidget {
     QLabel* exerciseLabel_ = nullptr;
     QPushButton* openButton_ = nullptr;
     QLabel* exploreNote_ = nullptr;
+    QLabel* waitNote_ = nullptr;  // an exercise after a held one: what it waits for
+    QScrollArea* exerciseScroll_ = nullptr;
     QWidget* exerciseBody_ = nullptr;
+    QWidget* buttonRow_ = nullptr;
     QLabel* hints_ = nullptr;
     QLabel* prompt_ = nullptr;
     QLineEdit* answer_ = nullptr;

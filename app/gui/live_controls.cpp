@@ -157,6 +157,7 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
 
     connect(&session_, &Session::sceneChanged, this, [this] { sync(); });
     connect(&session_, &Session::logChanged, this, [this] { updateStatistics(); });
+    connect(&session_, &Session::shownChanged, this, [this] { updateStatistics(); });
     sync();
 }
 
@@ -248,7 +249,8 @@ void LiveControls::updateStatistics() {
         return;
     }
     std::size_t tests = 0, cells = 0, nodes = 0, skips = 0, built = 0, leaves = 0;
-    for (const Event& e : session_.log().events()) {
+    // What may be shown only: an exercise held in quiz mode may ask for these very counts.
+    for (const Event& e : session_.shownEvents()) {
         tests += std::holds_alternative<PrimitiveTest>(e);
         cells += std::holds_alternative<DdaCell>(e);
         nodes += std::holds_alternative<NodeEnter>(e);
@@ -279,7 +281,15 @@ void LiveControls::updateStatistics() {
             lines << tr("Brute force: every primitive for every ray (%1)").arg(t.references);
             break;
     }
-    if (built > 0)
+    if (session_.hiding()) {
+        // The rest waits with the replay: a count up to an exercise's position (or the cursor,
+        // presenting) reads as the whole, so none is shown until the exercise is answered or
+        // put away.
+        lines << (session_.limit()
+                      ? tr("Traced: the counts wait until the exercise is answered or put away")
+                      : tr("Traced: the counts wait until the question is answered or its "
+                           "answer shown"));
+    } else if (built > 0)
         lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
     else if (session_.kind() == AccelKind::Grid)
         lines << tr("Traced: %1 tests, %2 cells visited, %3 mailbox skips")

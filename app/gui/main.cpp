@@ -2,6 +2,7 @@
 // tests: --lesson, --scene, --accel, --step, --screenshot.
 #include "compare_window.h"
 #include "language.h"
+#include "lesson_panel.h"
 #include "main_window.h"
 #include "session.h"
 
@@ -38,6 +39,10 @@ int main(int argc, char** argv) {
         "name|file");
     const QCommandLineOption lecturerOpt("lecturer",
                                          "Lecturer mode: the exercises show their answers.");
+    const QCommandLineOption presentOpt(
+        "present",
+        "Presenting mode: every step and view free, the exercises questions to the room, an "
+        "answer shown when revealed. Without --present or --lecturer, the mode of the last run.");
     const QCommandLineOption accelOpt(
         "accel", "Structure: bruteforce, grid, kdtree or bvh (default: grid; kdtree for a model).",
         "kind", "grid");
@@ -52,7 +57,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
     parser.addOptions({lessonOpt, sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt,
-                       lecturerOpt, shotOpt});
+                       lecturerOpt, presentOpt, shotOpt});
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
@@ -82,10 +87,13 @@ int main(int argc, char** argv) {
 
     if (parser.isSet(lessonOpt) && parser.isSet(sceneOpt))
         return fail("--lesson and --scene: give one of them");
+    if (parser.isSet(lecturerOpt) && parser.isSet(presentOpt))
+        return fail("--lecturer and --present: give one of them");
 
     raystep::gui::MainWindow window;
     window.setLanguage(*language);
-    window.setLecturerMode(parser.isSet(lecturerOpt));
+    if (parser.isSet(lecturerOpt)) window.setLessonMode(raystep::gui::LessonMode::Lecturer);
+    if (parser.isSet(presentOpt)) window.setLessonMode(raystep::gui::LessonMode::Presenting);
     // Slides are made at one size; otherwise the user's own size, or one that fits the screen.
     if (!shot.isEmpty())
         window.resize(1500, 900);

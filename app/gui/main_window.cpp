@@ -23,6 +23,7 @@
 #include "raystep/trace/trace_io.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QBuffer>
 #include <QCloseEvent>
@@ -133,6 +134,8 @@ void MainWindow::createViews() {
     views_ = views;
     connect(imageView_, &ImageView::renderRequested, this, [this] { renderImage(); });
     connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
+        // A pixel beside the lesson's holds the same answers as the lesson's own.
+        if (refusedWhileHeld(tr("trace a pixel's ray tree"))) return;
         // The camera, size and settings the image was made with: the pixel's ray is the one
         // drawn there.
         if (const auto& f = imageFrame_) {
@@ -257,12 +260,13 @@ void MainWindow::createActions() {
     a.replayBuild = action(tr("Replay the &build (candidates, splits, leaves)"),
                            QKeySequence(Qt::Key_B), [this] { replayBuild(); });
     a.exampleRay = action(tr("Replay the &example ray"), QKeySequence(Qt::Key_R), [this] {
-        if (session_.is2D())
-            session_.traceExampleRay();
-        else
+        if (session_.is2D()) {
+            if (!refusedWhileHeld(tr("replay the example ray"))) session_.traceExampleRay();
+        } else {
             statusBar()->showMessage(
                 tr("R replays the example ray of a 2D scene; in 3D, click "
                    "a pixel of the image."));
+        }
     });
     a.first =
         action(tr("&First event"), QKeySequence(Qt::Key_Home), [this] { session_.setCursor(0); });
@@ -274,16 +278,46 @@ void MainWindow::createActions() {
                                                           tr("Lessons (*.json)"));
         if (!path.isEmpty()) openLesson(path);
     });
-    a.lecturer = new QAction(tr("&Lecturer mode (show answers)"), this);
-    a.lecturer->setCheckable(true);
-    a.lecturer->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    connect(a.lecturer, &QAction::toggled, lesson_, &LessonPanel::setLecturerMode);
+    // Who the lesson runs for: a student (quiz), the room (presenting: everything free, the
+    // answers hidden until revealed one by one), the lecturer preparing (every answer shown).
+    // One of the three, remembered; a mode's key pressed again goes back to quiz mode.
+    auto* modes = new QActionGroup(this);
+    modes->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+    const auto mode = [modes](const QString& text, QKeySequence key, const QString& tip) {
+        auto* m = new QAction(text, modes);
+        m->setCheckable(true);
+        m->setShortcut(key);
+        m->setStatusTip(tip);
+        return m;
+    };
+    a.quizMode = mode(tr("&Quiz mode (the student answers)"), {},
+                      tr("Every unsolved exercise holds the replay at its position"));
+    a.presentMode = mode(
+        tr("&Presenting mode (answers hidden)"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        tr("Every step and view free; each exercise a question to the room, its answer "
+           "shown when you reveal it"));
+    a.lecturer = mode(tr("&Lecturer mode (show answers)"), QKeySequence(Qt::CTRL | Qt::Key_L),
+                      tr("Every step and view free, every answer shown"));
+    // The user's pick of quiz or presenting mode is remembered (not a mode set by a script or
+    // --present); lecturer mode never is: the next run, perhaps on a projector or a student's
+    // screen, does not start with every answer shown.
+    connect(modes, &QActionGroup::triggered, this, [this] {
+        const LessonMode m = actions_.presentMode->isChecked() ? LessonMode::Presenting
+                             : actions_.lecturer->isChecked()  ? LessonMode::Lecturer
+                                                               : LessonMode::Quiz;
+        if (m != LessonMode::Lecturer) QSettings().setValue("lessons/mode", static_cast<int>(m));
+        setLessonMode(m);
+    });
+    {
+        const int saved = QSettings().value("lessons/mode", 0).toInt();
+        setLessonMode(saved == static_cast<int>(LessonMode::Presenting) ? LessonMode::Presenting
+                                                                        : LessonMode::Quiz);
+    }
     // The one way back after a pixel click, R or B: the lesson's trace, steps and exercises.
     a.backToLesson = action(tr("&Back to the lesson"), QKeySequence(Qt::Key_Escape),
                             [this] { lessons_->backToLesson(); });
     a.backToLesson->setEnabled(false);
-    connect(&session_, &Session::logChanged, this,
-            [this] { actions_.backToLesson->setEnabled(lesson_->exploring()); });
+    connect(lesson_, &LessonPanel::exploringChanged, a.backToLesson, &QAction::setEnabled);
     // The slides' errata under the texts: a lecturer may hide them; remembered.
     a.showErrata = new QAction(tr("Show &notes on the slides"), this);
     a.showErrata->setCheckable(true);
@@ -318,7 +352,11 @@ void MainWindow::createMenus() {
     replay->addActions({a.replayBuild, a.exampleRay, a.first, a.last});
     QMenu* lessons = menus_.lessons = menuBar()->addMenu(tr("&Lessons"));
     lessons_->setLessonsMenu(lessons->addMenu(tr("&Built-in lessons")));
-    lessons->addActions({a.openLessonFile, a.backToLesson, a.lecturer, a.showErrata});
+    lessons->addActions({a.openLessonFile, a.backToLesson});
+    lessons->addSeparator();
+    lessons->addActions({a.quizMode, a.presentMode, a.lecturer});
+    lessons->addSeparator();
+    lessons->addAction(a.showErrata);
     QMenu* view = menus_.view = menuBar()->addMenu(tr("&View"));
     view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
     view->addAction(rayTraceView_);
@@ -387,7 +425,10 @@ void MainWindow::openFailed(const QString& what, const TaskOutcome& outcome, boo
         finishOpen(false, tr("cancelled"));
         return;
     }
-    const QString message = outcome.errorText();
+    openFailed(what, outcome.errorText(), quiet);
+}
+
+void MainWindow::openFailed(const QString& what, const QString& message, bool quiet) {
     if (!session_.hasScene()) {
         // Nothing was open before (a bad scene at start-up): say so where the user looks.
         lesson_->showText(tr("## Nothing is open\n\n%1 could not be opened:\n\n    %2\n\n"
@@ -502,6 +543,7 @@ void MainWindow::takeFrame() {
 
 void MainWindow::traceViewPoint(QPointF widgetPos) {
     if (!session_.scene3D() || !view3D_->isVisible()) return;
+    if (refusedWhileHeld(tr("trace a ray of the 3D view"))) return;
     // The ray under the mouse: pixel (x, y) of an image of the 3D view's size and camera.
     const int w = std::max(1, view3D_->width()), h = std::max(1, view3D_->height());
     const int x = std::clamp(static_cast<int>(widgetPos.x()), 0, w - 1);
@@ -596,8 +638,9 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
     try {
         lesson = loadLesson(idOrPath.toStdString());
     } catch (const LessonError& e) {
-        if (!quiet) warn(tr("Cannot open the lesson"), QString::fromUtf8(e.what()));
-        finishOpen(false, QString::fromUtf8(e.what()));
+        // As a scene that cannot be opened: at start-up, the "Nothing is open" page.
+        openFailed(tr("the lesson %1").arg(idOrPath), QString::fromUtf8(e.what()), quiet);
+        lesson_->syncPicker();
         return;
     }
     const QString title = QString::fromStdString(lesson.title.in(lessons_->language()));
@@ -616,6 +659,9 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             const auto shows = [&](LessonView v) {
                 return std::find(lesson.views.begin(), lesson.views.end(), v) != lesson.views.end();
             };
+            // The old lesson ends before the new scene is shown: its hold and its notes about
+            // the replay are not applied to what replaces them.
+            lessons_->replaceLesson();
             showScene(std::move(o.scene), shows(LessonView::Image));
             session_.showLog(o.trace, LessonController::logKind(lesson));
             showViews(shows(LessonView::View2D), shows(LessonView::View3D),
@@ -649,6 +695,7 @@ void MainWindow::replayBuild() {
         statusBar()->showMessage(tr("No scene is open."));
         return;
     }
+    if (refusedWhileHeld(tr("replay the build"))) return;
     if (!Session::hasBuild(session_.kind())) {
         statusBar()->showMessage(
             tr("A %1 has no construction to replay: B replays how a kd-tree or a BVH is built.")
@@ -679,8 +726,41 @@ void MainWindow::setLanguage(Language lang) {
     view3D_->setLanguage(lang);
 }
 
+void MainWindow::setLessonMode(LessonMode mode) {
+    modeAction(mode)->setChecked(true);
+    lesson_->setMode(mode);
+}
+
+LessonMode MainWindow::lessonMode() const {
+    return lesson_->mode();
+}
+
+QAction* MainWindow::modeAction(LessonMode mode) const {
+    switch (mode) {
+        case LessonMode::Presenting:
+            return actions_.presentMode;
+        case LessonMode::Lecturer:
+            return actions_.lecturer;
+        case LessonMode::Quiz:
+            break;
+    }
+    return actions_.quizMode;
+}
+
 void MainWindow::setLecturerMode(bool on) {
-    actions_.lecturer->setChecked(on);
+    setLessonMode(on ? LessonMode::Lecturer : LessonMode::Quiz);
+}
+
+bool MainWindow::refusedWhileHeld(const QString& toWhat) {
+    const auto held = lesson_->heldBy();
+    if (!session_.held() || !held) return false;
+    const QString why = tr("Exercise %1 holds the replay: answer the exercise first, or put it "
+                           "away, to %2.")
+                            .arg(held->first + 1)
+                            .arg(toWhat);
+    lesson_->showHeldNote(why);
+    statusBar()->showMessage(why, 10000);
+    return true;
 }
 
 const Progress& MainWindow::studentProgress() const {
@@ -696,12 +776,8 @@ void MainWindow::openCompare() {
         statusBar()->showMessage(tr("No scene is open: nothing to compare."));
         return;
     }
-    // Compare mode replays whole traces: not while an exercise stops the replay (quiz mode).
-    if (session_.limit()) {
-        statusBar()->showMessage(
-            tr("Compare mode shows whole traces: answer the exercise first, or put it away."));
-        return;
-    }
+    // Compare mode replays whole traces: not while an exercise holds the replay (quiz mode).
+    if (refusedWhileHeld(tr("compare the midpoint, median and SAH trees"))) return;
     const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
     // 3D: the pixel being replayed (clicked, or a lesson's, in the lesson's image size), else
     // the image's centre.
@@ -837,6 +913,8 @@ void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
 }
 
 void MainWindow::exportTrace() {
+    // The file holds the whole trace, past where an exercise holds the replay.
+    if (refusedWhileHeld(tr("export the trace"))) return;
     const QString path = QFileDialog::getSaveFileName(this, tr("Export trace"), QString(),
                                                       tr("Trace files (*.json)"));
     if (path.isEmpty()) return;

@@ -45,6 +45,7 @@ class ImageView;
 class Inspector;
 class LessonController;
 class LessonPanel;
+enum class LessonMode;  // lesson_panel.h
 class ShortcutsDialog;
 class Live2D;
 class Timeline;
@@ -120,6 +121,11 @@ class MainWindow : public QMainWindow {
 
     LessonPanel* lessonPanel() const { return lesson_; }
     void setLanguage(Language lang);
+    /// Lessons > Quiz / Presenting / Lecturer mode. The menu's pick of quiz or presenting mode
+    /// is remembered for the next run; lecturer mode (every answer shown) never is.
+    void setLessonMode(LessonMode mode);
+    LessonMode lessonMode() const;
+    /// Lecturer mode on, or back to quiz mode.
     void setLecturerMode(bool on);
     const Progress& studentProgress() const;
     QString progressPath() const;
@@ -129,6 +135,8 @@ class MainWindow : public QMainWindow {
     Timeline* timeline() const { return timeline_; }
     /// Lessons > Back to the lesson (Esc) and Show notes on the slides.
     QAction* backToLessonAction() const { return actions_.backToLesson; }
+    /// Lessons > Quiz, Presenting and Lecturer mode (one of them checked).
+    QAction* modeAction(LessonMode mode) const;
     QAction* showErrataAction() const { return actions_.showErrata; }
     View2D* view2D() const { return view2D_; }
     VtkView* view3D() const { return view3D_; }
@@ -237,6 +245,13 @@ class MainWindow : public QMainWindow {
     void showViews(bool view2D, bool view3D, bool image);
     /// An open that did not end well: say why (a dialog unless quiet), keep what is shown.
     void openFailed(const QString& what, const TaskOutcome& outcome, bool quiet);
+    /// The same for a failure told by a message (a lesson file that cannot be read).
+    void openFailed(const QString& what, const QString& message, bool quiet);
+    /// Quiz mode: an action that would show another trace, or the held one past its limit (a
+    /// pixel click, B, R, C, exporting the trace), while an exercise holds the replay. Refused,
+    /// and the lesson panel and the status bar say why (`toWhat`: "replay the build"). True if
+    /// refused.
+    bool refusedWhileHeld(const QString& toWhat);
     void finishOpen(bool ok, const QString& error);
     /// A warning that does not block the event loop (no nested loop: the window goes on).
     void warn(const QString& title, const QString& text);
@@ -267,7 +282,7 @@ class MainWindow : public QMainWindow {
             *exportReport, *quit;
         QAction *stepForward, *stepBack, *play, *nextOfKind, *replayBuild, *exampleRay, *first,
             *last;
-        QAction *openLessonFile, *lecturer, *backToLesson, *showErrata;
+        QAction *openLessonFile, *quizMode, *presentMode, *lecturer, *backToLesson, *showErrata;
         QAction *compare, *renderAgain, *heatmap, *resetCamera;
     } actions_{};
     /// The menu bar's menus, made by createMenus (Edit and Help are filled by the live parts).

@@ -118,7 +118,8 @@ void Session::showLog(LogRef log, LogKind kind) {
     logKind_ = kind;
     cursor_ = 0;
     emit logChanged();
-    emit limitChanged();  // the limit holds for its own log only
+    emit limitChanged();  // the held log is shown up to its limit, another one not at all
+    emit shownChanged();
     emit cursorChanged(cursor_);
 }
 
@@ -159,16 +160,26 @@ void Session::seekStep(const Step& at) {
 
 void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
     const std::optional<std::size_t> before = this->limit();
+    // A limit at or past the log's end hides nothing: nothing is held.
+    if (!log || (limit && *limit >= log->events().size())) limit.reset();
     limitLog_ = limit ? log : nullptr;
     limit_ = limit;
     if (this->limit() == before) return;
     emit limitChanged();
+    emit shownChanged();
     if (cursor_ > end()) setCursor(end());
 }
 
+void Session::setHideAhead(bool on) {
+    if (on == hideAhead_) return;
+    hideAhead_ = on;
+    emit shownChanged();
+}
+
 std::optional<std::size_t> Session::limit() const {
-    if (!limit_ || limitLog_ != log_ || *limit_ >= size()) return std::nullopt;
-    return limit_;
+    if (!limit_) return std::nullopt;
+    if (limitLog_ == log_) return limit_;
+    return size() > 0 ? std::optional<std::size_t>(0) : std::nullopt;
 }
 
 void Session::setCursor(std::size_t cursor) {
@@ -178,6 +189,8 @@ void Session::setCursor(std::size_t cursor) {
     cursor_ = cursor;
     replay_->seek(cursor);
     emit cursorChanged(cursor_);
+    // What is shown ends at the cursor: it moved with it.
+    if (hideAhead_) emit shownChanged();
 }
 
 }  // namespace raystep::gui

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <variant>
 
@@ -120,13 +121,31 @@ class Session : public QObject {
     const EventLog& log() const { return *log_; }
     const LogRef& logRef() const { return log_; }
     std::size_t size() const { return replay_->size(); }
-    /// Quiz mode: while `log` is replayed, the cursor stays at or before `limit` (an open
-    /// exercise's position), and the views show nothing past it; nullopt lifts the limit.
+    /// Quiz mode: `log` (a lesson's trace) is held at `limit` (a held exercise's position):
+    /// while it is replayed the cursor stays at or before the limit and nothing past it is
+    /// shown; while another trace is replayed (a pixel clicked, a structure changed, a ray
+    /// dragged) none of that one is shown, since a trace beside the lesson's holds the same
+    /// answers. nullopt lifts the hold.
     void setLimit(const LogRef& log, std::optional<std::size_t> limit);
-    /// The limit on the log replayed now, if it has one that hides events.
+    /// Whether a lesson's trace is held (an exercise waits for its answer).
+    bool held() const { return limit_.has_value(); }
+    /// The limit on the log replayed now, if it has one that hides events (0 for a trace other
+    /// than the held one).
     std::optional<std::size_t> limit() const;
     /// How far the cursor may go: the limit, else the end of the log.
     std::size_t end() const { return limit().value_or(size()); }
+    /// Presenting mode: while a question to the room is open, nothing past the cursor is shown
+    /// (the event list's later rows, the counts of the whole trace), though the cursor is free.
+    void setHideAhead(bool on);
+    /// Whether part of the log is not shown now (a quiz limit, or hidden ahead).
+    bool hiding() const { return shownEvents().size() < size(); }
+    /// What may be shown of the replayed log: its events before end(), and before the cursor
+    /// while hiding ahead. Every view, list and count that reads past the cursor reads this,
+    /// never the whole log.
+    std::span<const Event> shownEvents() const {
+        return std::span<const Event>(log_->events())
+            .first(hideAhead_ ? std::min(cursor_, end()) : end());
+    }
     std::size_t cursor() const { return cursor_; }
     const ReplayState& state() const { return replay_->state(); }
     const Replay& replay() const { return *replay_; }
@@ -140,8 +159,11 @@ class Session : public QObject {
     void sceneChanged();
     void logChanged();
     void cursorChanged(std::size_t cursor);
-    /// The quiz limit was set, moved or lifted (the event list shows up to end()).
+    /// The quiz limit was set, moved or lifted (the timeline ends at end()).
     void limitChanged();
+    /// What shownEvents() holds changed: the limit, hiding ahead, or the cursor while hiding
+    /// ahead (the event list's rows, the live controls' counts).
+    void shownChanged();
 
   private:
     SceneRef scene_;
@@ -151,6 +173,7 @@ class Session : public QObject {
     std::size_t cursor_ = 0;
     LogRef limitLog_;  // the log the limit belongs to (a lesson's trace)
     std::optional<std::size_t> limit_;
+    bool hideAhead_ = false;
 };
 
 }  // namespace raystep::gui

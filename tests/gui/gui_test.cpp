@@ -127,6 +127,8 @@ TEST(App, TheRobustnessLessonShowsTheSlidesLoopBesideTheExactWalk) {
     ASSERT_TRUE(openLesson(w, "robustness"));
     auto* text = w.lessonPanel()->findChild<QTextBrowser*>();
     ASSERT_NE(text, nullptr);
+    // Presenting (in quiz mode the note waits with the step: it names the tie's cell).
+    w.setLessonMode(LessonMode::Presenting);
     // Page Down to the third step, as a lecturer would.
     for (int k = 0; k < 2; ++k) w.lessonPanel()->goToStep(k + 1);
     QApplication::processEvents();
@@ -361,6 +363,11 @@ TEST(App, LecturerModeRevealsAndTheSahExerciseListsTheCandidates) {
         return e.kind == ExerciseKind::PickSplit;
     });
     ASSERT_NE(pickAt, exercises.end());
+    // The exercises before it put away (their prompts' answers would wait for them).
+    for (int e = 0; e < static_cast<int>(pickAt - exercises.begin()); ++e) {
+        p->selectExercise(e);
+        p->closeExercise();
+    }
     p->selectExercise(static_cast<int>(pickAt - exercises.begin()));
     EXPECT_TRUE(p->feedback().isEmpty());  // a student sees no answer
     const LessonRun run = runLesson(p->lesson());
@@ -550,6 +557,7 @@ TEST(App, ClickingAViewTakesTheKeysFromTheAnswerBox) {
     w.activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
     ASSERT_TRUE(openLesson(w, "3"));
+    w.setLessonMode(LessonMode::Presenting);  // B is refused while an exercise holds (quiz mode)
     auto* answer = w.lessonPanel()->findChild<QLineEdit*>("answer");
     ASSERT_NE(answer, nullptr);
     for (QWidget* view :
@@ -584,6 +592,8 @@ TEST(AppLifetimes, ExploringDisablesTheExercisesAndEscReturnsToTheLesson) {
     w.show();
     w.activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    // Presenting: in quiz mode a held exercise refuses the three (quiz_test.cpp).
+    w.setLessonMode(LessonMode::Presenting);
     int rounds[3] = {0, 0, 0};  // pixel clicks, R, B: each path taken in some lesson
     for (const Lesson& l : builtinLessons()) {
         if (l.exercises.empty()) continue;
@@ -786,6 +796,7 @@ TEST(AppLifetimes, TwoWindowsSavingProgressLoseNoAnswer) {
     ASSERT_TRUE(openLesson(b, "6"));
     a.lessonPanel()->selectExercise(0);
     EXPECT_TRUE(a.lessonPanel()->submit("2.5"));  // tDeltaY = 1 / 0.4
+    putAwayAll(b.lessonPanel());  // exercise 4's prompt waits for the ones before it
     b.lessonPanel()->selectExercise(3);
     EXPECT_FALSE(b.lessonPanel()->submit("2,2"));  // the next cell is (3, 1)
     a.lessonPanel()->goToStep(1);                  // a saves again after b

@@ -197,6 +197,8 @@ TEST(ItalianInterface, EveryLessonsStepsAndExercisesAreItalian) {
         const auto [en, it] = inBothLanguages([&](Language lang) {
             MainWindow w;
             w.setLanguage(lang);
+            // Presenting: every prompt is shown (in quiz mode a later one waits for a held one).
+            w.setLessonMode(LessonMode::Presenting);
             w.openLesson(QString::fromStdString(lesson.id), /*quiet=*/true);
             EXPECT_TRUE(waitOpen(w));
             w.tasks().cancel(TaskKind::Render);  // the image is not what is checked

@@ -115,6 +115,7 @@ TEST_F(Layout, TheWindowItsDocksTimelineAndExerciseBoxLieOnTheScreen) {
     ASSERT_NE(text, nullptr);
     EXPECT_EQ(text->horizontalScrollBar()->maximum(), 0);
     ASSERT_TRUE(openLesson(w, "11"));
+    w.setLessonMode(LessonMode::Presenting);  // B is refused while an exercise holds (quiz mode)
     w.replayBuild();
     ASSERT_TRUE(w.waitUntilIdle());
     ASSERT_TRUE(w.session().showingBuild());
