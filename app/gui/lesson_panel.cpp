@@ -842,7 +842,10 @@ void LessonPanel::check() {
         // where the answer can be worked out. The answer itself: after three tries in quiz
         // mode, at once in lecturer mode, never in front of the room (Show answer reveals it).
         const QString advice =
-            v.slip.empty() ? retryAdvice(ex.kind, replayHeldBeforeAnswer()) : q(v.slip);
+            v.slip.empty()
+                ? q(raystep::retryAdvice(ex, replayHeldBeforeAnswer(),
+                                         hintsShown_ < static_cast<int>(ex.hints.size()), lang_))
+                : q(v.slip);
         feedback_->setText(
             mode_ == LessonMode::Presenting ? tr("Not right yet. %1").arg(advice)
             : rec.attempts >= 3 || mode_ == LessonMode::Lecturer
@@ -910,28 +913,6 @@ bool LessonPanel::replayHeldBeforeAnswer() const {
     const auto held = heldBy();
     const auto answerAt = answerEventIndex(lesson_.exercises[exercise_], *log_, lesson_.file);
     return held && answerAt && *answerAt >= held->second;
-}
-
-QString retryAdvice(ExerciseKind kind, bool held) {
-    switch (kind) {
-        case ExerciseKind::Compute:
-            return LessonPanel::tr(
-                "Go through the computation again, one term at a time, or ask for a hint.");
-        case ExerciseKind::Choice:
-            return LessonPanel::tr(
-                "Read the options again against the lesson's text, or ask "
-                "for a hint.");
-        case ExerciseKind::SweepPick:
-            return LessonPanel::tr("Read the sweep's table again, or ask for a hint.");
-        default:
-            // The replay stops before the answer: what it shows so far is what to reason from.
-            return held ? LessonPanel::tr(
-                              "Work it out from what the replay shows up to here "
-                              "(the view, the inspector), or ask for a hint.")
-                        : LessonPanel::tr(
-                              "Step the replay and look at the inspector, or ask "
-                              "for a hint.");
-    }
 }
 
 void LessonPanel::revealAnswer() {

@@ -38,11 +38,6 @@ namespace raystep::gui {
 /// the lecturer reveals that one. Lecturer: preparing; every answer is shown.
 enum class LessonMode { Quiz, Presenting, Lecturer };
 
-/// A wrong answer's advice, by the exercise's kind: where the answer can be worked out. Never
-/// "step the replay" while the replay is held before the answer, nor for the kinds whose answer
-/// is not in the trace (compute, choice, sweep_pick).
-QString retryAdvice(ExerciseKind kind, bool held);
-
 class LessonPanel : public QWidget {
     Q_OBJECT
   public:

@@ -368,7 +368,7 @@ TEST(QuizPrompts, TheRetryAdviceFitsTheExercise) {
     EXPECT_TRUE(p->feedback().startsWith("Not right yet (try 1 of 3)."))
         << p->feedback().toStdString();
     EXPECT_FALSE(p->feedback().contains("Step the replay")) << p->feedback().toStdString();
-    EXPECT_TRUE(p->feedback().contains("up to here")) << p->feedback().toStdString();
+    EXPECT_TRUE(p->feedback().contains("waits here until you answer")) << p->feedback().toStdString();
     for (int i = 0; i < 2; ++i) {
         p->selectExercise(i);
         p->closeExercise();
