@@ -20,6 +20,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -33,9 +34,21 @@ namespace {
 /// cell) before any shortcut sees it.
 class BoardView : public QTableView {
   public:
-    explicit BoardView(QAction* copy) : copy_(copy) {}
+    explicit BoardView(QAction* copy) : copy_(copy) { fitRows(); }
 
   protected:
+    void changeEvent(QEvent* e) override {
+        QTableView::changeEvent(e);
+        if (e->type() == QEvent::FontChange) fitRows();  // the zoom: the rows grow with the text
+    }
+    /// Rows as tall as a line of text (more of the walk in a short dock), and room for the
+    /// header and the current row at least, whatever the zoom.
+    void fitRows() {
+        const int row = fontMetrics().height() + 6;
+        verticalHeader()->setDefaultSectionSize(row);
+        setMinimumHeight(horizontalHeader()->sizeHint().height() + row + 2 * frameWidth() +
+                         horizontalScrollBar()->sizeHint().height());
+    }
     void keyPressEvent(QKeyEvent* e) override {
         if (e->matches(QKeySequence::Copy)) {
             copy_->trigger();
@@ -47,6 +60,36 @@ class BoardView : public QTableView {
 
   private:
     QAction* copy_;
+};
+
+/// A one-line label that elides what does not fit (the whole text is its tooltip): a zoomed
+/// caption takes one line of the dock, not two or three of its rows.
+class ElidedLabel : public QLabel {
+  public:
+    void setFullText(const QString& text) {
+        full_ = text;
+        setToolTip(text);
+        elide();
+    }
+    QString fullText() const { return full_; }
+    QSize minimumSizeHint() const override { return {0, QLabel::minimumSizeHint().height()}; }
+    QSize sizeHint() const override {
+        return {fontMetrics().horizontalAdvance(full_), QLabel::sizeHint().height()};
+    }
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override {
+        QLabel::resizeEvent(e);
+        elide();
+    }
+    void changeEvent(QEvent* e) override {
+        QLabel::changeEvent(e);
+        if (e->type() == QEvent::FontChange) elide();
+    }
+
+  private:
+    void elide() { setText(fontMetrics().elidedText(full_, Qt::ElideRight, width())); }
+    QString full_;
 };
 }  // namespace
 
@@ -163,9 +206,8 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     auto* top = new QHBoxLayout;
-    caption_ = new QLabel;
+    caption_ = new ElidedLabel;
     caption_->setObjectName("boardCaption");
-    caption_->setWordWrap(true);
     top->addWidget(caption_, 1);
     format_ = new QComboBox;
     format_->setObjectName("boardFormat");
@@ -201,8 +243,6 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     view_->horizontalHeader()->setStretchLastSection(true);
     view_->setWordWrap(false);
-    // Rows as tall as a line of text: more of the walk in a short dock.
-    view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 6);
     view_->setToolTip(tr("Click a row to go back to that step"));
     layout->addWidget(view_, 1);
 
@@ -251,7 +291,7 @@ void BoardTable::refresh() {
             what = tr("The build: a row per node made, with its split or why it is a leaf.");
             break;
     }
-    caption_->setText(what);
+    static_cast<ElidedLabel*>(caption_)->setFullText(what);
     copy_->setEnabled(!b.header.empty());
     export_->setEnabled(!b.header.empty());
     const int row = currentRow();
@@ -269,7 +309,7 @@ int BoardTable::currentRow() const {
 }
 
 QString BoardTable::caption() const {
-    return caption_->text();
+    return static_cast<ElidedLabel*>(caption_)->fullText();
 }
 
 QString BoardTable::text(BoardFormat format) const {

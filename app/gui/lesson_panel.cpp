@@ -19,6 +19,7 @@
 #include <QTextTable>
 #include <QVBoxLayout>
 #include "language.h"
+#include "presentation.h"
 
 namespace raystep::gui {
 
@@ -41,6 +42,7 @@ void wrapLongLines(QTextBrowser* text) {
             f.setNonBreakableLines(false);
             c.mergeBlockFormat(f);
         }
+    codeFollowsTextSize(*text->document());  // the zoom enlarges code and formulas too
 }
 }  // namespace
 

@@ -159,6 +159,9 @@ class MainWindow : public QMainWindow {
     /// The default widths for a window `windowWidth` wide: the lesson panel's and the docks'.
     static int defaultLessonWidth(int windowWidth);
     static int defaultDockWidth(int windowWidth);
+    /// The board's and live controls' height under the views for a window `windowHeight` high
+    /// at `zoomPercent`: above 100% they give the views what the larger chrome takes.
+    static int defaultBottomDockHeight(int windowHeight, int zoomPercent);
     /// True once the first show has put the layout in shape (restored or default sizes).
     bool layoutSettled() const { return layoutSettled_; }
 
@@ -299,6 +302,9 @@ class MainWindow : public QMainWindow {
     QPointer<ShortcutsDialog> shortcuts_;
     /// The View menu's checks follow the presentation (changed elsewhere: another window).
     void syncPresenterActions();
+    /// After a zoom: the docks under the views at the zoom's height (defaultBottomDockHeight).
+    void fitBottomDocksToZoom();
+    int dockZoom_ = 100;  // the zoom the docks under the views were last fitted for
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;
     QLabel* structureLabel_ = nullptr;

@@ -51,17 +51,27 @@ double px(double width) {
 // The cost chart: its strip under the picture and the room left of it for the cost values.
 // Both grow with the label font (presenter mode, UI zoom): a plot about 116 px high between the
 // title's row and two rows of values, and about four lines' height for a value like "0.1234".
-double chartHeight(const QFontMetricsF& fm) {
-    return 116 + (fm.height() + 14) + 2 * (fm.height() + 1) + 12;
+constexpr double kChartPlot = 116;
+double chartHeight(const QFontMetricsF& fm, double plot = kChartPlot) {
+    return plot + (fm.height() + 14) + 2 * (fm.height() + 1) + 12;
 }
 double chartAxisRoom(const QFontMetricsF& fm) {
     return 4 * fm.height();
 }
+// The most of the view the chart's strip takes: the scene it explains keeps the rest.
+constexpr double kChartShare = 0.42;
 // Its X and Y curves in two of the palette's colours that no other part of the chart uses.
 const PaletteColour& curveColour(int axis) {
     return rayColour(axis == 0 ? RayKind::Primary : RayKind::Diffuse);
 }
 }  // namespace
+
+/// The legend's row for the ray: "the ray (orange-red)".
+static QString rayLegendLabel(Language lang) {
+    const std::string_view colour = rayColour(RayKind::Primary).name(lang);
+    return QStringLiteral("%1 (%2)").arg(View2D::tr("the ray"),
+                                         QString::fromUtf8(colour.data(), colour.size()));
+}
 
 static QString roleName(PaletteRole r) {
     switch (r) {
@@ -121,27 +131,111 @@ void View2D::fit() const {
     if (needFit_) {
         const Scene2D* s = session_.scene2D();
         world_ = s->bounds();
-        if (s->exampleRay) world_.extend(s->exampleRay->origin);
+        if (const auto ray = shownRay()) world_.extend(ray->origin);
         const Vec2 d = glm::max(world_.diagonal(), Vec2(1e-9));
-        world_.lo -= 0.06 * d;
-        world_.hi += 0.06 * d;
+        world_.lo -= 0.04 * d;  // the labels have room of their own (below)
+        world_.hi += 0.04 * d;
         needFit_ = false;
     }
     const Vec2 size = world_.diagonal();
+    const QFontMetricsF fm(font());
+    // Room for the labels around the picture, as large as their font (the zoom's): the caption
+    // over it, the cell indices under it and left of it.
+    const double top =
+        (captionShown_ ? QFontMetricsF(presentation().captionFont()).height() + 10 : 6) + 2;
+    const double bottom = fm.height() + 8, left = fm.horizontalAdvance(QStringLiteral("00")) + 12;
+    const double right = 10;
     // A build's replay keeps the bottom strip for the SAH cost chart, and a left one for its
-    // cost axis' values (the chart's position axis is the view's own x).
+    // cost axis' values (the chart's position axis is the view's own x). Both at most a share of
+    // the view: on a laptop, or zoomed, the chart shrinks, not the scene (which it explains).
     const bool build = session_.showingBuild();
-    const double chart = build ? chartHeight(QFontMetricsF(font())) : 0.0;
-    const double axis = build ? chartAxisRoom(QFontMetricsF(font())) : 0.0;
-    // The legend keeps a strip on the right (when the view is wide enough to spare it).
-    const double legend = legendShown_ && width() > 560 ? legendWidth() + 12 : 0.0;
-    const double fitted =
-        std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
+    const double chart = build ? chartStrip() : 0.0;
+    const double axis = chart > 0 ? std::min(chartAxisRoom(fm), 0.2 * width()) : 0.0;
+    const double roomX = std::max(1.0, width() - left - right - axis),
+                 roomY = std::max(1.0, height() - top - bottom - chart);
+    // The legend: a column on the right, or rows over the picture under the caption, whichever
+    // leaves the picture larger (a scene bound by the view's height has room at its side, one
+    // bound by the width above it).
+    legend_ = {};
+    double legendW = 0.0, legendH = 0.0;
+    if (legendShown_) {
+        const auto rows = legendRows(build);
+        const QFontMetricsF lm(presentation().captionFont());
+        const double row = lm.height() + 2, swatch = lm.height() - 2;
+        double widest = 0;
+        for (const auto& r : rows) widest = std::max(widest, lm.horizontalAdvance(r.second));
+        const double entry = swatch + 10 + widest;  // one entry's width in the column
+        const double sideW = entry + 12 + 12;
+        const double sideScale = std::min((roomX - sideW) / size.x, roomY / size.y);
+        // The rows: entries side by side, as many to a line as `across` holds; beside the
+        // caption if it is short enough, else under it.
+        const auto flowIn = [&](double across, double& boxW) {
+            std::vector<QRectF> flow;
+            double x = 0, line = 0;
+            boxW = 0;
+            for (const auto& r : rows) {
+                const double w = swatch + 10 + lm.horizontalAdvance(r.second) + 14;
+                if (x > 0 && x + w > across) x = 0, ++line;
+                flow.emplace_back(x, line * row, w, row);
+                x += w;
+                boxW = std::max(boxW, x);
+            }
+            return flow;
+        };
+        const QFontMetricsF cm(presentation().captionFont());
+        const double captionW = captionShown_ ? cm.horizontalAdvance(captionText()) + 24 : 0.0;
+        double besideW = 0, underW = 0;
+        const auto beside = flowIn(width() - 28 - captionW, besideW);
+        const auto under = flowIn(width() - 28, underW);
+        const double besideH = beside.back().bottom() + 8;
+        const double underH = under.back().bottom() + 8;
+        // Beside the caption the box starts where the caption does; what it adds is what it
+        // reaches below the room kept for the caption.
+        const double besideCost = std::max(0.0, 4 + besideH + 6 - top);
+        const double underCost = underH + 6;
+        const bool besideCaption = besideW <= width() - 28 - captionW && besideCost <= underCost;
+        const auto& flow = besideCaption ? beside : under;
+        const double flowW = besideCaption ? besideW : underW,
+                     flowH = besideCaption ? besideH : underH;
+        const double topH = besideCaption ? besideCost : underCost;
+        const double topScale = std::min(roomX / size.x, (roomY - topH) / size.y);
+        // The column unless the rows leave the picture clearly larger (the column is the usual
+        // look; they are near equal on a wide view).
+        legend_.inRows = topScale > 1.04 * sideScale;
+        const double boxTop = top - 2;
+        if (legend_.inRows) {
+            const double y = besideCaption ? 4.0 : boxTop;
+            legend_.box = QRectF(width() - 8 - (flowW + 12), y, flowW + 12, flowH);
+            for (const QRectF& f : flow)
+                legend_.entries.push_back(f.translated(legend_.box.left() + 6, y + 4));
+            legendH = topH;
+        } else {
+            legend_.box =
+                QRectF(width() - 8 - (entry + 12), boxTop, entry + 12, row * rows.size() + 8);
+            for (std::size_t k = 0; k < rows.size(); ++k)
+                legend_.entries.emplace_back(legend_.box.left() + 6, boxTop + 4 + row * k, entry,
+                                             row);
+            legendW = sideW;
+        }
+    }
+    const double fitted = std::min((roomX - legendW) / size.x, (roomY - legendH) / size.y);
     // Then the user's zoom and pan (zoomAt keeps the point under the cursor in place).
     scale_ = fitted * zoom_;
-    offset_ = QPointF(axis + (width() - axis - legend - fitted * size.x) / 2,
-                      chart + (height() - chart - fitted * size.y) / 2) +
+    offset_ = QPointF(left + axis + (roomX - legendW - fitted * size.x) / 2,
+                      bottom + chart + (roomY - legendH - fitted * size.y) / 2) +
               pan_;
+}
+
+QString View2D::captionText() const {
+    return QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
+           structureName(session_.kind());
+}
+
+double View2D::chartStrip() const {
+    const QFontMetricsF fm(font());
+    const double strip = std::min(chartHeight(fm), kChartShare * height());
+    // A plot too low for three of its cost values is not drawn: the scene keeps that room too.
+    return strip - chartHeight(fm, 0) >= 3 * (fm.height() + 6) ? strip : 0.0;
 }
 
 QPointF View2D::toScreen(const Vec2& p) const {
@@ -408,54 +502,46 @@ void View2D::paintEvent(QPaintEvent*) {
     drawHandles(g);
     if (legendShown_) drawLegend(g, build);
     g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(60, 60, 60));
-    if (captionShown_)
-        g.drawText(QRectF(8, 6, width() - 16, fm.height() + 2), Qt::AlignLeft,
-                   QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
-                       structureName(session_.kind()));
+    if (captionShown_) {
+        g.setFont(presentation().captionFont());
+        g.drawText(QRectF(8, 6, width() - 16, g.fontMetrics().height() + 2), Qt::AlignLeft,
+                   captionText());
+        g.setFont(font());
+    }
 }
 
-double View2D::legendWidth() const {
-    double w = 0;
-    for (int r = 0; r < kPaletteRoleCount; ++r)
-        w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r), lang_)));
-    return w + fontMetrics().height() + 16;
+std::vector<std::pair<QColor, QString>> View2D::legendRows(bool build) const {
+    // The colour roles this picture uses, from the palette (the lessons name the same colours).
+    if (build)
+        return {{role(PaletteRole::Current), roleLabel(PaletteRole::Current, lang_)},
+                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
+                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
+    std::vector<std::pair<QColor, QString>> rows{{ink().ray, rayLegendLabel(lang_)}};
+    rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
+    rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
+    for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
+        rows.emplace_back(role(r), roleLabel(r, lang_));
+    return rows;
 }
 
 void View2D::drawLegend(QPainter& g, bool build) const {
-    // The colour roles this picture uses, from the palette (the lessons name the same colours).
-    std::vector<std::pair<QColor, QString>> rows;
-    if (build) {
-        rows = {{role(PaletteRole::Current), roleLabel(PaletteRole::Current, lang_)},
-                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
-                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
-    } else {
-        rows = {
-            {ink().ray, QStringLiteral("%1 (%2)").arg(
-                            tr("the ray"),
-                            QString::fromUtf8(rayColour(RayKind::Primary).name(lang_).data()))}};
-        rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
-        rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
-        for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
-            rows.emplace_back(role(r), roleLabel(r, lang_));
-    }
-    const QFontMetrics fm(g.font());
-    const double row = fm.height() + 2, swatch = fm.height() - 2;
-    double w = 0;
-    for (const auto& r : rows) w = std::max<double>(w, fm.horizontalAdvance(r.second));
-    // Under the caption's line, whatever the font's size.
-    const QRectF box(width() - (w + swatch + 22), fm.height() + 12, w + swatch + 16,
-                     row * rows.size() + 8);
+    // Where fit() laid it out: a column on the right or rows under the caption.
+    const auto rows = legendRows(build);
+    if (rows.size() != legend_.entries.size()) return;
     g.save();
+    g.setFont(presentation().captionFont());
+    const QFontMetricsF fm(g.font());
+    const double swatch = fm.height() - 2;
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 225));
-    g.drawRoundedRect(box, 4, 4);
+    g.drawRoundedRect(legend_.box, 4, 4);
     for (std::size_t k = 0; k < rows.size(); ++k) {
-        const double y = box.top() + 4 + row * k;
+        const QRectF& e = legend_.entries[k];
         g.setPen(Qt::NoPen);
         g.setBrush(rows[k].first);
-        g.drawRect(QRectF(box.left() + 6, y + (row - swatch) / 2, swatch, swatch));
+        g.drawRect(QRectF(e.left(), e.center().y() - swatch / 2, swatch, swatch));
         g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(40, 40, 40));
-        g.drawText(QRectF(box.left() + 10 + swatch, y, w + 4, row),
+        g.drawText(QRectF(e.left() + swatch + 6, e.top(), e.width() - swatch - 6, e.height()),
                    Qt::AlignLeft | Qt::AlignVCenter, rows[k].second);
     }
     g.restore();
@@ -557,7 +643,9 @@ std::optional<CostChart> View2D::costChart() const {
     const double left = toScreen(Vec2(n.lo[0], n.lo[1])).x();
     const double extent = std::max(n.hi[0] - n.lo[0], n.hi[1] - n.lo[1]) * scale_;
     const QFontMetricsF fm(font());
-    const double top = height() - chartHeight(fm) + fm.height() + 14,
+    const double strip = chartStrip();
+    if (strip <= 0) return std::nullopt;
+    const double top = height() - strip + fm.height() + 14,
                  bottom = height() - 2 * (fm.height() + 1) - 12;
     c.plot = QRectF(QPointF(left, top),
                     QPointF(std::min(left + std::max(extent, 40.0), width() - 8.0), bottom));
@@ -574,7 +662,12 @@ std::optional<CostChart> View2D::costChart() const {
     if (hi - lo < 1e-9 * std::max(1.0, std::abs(hi))) lo -= 1, hi += 1;  // one value: a band
     const double pad = 0.06 * (hi - lo);
     c.costLo = lo - pad, c.costHi = hi + pad;
-    c.costTicks = niceTicks(c.costLo, c.costHi, std::max(2, int(c.plot.height() / 28)));
+    // About one value per 28 pixels, and three at least (a short plot: closer, never touching).
+    const int most = std::max(3, int(c.plot.height() / (fm.height() + 2)));
+    for (int n = std::max(2, int(c.plot.height() / 28)); n <= most; ++n) {
+        c.costTicks = niceTicks(c.costLo, c.costHi, n);
+        if (c.costTicks.size() >= 3) break;
+    }
     for (int a = 0; a < 2; ++a)
         if (onAxis[a])
             c.positionTicks[a] =
@@ -591,7 +684,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
     const CostChart& c = *chart;
     const QFontMetricsF fm(g.font());
     const double axisRoom = chartAxisRoom(fm);
-    const QRectF strip(4, height() - chartHeight(fm) + 4, width() - 8, chartHeight(fm) - 8);
+    const QRectF strip(4, height() - chartStrip() + 4, width() - 8, chartStrip() - 8);
     g.save();
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 235));

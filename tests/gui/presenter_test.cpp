@@ -16,12 +16,17 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QScreen>
 #include <QSettings>
 #include <QShortcut>
 #include <QTableWidget>
 #include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QTextDocument>
 
 #include <cmath>
 #include <functional>
@@ -132,6 +137,85 @@ TEST_F(Presenter, F11TogglesFullScreen) {
     QTest::keyClick(&w, Qt::Key_F11);
     EXPECT_TRUE(waitFor([&] { return !w.isFullScreen(); }));
     EXPECT_FALSE(w.findChild<QAction*>("fullScreen")->isChecked());
+}
+
+/// Lesson 6's grid as the 2D view draws it now: its width on screen, in pixels.
+double gridWidthOnScreen(MainWindow& w) {
+    const auto* grid = std::get_if<UniformGridT<Scene2DPrims>>(w.session().accel2D());
+    if (!grid) return 0;
+    const auto& spec = grid->spec();
+    return w.view2D()->screenOf(Vec2(spec.hi.x, spec.lo.y)).x() -
+           w.view2D()->screenOf(Vec2(spec.lo.x, spec.lo.y)).x();
+}
+
+/// The pixel size of the lesson text's first code fragment (a span or a block) and of its first
+/// plain fragment, as the text browser draws them.
+std::pair<int, int> codeAndTextPixels(const MainWindow& w) {
+    const auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+    int code = 0, plain = 0;
+    if (!text) return {0, 0};
+    const QTextDocument* doc = text->document();
+    for (QTextBlock b = doc->begin(); b.isValid() && !(code && plain); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextCharFormat f = it.fragment().charFormat();
+            const bool isCode = f.fontFixedPitch() || f.hasProperty(QTextFormat::FontFamilies);
+            const int px = QFontInfo(f.font().resolve(doc->defaultFont())).pixelSize();
+            if (isCode && !code) code = px;
+            const bool heading = f.hasProperty(QTextFormat::FontSizeAdjustment) ||
+                                 f.hasProperty(QTextFormat::FontWeight);
+            if (!isCode && !heading && !plain) plain = px;
+        }
+    return {code, plain};
+}
+
+/// Waits until the window's layout stops moving (fonts reach widgets by posted events, then the
+/// docks and splitters follow).
+void settle(MainWindow& w) {
+    QSize last;
+    for (int still = 0, k = 0; still < 3 && k < 100; ++k) {
+        QTest::qWait(40);
+        still = w.view2D()->size() == last ? still + 1 : 0;
+        last = w.view2D()->size();
+    }
+}
+
+TEST_F(Presenter, ZoomEnlargesTheContentTheSceneKeepsItsWidthAndCodeGrowsWithTheText) {
+    // The window on all of the screen (ctest's is 1600x1000), as a lecturer shows it.
+    MainWindow w;
+    QSettings().remove("window");
+    w.setGeometry(w.screen()->availableGeometry());
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    ASSERT_TRUE(waitFor([&] { return w.layoutSettled(); }));
+    ASSERT_TRUE(openLesson(w, "6"));
+    settle(w);
+    const double atBase = gridWidthOnScreen(w);
+    const auto [code100, text100] = codeAndTextPixels(w);
+    ASSERT_GT(atBase, 200);
+    ASSERT_GT(code100, 0);
+    ASSERT_GT(text100, 0);
+    const double lines100 = presentation().lineScale();
+    for (int zoom : Presentation::kZoomSteps) {
+        if (zoom <= 100) continue;
+        SCOPED_TRACE(zoom);
+        presentation().setZoomPercent(zoom);
+        settle(w);
+        // The scene is not made smaller to make room for larger chrome and labels.
+        EXPECT_GE(gridWidthOnScreen(w), atBase) << "at 100%: " << atBase;
+        // Nothing else on screen is larger than the 2D view.
+        const int area = w.view2D()->width() * w.view2D()->height();
+        for (QDockWidget* d : w.findChildren<QDockWidget*>())
+            if (d->isVisible()) {
+                EXPECT_LT(d->width() * d->height(), area) << d->objectName().toStdString();
+            }
+        EXPECT_LT(w.lessonPanel()->width() * w.lessonPanel()->height(), area);
+        // Code and formulas grow with the text they stand in, as far as the zoom goes.
+        const auto [code, text] = codeAndTextPixels(w);
+        EXPECT_GE(code, code100 * zoom / 100 - 2) << code100;
+        EXPECT_NEAR(code, text, std::max(2, text / 8)) << "text " << text;
+        // The views' lines too (the 3D view's rays, the 2D view's pens).
+        EXPECT_NEAR(presentation().lineScale(), lines100 * zoom / 100.0, 1e-9);
+    }
 }
 
 /// Where the 2D view draws the solid part of its ray: a point halfway along it, and the screen
