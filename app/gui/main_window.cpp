@@ -726,8 +726,8 @@ void MainWindow::openCompare() {
     const std::uint64_t generation = generation_;
     runner_.start<CompareWindow::Prepared>(
         TaskKind::Compare, tr("Building the midpoint, median and SAH trees..."),
-        [name = session_.name(), kind](const ProgressFn& progress) {
-            return CompareWindow::prepare(name, kind, progress);
+        [scene = session_.sceneRef(), kind](const ProgressFn& progress) {
+            return CompareWindow::prepare(scene, kind, progress);
         },
         [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;

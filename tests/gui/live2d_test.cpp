@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QSignalSpy>
@@ -398,6 +399,94 @@ QImage shot(MainWindow& w, const char* name) {
     if (const QByteArray dir = qgetenv("RAYSTEP_SHOT_DIR"); !dir.isEmpty())
         image.save(QDir(QString::fromLocal8Bit(dir)).filePath(QString::fromLatin1(name) + ".png"));
     return image;
+}
+
+/// The ray the session replays now (its log's first ray), in 2D.
+Ray2 replayedRay(const Session& s) {
+    const RayRecord& r = s.log().rays().front();
+    return {Vec2(r.origin.x, r.origin.y), Vec2(r.dir.x, r.dir.y)};
+}
+
+/// Whether screen vectors a and b point the same way (within a pixel's worth of angle).
+bool sameDirection(QPointF a, QPointF b) {
+    const double cross = a.x() * b.y() - a.y() * b.x(), dot = QPointF::dotProduct(a, b);
+    return dot > 0 && std::abs(cross) <= 0.01 * std::hypot(a.x(), a.y()) * std::hypot(b.x(), b.y());
+}
+
+// Lessons 8 and 13 trace a ray of their own, not lecture-grid's example ray (0.4, 0.4) + t (0.8,
+// 0.4): the rings sit on that ray, a drag edits it, and a live control keeps it.
+TEST(Live2D, TheHandlesSitOnTheRayALessonReplaysAndADragEditsThatRay) {
+    struct Case {
+        const char* lesson;
+        Vec2 origin, dir;  // the lesson file's "trace": {"ray": [ox, oy, dx, dy]}
+        Vec2 to;           // where the test drags the origin ring
+    };
+    for (const Case& c : {Case{"8", {1.0, 3.6}, {1.0, 0.02}, {1.5, 2.5}},
+                          Case{"13", {0.4, 0.4}, {1.0, 1.0}, {2.5, 0.5}}}) {
+        SCOPED_TRACE(c.lesson);
+        MainWindow w;
+        w.resize(1400, 860);
+        w.show();
+        w.setLecturerMode(true);  // every step free: the drag is the lecturer's
+        w.openLesson(c.lesson, /*quiet=*/true);
+        ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+        Session& s = w.session();
+        View2D* view = w.view2D();
+        QApplication::processEvents();
+        ASSERT_FALSE(s.log().rays().empty());
+        EXPECT_EQ(replayedRay(s).origin, c.origin);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // The rings: the origin's on the ray's origin, the tip's along the ray's direction.
+        const auto shown = view->shownRay();
+        ASSERT_TRUE(shown);
+        EXPECT_EQ(shown->origin, c.origin);
+        ASSERT_TRUE(view->tipHandle());
+        const QPointF o = view->screenOf(c.origin);
+        EXPECT_TRUE(sameDirection(*view->tipHandle() - o, view->screenOf(c.origin + c.dir) - o))
+            << view->tipHandle()->x() << "," << view->tipHandle()->y();
+        // The origin ring is drawn there, in the ray's colour: a pixel on its rim.
+        const PaletteColour& p = rayColour(RayKind::Primary);
+        const QImage image = view->grab().toImage();
+        int ringPixels = 0;
+        for (int dx = -9; dx <= 9; ++dx)
+            for (int dy = -9; dy <= 9; ++dy) {
+                const QColor px = image.pixelColor((o + QPointF(dx, dy)).toPoint());
+                ringPixels += std::abs(px.red() - p.r) + std::abs(px.green() - p.g) +
+                                  std::abs(px.blue() - p.b) <
+                              30;
+            }
+        EXPECT_GT(ringPixels, 20);
+        // The scene's own example ray's origin, elsewhere in lesson 8, has no ring.
+        if (c.origin != Vec2(0.4, 0.4)) {
+            const QPointF e = view->screenOf(Vec2(0.4, 0.4));
+            int there = 0;
+            for (int dx = -9; dx <= 9; ++dx)
+                for (int dy = -9; dy <= 9; ++dy) {
+                    const QColor px = image.pixelColor((e + QPointF(dx, dy)).toPoint());
+                    there += std::abs(px.red() - p.r) + std::abs(px.green() - p.g) +
+                                 std::abs(px.blue() - p.b) <
+                             30;
+                }
+            EXPECT_EQ(there, 0);
+        }
+        // Dragging the origin ring moves the lesson's ray: its direction stays the lesson's.
+        act(w, "live2dSnapCorners")->setChecked(true);
+        drag(view, o, view->screenOf(c.to));
+        EXPECT_EQ(replayedRay(s).origin, c.to);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // A live control rebuilds the structure: the ray traced again is the edited one.
+        auto* mailbox = w.findChild<QCheckBox*>("liveMailbox");
+        ASSERT_TRUE(mailbox);
+        mailbox->click();
+        ASSERT_TRUE(w.waitUntilIdle());
+        EXPECT_EQ(replayedRay(s).origin, c.to);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // Undo: the lesson's own ray again (not the scene's example ray).
+        act(w, "live2dUndoAction")->trigger();
+        QApplication::processEvents();
+        EXPECT_EQ(replayedRay(s).origin, c.origin);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+    }
 }
 
 TEST(Live2D, LessonSixWhileDraggingAndEditing) {
