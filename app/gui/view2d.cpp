@@ -231,6 +231,126 @@ QString View2D::captionText() const {
            structureName(session_.kind());
 }
 
+namespace {
+/// Labels put where they overlap no label put before and stay inside the view: from the spot
+/// asked for, outwards along `away`, then shifted along the ray.
+class LabelPlacer {
+  public:
+    LabelPlacer(QRectF bounds, const QFontMetricsF& fm) : bounds_(bounds), fm_(fm) {}
+    /// Where `text` goes near `anchor`, on the side `away` (a unit vector on screen).
+    QRectF place(const QString& text, QPointF anchor, QPointF away, QPointF along) {
+        const QSizeF size(fm_.horizontalAdvance(text) + 8, fm_.height() + 2);
+        // The spots nearest the anchor first: a step away, or a shift along the ray.
+        std::vector<std::pair<double, QPointF>> spots;
+        for (int k = 0; k < 4; ++k)
+            for (const double shift : {0.0, 0.6, -0.6, 1.2, -1.2}) {
+                const QPointF by =
+                    away * (k * (size.height() + 2)) + along * (shift * size.width());
+                spots.emplace_back(std::hypot(by.x(), by.y()), by);
+            }
+        std::stable_sort(spots.begin(), spots.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        QRectF best;
+        for (const auto& spot : spots) {
+            // The box's corner nearest the anchor on the `away` side.
+            const QPointF c = anchor + spot.second;
+            QRectF r(c - QPointF(away.x() < 0 ? size.width() : 0, away.y() < 0 ? size.height() : 0),
+                     size);
+            if (std::abs(away.x()) < 0.35) r.moveLeft(c.x() - size.width() / 2);
+            if (std::abs(away.y()) < 0.35) r.moveTop(c.y() - size.height() / 2);
+            // Kept inside the view (a label at the top edge was cut).
+            r.moveLeft(std::clamp(r.left(), bounds_.left(), bounds_.right() - r.width()));
+            r.moveTop(std::clamp(r.top(), bounds_.top(), bounds_.bottom() - r.height()));
+            if (best.isNull()) best = r;
+            const bool free = std::none_of(placed_.begin(), placed_.end(),
+                                           [&](const QRectF& p) { return p.intersects(r); });
+            if (free) {
+                placed_.push_back(r);
+                return r;
+            }
+        }
+        placed_.push_back(best);
+        return best;
+    }
+    /// A part of the picture labels keep off (a tick, the ray's origin).
+    void keepOff(QRectF r) { placed_.push_back(r); }
+
+  private:
+    QRectF bounds_;
+    const QFontMetricsF& fm_;
+    std::vector<QRectF> placed_;
+};
+}  // namespace
+
+void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const {
+    const QFontMetricsF fm(g.font());
+    // The ray's direction and its normal on screen, in pixels (y grows downwards).
+    const QPointF from = toScreen(o), ahead = toScreen(o + d) - from;
+    const double len = std::hypot(ahead.x(), ahead.y());
+    if (!(len > 0)) return;
+    const QPointF u = ahead / len, n(u.y(), -u.x());  // n: to the ray's left as drawn
+    const double tick = px(7), bracket = px(7) + 0.6 * fm.height();
+    LabelPlacer labels(QRectF(rect()).adjusted(2, 2, -2, -2), fm);
+    labels.keepOff(QRectF(from - QPointF(px(8), px(8)), QSizeF(px(16), px(16))));
+    const auto label = [&](const QString& text, QPointF anchor, QPointF away, const QColor& c) {
+        const QRectF r = labels.place(text, anchor, away, u);
+        drawnLabels_.push_back({text, r});
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(255, 255, 255, 205));
+        g.drawRoundedRect(r, 3, 3);
+        g.setPen(c);
+        g.drawText(r, Qt::AlignCenter, text);
+    };
+    const QColor colour[2] = {QColor(30, 90, 200), QColor(140, 40, 170)};
+    const double tX = st.ddaCell->tMax[0], tY = st.ddaCell->tMax[1];
+    // A tie (the ray through a grid vertex): one tick and one label for both.
+    const bool tie = std::isfinite(tX) && tX == tY;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis];
+        if (!std::isfinite(t)) continue;
+        const QPointF p = toScreen(o + t * d);
+        g.setPen(QPen(colour[axis], px(2)));
+        g.drawLine(p + tick * n, p - tick * n);
+        labels.keepOff(QRectF(p - QPointF(tick, tick), QSizeF(2 * tick, 2 * tick)));
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis];
+        if (!std::isfinite(t) || (tie && axis == 1)) continue;
+        const QPointF p = toScreen(o + t * d);
+        const QString text =
+            tie ? QStringLiteral("tMaxX = tMaxY = %1").arg(numberText(t, 'g', 4))
+                : (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
+                      .arg(numberText(t, 'g', 4));
+        // X's on the ray's left, Y's on its right, as their brackets.
+        label(text, p + (axis == 0 ? 1 : -1) * (tick + 2) * n, axis == 0 ? n : -n,
+              tie ? QColor(60, 60, 60) : colour[axis]);
+    }
+    // tDelta: the stretch of ray between two boundaries of this axis, a bracket ending at tMax.
+    // Where it starts behind the origin (the first boundary is nearer than a whole cell), the
+    // part behind the origin is dashed: the ray's line goes on back there, the ray does not.
+    if (!st.ddaSetup) return;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis], delta = st.ddaSetup->tDelta[axis];
+        if (!std::isfinite(t) || !std::isfinite(delta)) continue;
+        const QPointF side = (axis == 0 ? 1.0 : -1.0) * bracket * n;
+        const double t0 = t - delta;
+        tDeltaSpans_[axis] = {t0, t};
+        const QPointF p0 = toScreen(o + t0 * d) + side, p1 = toScreen(o + t * d) + side;
+        const QPointF at0 = toScreen(o + std::max(0.0, t0) * d) + side;
+        g.setPen(QPen(colour[axis], px(1.2)));
+        g.drawLine(at0, p1);
+        if (t0 < 0) {
+            g.setPen(QPen(colour[axis], px(1.2), Qt::DashLine));
+            g.drawLine(p0, at0);
+            g.setPen(QPen(colour[axis], px(1.2)));
+        }
+        g.drawLine(p0, p0 - 0.5 * side);
+        g.drawLine(p1, p1 - 0.5 * side);
+        label(axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"), (p0 + p1) / 2,
+              side / bracket, colour[axis]);
+    }
+}
+
 double View2D::chartStrip() const {
     const QFontMetricsF fm(font());
     const double strip = std::min(chartHeight(fm), kChartShare * height());
@@ -442,36 +562,10 @@ void View2D::paintEvent(QPaintEvent*) {
         }
         g.setBrush(ink.ray);
         g.drawEllipse(toScreen(o), px(4), px(4));
-        // tMax as labelled ticks on the ray.
-        if (st.ddaCell) {
-            const Vec2 n = glm::normalize(Vec2(-d.y, d.x));
-            for (int axis = 0; axis < 2; ++axis) {
-                const double t = st.ddaCell->tMax[axis];
-                if (!std::isfinite(t)) continue;
-                const Vec2 p = o + t * d;
-                const QPointF a = toScreen(p + 0.12 * n), b = toScreen(p - 0.12 * n);
-                g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), px(2)));
-                g.drawLine(a, b);
-                g.drawText(a + QPointF(4, -4),
-                           (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
-                               .arg(numberText(t, 'g', 4)));
-                // tDelta: the stretch of ray between two boundaries of this axis, drawn as a
-                // bracket ending at tMax, on the axis's side of the ray.
-                if (st.ddaSetup && std::isfinite(st.ddaSetup->tDelta[axis])) {
-                    const double d0 = std::max(0.0, t - st.ddaSetup->tDelta[axis]);
-                    const Vec2 side = (axis == 0 ? 0.22 : -0.22) * n;
-                    const QPointF p0 = toScreen(o + d0 * d + side), p1 = toScreen(p + side);
-                    g.setPen(QPen(g.pen().color(), px(1)));
-                    g.drawLine(p0, p1);
-                    g.drawLine(p0, toScreen(o + d0 * d + 0.6 * side));
-                    g.drawLine(p1, toScreen(p + 0.6 * side));
-                    // Above the bracket for X, below it for Y, whatever the label font's size.
-                    g.drawText((p0 + p1) / 2 + (axis == 0 ? QPointF(-fm.height(), -fm.descent() - 3)
-                                                          : QPointF(4, fm.ascent() + 3)),
-                               axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"));
-                }
-            }
-        }
+        // tMax as labelled ticks on the ray, tDelta as brackets beside it.
+        drawnLabels_.clear();
+        tDeltaSpans_ = {};
+        if (st.ddaCell) drawDdaMarks(g, o, d, st);
         if (st.nearestT) {
             g.setBrush(ink.hit);
             g.setPen(Qt::NoPen);

@@ -101,6 +101,17 @@ class View2D : public QWidget {
     /// arrow would be too short on screen to grab). Nullopt without a shown ray.
     std::optional<QPointF> tipHandle() const;
 
+    /// The DDA's labels as the last paint placed them (tMax, tDelta), and the stretch of t each
+    /// tDelta bracket spans (X, Y; none where not drawn): tests look at them.
+    struct Label {
+        QString text;
+        QRectF box;
+    };
+    const std::vector<Label>& ddaLabels() const { return drawnLabels_; }
+    const std::array<std::optional<std::array<double, 2>>, 2>& tDeltaSpans() const {
+        return tDeltaSpans_;
+    }
+
   public slots:
     /// The cells a student has clicked for a sequence exercise, numbered in order on the grid.
     void setSequence(const QList<QPoint>& cells);
@@ -125,6 +136,9 @@ class View2D : public QWidget {
     /// The height of the cost chart's strip under a build's replay: its natural height, at most
     /// a share of the view's (0: too low to draw).
     double chartStrip() const;
+    /// The DDA's state on the ray o + t d: tMax as labelled ticks, tDelta as brackets, labels
+    /// kept apart and inside the view.
+    void drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const;
     /// The caption over the picture: the scene's name and its structure.
     QString captionText() const;
     /// The colour roles of the picture (the palette's), where fit() put them.
@@ -182,6 +196,8 @@ class View2D : public QWidget {
         std::vector<QRectF> entries;
     };
     mutable LegendLayout legend_;
+    mutable std::vector<Label> drawnLabels_;
+    mutable std::array<std::optional<std::array<double, 2>>, 2> tDeltaSpans_;
     mutable QPointF offset_;
     // The kept view: fitted box, zoom and pan; refitted when another scene is shown.
     mutable bool needFit_ = true;

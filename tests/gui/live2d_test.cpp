@@ -489,6 +489,63 @@ TEST(Live2D, TheHandlesSitOnTheRayALessonReplaysAndADragEditsThatRay) {
     }
 }
 
+// The DDA's labels on the ray: never over each other nor out of the view (lesson 8's ray runs
+// under the top wall), one label for a tie (lesson 13's ray through the grid's vertices), and
+// each tDelta bracket spans a whole cell's worth of t, ending at tMax (behind the origin where
+// the first boundary is nearer than a cell: lesson 6's first tDeltaY ran from t = 0 to 1.5).
+TEST(Live2D, TheDdaLabelsStayApartInTheViewAndEachTDeltaSpansAWholeCell) {
+    struct Case {
+        const char* lesson;
+        Vec2 tDelta;  // by hand: cell size 1 over |d| per axis
+        bool ties;    // every tMaxX equals tMaxY
+    };
+    // Lesson 6: d = (0.8, 0.4); lesson 8: d = (1, 0.02); lesson 13: d = (1, 1).
+    for (const Case& c : {Case{"6", {1.25, 2.5}, false}, Case{"8", {1.0, 50.0}, false},
+                          Case{"13", {1.0, 1.0}, true}}) {
+        SCOPED_TRACE(c.lesson);
+        MainWindow w;
+        w.resize(1400, 860);
+        w.show();
+        w.setLecturerMode(true);
+        w.openLesson(c.lesson, /*quiet=*/true);
+        ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+        Session& s = w.session();
+        View2D* view = w.view2D();
+        int cells = 0;
+        for (std::size_t i = 0; i < s.log().events().size(); ++i) {
+            const auto* cell = std::get_if<DdaCell>(&s.log().events()[i]);
+            if (!cell) continue;
+            ++cells;
+            s.setCursor(i + 1);
+            view->grab();  // a paint places the labels
+            SCOPED_TRACE(i);
+            const auto& labels = view->ddaLabels();
+            int tMaxLabels = 0;
+            for (std::size_t a = 0; a < labels.size(); ++a) {
+                tMaxLabels += labels[a].text.startsWith("tMax");
+                EXPECT_TRUE(QRectF(view->rect()).contains(labels[a].box))
+                    << labels[a].text.toStdString();
+                for (std::size_t b = a + 1; b < labels.size(); ++b)
+                    EXPECT_FALSE(labels[a].box.intersects(labels[b].box))
+                        << labels[a].text.toStdString() << " / " << labels[b].text.toStdString();
+            }
+            EXPECT_EQ(tMaxLabels, c.ties ? 1 : 2);
+            if (c.ties) {
+                EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const auto& l) {
+                    return l.text.startsWith("tMaxX = tMaxY = ");
+                }));
+            }
+            for (int axis = 0; axis < 2; ++axis) {
+                const auto& span = view->tDeltaSpans()[axis];
+                ASSERT_TRUE(span);
+                EXPECT_NEAR((*span)[1] - (*span)[0], c.tDelta[axis], 1e-12);
+                EXPECT_EQ((*span)[1], cell->tMax[axis]);
+            }
+        }
+        EXPECT_GE(cells, 3);
+    }
+}
+
 TEST(Live2D, LessonSixWhileDraggingAndEditing) {
     MainWindow w;
     w.resize(w.fitToScreen(QSize(1920, 1080)));
