@@ -371,6 +371,42 @@ TEST_F(Presenter, HighContrastPaletteKeepsEveryNameAndADistinctColourPerRole) {
     EXPECT_EQ(paletteVariant(), PaletteVariant::Standard);
 }
 
+/// A colour's hue in degrees and its saturation (HSV), by the usual formulas.
+std::pair<double, double> hueAndSaturation(const PaletteColour& c) {
+    const double r = c.r, g = c.g, b = c.b;
+    const double hi = std::max({r, g, b}), lo = std::min({r, g, b}), span = hi - lo;
+    if (span == 0) return {0, 0};
+    double h = hi == r   ? std::fmod((g - b) / span, 6.0)
+               : hi == g ? (b - r) / span + 2
+                         : (r - g) / span + 4;
+    h *= 60;
+    if (h < 0) h += 360;
+    return {h, span / hi};
+}
+
+// lessons.md F16: the current kd node was orange beside the primary ray's orange-red, the BVH's
+// boxes blue beside the reflection ray's sky blue. Every 3D structure is a grey (or white) or
+// keeps 45 degrees of hue from every ray, in both palettes. By hand: vermilion (213, 94, 0) is at
+// 26.5 degrees, orange (230, 159, 0) at 41.5; sky blue (86, 180, 233) and blue (0, 114, 178)
+// both at 201.6.
+TEST_F(Presenter, TheThreeDStructuresKeepClearOfTheRaysHues) {
+    for (const bool high : {false, true}) {
+        SCOPED_TRACE(high);
+        presentation().setHighContrast(high);
+        for (int r = 0; r < kStructureRoleCount; ++r) {
+            const PaletteColour& s = structureColour(static_cast<StructureRole>(r));
+            const auto [hue, saturation] = hueAndSaturation(s);
+            if (saturation < 0.15) continue;  // a grey or white: no hue to mistake
+            for (int k = 0; k < kRayKindCount; ++k) {
+                const PaletteColour& ray = rayColour(static_cast<RayKind>(k));
+                const double apart = std::abs(hue - hueAndSaturation(ray).first);
+                EXPECT_GE(std::min(apart, 360 - apart), 45) << s.key << " / " << ray.key;
+            }
+        }
+    }
+    presentation().setHighContrast(false);
+}
+
 /// The dialog's rows as (keys, what) pairs of text.
 std::vector<std::pair<QString, QString>> rowsOf(const QTableWidget* t) {
     std::vector<std::pair<QString, QString>> rows;
