@@ -20,6 +20,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -93,6 +94,17 @@ class ElidedLabel : public QLabel {
 };
 }  // namespace
 
+QString shownText(const std::string& cell) {
+    QString text = QString::fromStdString(cell);
+    // On screen a number reads as the interface writes it (a decimal comma in Italian, as the
+    // inspector and the events); the exports keep the point, as a spreadsheet or LaTeX reads it.
+    if (interfaceLanguage() == Language::It) {
+        static const QRegularExpression decimalPoint(QStringLiteral("(\\d)\\.(\\d)"));
+        text.replace(decimalPoint, QStringLiteral("\\1,\\2"));
+    }
+    return text;
+}
+
 int BoardModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(board_.rows.size());
 }
@@ -108,7 +120,7 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
     switch (role) {
         case Qt::DisplayRole:
         case Qt::ToolTipRole:
-            return QString::fromStdString(board_.rows[index.row()].cells[index.column()]);
+            return shownText(board_.rows[index.row()].cells[index.column()]);
         case Qt::BackgroundRole:
             if (current) {
                 // The 2D view's colour for the current cell, as a tint the text reads on.

@@ -4,6 +4,7 @@
 // independent computation (the sorted grid-line crossings) gives, and the Structure tool bar and
 // the controls agree.
 #include "board_table.h"
+#include "language.h"
 #include "lesson_panel.h"
 #include "live_controls.h"
 #include "main_window.h"
@@ -362,6 +363,44 @@ TEST(BoardDock, TheBuildReplayListsTheNodesAsTheyAreMade) {
     ASSERT_EQ(w.boardTable()->board().rows.size(), 1u);
     EXPECT_EQ(column(w.boardTable()->board(), "outcome")[0], "split");
     EXPECT_TRUE(w.liveControls()->statistics().contains("Build replayed"));
+}
+
+// In Italian the table on screen writes its numbers with a decimal comma, as the inspector and
+// the events do ("0.75" beside "tMax (0,75; 1,5)" puzzled); the exports keep the point, as a
+// spreadsheet or LaTeX reads it. tMaxX = (1 - 0.4) / 0.8 = 0.75 and tMaxY = (1 - 0.4) / 0.4 = 1.5
+// for lecture-grid's ray (0.4, 0.4) + t (0.8, 0.4).
+TEST(BoardDock, InItalianTheTableShowsDecimalCommasAndTheExportsKeepPoints) {
+    setInterfaceLanguage(Language::It);
+    {
+        MainWindow w;
+        w.setLanguage(Language::It);
+        w.resize(1400, 860);
+        w.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+        ASSERT_TRUE(openScene(w, "lecture-grid", AccelKind::Grid));
+        w.session().setCursor(w.session().size());
+        BoardTable* board = w.boardTable();
+        const QAbstractItemModel* m = board->view()->model();
+        const auto cell = [&](int row, const char* header) {
+            for (int c = 0; c < m->columnCount(); ++c)
+                if (m->headerData(c, Qt::Horizontal).toString() == header)
+                    return m->index(row, c).data().toString();
+            return QString();
+        };
+        EXPECT_EQ(cell(0, "tMaxX"), QStringLiteral("0,75"));
+        EXPECT_EQ(cell(0, "tMaxY"), QStringLiteral("1,5"));
+        EXPECT_EQ(cell(0, "tDeltaX"), QStringLiteral("1,25"));
+        QTemporaryDir dir;
+        ASSERT_TRUE(dir.isValid());
+        const QString csv = dir.filePath("board.csv");
+        EXPECT_EQ(board->exportTo(csv, BoardFormat::Csv), QString());
+        QFile f(csv);
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        ASSERT_GE(lines.size(), 2);
+        EXPECT_TRUE(lines[1].startsWith("0,0,0,0.75,1.5,1.25,2.5,")) << lines[1].toStdString();
+    }
+    setInterfaceLanguage(Language::En);
 }
 
 TEST(BoardDock, CopyAndExportWriteTheBoardSafely) {
