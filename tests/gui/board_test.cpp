@@ -24,8 +24,10 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QProcess>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
@@ -527,6 +529,56 @@ TEST(LayoutBoard, LessonsSixAndElevenFitWithTheBoardAndTheControls) {
     check("lesson 11, build replay");
     shot("lesson11");
     QSettings().remove("window");
+}
+
+// lessons.md F14: on a 1366x768 laptop in Italian the live controls' second column ("Taglio",
+// "Primitive per foglia") and the statistics ran past the dock's edge, behind a sideways scroll
+// bar, though lesson 11 sends the student to "Taglio". The controls take one pair a row where
+// two do not fit: none is cut, none lies over another, in either language.
+TEST(LayoutBoard, TheLiveControlsFitTheirDockInBothLanguages) {
+    for (const Language lang : {Language::It, Language::En}) {
+        SCOPED_TRACE(lang == Language::It ? "it" : "en");
+        setInterfaceLanguage(lang);
+        {
+            QSettings().remove("window");
+            MainWindow w;
+            w.setLanguage(lang);
+            w.sizeForScreen();
+            w.show();
+            ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+            ASSERT_TRUE(QTest::qWaitFor([&] { return w.layoutSettled(); }));
+            w.openLesson("11", /*quiet=*/true);
+            ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+            QTest::qWait(100);
+            auto* controls = w.findChild<LiveControls*>();
+            ASSERT_NE(controls, nullptr);
+            auto* scroll = qobject_cast<QScrollArea*>(controls->parentWidget()->parentWidget());
+            ASSERT_NE(scroll, nullptr);
+            EXPECT_EQ(scroll->horizontalScrollBar()->maximum(), 0)
+                << controls->width() << " in " << scroll->viewport()->width();
+            const QRect room(QPoint(0, 0), scroll->viewport()->size());
+            std::vector<QRect> placed;
+            for (QWidget* c : std::initializer_list<QWidget*>{
+                     controls->structureBox(), controls->splitBox(), controls->lambdaBox(),
+                     controls->cTravBox(), controls->cIsectBox(), controls->emptyBonusBox(),
+                     controls->leafSizeBox(), controls->maxDepthBox(), controls->mailboxBox()}) {
+                const QRect r(c->mapTo(scroll->viewport(), QPoint(0, 0)), c->size());
+                EXPECT_LE(r.right(), room.right()) << c->objectName().toStdString();
+                EXPECT_GE(c->width(), c->minimumSizeHint().width())
+                    << c->objectName().toStdString();
+                for (const QRect& o : placed)
+                    EXPECT_FALSE(o.intersects(r)) << c->objectName().toStdString();
+                placed.push_back(r);
+            }
+            // The statistics wrap inside the dock.
+            const auto* stats = controls->findChild<QLabel*>("liveStats");
+            ASSERT_NE(stats, nullptr);
+            EXPECT_LE(stats->mapTo(scroll->viewport(), QPoint(stats->width(), 0)).x(),
+                      room.right() + 1);
+        }
+        QSettings().remove("window");
+    }
+    setInterfaceLanguage(Language::En);
 }
 
 }  // namespace
