@@ -1,5 +1,6 @@
 // The board dock: the core's board rows (trace/board.h) of the replay at its cursor, in a table.
 #include "board_table.h"
+#include "file_dialogs.h"
 
 #include "language.h"
 
@@ -354,8 +355,8 @@ QString BoardTable::exportTo(const QString& path, BoardFormat format) const {
 void BoardTable::exportDialog() {
     const QString csv = tr("CSV (*.csv)"), md = tr("Markdown (*.md)"), tex = tr("LaTeX (*.tex)");
     QString filter;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export the board"), QString(),
-                                                      csv + ";;" + md + ";;" + tex, &filter);
+    const QString path =
+        saveFileName(this, tr("Export the board"), csv + ";;" + md + ";;" + tex, &filter);
     if (path.isEmpty()) return;
     // The file's extension decides; without one, the filter chosen in the dialog.
     BoardFormat format = filter == md    ? BoardFormat::Markdown

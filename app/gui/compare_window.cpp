@@ -115,6 +115,8 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
     layout->addWidget(table_);
     close_ = new QPushButton(tr("Close"));
     close_->setObjectName("closeCompare");
+    close_->setShortcut(QKeySequence(Qt::Key_Escape));
+    close_->setToolTip(tr("Close the compare window (Esc)"));
     connect(close_, &QPushButton::clicked, this, &QWidget::close);
     layout->addWidget(close_, 0, Qt::AlignRight);
     setStep(longest);

@@ -1,5 +1,6 @@
 // The lesson controller: a lesson's steps, exercises, progress and sweep, and the help texts.
 #include "lesson_controller.h"
+#include "file_dialogs.h"
 
 #include "course/palette.h"
 
@@ -198,9 +199,8 @@ void LessonController::saveProgress() {
 }
 
 void LessonController::exportProgressReport() {
-    const QString path =
-        QFileDialog::getSaveFileName(&window_, tr("Export progress report"),
-                                     QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
+    const QString path = saveFileName(&window_, tr("Export progress report"), tr("Markdown (*.md)"),
+                                      nullptr, QStringLiteral("raystep-progress.md"));
     if (path.isEmpty()) return;
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) ||

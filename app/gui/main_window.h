@@ -225,6 +225,9 @@ class MainWindow : public QMainWindow {
     /// The render settings control (bounces, diffuse samples, samples per pixel) and the "ray
     /// trace this view" action; a change renders the image again.
     void createRenderSettings();
+    /// The View and File items of 3D scenes enabled with a 3D scene only, and the 2D view's
+    /// screenshot with a 2D one.
+    void syncViewActions();
     /// The control shows the scene's own render settings.
     void syncRenderSettings(const Scene& scene);
     /// Renders the image again once events settle (a camera drag moves it many times).

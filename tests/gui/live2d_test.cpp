@@ -4,6 +4,7 @@
 // the grid lists, undo and redo bring the scenes back, and the view zooms about the cursor, pans
 // and fits while a click on a cell stays a lesson's cell answer at any zoom.
 #include "live2d.h"
+#include "gui_testing.h"
 #include "main_window.h"
 #include "view2d.h"
 
@@ -18,9 +19,14 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 #include <QWheelEvent>
 
@@ -544,6 +550,55 @@ TEST(Live2D, TheDdaLabelsStayApartInTheViewAndEachTDeltaSpansAWholeCell) {
         }
         EXPECT_GE(cells, 3);
     }
+}
+
+/// Answers the next file dialog: notes the folder it opened in, then chooses `path` in it.
+void answerNextFileDialog(QString* openedIn, const QString& path) {
+    QTimer::singleShot(0, [=] {
+        QFileDialog* d = nullptr;
+        waitFor([&] { return (d = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())); },
+                10000);
+        if (!d) return;
+        *openedIn = d->directory().absolutePath();
+        d->selectFile(path);
+        QMetaObject::invokeMethod(d, "accept");  // as the Save button does
+    });
+}
+
+// gui.md 17 and 18: a render's "Rendered in ... click a pixel" stayed on beside a 2D lesson; the
+// title kept the old scene after Save 2D scene as; every dialog opened in the working directory.
+TEST(Live2D, StatusTitleAndTheFileDialogsFollowWhatWasDone) {
+    QSettings().remove("dialogs");
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    w.openLesson("1", /*quiet=*/true);  // 3D: its image is rendered
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    ASSERT_TRUE(waitFor([&] { return w.statusBar()->currentMessage().startsWith("Rendered in"); }));
+    w.openLesson("6", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    EXPECT_FALSE(w.statusBar()->currentMessage().startsWith("Rendered in"))
+        << w.statusBar()->currentMessage().toStdString();
+    // Save 2D scene as: the first dialog starts where the app runs; the title names the file.
+    QString openedIn;
+    const QString saved = QDir(dir.path()).filePath("edited.json");
+    answerNextFileDialog(&openedIn, saved);
+    act(w, "live2dSave")->trigger();
+    EXPECT_EQ(openedIn, QDir::currentPath());
+    ASSERT_TRUE(QFile::exists(saved));
+    EXPECT_TRUE(w.windowTitle().contains(saved)) << w.windowTitle().toStdString();
+    // The next dialog, another one (the board's export), opens in that folder.
+    w.session().setCursor(w.session().size());
+    openedIn.clear();
+    answerNextFileDialog(&openedIn, QDir(dir.path()).filePath("board.csv"));
+    auto* exportButton = w.findChild<QPushButton*>("boardExport");
+    ASSERT_NE(exportButton, nullptr);
+    exportButton->click();
+    EXPECT_EQ(openedIn, QDir(dir.path()).absolutePath());
+    EXPECT_TRUE(QFile::exists(QDir(dir.path()).filePath("board.csv")));
+    QSettings().remove("dialogs");
 }
 
 TEST(Live2D, LessonSixWhileDraggingAndEditing) {

@@ -2,6 +2,7 @@
 // Ctrl+0, remembered for the next window), full screen (F11), presenter mode's thicker lines, the
 // high-contrast palette, and Help > Keyboard shortcuts (F1, ?) listing every key of the window in
 // English and Italian. Each test leaves the presenter settings as it found them (HOME is shared).
+#include "compare_window.h"
 #include "gui_testing.h"
 #include "language.h"
 #include "lesson_panel.h"
@@ -19,6 +20,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QPointer>
 #include <QScreen>
 #include <QSettings>
 #include <QShortcut>
@@ -493,6 +495,52 @@ TEST_F(Presenter, ShortcutsDialogListsEveryKeyOfTheWindowAsItIsWhenItOpens) {
     QTest::keyClick(w.view2D(), Qt::Key_Question);
     ASSERT_TRUE(waitFor([&] { return w.shortcutsDialog() != nullptr; }));
     expectEveryAction(w, *w.shortcutsDialog());
+}
+
+// gui.md 16: with the compare window in front, Ctrl+Q and the window's keys did nothing (a
+// lecturer's second Ctrl+Q, every run of the reviewer's monkey). Esc closes it.
+TEST_F(Presenter, TheWindowsKeysWorkFromTheCompareWindow) {
+    auto* w = new MainWindow;
+    QPointer<MainWindow> alive(w);
+    w->setAttribute(Qt::WA_DeleteOnClose);
+    showActive(*w);
+    ASSERT_TRUE(openLesson(*w, "10"));
+    w->setLecturerMode(true);
+    w->openCompare();
+    ASSERT_TRUE(w->waitUntilIdle());
+    QPointer<CompareWindow> compare = w->compareWindow();
+    ASSERT_TRUE(compare);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+    // In front: the keys go to it, not to the app's window behind.
+    const auto inFront = [&] {
+        return waitFor([&] {
+            if (QApplication::activeWindow() != compare) compare->activateWindow();
+            return QApplication::activeWindow() == compare;
+        });
+    };
+    ASSERT_TRUE(inFront());
+    // Ctrl++ there zooms (the application's font), F1 there lists the keys.
+    QTest::keyClick(compare, Qt::Key_Plus, Qt::ControlModifier);
+    EXPECT_EQ(presentation().zoomPercent(), 110);
+    QTest::keyClick(compare, Qt::Key_0, Qt::ControlModifier);
+    EXPECT_EQ(presentation().zoomPercent(), 100);
+    QTest::keyClick(compare, Qt::Key_F1);
+    ASSERT_TRUE(waitFor([&] { return w->shortcutsDialog() != nullptr; }));
+    w->shortcutsDialog()->close();
+    ASSERT_TRUE(waitFor([&] { return w->shortcutsDialog() == nullptr; }));
+    // Esc closes the compare window; opened again, Ctrl+Q in it quits the app's window.
+    ASSERT_TRUE(inFront());
+    QTest::keyClick(compare, Qt::Key_Escape);
+    ASSERT_TRUE(waitFor([&] { return !compare; }));
+    w->openCompare();
+    ASSERT_TRUE(w->waitUntilIdle());
+    compare = w->compareWindow();
+    ASSERT_TRUE(compare);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+    ASSERT_TRUE(inFront());
+    QTest::keyClick(compare, Qt::Key_Q, Qt::ControlModifier);
+    EXPECT_TRUE(waitFor([&] { return !alive && !compare; }));
+    delete alive.data();
 }
 
 TEST_F(Presenter, ShortcutsDialogInItalian) {

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QImage>
 #include <QTest>
@@ -260,6 +261,30 @@ TEST(View3D, ARayOverTheCheckerHasADarkOutline) {
     }
     ASSERT_GE(samples, 3);
     EXPECT_GE(outlined, samples - 1) << outlined << " of " << samples;
+}
+
+// gui.md 15: in a 2D lesson the 3D items did nothing (the heat map could even be checked) and the
+// 3D view's screenshot saved its hidden placeholder; in a 3D one the 2D view's did the same.
+TEST(View3D, ItemsOfOneKindOfSceneAreOffWithTheOther) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    const auto enabled = [&](const char* name) {
+        const auto* a = w.findChild<QAction*>(QString::fromLatin1(name));
+        EXPECT_NE(a, nullptr) << name;
+        return a && a->isEnabled();
+    };
+    const char* const threeD[] = {"heatmap",      "renderAgain",     "resetCamera",
+                                  "screenshot3D", "screenshotImage", "rayTraceView"};
+    ASSERT_TRUE(openLesson(w, "6"));  // 2D
+    for (const char* name : threeD) EXPECT_FALSE(enabled(name)) << name;
+    EXPECT_TRUE(enabled("screenshot2D"));
+    EXPECT_TRUE(enabled("live2dFit"));
+    ASSERT_TRUE(openLesson(w, "1"));  // 3D
+    for (const char* name : threeD) EXPECT_TRUE(enabled(name)) << name;
+    EXPECT_FALSE(enabled("screenshot2D"));
+    EXPECT_FALSE(enabled("live2dFit"));
+    w.tasks().cancel(TaskKind::Render);
 }
 
 TEST(View3D, ThePrimaryRayIsSeenSideOnBesideTheEye) {
