@@ -48,7 +48,9 @@ class BoardView : public QTableView {
     void fitRows() {
         const int row = fontMetrics().height() + 6;
         verticalHeader()->setDefaultSectionSize(row);
-        setMinimumHeight(horizontalHeader()->sizeHint().height() + row + 2 * frameWidth() +
+        // The header by its font too: without a model yet its size hint is its empty one's.
+        const int header = std::max(horizontalHeader()->sizeHint().height(), row + 4);
+        setMinimumHeight(header + row + 2 * frameWidth() +
                          horizontalScrollBar()->sizeHint().height());
     }
     void keyPressEvent(QKeyEvent* e) override {

@@ -283,6 +283,33 @@ class LabelPlacer {
 }  // namespace
 
 void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const {
+    // Labels no taller than about 40% of a cell (a large zoom on a small screen made them wider
+    // than the cells they name and pushed them far from their ticks), nor smaller than the
+    // caption's font.
+    const Accelerator2D* accel = session_.accel2D();
+    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    g.save();
+    if (grid) {
+        const double cell =
+            std::min(grid->spec().cellSize(0), grid->spec().cellSize(1)) * scale_ * 0.4;
+        const double now = QFontMetricsF(g.font()).height();
+        const double least = QFontMetricsF(presentation().captionFont()).height();
+        if (now > cell && now > least) {
+            QFont f = g.font();
+            const double k = std::max(cell, least) / now;
+            if (f.pointSizeF() > 0)
+                f.setPointSizeF(f.pointSizeF() * k);
+            else
+                f.setPixelSize(std::max(1, int(f.pixelSize() * k)));
+            g.setFont(f);
+        }
+    }
+    drawDdaMarksIn(g, o, d, st, grid);
+    g.restore();
+}
+
+void View2D::drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
+                            const UniformGridT<Scene2DPrims>* grid) const {
     const QFontMetricsF fm(g.font());
     // The ray's direction and its normal on screen, in pixels (y grows downwards).
     const QPointF from = toScreen(o), ahead = toScreen(o + d) - from;
@@ -292,6 +319,17 @@ void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) co
     const double tick = px(7), bracket = px(7) + 0.6 * fm.height();
     LabelPlacer labels(QRectF(rect()).adjusted(2, 2, -2, -2), fm);
     labels.keepOff(QRectF(from - QPointF(px(8), px(8)), QSizeF(px(16), px(16))));
+    // Off the grid's cell numbers too: the row under it and the column left of it.
+    if (grid) {
+        const auto& spec = grid->spec();
+        const QPointF lo = toScreen(Vec2(spec.lo.x, spec.lo.y)),
+                      hi = toScreen(Vec2(spec.hi.x, spec.hi.y));
+        labels.keepOff(
+            QRectF(QPointF(lo.x(), lo.y() + 1), QPointF(hi.x(), lo.y() + fm.height() + 4)));
+        labels.keepOff(
+            QRectF(QPointF(lo.x() - fm.horizontalAdvance(QStringLiteral("00")) - 8, hi.y()),
+                   QPointF(lo.x() - 1, lo.y())));
+    }
     const auto label = [&](const QString& text, QPointF anchor, QPointF away, const QColor& c) {
         const QRectF r = labels.place(text, anchor, away, u);
         drawnLabels_.push_back({text, r});

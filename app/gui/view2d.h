@@ -139,6 +139,8 @@ class View2D : public QWidget {
     /// The DDA's state on the ray o + t d: tMax as labelled ticks, tDelta as brackets, labels
     /// kept apart and inside the view.
     void drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const;
+    void drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
+                        const UniformGridT<Scene2DPrims>* grid) const;
     /// The caption over the picture: the scene's name and its structure.
     QString captionText() const;
     /// The colour roles of the picture (the palette's), where fit() put them.
