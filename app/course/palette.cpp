@@ -22,13 +22,16 @@ constexpr std::array<PaletteColour, kPaletteSize> kPalette{{
     {"hit", 0, 158, 115, "green", "verde"},
     {"candidate", 86, 180, 233, "sky blue", "azzurro"},
     {"chosen", 0, 114, 178, "blue", "blu"},
-    // The 3D view's structures, on its dark background: none shares a hue with a ray.
+    // The 3D view's structures, on its dark background: none near a ray's hue (orange was read
+    // as the primary ray's orange-red, blue as the reflection's sky blue on a projector). What
+    // the ray passes through in greys; the current voxel or node in violet, the one hue the
+    // rays leave free.
     {"grid-box", 200, 200, 200, "light grey", "grigio chiaro"},
-    {"voxel", 0, 114, 178, "blue", "blu"},
-    {"current-voxel", 230, 159, 0, "orange", "arancione"},
-    {"kd-node", 230, 159, 0, "orange", "arancione"},
-    {"split-plane", 0, 114, 178, "blue", "blu"},
-    {"bvh-box", 0, 114, 178, "blue", "blu"},
+    {"voxel", 150, 150, 165, "grey", "grigio"},
+    {"current-voxel", 170, 120, 255, "violet", "viola"},
+    {"kd-node", 170, 120, 255, "violet", "viola"},
+    {"split-plane", 150, 150, 165, "grey", "grigio"},
+    {"bvh-box", 150, 150, 165, "grey", "grigio"},
     {"tested-primitive", 255, 255, 255, "white", "bianco"},
     {"hit-point", 255, 255, 255, "white", "bianco"},
 }};
@@ -49,11 +52,11 @@ constexpr std::array<PaletteColour, kPaletteSize> kHighContrast{{
     {"candidate", 0, 155, 240, "sky blue", "azzurro"},
     {"chosen", 0, 85, 200, "blue", "blu"},
     {"grid-box", 235, 235, 235, "light grey", "grigio chiaro"},
-    {"voxel", 40, 150, 255, "blue", "blu"},
-    {"current-voxel", 255, 180, 0, "orange", "arancione"},
-    {"kd-node", 255, 180, 0, "orange", "arancione"},
-    {"split-plane", 40, 150, 255, "blue", "blu"},
-    {"bvh-box", 40, 150, 255, "blue", "blu"},
+    {"voxel", 175, 175, 190, "grey", "grigio"},
+    {"current-voxel", 195, 150, 255, "violet", "viola"},
+    {"kd-node", 195, 150, 255, "violet", "viola"},
+    {"split-plane", 175, 175, 190, "grey", "grigio"},
+    {"bvh-box", 175, 175, 190, "grey", "grigio"},
     {"tested-primitive", 255, 255, 255, "white", "bianco"},
     {"hit-point", 255, 255, 255, "white", "bianco"},
 }};

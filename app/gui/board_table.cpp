@@ -1,5 +1,6 @@
 // The board dock: the core's board rows (trace/board.h) of the replay at its cursor, in a table.
 #include "board_table.h"
+#include "file_dialogs.h"
 
 #include "language.h"
 
@@ -20,6 +21,8 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QScrollBar>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -33,9 +36,23 @@ namespace {
 /// cell) before any shortcut sees it.
 class BoardView : public QTableView {
   public:
-    explicit BoardView(QAction* copy) : copy_(copy) {}
+    explicit BoardView(QAction* copy) : copy_(copy) { fitRows(); }
 
   protected:
+    void changeEvent(QEvent* e) override {
+        QTableView::changeEvent(e);
+        if (e->type() == QEvent::FontChange) fitRows();  // the zoom: the rows grow with the text
+    }
+    /// Rows as tall as a line of text (more of the walk in a short dock), and room for the
+    /// header and the current row at least, whatever the zoom.
+    void fitRows() {
+        const int row = fontMetrics().height() + 6;
+        verticalHeader()->setDefaultSectionSize(row);
+        // The header by its font too: without a model yet its size hint is its empty one's.
+        const int header = std::max(horizontalHeader()->sizeHint().height(), row + 4);
+        setMinimumHeight(header + row + 2 * frameWidth() +
+                         horizontalScrollBar()->sizeHint().height());
+    }
     void keyPressEvent(QKeyEvent* e) override {
         if (e->matches(QKeySequence::Copy)) {
             copy_->trigger();
@@ -48,7 +65,48 @@ class BoardView : public QTableView {
   private:
     QAction* copy_;
 };
+
+/// A one-line label that elides what does not fit (the whole text is its tooltip): a zoomed
+/// caption takes one line of the dock, not two or three of its rows.
+class ElidedLabel : public QLabel {
+  public:
+    void setFullText(const QString& text) {
+        full_ = text;
+        setToolTip(text);
+        elide();
+    }
+    QString fullText() const { return full_; }
+    QSize minimumSizeHint() const override { return {0, QLabel::minimumSizeHint().height()}; }
+    QSize sizeHint() const override {
+        return {fontMetrics().horizontalAdvance(full_), QLabel::sizeHint().height()};
+    }
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override {
+        QLabel::resizeEvent(e);
+        elide();
+    }
+    void changeEvent(QEvent* e) override {
+        QLabel::changeEvent(e);
+        if (e->type() == QEvent::FontChange) elide();
+    }
+
+  private:
+    void elide() { setText(fontMetrics().elidedText(full_, Qt::ElideRight, width())); }
+    QString full_;
+};
 }  // namespace
+
+QString shownText(const std::string& cell) {
+    QString text = QString::fromStdString(cell);
+    // On screen a number reads as the interface writes it (a decimal comma in Italian, as the
+    // inspector and the events); the exports keep the point, as a spreadsheet or LaTeX reads it.
+    if (interfaceLanguage() == Language::It) {
+        static const QRegularExpression decimalPoint(QStringLiteral("(\\d)\\.(\\d)"));
+        text.replace(decimalPoint, QStringLiteral("\\1,\\2"));
+    }
+    return text;
+}
 
 int BoardModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(board_.rows.size());
@@ -65,7 +123,7 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
     switch (role) {
         case Qt::DisplayRole:
         case Qt::ToolTipRole:
-            return QString::fromStdString(board_.rows[index.row()].cells[index.column()]);
+            return shownText(board_.rows[index.row()].cells[index.column()]);
         case Qt::BackgroundRole:
             if (current) {
                 // The 2D view's colour for the current cell, as a tint the text reads on.
@@ -163,9 +221,8 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     auto* top = new QHBoxLayout;
-    caption_ = new QLabel;
+    caption_ = new ElidedLabel;
     caption_->setObjectName("boardCaption");
-    caption_->setWordWrap(true);
     top->addWidget(caption_, 1);
     format_ = new QComboBox;
     format_->setObjectName("boardFormat");
@@ -201,8 +258,6 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     view_->horizontalHeader()->setStretchLastSection(true);
     view_->setWordWrap(false);
-    // Rows as tall as a line of text: more of the walk in a short dock.
-    view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 6);
     view_->setToolTip(tr("Click a row to go back to that step"));
     layout->addWidget(view_, 1);
 
@@ -251,7 +306,7 @@ void BoardTable::refresh() {
             what = tr("The build: a row per node made, with its split or why it is a leaf.");
             break;
     }
-    caption_->setText(what);
+    static_cast<ElidedLabel*>(caption_)->setFullText(what);
     copy_->setEnabled(!b.header.empty());
     export_->setEnabled(!b.header.empty());
     const int row = currentRow();
@@ -269,7 +324,7 @@ int BoardTable::currentRow() const {
 }
 
 QString BoardTable::caption() const {
-    return caption_->text();
+    return static_cast<ElidedLabel*>(caption_)->fullText();
 }
 
 QString BoardTable::text(BoardFormat format) const {
@@ -302,8 +357,8 @@ QString BoardTable::exportTo(const QString& path, BoardFormat format) const {
 void BoardTable::exportDialog() {
     const QString csv = tr("CSV (*.csv)"), md = tr("Markdown (*.md)"), tex = tr("LaTeX (*.tex)");
     QString filter;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export the board"), QString(),
-                                                      csv + ";;" + md + ";;" + tex, &filter);
+    const QString path =
+        saveFileName(this, tr("Export the board"), csv + ";;" + md + ";;" + tex, &filter);
     if (path.isEmpty()) return;
     // The file's extension decides; without one, the filter chosen in the dialog.
     BoardFormat format = filter == md    ? BoardFormat::Markdown

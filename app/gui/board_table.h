@@ -17,6 +17,10 @@ class QTableView;
 
 namespace raystep::gui {
 
+/// A board cell as the table shows it: its numbers with the interface's decimal sign (the
+/// exports and Copy keep the board's own text, with points).
+QString shownText(const std::string& cell);
+
 /// The board as a table model: rows grow at the end while the replay steps forward.
 class BoardModel : public QAbstractTableModel {
   public:

@@ -20,14 +20,14 @@ namespace {
 constexpr SplitMethod kSplits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
 }
 
-CompareWindow::Prepared CompareWindow::prepare(const std::string& scene, AccelKind kind,
+CompareWindow::Prepared CompareWindow::prepare(const SceneRef& scene, AccelKind kind,
                                                const ProgressFn& progress) {
     Prepared p;
     for (int i = 0; i < 3; ++i) {
         AccelOptions o;
         o.kdtree.split = o.bvh.split = kSplits[i];
         if (progress) o.setProgress([&progress, i](double f) { return progress((i + f) / 3.0); });
-        p[i] = Session::prepare(scene, kind, o);
+        p[i] = Session::rebuild(scene, kind, o);
     }
     return p;
 }
@@ -115,6 +115,8 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
     layout->addWidget(table_);
     close_ = new QPushButton(tr("Close"));
     close_->setObjectName("closeCompare");
+    close_->setShortcut(QKeySequence(Qt::Key_Escape));
+    close_->setToolTip(tr("Close the compare window (Esc)"));
     connect(close_, &QPushButton::clicked, this, &QWidget::close);
     layout->addWidget(close_, 0, Qt::AlignRight);
     setStep(longest);

@@ -24,12 +24,11 @@ class CompareWindow : public QWidget {
     struct Pixel {
         int x, y, width, height;
     };
-    /// The three splits of `kind` (kdtree or bvh) loaded and built, on any thread (the main
-    /// window builds them behind a progress dialog); `progress` sees the three builds as one.
-    /// Throws SceneError, or BuildCancelled.
+    /// The three splits of `kind` (kdtree or bvh) built over the scene shown (as edited live,
+    /// with its example ray: a lesson's own), on any thread (the main window builds them behind
+    /// a progress dialog); `progress` sees the three builds as one. Throws BuildCancelled.
     using Prepared = std::array<SceneRef, 3>;
-    static Prepared prepare(const std::string& scene, AccelKind kind,
-                            const ProgressFn& progress = {});
+    static Prepared prepare(const SceneRef& scene, AccelKind kind, const ProgressFn& progress = {});
     /// Shows them, each replaying the 2D scene's example ray or the 3D scene's `pixel`.
     CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent = nullptr);
     ~CompareWindow() override;

@@ -1,5 +1,7 @@
 #include "image_view.h"
 
+#include "presentation.h"
+
 #include "raystep/render/image.h"
 
 #include <QAction>
@@ -7,6 +9,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPushButton>
+#include <QTimer>
 #include <QToolButton>
 #include <QWheelEvent>
 
@@ -183,6 +186,12 @@ void ImageView::placeButton() {
     }
 }
 
+void ImageView::changeEvent(QEvent* e) {
+    QWidget::changeEvent(e);
+    // The zoom: the buttons' sizes follow their new font, which reaches them after this one.
+    if (e->type() == QEvent::FontChange) QTimer::singleShot(0, this, [this] { placeButton(); });
+}
+
 void ImageView::resizeEvent(QResizeEvent*) {
     placeButton();
     emit renderSizeChanged();
@@ -209,10 +218,11 @@ void ImageView::drawColourBar(QPainter& g) {
     g.save();
     g.setPen(Qt::NoPen);
     g.setBrush(QColor(0, 0, 0, 170));
-    g.drawRoundedRect(bar.adjusted(-8, -18, 8, 4), 4, 4);
+    g.drawRoundedRect(bar.adjusted(-8, -g.fontMetrics().height() - 3, 8, 4), 4, 4);
     g.fillRect(bar, grad);
     g.setPen(QColor(235, 235, 235));
-    const QRectF labels(bar.left(), bar.top() - 17, bar.width(), 15);
+    const double line = g.fontMetrics().height();
+    const QRectF labels(bar.left(), bar.top() - line - 2, bar.width(), line);
     g.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
     g.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, QString::number(frame_.maxTests));
     g.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter,
@@ -229,16 +239,23 @@ void ImageView::paintEvent(QPaintEvent*) {
         // A progressive render shows each pass's complete picture while it refines.
         g.drawImage(r, heatmap_ && !heat_.isNull() ? heat_ : image_);
         if (heatmap_) drawColourBar(g);
-        // The caption on a dark box: readable over a bright sky as over a dark floor.
-        const QString caption = message();
-        const QRectF text = g.fontMetrics()
-                                .boundingRect(QRect(8, 6, width() - 16, 20), Qt::AlignLeft, caption)
-                                .adjusted(-4, -1, 4, 1);
+        // The caption on a dark box: readable over a bright sky as over a dark floor. In the
+        // views' caption font (the chrome's zoom), as high as it, left of the view's button.
+        g.save();
+        g.setFont(presentation().captionFont());
+        const QFontMetricsF fm(g.font());
+        const double right = rayTraceButton_ && rayTraceButton_->isVisible()
+                                 ? rayTraceButton_->x() - 8
+                                 : width() - 8;
+        const QString caption =
+            fm.elidedText(message(), Qt::ElideRight, std::max(0.0, right - 8 - 8));
+        const QRectF at(8, 6, fm.horizontalAdvance(caption), fm.height());
         g.setPen(Qt::NoPen);
         g.setBrush(QColor(0, 0, 0, 150));
-        g.drawRoundedRect(text, 3, 3);
+        g.drawRoundedRect(at.adjusted(-4, -1, 4, 1), 3, 3);
         g.setPen(QColor(235, 235, 235));
-        g.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft, caption);
+        g.drawText(at, Qt::AlignLeft | Qt::AlignVCenter, caption);
+        g.restore();
         if (state_ == State::Rendering) {
             g.fillRect(QRectF(r.x(), r.y(), r.width() * percent_ / 100.0, 3), QColor(90, 160, 230));
         }

@@ -92,6 +92,7 @@ class ImageView : public QWidget {
     void mousePressEvent(QMouseEvent*) override;
     void wheelEvent(QWheelEvent*) override;
     void resizeEvent(QResizeEvent*) override;
+    void changeEvent(QEvent*) override;
 
   private:
     QRectF imageRect() const;

@@ -1,5 +1,6 @@
 // The lesson controller: a lesson's steps, exercises, progress and sweep, and the help texts.
 #include "lesson_controller.h"
+#include "file_dialogs.h"
 
 #include "course/palette.h"
 
@@ -32,6 +33,15 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
     options.setProgress(progress);
     Opened o;
     o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
+    // A lesson that traces a 2D ray of its own shows its scene with that ray as the example ray:
+    // the handles, a live edit, a live control, R and compare all start from the ray replayed.
+    if (const Scene2D* s2 = std::get_if<Scene2D>(&o.scene->scene);
+        s2 && lesson.trace.kind == LessonTrace::Kind::Ray2D) {
+        Scene2D withRay = *s2;
+        withRay.exampleRay = lesson.trace.ray;
+        withRay.name = o.scene->name;
+        o.scene = Session::prepare(std::move(withRay), lesson.accel, options);
+    }
     o.trace =
         recordLessonTrace(lesson, o.scene->scene, o.scene->accel3D ? &*o.scene->accel3D : nullptr,
                           o.scene->accel2D ? &*o.scene->accel2D : nullptr);
@@ -212,9 +222,8 @@ void LessonController::exportProgressReport() {
     settings.setValue(QStringLiteral("report/student"), student);
     const ReportHeader header{student.trimmed().toStdString(),
                               QDate::currentDate().toString(Qt::ISODate).toStdString()};
-    const QString path =
-        QFileDialog::getSaveFileName(&window_, tr("Export progress report"),
-                                     QStringLiteral("raystep-progress.md"), tr("Markdown (*.md)"));
+    const QString path = saveFileName(&window_, tr("Export progress report"), tr("Markdown (*.md)"),
+                                      nullptr, QStringLiteral("raystep-progress.md"));
     if (path.isEmpty()) return;
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) ||

@@ -22,6 +22,7 @@
 #include <QTextTable>
 #include <QVBoxLayout>
 #include "language.h"
+#include "presentation.h"
 
 namespace raystep::gui {
 
@@ -77,6 +78,7 @@ void wrapLongLines(QTextBrowser* text) {
             f.setNonBreakableLines(false);
             c.mergeBlockFormat(f);
         }
+    codeFollowsTextSize(*text->document());  // the zoom enlarges code and formulas too
 }
 }  // namespace
 

@@ -9,10 +9,14 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSpinBox>
+
+#include <algorithm>
+#include <vector>
 
 namespace raystep::gui {
 
@@ -55,6 +59,8 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     auto* grid = new QGridLayout(this);
     grid->setContentsMargins(4, 4, 4, 4);
     grid->setVerticalSpacing(3);
+    // The least width is minimumSizeHint()'s (one pair to a row), not the layout's of the moment.
+    grid->setSizeConstraint(QLayout::SetNoConstraint);
 
     structure_ = new QComboBox;
     structure_->setObjectName("liveStructure");
@@ -120,31 +126,31 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     stats_->setWordWrap(true);
     stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
-    // The statistics first: on a short screen the rarely used controls scroll, not these.
-    int row = 0;
-    grid->addWidget(stats_, row++, 0, 1, 4);
-    grid->addWidget(new QLabel(tr("Structure")), row, 0);
-    grid->addWidget(structure_, row, 1);
-    grid->addWidget(new QLabel(tr("Split")), row, 2);
-    grid->addWidget(split_, row++, 3);
-    grid->addWidget(cellsLabel_, row, 0);
-    grid->addLayout(cellsRow, row, 1);
-    grid->addWidget(byLambda_, row, 2);
-    grid->addWidget(lambda_, row++, 3);
-    grid->addWidget(new QLabel(QStringLiteral("cTrav")), row, 0);
-    grid->addWidget(cTrav_, row, 1);
-    grid->addWidget(new QLabel(QStringLiteral("cIsect")), row, 2);
-    grid->addWidget(cIsect_, row++, 3);
-    grid->addWidget(new QLabel(tr("Empty bonus")), row, 0);
-    grid->addWidget(emptyBonus_, row, 1);
-    grid->addWidget(new QLabel(tr("Leaf size")), row, 2);
-    grid->addWidget(leafSize_, row++, 3);
-    grid->addWidget(new QLabel(tr("Max depth")), row, 0);
-    grid->addWidget(maxDepth_, row, 1);
-    grid->addWidget(mailbox_, row++, 2, 1, 2);
-    grid->setRowStretch(row, 1);
-    grid->setColumnStretch(1, 1);
-    grid->setColumnStretch(3, 1);
+    // The statistics first: on a short screen the rarely used controls scroll, not these. Then
+    // each control beside its name, two pairs to a row where the dock is wide enough, else one
+    // (lessons.md F14: in Italian at 1366x768 "Taglio" and the leaf size were cut off).
+    grid_ = grid;
+    auto* cells = new QWidget;
+    cellsRow->setContentsMargins(0, 0, 0, 0);
+    cells->setLayout(cellsRow);
+    // A long name ("Profondità massima") wraps rather than widen a narrow dock.
+    const auto label = [](const QString& text) {
+        auto* l = new QLabel(text);
+        l->setWordWrap(true);
+        return l;
+    };
+    cellsLabel_->setWordWrap(true);
+    pairs_ = {{label(tr("Structure")), structure_},
+              {label(tr("Split")), split_},
+              {cellsLabel_, cells},
+              {byLambda_, lambda_},
+              {label(QStringLiteral("cTrav")), cTrav_},
+              {label(QStringLiteral("cIsect")), cIsect_},
+              {label(tr("Empty bonus")), emptyBonus_},
+              {label(tr("Leaf size")), leafSize_},
+              {label(tr("Max depth")), maxDepth_},
+              {mailbox_, nullptr}};
+    arrange(true);
 
     connect(structure_, &QComboBox::activated, this, [this] { changed(); });
     connect(split_, &QComboBox::activated, this, [this] { changed(); });
@@ -304,6 +310,64 @@ void LiveControls::updateStatistics() {
                      .arg(nodes)
                      .arg(skips);
     stats_->setText(lines.join('\n'));
+}
+
+int LiveControls::pairsWidth(int columns) const {
+    // The widest name and the widest control of each column of pairs, with the grid's spacing.
+    const int perRow = std::max(1, columns / 2);
+    std::vector<int> names(perRow, 0), fields(perRow, 0);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+        const int c = static_cast<int>(i) % perRow;
+        if (!pairs_[i].second) continue;  // the mailboxing box spans a whole pair
+        names[c] = std::max(names[c], pairs_[i].first->minimumSizeHint().width());
+        fields[c] = std::max(fields[c], pairs_[i].second->minimumSizeHint().width());
+    }
+    const int spacing = std::max(0, grid_->horizontalSpacing());
+    int w = grid_->contentsMargins().left() + grid_->contentsMargins().right();
+    for (int c = 0; c < perRow; ++c) w += names[c] + fields[c] + 2 * spacing;
+    return w;
+}
+
+void LiveControls::arrange(bool twoPairs) {
+    if (arranged_ && twoPerRow_ == twoPairs) return;
+    arranged_ = true;
+    twoPerRow_ = twoPairs;
+    while (grid_->count() > 0) delete grid_->takeAt(0);
+    for (int c = 0; c < 4; ++c) grid_->setColumnStretch(c, 0);
+    const int columns = twoPairs ? 4 : 2;
+    int row = 0;
+    grid_->addWidget(stats_, row++, 0, 1, columns);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+        const int at = twoPairs ? 2 * (static_cast<int>(i) % 2) : 0;
+        if (pairs_[i].second) {
+            grid_->addWidget(pairs_[i].first, row, at);
+            grid_->addWidget(pairs_[i].second, row, at + 1);
+        } else {
+            grid_->addWidget(pairs_[i].first, row, at, 1, 2);
+        }
+        if (!twoPairs || i % 2 == 1) ++row;
+    }
+    if (twoPairs && pairs_.size() % 2 == 1) ++row;
+    grid_->setRowStretch(row, 1);
+    grid_->setColumnStretch(1, 1);
+    if (twoPairs) grid_->setColumnStretch(3, 1);
+}
+
+void LiveControls::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    arrange(width() >= pairsWidth(4));
+}
+
+void LiveControls::changeEvent(QEvent* e) {
+    QWidget::changeEvent(e);
+    // Another font (the zoom) or language: the names' widths change.
+    if (e->type() == QEvent::FontChange || e->type() == QEvent::LanguageChange)
+        arrange(width() >= pairsWidth(4));
+}
+
+QSize LiveControls::minimumSizeHint() const {
+    // One pair to a row fits a narrow dock; two are put side by side only where they fit.
+    return {pairsWidth(2), QWidget::minimumSizeHint().height()};
 }
 
 QString LiveControls::statistics() const {

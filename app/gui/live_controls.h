@@ -8,9 +8,13 @@
 
 #include <QWidget>
 
+#include <utility>
+#include <vector>
+
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QGridLayout;
 class QLabel;
 class QSpinBox;
 
@@ -47,7 +51,18 @@ class LiveControls : public QWidget {
     /// The user changed a control: build `kind` with `options` and show it.
     void applyRequested(AccelKind kind, const AccelOptions& options);
 
+  public:
+    QSize minimumSizeHint() const override;
+
+  protected:
+    void resizeEvent(QResizeEvent*) override;
+    void changeEvent(QEvent*) override;
+
   private:
+    /// The controls beside their names: two pairs to a row (`twoPairs`), else one.
+    void arrange(bool twoPairs);
+    /// The least width of the pairs laid out `columns` wide (4: two pairs to a row; 2: one).
+    int pairsWidth(int columns) const;
     /// Which controls apply to the structure shown.
     void enableForKind();
     void updateStatistics();
@@ -69,6 +84,9 @@ class LiveControls : public QWidget {
     QSpinBox* maxDepth_;
     QCheckBox* mailbox_;
     QLabel* stats_;
+    QGridLayout* grid_ = nullptr;
+    std::vector<std::pair<QWidget*, QWidget*>> pairs_;  // name, control (none: it spans both)
+    bool arranged_ = false, twoPerRow_ = true;
 };
 
 }  // namespace raystep::gui

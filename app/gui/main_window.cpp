@@ -1,5 +1,6 @@
 // The replay app's window: its layout, wiring and menus, and opening scenes and lessons.
 #include "main_window.h"
+#include "file_dialogs.h"
 
 #include "compare_window.h"
 #include "event_list.h"
@@ -274,8 +275,7 @@ void MainWindow::createActions() {
                     [this] { session_.setCursor(session_.size()); });
 
     a.openLessonFile = action(tr("Open lesson &file..."), {}, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), QString(),
-                                                          tr("Lessons (*.json)"));
+        const QString path = openFileName(this, tr("Open lesson"), tr("Lessons (*.json)"));
         if (!path.isEmpty()) openLesson(path);
     });
     // Who the lesson runs for: a student (quiz), the room (presenting: everything free, the
@@ -336,6 +336,28 @@ void MainWindow::createActions() {
     connect(a.heatmap, &QAction::toggled, imageView_, &ImageView::setHeatmap);
     a.resetCamera = action(tr("&Reset 3D camera"), {}, [this] { view3D_->resetCamera(); });
     createRenderSettings();
+    // The items of one kind of scene are off with the other: a 2D lesson's heat map or "render
+    // again" did nothing, and its 3D screenshot saved the hidden placeholder.
+    for (const auto& [act, name] :
+         {std::pair(a.heatmap, "heatmap"), std::pair(a.renderAgain, "renderAgain"),
+          std::pair(a.resetCamera, "resetCamera"), std::pair(a.shot2D, "screenshot2D"),
+          std::pair(a.shot3D, "screenshot3D"), std::pair(a.shotImage, "screenshotImage"),
+          std::pair(a.quit, "quit")})
+        act->setObjectName(QString::fromLatin1(name));
+    connect(&session_, &Session::sceneChanged, this, [this] { syncViewActions(); });
+    // What the status bar said of the last scene (its render, its structure) is not of this one.
+    connect(&session_, &Session::aboutToChangeScene, statusBar(), &QStatusBar::clearMessage);
+    syncViewActions();
+}
+
+void MainWindow::syncViewActions() {
+    const bool scene = session_.hasScene(), in3D = scene && !session_.is2D();
+    const Actions& a = actions_;
+    for (QAction* act : {a.heatmap, a.renderAgain, a.resetCamera, a.shot3D, a.shotImage})
+        act->setEnabled(in3D);
+    rayTraceView_->setEnabled(in3D);
+    if (renderBar_) renderBar_->setEnabled(in3D);
+    a.shot2D->setEnabled(scene && session_.is2D());
 }
 
 void MainWindow::createMenus() {
@@ -802,8 +824,8 @@ void MainWindow::openCompare() {
     const std::uint64_t generation = generation_;
     runner_.start<CompareWindow::Prepared>(
         TaskKind::Compare, tr("Building the midpoint, median and SAH trees..."),
-        [name = session_.name(), kind](const ProgressFn& progress) {
-            return CompareWindow::prepare(name, kind, progress);
+        [scene = session_.sceneRef(), kind](const ProgressFn& progress) {
+            return CompareWindow::prepare(scene, kind, progress);
         },
         [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
@@ -822,6 +844,9 @@ void MainWindow::openCompare() {
             compare->setAttribute(Qt::WA_DeleteOnClose);
             compare->placeOnScreen(fitToScreen(QSize(1400, 800)),
                                    fitToScreen(QSize(1 << 16, 1 << 16)));
+            // The window's own keys work there too: Quit, the zoom, the keyboard shortcuts.
+            const PresenterActions& p = presenterActions_;
+            compare->addActions({actions_.quit, p.zoomIn, p.zoomOut, p.resetZoom, p.shortcuts});
             compare->show();
             compare_ = compare;
         });
@@ -884,8 +909,8 @@ void MainWindow::togglePlay() {
 void MainWindow::openFileDialog() {
     // Models too: the scene is made around them (model_import.h). Not the lesson's structure
     // (brute force in lesson 1 would take minutes on a big mesh): the chooser's, else a kd-tree.
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open scene"), QString(),
+    const QString path = openFileName(
+        this, tr("Open scene"),
         tr("Scenes and models (*.json *.obj *.ply *.stl *.gltf *.glb)") + ";;" +
             tr("Scenes (*.json)") + ";;" + tr("Models (*.obj *.ply *.stl *.gltf *.glb)"));
     if (!path.isEmpty()) openScene(path, openKind(), false, openOptions());
@@ -905,8 +930,14 @@ QString savePng(const QImage& image, const QString& path) {
 }
 
 void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Screenshot of the %1").arg(what),
-                                                      QString(), tr("PNG images (*.png)"));
+    // A hidden view would be saved as its placeholder ("The 3D view shows 3D scenes").
+    if (!w->isVisible()) {
+        statusBar()->showMessage(
+            tr("The %1 is not shown with this scene: there is nothing of it to export").arg(what));
+        return;
+    }
+    const QString path =
+        saveFileName(this, tr("Screenshot of the %1").arg(what), tr("PNG images (*.png)"));
     if (path.isEmpty()) return;
     if (const QString problem = savePng(w->grab().toImage(), path); !problem.isEmpty())
         QMessageBox::warning(this, tr("Cannot save"), problem);
@@ -915,8 +946,7 @@ void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
 void MainWindow::exportTrace() {
     // The file holds the whole trace, past where an exercise holds the replay.
     if (refusedWhileHeld(tr("export the trace"))) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export trace"), QString(),
-                                                      tr("Trace files (*.json)"));
+    const QString path = saveFileName(this, tr("Export trace"), tr("Trace files (*.json)"));
     if (path.isEmpty()) return;
     TraceInfo info;
     info.scene = session_.name();

@@ -167,6 +167,9 @@ class MainWindow : public QMainWindow {
     /// The default widths for a window `windowWidth` wide: the lesson panel's and the docks'.
     static int defaultLessonWidth(int windowWidth);
     static int defaultDockWidth(int windowWidth);
+    /// The board's and live controls' height under the views for a window `windowHeight` high
+    /// at `zoomPercent`: above 100% they give the views what the larger chrome takes.
+    static int defaultBottomDockHeight(int windowHeight, int zoomPercent);
     /// True once the first show has put the layout in shape (restored or default sizes).
     bool layoutSettled() const { return layoutSettled_; }
 
@@ -230,6 +233,9 @@ class MainWindow : public QMainWindow {
     /// The render settings control (bounces, diffuse samples, samples per pixel) and the "ray
     /// trace this view" action; a change renders the image again.
     void createRenderSettings();
+    /// The View and File items of 3D scenes enabled with a 3D scene only, and the 2D view's
+    /// screenshot with a 2D one.
+    void syncViewActions();
     /// The control shows the scene's own render settings.
     void syncRenderSettings(const Scene& scene);
     /// Renders the image again once events settle (a camera drag moves it many times).
@@ -314,6 +320,9 @@ class MainWindow : public QMainWindow {
     QPointer<ShortcutsDialog> shortcuts_;
     /// The View menu's checks follow the presentation (changed elsewhere: another window).
     void syncPresenterActions();
+    /// After a zoom: the docks under the views at the zoom's height (defaultBottomDockHeight).
+    void fitBottomDocksToZoom();
+    int dockZoom_ = 100;  // the zoom the docks under the views were last fitted for
     QComboBox* structureBox_ = nullptr;
     QComboBox* splitBox_ = nullptr;
     QLabel* structureLabel_ = nullptr;

@@ -3,6 +3,7 @@
 
 #include "board_table.h"
 #include "live_controls.h"
+#include "presentation.h"
 
 #include <QDockWidget>
 #include <QMenu>
@@ -74,7 +75,8 @@ void MainWindow::placeBoardDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, boardDock_);
     splitDockWidget(boardDock_, liveDock_, Qt::Horizontal);
     // A quarter of the height for about eight rows of the table; the controls a fixed column.
-    resizeDocks({boardDock_}, {std::clamp(height() * 27 / 100, 170, 330)}, Qt::Vertical);
+    dockZoom_ = presentation().zoomPercent();
+    resizeDocks({boardDock_}, {defaultBottomDockHeight(height(), dockZoom_)}, Qt::Vertical);
     resizeDocks({liveDock_}, {std::clamp(width() / 5, 300, 360)}, Qt::Horizontal);
 }
 

@@ -1,5 +1,6 @@
 // The 2D view's live editing: ray handles, scene editing, undo and redo, 2D scene files, and the
 // view's zoom, pan and fit. The tool bar sits over the 2D view and is shown with it.
+#include "file_dialogs.h"
 #include "main_window.h"
 
 #include "live2d.h"
@@ -7,7 +8,6 @@
 
 #include <QAction>
 #include <QEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
@@ -185,14 +185,15 @@ void MainWindow::createLiveLab() {
 }
 
 void MainWindow::save2DSceneDialog() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save 2D scene as"), QString(),
-                                                tr("2D scenes (*.json)"));
+    QString path = saveFileName(this, tr("Save 2D scene as"), tr("2D scenes (*.json)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     if (const QString problem = live2d_->save(path); !problem.isEmpty())
         QMessageBox::warning(this, tr("Cannot save"), problem);
-    else
+    else {
         statusBar()->showMessage(tr("Saved %1").arg(path));
+        setWindowTitle(tr("raystep - %1").arg(path));  // the scene shown is that file's now
+    }
 }
 
 }  // namespace raystep::gui

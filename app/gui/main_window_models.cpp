@@ -2,6 +2,7 @@
 // splits) and the status bar's structure: the structure a scene or model uses is always shown and
 // chosen here, never inherited silently from a lesson. File > Save scene as writes the scene made
 // around an opened model.
+#include "file_dialogs.h"
 #include "main_window.h"
 
 #include "image_view.h"
@@ -199,8 +200,7 @@ QString MainWindow::saveModelScene(const QString& path) {
 }
 
 void MainWindow::saveSceneDialog() {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save scene as"), QString(), tr("Scenes (*.json)"));
+    const QString path = saveFileName(this, tr("Save scene as"), tr("Scenes (*.json)"));
     if (path.isEmpty()) return;
     if (const QString problem = saveModelScene(path); !problem.isEmpty())
         QMessageBox::warning(this, tr("Cannot save"), problem);

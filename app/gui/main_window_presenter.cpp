@@ -5,9 +5,11 @@
 #include "shortcuts.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QMenu>
 #include <QSignalBlocker>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace raystep::gui {
 
@@ -59,6 +61,9 @@ void MainWindow::createPresenter() {
     connect(a.highContrast, &QAction::toggled, &p, &Presentation::setHighContrast);
     connect(a.shortcuts, &QAction::triggered, this, &MainWindow::showShortcuts);
     connect(&p, &Presentation::changed, this, &MainWindow::syncPresenterActions);
+    // Once the new fonts have reached the widgets (posted events) and the window is laid out.
+    connect(&p, &Presentation::changed, this,
+            [this] { QTimer::singleShot(0, this, &MainWindow::fitBottomDocksToZoom); });
     syncPresenterActions();
 
     menus_.view->addSeparator();
@@ -79,6 +84,17 @@ void MainWindow::syncPresenterActions() {
     }
     a.zoomIn->setEnabled(p.zoomPercent() < Presentation::kZoomSteps.back());
     a.zoomOut->setEnabled(p.zoomPercent() > Presentation::kZoomSteps.front());
+}
+
+void MainWindow::fitBottomDocksToZoom() {
+    const int zoom = presentation().zoomPercent();
+    if (zoom == dockZoom_ || !layoutSettled_) return;
+    dockZoom_ = zoom;
+    // Only where the layout put them (a floated or moved dock is the user's).
+    if (!boardDock_ || boardDock_->isFloating() ||
+        dockWidgetArea(boardDock_) != Qt::BottomDockWidgetArea || !boardDock_->isVisible())
+        return;
+    resizeDocks({boardDock_}, {defaultBottomDockHeight(height(), zoom)}, Qt::Vertical);
 }
 
 void MainWindow::showShortcuts() {

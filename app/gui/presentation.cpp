@@ -5,7 +5,11 @@
 #include "course/palette.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QSettings>
+#include <QTextBlock>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QWidget>
 
 #include <algorithm>
@@ -17,6 +21,13 @@ namespace {
 constexpr auto kZoomKey = "presenter/zoom";
 constexpr auto kModeKey = "presenter/mode";
 constexpr auto kContrastKey = "presenter/highContrast";
+// The chrome: menus, tool bars, buttons, fields and the status bar (what a lecturer uses, not what
+// the room reads). A child of one (a tool bar's combo box) follows it.
+// The replay's timeline under the views is made of buttons and their labels: chrome too.
+constexpr const char* kChromeClasses[] = {
+    "QMenuBar",    "QMenu",        "QToolBar",  "QStatusBar",
+    "QToolButton", "QPushButton",  "QComboBox", "QAbstractSpinBox",
+    "QCheckBox",   "QRadioButton", "QTabBar",   "raystep::gui::Timeline"};
 
 /// `f` scaled by `factor`, in points when it has a point size, else in pixels.
 QFont scaled(QFont f, double factor) {
@@ -42,6 +53,10 @@ Presentation& Presentation::instance() {
 
 QFont Presentation::labelFont() const {
     return scaled(QApplication::font(), labelScale());
+}
+
+QFont Presentation::captionFont() const {
+    return scaled(QApplication::font("QMenuBar"), labelScale());
 }
 
 void Presentation::zoomIn() {
@@ -90,14 +105,51 @@ void Presentation::restore() {
 void Presentation::apply() {
     setPaletteVariant(highContrast_ ? PaletteVariant::HighContrast : PaletteVariant::Standard);
     const QFont font = scaled(base_, zoom_ / 100.0);
-    if (QApplication::font() != font) {
+    const QFont chrome = scaled(base_, std::min(zoom_, kChromeZoomCap) / 100.0);
+    if (QApplication::font() != font || QApplication::font("QMenuBar") != chrome) {
+        // The content (texts, tables, the views' labels) at the zoom; the chrome at most at the
+        // cap. Setting the application's font forgets the classes' fonts: they follow it.
         QApplication::setFont(font);
-        // A widget with a style sheet keeps the font it was polished with: given the new one.
+        for (const char* chromeClass : kChromeClasses) QApplication::setFont(chrome, chromeClass);
+        // A widget with a style sheet keeps the font it was polished with: given its class's.
         for (QWidget* w : QApplication::allWidgets())
             if (!w->styleSheet().isEmpty() && !w->styleSheet().contains(QLatin1String("font")))
-                w->setFont(font);
+                w->setFont(QApplication::font(w));
     }
+    // A dock's title is chrome, what it holds is not: its own font by a style sheet, which its
+    // children do not inherit (a font set on it would be theirs too).
+    const QString title = QStringLiteral("QDockWidget { font-size: %1pt; }")
+                              .arg(chrome.pointSizeF() > 0 ? chrome.pointSizeF() : 9.0);
+    for (QWidget* w : QApplication::allWidgets())
+        if (auto* dock = qobject_cast<QDockWidget*>(w); dock && dock->styleSheet() != title)
+            dock->setStyleSheet(title);
     emit changed();
+}
+
+void codeFollowsTextSize(QTextDocument& document) {
+    // Code (a span is fixed-pitch, a block only names the fixed font's family) carries the size
+    // the text had when it was read: removed, so it is the document's (the widget's, which the
+    // zoom sets) now and after the next zoom, as the text around it.
+    QTextCursor c(&document);
+    c.beginEditBlock();
+    for (QTextBlock b = document.begin(); b.isValid(); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextFragment f = it.fragment();
+            const QTextCharFormat format = f.charFormat();
+            const bool code =
+                format.fontFixedPitch() || format.hasProperty(QTextFormat::FontFamilies);
+            if (!f.isValid() || !code ||
+                !(format.hasProperty(QTextFormat::FontPointSize) ||
+                  format.hasProperty(QTextFormat::FontPixelSize)))
+                continue;
+            QTextCharFormat sized = format;
+            sized.clearProperty(QTextFormat::FontPointSize);
+            sized.clearProperty(QTextFormat::FontPixelSize);
+            c.setPosition(f.position());
+            c.setPosition(f.position() + f.length(), QTextCursor::KeepAnchor);
+            c.setCharFormat(sized);
+        }
+    c.endEditBlock();
 }
 
 void Presentation::save() const {

@@ -1,12 +1,16 @@
 #pragma once
 // Presenter mode (issue 19): how the app is shown on a projector. One per application, as the
-// application's font is: the UI zoom (the whole app's font, and so the views' labels), presenter
+// application's font is: the UI zoom (the whole app's font, and so the views' labels and lines;
+// menus, tool bars and buttons up to kChromeZoomCap), presenter
 // mode (thicker lines and larger labels in the 2D and 3D views) and the high-contrast palette
 // (course/palette.h). Each is remembered in QSettings ("presenter/...") and restored at start.
 #include <QFont>
 #include <QObject>
 
+#include <algorithm>
 #include <array>
+
+class QTextDocument;
 
 namespace raystep::gui {
 
@@ -17,6 +21,9 @@ class Presentation : public QObject {
     static constexpr std::array<int, 11> kZoomSteps{70,  80,  90,  100, 110, 125,
                                                     150, 175, 200, 250, 300};
     static constexpr int kDefaultZoom = 100;
+    /// The zoom of the chrome (menus, tool bars, buttons, fields) stops here: past it only the
+    /// content grows (the lesson's text and code, the views, the tables), which the room reads.
+    static constexpr int kChromeZoomCap = 150;
     /// Presenter mode's factors for the views' line widths and label fonts.
     static constexpr double kPresenterLineScale = 2.0, kPresenterLabelScale = 1.4;
 
@@ -26,14 +33,31 @@ class Presentation : public QObject {
     int zoomPercent() const { return zoom_; }
     bool presenterMode() const { return presenter_; }
     bool highContrast() const { return highContrast_; }
-    /// What the views multiply their pen widths by (presenter mode: thicker lines).
-    double lineScale() const { return presenter_ ? kPresenterLineScale : 1.0; }
-    /// What the views multiply their label fonts by, over the zoomed application font.
-    double labelScale() const { return presenter_ ? kPresenterLabelScale : 1.0; }
+    /// What the views multiply their pen widths and marks by: the zoom (above 100%: a zoom for
+    /// the back rows enlarges the picture's lines as its labels) and presenter mode's thicker
+    /// lines.
+    double lineScale() const {
+        return (presenter_ ? kPresenterLineScale : 1.0) * std::max(zoom_, kDefaultZoom) / 100.0;
+    }
+    /// What the views multiply their handles by (a drag's rings, a selection's squares): as the
+    /// lines, but with the zoom capped as the chrome's (a handle large enough to grab, not one
+    /// that hides the ray's origin).
+    double handleScale() const {
+        return (presenter_ ? kPresenterLineScale : 1.0) *
+               std::clamp(zoom_, kDefaultZoom, kChromeZoomCap) / 100.0;
+    }
+    /// What the views multiply their label fonts by, over the zoomed application font: larger in
+    /// presenter mode, up to the largest zoom's size (past it labels only crowd the picture).
+    double labelScale() const {
+        const double most = std::max(1.0, double(kZoomSteps.back()) / zoom_);
+        return presenter_ ? std::min(kPresenterLabelScale, most) : 1.0;
+    }
     /// The application's font at 100% (the system's, as it was before any zoom).
     QFont baseFont() const { return base_; }
     /// The font a view draws its labels in: the zoomed application font times labelScale().
     QFont labelFont() const;
+    /// The font of a view's caption and legend, its chrome: labelFont() with the zoom capped.
+    QFont captionFont() const;
 
   public slots:
     /// The next zoom step up or down (at the ends: stays), and back to 100%.
@@ -61,6 +85,11 @@ class Presentation : public QObject {
     bool presenter_ = false;
     bool highContrast_ = false;
 };
+
+/// Makes the code of a document made from Markdown (code spans, code blocks) follow the
+/// document's font size: Qt's Markdown reader gives code the system's fixed font at its own
+/// point size, which no zoom would change. Call it after each setMarkdown.
+void codeFollowsTextSize(QTextDocument& document);
 
 /// Presentation::instance().
 inline Presentation& presentation() {

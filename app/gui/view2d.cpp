@@ -51,17 +51,27 @@ double px(double width) {
 // The cost chart: its strip under the picture and the room left of it for the cost values.
 // Both grow with the label font (presenter mode, UI zoom): a plot about 116 px high between the
 // title's row and two rows of values, and about four lines' height for a value like "0.1234".
-double chartHeight(const QFontMetricsF& fm) {
-    return 116 + (fm.height() + 14) + 2 * (fm.height() + 1) + 12;
+constexpr double kChartPlot = 116;
+double chartHeight(const QFontMetricsF& fm, double plot = kChartPlot) {
+    return plot + (fm.height() + 14) + 2 * (fm.height() + 1) + 12;
 }
 double chartAxisRoom(const QFontMetricsF& fm) {
     return 4 * fm.height();
 }
+// The most of the view the chart's strip takes: the scene it explains keeps the rest.
+constexpr double kChartShare = 0.42;
 // Its X and Y curves in two of the palette's colours that no other part of the chart uses.
 const PaletteColour& curveColour(int axis) {
     return rayColour(axis == 0 ? RayKind::Primary : RayKind::Diffuse);
 }
 }  // namespace
+
+/// The legend's row for the ray: "the ray (orange-red)".
+static QString rayLegendLabel(Language lang) {
+    const std::string_view colour = rayColour(RayKind::Primary).name(lang);
+    return QStringLiteral("%1 (%2)").arg(View2D::tr("the ray"),
+                                         QString::fromUtf8(colour.data(), colour.size()));
+}
 
 static QString roleName(PaletteRole r) {
     switch (r) {
@@ -121,27 +131,269 @@ void View2D::fit() const {
     if (needFit_) {
         const Scene2D* s = session_.scene2D();
         world_ = s->bounds();
-        if (s->exampleRay) world_.extend(s->exampleRay->origin);
+        if (const auto ray = shownRay()) world_.extend(ray->origin);
         const Vec2 d = glm::max(world_.diagonal(), Vec2(1e-9));
-        world_.lo -= 0.06 * d;
-        world_.hi += 0.06 * d;
+        world_.lo -= 0.04 * d;  // the labels have room of their own (below)
+        world_.hi += 0.04 * d;
         needFit_ = false;
     }
     const Vec2 size = world_.diagonal();
+    const QFontMetricsF fm(font());
+    // Room for the labels around the picture, as large as their font (the zoom's): the caption
+    // over it, the cell indices under it and left of it.
+    const double top =
+        (captionShown_ ? QFontMetricsF(presentation().captionFont()).height() + 10 : 6) + 2;
+    const double bottom = fm.height() + 8, left = fm.horizontalAdvance(QStringLiteral("00")) + 12;
+    const double right = 10;
     // A build's replay keeps the bottom strip for the SAH cost chart, and a left one for its
-    // cost axis' values (the chart's position axis is the view's own x).
+    // cost axis' values (the chart's position axis is the view's own x). Both at most a share of
+    // the view: on a laptop, or zoomed, the chart shrinks, not the scene (which it explains).
     const bool build = session_.showingBuild();
-    const double chart = build ? chartHeight(QFontMetricsF(font())) : 0.0;
-    const double axis = build ? chartAxisRoom(QFontMetricsF(font())) : 0.0;
-    // The legend keeps a strip on the right (when the view is wide enough to spare it).
-    const double legend = legendShown_ && width() > 560 ? legendWidth() + 12 : 0.0;
-    const double fitted =
-        std::min((width() - 20 - legend - axis) / size.x, (height() - 40 - chart) / size.y);
+    const double chart = build ? chartStrip() : 0.0;
+    const double axis = chart > 0 ? std::min(chartAxisRoom(fm), 0.2 * width()) : 0.0;
+    const double roomX = std::max(1.0, width() - left - right - axis),
+                 roomY = std::max(1.0, height() - top - bottom - chart);
+    // The legend: a column on the right, or rows over the picture under the caption, whichever
+    // leaves the picture larger (a scene bound by the view's height has room at its side, one
+    // bound by the width above it).
+    legend_ = {};
+    double legendW = 0.0, legendH = 0.0;
+    if (legendShown_) {
+        const auto rows = legendRows(build);
+        const QFontMetricsF lm(presentation().captionFont());
+        const double row = lm.height() + 2, swatch = lm.height() - 2;
+        double widest = 0;
+        for (const auto& r : rows) widest = std::max(widest, lm.horizontalAdvance(r.second));
+        const double entry = swatch + 10 + widest;  // one entry's width in the column
+        const double sideW = entry + 12 + 12;
+        const double sideScale = std::min((roomX - sideW) / size.x, roomY / size.y);
+        // The rows: entries side by side, as many to a line as `across` holds; beside the
+        // caption if it is short enough, else under it.
+        const auto flowIn = [&](double across, double& boxW) {
+            std::vector<QRectF> flow;
+            double x = 0, line = 0;
+            boxW = 0;
+            for (const auto& r : rows) {
+                const double w = swatch + 10 + lm.horizontalAdvance(r.second) + 14;
+                if (x > 0 && x + w > across) x = 0, ++line;
+                flow.emplace_back(x, line * row, w, row);
+                x += w;
+                boxW = std::max(boxW, x);
+            }
+            return flow;
+        };
+        const QFontMetricsF cm(presentation().captionFont());
+        const double captionW = captionShown_ ? cm.horizontalAdvance(captionText()) + 24 : 0.0;
+        double besideW = 0, underW = 0;
+        const auto beside = flowIn(width() - 28 - captionW, besideW);
+        const auto under = flowIn(width() - 28, underW);
+        const double besideH = beside.back().bottom() + 8;
+        const double underH = under.back().bottom() + 8;
+        // Beside the caption the box starts where the caption does; what it adds is what it
+        // reaches below the room kept for the caption.
+        const double besideCost = std::max(0.0, 4 + besideH + 6 - top);
+        const double underCost = underH + 6;
+        const bool besideCaption = besideW <= width() - 28 - captionW && besideCost <= underCost;
+        const auto& flow = besideCaption ? beside : under;
+        const double flowW = besideCaption ? besideW : underW,
+                     flowH = besideCaption ? besideH : underH;
+        const double topH = besideCaption ? besideCost : underCost;
+        const double topScale = std::min(roomX / size.x, (roomY - topH) / size.y);
+        // The column unless the rows leave the picture clearly larger (the column is the usual
+        // look; they are near equal on a wide view).
+        legend_.inRows = topScale > 1.04 * sideScale;
+        const double boxTop = top - 2;
+        if (legend_.inRows) {
+            const double y = besideCaption ? 4.0 : boxTop;
+            legend_.box = QRectF(width() - 8 - (flowW + 12), y, flowW + 12, flowH);
+            for (const QRectF& f : flow)
+                legend_.entries.push_back(f.translated(legend_.box.left() + 6, y + 4));
+            legendH = topH;
+        } else {
+            legend_.box =
+                QRectF(width() - 8 - (entry + 12), boxTop, entry + 12, row * rows.size() + 8);
+            for (std::size_t k = 0; k < rows.size(); ++k)
+                legend_.entries.emplace_back(legend_.box.left() + 6, boxTop + 4 + row * k, entry,
+                                             row);
+            legendW = sideW;
+        }
+    }
+    const double fitted = std::min((roomX - legendW) / size.x, (roomY - legendH) / size.y);
     // Then the user's zoom and pan (zoomAt keeps the point under the cursor in place).
     scale_ = fitted * zoom_;
-    offset_ = QPointF(axis + (width() - axis - legend - fitted * size.x) / 2,
-                      chart + (height() - chart - fitted * size.y) / 2) +
+    offset_ = QPointF(left + axis + (roomX - legendW - fitted * size.x) / 2,
+                      bottom + chart + (roomY - legendH - fitted * size.y) / 2) +
               pan_;
+}
+
+QString View2D::captionText() const {
+    return QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
+           structureName(session_.kind());
+}
+
+namespace {
+/// Labels put where they overlap no label put before and stay inside the view: from the spot
+/// asked for, outwards along `away`, then shifted along the ray.
+class LabelPlacer {
+  public:
+    LabelPlacer(QRectF bounds, const QFontMetricsF& fm) : bounds_(bounds), fm_(fm) {}
+    /// Where `text` goes near `anchor`, on the side `away` (a unit vector on screen).
+    QRectF place(const QString& text, QPointF anchor, QPointF away, QPointF along) {
+        const QSizeF size(fm_.horizontalAdvance(text) + 8, fm_.height() + 2);
+        // The spots nearest the anchor first: a step away, or a shift along the ray.
+        std::vector<std::pair<double, QPointF>> spots;
+        for (int k = 0; k < 4; ++k)
+            for (const double shift : {0.0, 0.6, -0.6, 1.2, -1.2}) {
+                const QPointF by =
+                    away * (k * (size.height() + 2)) + along * (shift * size.width());
+                spots.emplace_back(std::hypot(by.x(), by.y()), by);
+            }
+        std::stable_sort(spots.begin(), spots.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        QRectF best;
+        for (const auto& spot : spots) {
+            // The box's corner nearest the anchor on the `away` side.
+            const QPointF c = anchor + spot.second;
+            QRectF r(c - QPointF(away.x() < 0 ? size.width() : 0, away.y() < 0 ? size.height() : 0),
+                     size);
+            if (std::abs(away.x()) < 0.35) r.moveLeft(c.x() - size.width() / 2);
+            if (std::abs(away.y()) < 0.35) r.moveTop(c.y() - size.height() / 2);
+            // Kept inside the view (a label at the top edge was cut).
+            r.moveLeft(std::clamp(r.left(), bounds_.left(), bounds_.right() - r.width()));
+            r.moveTop(std::clamp(r.top(), bounds_.top(), bounds_.bottom() - r.height()));
+            if (best.isNull()) best = r;
+            const bool free = std::none_of(placed_.begin(), placed_.end(),
+                                           [&](const QRectF& p) { return p.intersects(r); });
+            if (free) {
+                placed_.push_back(r);
+                return r;
+            }
+        }
+        placed_.push_back(best);
+        return best;
+    }
+    /// A part of the picture labels keep off (a tick, the ray's origin).
+    void keepOff(QRectF r) { placed_.push_back(r); }
+
+  private:
+    QRectF bounds_;
+    const QFontMetricsF& fm_;
+    std::vector<QRectF> placed_;
+};
+}  // namespace
+
+void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const {
+    // Labels no taller than about 40% of a cell (a large zoom on a small screen made them wider
+    // than the cells they name and pushed them far from their ticks), nor smaller than the
+    // caption's font.
+    const Accelerator2D* accel = session_.accel2D();
+    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    g.save();
+    if (grid) {
+        const double cell =
+            std::min(grid->spec().cellSize(0), grid->spec().cellSize(1)) * scale_ * 0.4;
+        const double now = QFontMetricsF(g.font()).height();
+        const double least = QFontMetricsF(presentation().captionFont()).height();
+        if (now > cell && now > least) {
+            QFont f = g.font();
+            const double k = std::max(cell, least) / now;
+            if (f.pointSizeF() > 0)
+                f.setPointSizeF(f.pointSizeF() * k);
+            else
+                f.setPixelSize(std::max(1, int(f.pixelSize() * k)));
+            g.setFont(f);
+        }
+    }
+    drawDdaMarksIn(g, o, d, st, grid);
+    g.restore();
+}
+
+void View2D::drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
+                            const UniformGridT<Scene2DPrims>* grid) const {
+    const QFontMetricsF fm(g.font());
+    // The ray's direction and its normal on screen, in pixels (y grows downwards).
+    const QPointF from = toScreen(o), ahead = toScreen(o + d) - from;
+    const double len = std::hypot(ahead.x(), ahead.y());
+    if (!(len > 0)) return;
+    const QPointF u = ahead / len, n(u.y(), -u.x());  // n: to the ray's left as drawn
+    const double tick = px(7), bracket = px(7) + 0.6 * fm.height();
+    LabelPlacer labels(QRectF(rect()).adjusted(2, 2, -2, -2), fm);
+    labels.keepOff(QRectF(from - QPointF(px(8), px(8)), QSizeF(px(16), px(16))));
+    // Off the grid's cell numbers too: the row under it and the column left of it.
+    if (grid) {
+        const auto& spec = grid->spec();
+        const QPointF lo = toScreen(Vec2(spec.lo.x, spec.lo.y)),
+                      hi = toScreen(Vec2(spec.hi.x, spec.hi.y));
+        labels.keepOff(
+            QRectF(QPointF(lo.x(), lo.y() + 1), QPointF(hi.x(), lo.y() + fm.height() + 4)));
+        labels.keepOff(
+            QRectF(QPointF(lo.x() - fm.horizontalAdvance(QStringLiteral("00")) - 8, hi.y()),
+                   QPointF(lo.x() - 1, lo.y())));
+    }
+    const auto label = [&](const QString& text, QPointF anchor, QPointF away, const QColor& c) {
+        const QRectF r = labels.place(text, anchor, away, u);
+        drawnLabels_.push_back({text, r});
+        g.setPen(Qt::NoPen);
+        g.setBrush(QColor(255, 255, 255, 205));
+        g.drawRoundedRect(r, 3, 3);
+        g.setPen(c);
+        g.drawText(r, Qt::AlignCenter, text);
+    };
+    const QColor colour[2] = {QColor(30, 90, 200), QColor(140, 40, 170)};
+    const double tX = st.ddaCell->tMax[0], tY = st.ddaCell->tMax[1];
+    // A tie (the ray through a grid vertex): one tick and one label for both.
+    const bool tie = std::isfinite(tX) && tX == tY;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis];
+        if (!std::isfinite(t)) continue;
+        const QPointF p = toScreen(o + t * d);
+        g.setPen(QPen(colour[axis], px(2)));
+        g.drawLine(p + tick * n, p - tick * n);
+        labels.keepOff(QRectF(p - QPointF(tick, tick), QSizeF(2 * tick, 2 * tick)));
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis];
+        if (!std::isfinite(t) || (tie && axis == 1)) continue;
+        const QPointF p = toScreen(o + t * d);
+        const QString text =
+            tie ? QStringLiteral("tMaxX = tMaxY = %1").arg(numberText(t, 'g', 4))
+                : (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
+                      .arg(numberText(t, 'g', 4));
+        // X's on the ray's left, Y's on its right, as their brackets.
+        label(text, p + (axis == 0 ? 1 : -1) * (tick + 2) * n, axis == 0 ? n : -n,
+              tie ? QColor(60, 60, 60) : colour[axis]);
+    }
+    // tDelta: the stretch of ray between two boundaries of this axis, a bracket ending at tMax.
+    // Where it starts behind the origin (the first boundary is nearer than a whole cell), the
+    // part behind the origin is dashed: the ray's line goes on back there, the ray does not.
+    if (!st.ddaSetup) return;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = st.ddaCell->tMax[axis], delta = st.ddaSetup->tDelta[axis];
+        if (!std::isfinite(t) || !std::isfinite(delta)) continue;
+        const QPointF side = (axis == 0 ? 1.0 : -1.0) * bracket * n;
+        const double t0 = t - delta;
+        tDeltaSpans_[axis] = {t0, t};
+        const QPointF p0 = toScreen(o + t0 * d) + side, p1 = toScreen(o + t * d) + side;
+        const QPointF at0 = toScreen(o + std::max(0.0, t0) * d) + side;
+        g.setPen(QPen(colour[axis], px(1.2)));
+        g.drawLine(at0, p1);
+        if (t0 < 0) {
+            g.setPen(QPen(colour[axis], px(1.2), Qt::DashLine));
+            g.drawLine(p0, at0);
+            g.setPen(QPen(colour[axis], px(1.2)));
+        }
+        g.drawLine(p0, p0 - 0.5 * side);
+        g.drawLine(p1, p1 - 0.5 * side);
+        label(axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"), (p0 + p1) / 2,
+              side / bracket, colour[axis]);
+    }
+}
+
+double View2D::chartStrip() const {
+    const QFontMetricsF fm(font());
+    const double strip = std::min(chartHeight(fm), kChartShare * height());
+    // A plot too low for three of its cost values is not drawn: the scene keeps that room too.
+    return strip - chartHeight(fm, 0) >= 3 * (fm.height() + 6) ? strip : 0.0;
 }
 
 QPointF View2D::toScreen(const Vec2& p) const {
@@ -348,36 +600,10 @@ void View2D::paintEvent(QPaintEvent*) {
         }
         g.setBrush(ink.ray);
         g.drawEllipse(toScreen(o), px(4), px(4));
-        // tMax as labelled ticks on the ray.
-        if (st.ddaCell) {
-            const Vec2 n = glm::normalize(Vec2(-d.y, d.x));
-            for (int axis = 0; axis < 2; ++axis) {
-                const double t = st.ddaCell->tMax[axis];
-                if (!std::isfinite(t)) continue;
-                const Vec2 p = o + t * d;
-                const QPointF a = toScreen(p + 0.12 * n), b = toScreen(p - 0.12 * n);
-                g.setPen(QPen(axis == 0 ? QColor(30, 90, 200) : QColor(140, 40, 170), px(2)));
-                g.drawLine(a, b);
-                g.drawText(a + QPointF(4, -4),
-                           (axis == 0 ? QStringLiteral("tMaxX = %1") : QStringLiteral("tMaxY = %1"))
-                               .arg(numberText(t, 'g', 4)));
-                // tDelta: the stretch of ray between two boundaries of this axis, drawn as a
-                // bracket ending at tMax, on the axis's side of the ray.
-                if (st.ddaSetup && std::isfinite(st.ddaSetup->tDelta[axis])) {
-                    const double d0 = std::max(0.0, t - st.ddaSetup->tDelta[axis]);
-                    const Vec2 side = (axis == 0 ? 0.22 : -0.22) * n;
-                    const QPointF p0 = toScreen(o + d0 * d + side), p1 = toScreen(p + side);
-                    g.setPen(QPen(g.pen().color(), px(1)));
-                    g.drawLine(p0, p1);
-                    g.drawLine(p0, toScreen(o + d0 * d + 0.6 * side));
-                    g.drawLine(p1, toScreen(p + 0.6 * side));
-                    // Above the bracket for X, below it for Y, whatever the label font's size.
-                    g.drawText((p0 + p1) / 2 + (axis == 0 ? QPointF(-fm.height(), -fm.descent() - 3)
-                                                          : QPointF(4, fm.ascent() + 3)),
-                               axis == 0 ? QStringLiteral("tDeltaX") : QStringLiteral("tDeltaY"));
-                }
-            }
-        }
+        // tMax as labelled ticks on the ray, tDelta as brackets beside it.
+        drawnLabels_.clear();
+        tDeltaSpans_ = {};
+        if (st.ddaCell) drawDdaMarks(g, o, d, st);
         if (st.nearestT) {
             g.setBrush(ink.hit);
             g.setPen(Qt::NoPen);
@@ -408,54 +634,46 @@ void View2D::paintEvent(QPaintEvent*) {
     drawHandles(g);
     if (legendShown_) drawLegend(g, build);
     g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(60, 60, 60));
-    if (captionShown_)
-        g.drawText(QRectF(8, 6, width() - 16, fm.height() + 2), Qt::AlignLeft,
-                   QString::fromStdString(session_.name()) + QStringLiteral("  -  ") +
-                       structureName(session_.kind()));
+    if (captionShown_) {
+        g.setFont(presentation().captionFont());
+        g.drawText(QRectF(8, 6, width() - 16, g.fontMetrics().height() + 2), Qt::AlignLeft,
+                   captionText());
+        g.setFont(font());
+    }
 }
 
-double View2D::legendWidth() const {
-    double w = 0;
-    for (int r = 0; r < kPaletteRoleCount; ++r)
-        w = std::max<double>(w, fontMetrics().horizontalAdvance(roleLabel(PaletteRole(r), lang_)));
-    return w + fontMetrics().height() + 16;
+std::vector<std::pair<QColor, QString>> View2D::legendRows(bool build) const {
+    // The colour roles this picture uses, from the palette (the lessons name the same colours).
+    if (build)
+        return {{role(PaletteRole::Current), roleLabel(PaletteRole::Current, lang_)},
+                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
+                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
+    std::vector<std::pair<QColor, QString>> rows{{ink().ray, rayLegendLabel(lang_)}};
+    rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
+    rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
+    for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
+        rows.emplace_back(role(r), roleLabel(r, lang_));
+    return rows;
 }
 
 void View2D::drawLegend(QPainter& g, bool build) const {
-    // The colour roles this picture uses, from the palette (the lessons name the same colours).
-    std::vector<std::pair<QColor, QString>> rows;
-    if (build) {
-        rows = {{role(PaletteRole::Current), roleLabel(PaletteRole::Current, lang_)},
-                {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
-                {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
-    } else {
-        rows = {
-            {ink().ray, QStringLiteral("%1 (%2)").arg(
-                            tr("the ray"),
-                            QString::fromUtf8(rayColour(RayKind::Primary).name(lang_).data()))}};
-        rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
-        rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
-        for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
-            rows.emplace_back(role(r), roleLabel(r, lang_));
-    }
-    const QFontMetrics fm(g.font());
-    const double row = fm.height() + 2, swatch = fm.height() - 2;
-    double w = 0;
-    for (const auto& r : rows) w = std::max<double>(w, fm.horizontalAdvance(r.second));
-    // Under the caption's line, whatever the font's size.
-    const QRectF box(width() - (w + swatch + 22), fm.height() + 12, w + swatch + 16,
-                     row * rows.size() + 8);
+    // Where fit() laid it out: a column on the right or rows under the caption.
+    const auto rows = legendRows(build);
+    if (rows.size() != legend_.entries.size()) return;
     g.save();
+    g.setFont(presentation().captionFont());
+    const QFontMetricsF fm(g.font());
+    const double swatch = fm.height() - 2;
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 225));
-    g.drawRoundedRect(box, 4, 4);
+    g.drawRoundedRect(legend_.box, 4, 4);
     for (std::size_t k = 0; k < rows.size(); ++k) {
-        const double y = box.top() + 4 + row * k;
+        const QRectF& e = legend_.entries[k];
         g.setPen(Qt::NoPen);
         g.setBrush(rows[k].first);
-        g.drawRect(QRectF(box.left() + 6, y + (row - swatch) / 2, swatch, swatch));
+        g.drawRect(QRectF(e.left(), e.center().y() - swatch / 2, swatch, swatch));
         g.setPen(presentation().highContrast() ? QColor(0, 0, 0) : QColor(40, 40, 40));
-        g.drawText(QRectF(box.left() + 10 + swatch, y, w + 4, row),
+        g.drawText(QRectF(e.left() + swatch + 6, e.top(), e.width() - swatch - 6, e.height()),
                    Qt::AlignLeft | Qt::AlignVCenter, rows[k].second);
     }
     g.restore();
@@ -557,7 +775,9 @@ std::optional<CostChart> View2D::costChart() const {
     const double left = toScreen(Vec2(n.lo[0], n.lo[1])).x();
     const double extent = std::max(n.hi[0] - n.lo[0], n.hi[1] - n.lo[1]) * scale_;
     const QFontMetricsF fm(font());
-    const double top = height() - chartHeight(fm) + fm.height() + 14,
+    const double strip = chartStrip();
+    if (strip <= 0) return std::nullopt;
+    const double top = height() - strip + fm.height() + 14,
                  bottom = height() - 2 * (fm.height() + 1) - 12;
     c.plot = QRectF(QPointF(left, top),
                     QPointF(std::min(left + std::max(extent, 40.0), width() - 8.0), bottom));
@@ -574,7 +794,12 @@ std::optional<CostChart> View2D::costChart() const {
     if (hi - lo < 1e-9 * std::max(1.0, std::abs(hi))) lo -= 1, hi += 1;  // one value: a band
     const double pad = 0.06 * (hi - lo);
     c.costLo = lo - pad, c.costHi = hi + pad;
-    c.costTicks = niceTicks(c.costLo, c.costHi, std::max(2, int(c.plot.height() / 28)));
+    // About one value per 28 pixels, and three at least (a short plot: closer, never touching).
+    const int most = std::max(3, int(c.plot.height() / (fm.height() + 2)));
+    for (int n = std::max(2, int(c.plot.height() / 28)); n <= most; ++n) {
+        c.costTicks = niceTicks(c.costLo, c.costHi, n);
+        if (c.costTicks.size() >= 3) break;
+    }
     for (int a = 0; a < 2; ++a)
         if (onAxis[a])
             c.positionTicks[a] =
@@ -591,7 +816,7 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
     const CostChart& c = *chart;
     const QFontMetricsF fm(g.font());
     const double axisRoom = chartAxisRoom(fm);
-    const QRectF strip(4, height() - chartHeight(fm) + 4, width() - 8, chartHeight(fm) - 8);
+    const QRectF strip(4, height() - chartStrip() + 4, width() - 8, chartStrip() - 8);
     g.save();
     g.setPen(QColor(200, 200, 200));
     g.setBrush(QColor(255, 255, 255, 235));

@@ -94,9 +94,23 @@ class View2D : public QWidget {
     /// The primitive selected for editing (circles first, then segments), if any.
     std::optional<std::uint32_t> selected() const { return selected_; }
     void setSelected(std::optional<std::uint32_t> prim);
+    /// The ray the view draws and its handles take: the one the log replays (a lesson's own
+    /// ray, or the example ray traced), else the scene's example ray; none in a build's replay.
+    std::optional<Ray2> shownRay() const;
     /// Where the ray's direction handle is drawn: the tip of the arrow o + k d (k = 1 unless the
-    /// arrow would be too short on screen to grab). Nullopt without an example ray.
+    /// arrow would be too short on screen to grab). Nullopt without a shown ray.
     std::optional<QPointF> tipHandle() const;
+
+    /// The DDA's labels as the last paint placed them (tMax, tDelta), and the stretch of t each
+    /// tDelta bracket spans (X, Y; none where not drawn): tests look at them.
+    struct Label {
+        QString text;
+        QRectF box;
+    };
+    const std::vector<Label>& ddaLabels() const { return drawnLabels_; }
+    const std::array<std::optional<std::array<double, 2>>, 2>& tDeltaSpans() const {
+        return tDeltaSpans_;
+    }
 
   public slots:
     /// The cells a student has clicked for a sequence exercise, numbered in order on the grid.
@@ -119,9 +133,20 @@ class View2D : public QWidget {
     QPointF toScreen(const Vec2& p) const;
     Vec2 toWorld(QPointF p) const;
     void drawCostChart(QPainter& g, const ReplayState& st) const;
-    /// The colour roles of the picture (the palette's), top right.
+    /// The height of the cost chart's strip under a build's replay: its natural height, at most
+    /// a share of the view's (0: too low to draw).
+    double chartStrip() const;
+    /// The DDA's state on the ray o + t d: tMax as labelled ticks, tDelta as brackets, labels
+    /// kept apart and inside the view.
+    void drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const;
+    void drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
+                        const UniformGridT<Scene2DPrims>* grid) const;
+    /// The caption over the picture: the scene's name and its structure.
+    QString captionText() const;
+    /// The colour roles of the picture (the palette's), where fit() put them.
     void drawLegend(QPainter& g, bool build) const;
-    double legendWidth() const;
+    /// The legend's rows: each role's colour and name, for a build's replay or a ray's.
+    std::vector<std::pair<QColor, QString>> legendRows(bool build) const;
     /// The scene-to-widget mapping for the current size: the kept view (fitted on a new scene,
     /// then zoomed and panned), with room for the legend and the cost chart.
     void fit() const;
@@ -166,6 +191,15 @@ class View2D : public QWidget {
     std::vector<std::size_t> splitAt_;             // per node: the event that chose its split
     mutable BoxN<2> world_;                        // what is fitted, in scene units
     mutable double scale_ = 1.0;
+    /// The legend as fit() laid it out: its box, and each row's place in it.
+    struct LegendLayout {
+        bool inRows = false;  // rows under the caption (else a column on the right)
+        QRectF box;
+        std::vector<QRectF> entries;
+    };
+    mutable LegendLayout legend_;
+    mutable std::vector<Label> drawnLabels_;
+    mutable std::array<std::optional<std::array<double, 2>>, 2> tDeltaSpans_;
     mutable QPointF offset_;
     // The kept view: fitted box, zoom and pan; refitted when another scene is shown.
     mutable bool needFit_ = true;

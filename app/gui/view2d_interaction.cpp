@@ -114,29 +114,42 @@ void View2D::setSelected(std::optional<std::uint32_t> prim) {
     update();
 }
 
-double View2D::tipScale() const {
+std::optional<Ray2> View2D::shownRay() const {
     const Scene2D* s = session_.scene2D();
-    if (!s || !s->exampleRay) return 1.0;
-    const double len = glm::length(s->exampleRay->dir) * scale_;
+    if (!s || session_.showingBuild()) return std::nullopt;
+    // The ray the log replays (a lesson's own, or the example ray traced): the one drawn.
+    if (!session_.log().rays().empty()) {
+        const RayRecord& r = session_.log().rays().front();
+        return Ray2{Vec2(r.origin.x, r.origin.y), Vec2(r.dir.x, r.dir.y)};
+    }
+    return s->exampleRay;
+}
+
+double View2D::tipScale() const {
+    const auto ray = shownRay();
+    if (!ray) return 1.0;
+    const double len = glm::length(ray->dir) * scale_;
     return len >= kMinArrow || !(len > 0) ? 1.0 : kMinArrow / len;
 }
 
 std::optional<QPointF> View2D::tipHandle() const {
-    const Scene2D* s = session_.scene2D();
-    if (!s || !s->exampleRay) return std::nullopt;
+    const auto ray = shownRay();
+    if (!ray) return std::nullopt;
     fit();
-    return toScreen(s->exampleRay->origin + tipScale() * s->exampleRay->dir);
+    return toScreen(ray->origin + tipScale() * ray->dir);
 }
 
 View2D::Target View2D::targetAt(QPointF p) const {
     const Scene2D* s = session_.scene2D();
     if (!s || !live_) return {};
     fit();
+    // As far as the handles are drawn (presenter mode draws them larger).
+    const double reach = kHandleRadius * presentation().handleScale();
     const auto near = [&](QPointF a, double r) { return QLineF(a, p).length() <= r; };
     // A build's replay draws no ray: only the primitives can be taken (lesson 11 edits them).
-    if (s->exampleRay && !session_.showingBuild()) {
-        if (near(*tipHandle(), kHandleRadius)) return {Grab::Tip, 0};
-        if (near(toScreen(s->exampleRay->origin), kHandleRadius)) return {Grab::Origin, 0};
+    if (const auto ray = shownRay()) {
+        if (near(*tipHandle(), reach)) return {Grab::Tip, 0};
+        if (near(toScreen(ray->origin), reach)) return {Grab::Origin, 0};
     }
     // The selected primitive first (its handles may lie over another), then the last drawn.
     std::vector<std::uint32_t> order;
@@ -152,8 +165,8 @@ View2D::Target View2D::targetAt(QPointF p) const {
         } else {
             const Segment2& seg = s->segments[q - s->circles.size()];
             const QPointF a = toScreen(seg.a), b = toScreen(seg.b);
-            if (near(a, kHandleRadius)) return {Grab::SegmentA, q};
-            if (near(b, kHandleRadius)) return {Grab::SegmentB, q};
+            if (near(a, reach)) return {Grab::SegmentA, q};
+            if (near(b, reach)) return {Grab::SegmentB, q};
             if (distanceToSegment(p, a, b) <= kRimBand) return {Grab::Segment, q};
         }
     }
@@ -191,16 +204,19 @@ void View2D::mousePressEvent(QMouseEvent* e) {
     }
     if (!d.pan) {
         d.start = *s;
+        // The edit starts from the ray drawn (the replayed one), not from another of the scene's.
+        if (const auto ray = shownRay()) d.start.exampleRay = ray;
         d.tipScale = tipScale();
         const Vec2 at = toWorld(e->position());
         const std::uint32_t q = d.target.prim;
         const std::uint32_t nc = static_cast<std::uint32_t>(s->circles.size());
         switch (d.target.grab) {
             case Grab::Origin:
-                d.grabOffset = s->exampleRay->origin - at;
+                d.grabOffset = d.start.exampleRay->origin - at;
                 break;
             case Grab::Tip:
-                d.grabOffset = s->exampleRay->origin + d.tipScale * s->exampleRay->dir - at;
+                d.grabOffset =
+                    d.start.exampleRay->origin + d.tipScale * d.start.exampleRay->dir - at;
                 break;
             case Grab::Circle:
                 d.grabOffset = s->circles[q].center - at;
@@ -374,7 +390,7 @@ void View2D::drawHandles(QPainter& g) const {
     // The selection in plain dark ink: no palette role, so it is never read as the current cell.
     const QColor mark(25, 25, 30);
     const QColor fill(255, 255, 255, 220);
-    const double k = presentation().lineScale();  // presenter mode: thicker, larger handles
+    const double k = presentation().handleScale();  // presenter mode: thicker, larger handles
     const auto square = [&](QPointF at) {
         g.setPen(QPen(mark, 1.5 * k));
         g.setBrush(fill);
@@ -395,9 +411,9 @@ void View2D::drawHandles(QPainter& g) const {
             square(toScreen(seg.b));
         }
     }
-    // The ray's direction as an arrow from its origin, with a ring at each end to take.
-    if (s->exampleRay && !session_.showingBuild()) {
-        const QPointF o = toScreen(s->exampleRay->origin), tip = *tipHandle();
+    // The replayed ray's direction as an arrow from its origin, with a ring at each end to take.
+    if (const auto shown = shownRay()) {
+        const QPointF o = toScreen(shown->origin), tip = *tipHandle();
         g.setPen(QPen(ray, 2.5 * k));
         g.drawLine(o, tip);
         const QLineF back(tip, o);

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 namespace raystep::gui {
 
@@ -101,6 +102,20 @@ class Segments {
         auto actor = actorOf(poly, true);
         actor->GetProperty()->SetLineWidth(pixels);
         actor->GetProperty()->SetRenderLinesAsTubes(true);
+        actor->GetProperty()->LightingOff();
+        return actor;
+    }
+
+    /// The same lines as a dark outline `pixels` wide, drawn flat under the tubes: a ray keeps
+    /// its edge over a floor of its own colour (the red and yellow checker). Flat lines lie at
+    /// the tube's axis, behind its near surface: the tube is drawn over its outline.
+    vtkSmartPointer<vtkActor> outline(double pixels) const {
+        vtkNew<vtkPolyData> poly;
+        poly->SetPoints(points_);
+        poly->SetLines(lines_);
+        auto actor = actorOf(poly, false);
+        actor->GetProperty()->SetColor(0.08, 0.08, 0.1);
+        actor->GetProperty()->SetLineWidth(pixels);
         actor->GetProperty()->LightingOff();
         return actor;
     }
@@ -281,44 +296,91 @@ PropSet sceneProps(vtkRenderer* r, const Scene& s) {
         out.props.push_back(actor);
     }
     // Triangles by material: each group one actor with its material (and its checker texture).
+    // A wall (a triangle across much of the scene: a floor, a Cornell box's side) is lit on the
+    // side its light is on, seen from either side: from beside the eye the view often looks at
+    // a box from outside, where a one-sided wall is black (the green wall of lessons 4 and 9).
+    // Two copies, one wound each way, each culled from behind, both with the normal toward the
+    // light (VTK turns a normal seen from behind around).
+    Bounds3 sceneBox;
+    for (const Triangle& t : s.triangles) {
+        sceneBox.extend(t.a);
+        sceneBox.extend(t.b);
+        sceneBox.extend(t.c);
+    }
+    for (const Sphere& sp : s.spheres) {
+        sceneBox.extend(sp.center - Vec3(sp.radius));
+        sceneBox.extend(sp.center + Vec3(sp.radius));
+    }
+    const double wallSize = 0.35 * glm::length(sceneBox.diagonal());
+    const std::optional<Vec3> light =
+        s.lights.empty() ? std::nullopt : std::optional<Vec3>(s.lights.front().position);
+    const auto isWall = [&](const Triangle& t) {
+        Bounds3 b;
+        b.extend(t.a);
+        b.extend(t.b);
+        b.extend(t.c);
+        return light && glm::length(b.diagonal()) >= wallSize;
+    };
+    enum class Side { Both, LitFront, LitBack };  // a plain triangle, a wall's two copies
     std::map<std::uint32_t, std::vector<const Triangle*>> groups;
     for (const Triangle& t : s.triangles) groups[t.material].push_back(&t);
     for (const auto& [id, tris] : groups) {
         const Material& m = s.materials[id];
-        vtkNew<vtkPoints> points;
-        vtkNew<vtkCellArray> cells;
-        vtkNew<vtkFloatArray> tcoords;
-        tcoords->SetNumberOfComponents(2);
-        for (const Triangle* t : tris) {
-            // The checker's cubes cut a plane into squares: texture coordinates along the two
-            // axes the plane spans, shifted by one square where the third axis's cube is odd.
-            const Vec3 n = glm::abs(glm::cross(t->b - t->a, t->c - t->a));
-            const int k = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
-            const int i = (k + 1) % 3, j = (k + 2) % 3;
-            const double size = m.checker.size > 0 ? m.checker.size : 1.0;
-            const Vec3 centroid = (t->a + t->b + t->c) / 3.0;
-            const auto odd = static_cast<long long>(std::floor(centroid[k] / size + 1e-7)) & 1;
-            vtkIdType ids[3];
-            for (int v = 0; v < 3; ++v) {
-                const Vec3& p = v == 0 ? t->a : (v == 1 ? t->b : t->c);
-                ids[v] = points->InsertNextPoint(p.x, p.y, p.z);
-                const float uv[2] = {float((p[i] / size + 1e-7 + double(odd)) / 2),
-                                     float((p[j] / size + 1e-7) / 2)};
-                tcoords->InsertNextTypedTuple(uv);
+        for (const Side side : {Side::Both, Side::LitFront, Side::LitBack}) {
+            vtkNew<vtkPoints> points;
+            vtkNew<vtkCellArray> cells;
+            vtkNew<vtkFloatArray> tcoords;
+            tcoords->SetNumberOfComponents(2);
+            vtkNew<vtkFloatArray> normals;
+            normals->SetNumberOfComponents(3);
+            for (const Triangle* t : tris) {
+                if ((side == Side::Both) == isWall(*t)) continue;
+                // The checker's cubes cut a plane into squares: texture coordinates along the
+                // two axes the plane spans, shifted by one square where the third axis's cube
+                // is odd.
+                const Vec3 face = glm::cross(t->b - t->a, t->c - t->a);
+                const Vec3 n = glm::abs(face);
+                const int k = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
+                const int i = (k + 1) % 3, j = (k + 2) % 3;
+                const double size = m.checker.size > 0 ? m.checker.size : 1.0;
+                const Vec3 centroid = (t->a + t->b + t->c) / 3.0;
+                const auto odd = static_cast<long long>(std::floor(centroid[k] / size + 1e-7)) & 1;
+                // A wall's normal toward the light; its front (counter-clockwise) that side for
+                // the first copy, the other for the second.
+                Vec3 toLight = glm::normalize(face);
+                const bool facesLight = light && glm::dot(toLight, *light - centroid) >= 0;
+                if (!facesLight) toLight = -toLight;
+                const bool reverse = side != Side::Both && (facesLight != (side == Side::LitFront));
+                vtkIdType ids[3];
+                for (int v = 0; v < 3; ++v) {
+                    const int at = reverse ? 2 - v : v;
+                    const Vec3& p = at == 0 ? t->a : (at == 1 ? t->b : t->c);
+                    ids[v] = points->InsertNextPoint(p.x, p.y, p.z);
+                    const float uv[2] = {float((p[i] / size + 1e-7 + double(odd)) / 2),
+                                         float((p[j] / size + 1e-7) / 2)};
+                    tcoords->InsertNextTypedTuple(uv);
+                    const float nv[3] = {float(toLight.x), float(toLight.y), float(toLight.z)};
+                    normals->InsertNextTypedTuple(nv);
+                }
+                cells->InsertNextCell(3, ids);
             }
-            cells->InsertNextCell(3, ids);
+            if (cells->GetNumberOfCells() == 0) continue;
+            vtkNew<vtkPolyData> mesh;
+            mesh->SetPoints(points);
+            mesh->SetPolys(cells);
+            auto actor = actorOf(mesh, false);
+            applyMaterial(actor->GetProperty(), m);
+            if (side != Side::Both) {
+                mesh->GetPointData()->SetNormals(normals);
+                actor->GetProperty()->BackfaceCullingOn();
+            }
+            if (m.checker.enabled) {
+                mesh->GetPointData()->SetTCoords(tcoords);
+                actor->SetTexture(checkerTexture(m));
+                actor->GetProperty()->SetColor(1, 1, 1);  // the texture carries both colours
+            }
+            out.props.push_back(actor);
         }
-        vtkNew<vtkPolyData> mesh;
-        mesh->SetPoints(points);
-        mesh->SetPolys(cells);
-        auto actor = actorOf(mesh, false);
-        applyMaterial(actor->GetProperty(), m);
-        if (m.checker.enabled) {
-            mesh->GetPointData()->SetTCoords(tcoords);
-            actor->SetTexture(checkerTexture(m));
-            actor->GetProperty()->SetColor(1, 1, 1);  // the texture carries both colours
-        }
-        out.props.push_back(actor);
     }
     // The scene's own point lights, where they are (a headlight would light what the ray tracer
     // leaves dark, and wash the Cornell box's coloured walls out).
@@ -467,7 +529,10 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
         const RayRecord& ray = log.rays()[r];
         rays.add(ray.origin, ray.origin + ends[r] * ray.dir, Rgb(rayColour(ray.kind)));
     }
-    if (!rays.empty()) trace.props.push_back(rays.tubes(linePx));
+    if (!rays.empty()) {
+        trace.props.push_back(rays.outline(linePx + 2 * std::max(2.0, 0.35 * linePx)));
+        trace.props.push_back(rays.tubes(linePx));
+    }
     // The hit points found so far, as small white spheres.
     const PaletteColour& hitColour = structureColour(StructureRole::HitPoint);
     int spheres = 0;

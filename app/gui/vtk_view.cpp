@@ -323,7 +323,9 @@ void VtkView::paintEvent(QPaintEvent*) {
     g.drawImage(rect(), image.mirrored(false, true));
     delete[] pixels;
     if (showIds_) drawPrimitiveIds(g);
-    // The lecture's first slide: this view is rasterized, the image beside it ray traced.
+    // The lecture's first slide: this view is rasterized, the image beside it ray traced. The
+    // caption and the legend are the view's chrome: their zoom is capped (the scene's is not).
+    g.setFont(presentation().captionFont());
     g.setPen(QColor(230, 230, 230));
     if (caption_) {
         // Elided left of the overlay buttons (at 1366x768 the whole caption ran under them).

@@ -39,6 +39,13 @@ int MainWindow::defaultDockWidth(int windowWidth) {
     return clampedShare(windowWidth, 0.2, 220, 420);
 }
 
+int MainWindow::defaultBottomDockHeight(int windowHeight, int zoomPercent) {
+    // About eight rows of the table at 100%; zoomed, the rows grow and fewer fit (the views are
+    // what the room looks at, and the chrome over and under them has grown too).
+    const int h = clampedShare(windowHeight, 0.27, 170, 330);
+    return zoomPercent > 100 ? h * 100 / zoomPercent : h;
+}
+
 void MainWindow::sizeForScreen() {
     if (!geometryRestored_) {
         // On a projector most of the screen (the back rows read it), on a laptop all of it.

@@ -81,6 +81,19 @@ TEST(EventText, OneLinePerEvent) {
               "shadow ray 2 blocked: the point is in shadow");
 }
 
+// A colour below what six digits of a unit value hold is 0 (the specular term of a shininess
+// of 1000 at a wide angle is cos^1000 of it, 2e-230: "2,08528e-230" on the board); a t stays
+// exact, however small (lesson 13's shadow acne is a t of 1e-12).
+TEST(EventText, TinyColoursAreZeroTinyTsAreNot) {
+    EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::Specular, 0, {2.08528e-230, 4e-7, 0.5}}, 3),
+              "specular term (0, 0, 0.5)");
+    EXPECT_EQ(
+        eventText(ShadingTerm{0, ShadingTermKind::Specular, 0, {6e-7, 0, 0}}, 3, Language::It),
+        "termine speculare (6e-07; 0; 0)");
+    EXPECT_EQ(eventText(PixelResult{1, 2, {1e-300, 0.25, 1}}, 3), "pixel (1, 2) = (0, 0.25, 1)");
+    EXPECT_EQ(eventText(PrimitiveTest{0, 3, true, 1e-12}, 3), "test primitive 3: hit at t = 1e-12");
+}
+
 TEST(EventText, ItalianUsesTheSlidesTermsAndDecimalCommas) {
     constexpr Language it = Language::It;
     EXPECT_EQ(numberText(4.0 / 3.0, it), "1,33333");

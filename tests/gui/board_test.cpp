@@ -4,6 +4,7 @@
 // independent computation (the sorted grid-line crossings) gives, and the Structure tool bar and
 // the controls agree.
 #include "board_table.h"
+#include "language.h"
 #include "lesson_panel.h"
 #include "live_controls.h"
 #include "main_window.h"
@@ -23,8 +24,10 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QProcess>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
@@ -364,6 +367,44 @@ TEST(BoardDock, TheBuildReplayListsTheNodesAsTheyAreMade) {
     EXPECT_TRUE(w.liveControls()->statistics().contains("Build replayed"));
 }
 
+// In Italian the table on screen writes its numbers with a decimal comma, as the inspector and
+// the events do ("0.75" beside "tMax (0,75; 1,5)" puzzled); the exports keep the point, as a
+// spreadsheet or LaTeX reads it. tMaxX = (1 - 0.4) / 0.8 = 0.75 and tMaxY = (1 - 0.4) / 0.4 = 1.5
+// for lecture-grid's ray (0.4, 0.4) + t (0.8, 0.4).
+TEST(BoardDock, InItalianTheTableShowsDecimalCommasAndTheExportsKeepPoints) {
+    setInterfaceLanguage(Language::It);
+    {
+        MainWindow w;
+        w.setLanguage(Language::It);
+        w.resize(1400, 860);
+        w.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+        ASSERT_TRUE(openScene(w, "lecture-grid", AccelKind::Grid));
+        w.session().setCursor(w.session().size());
+        BoardTable* board = w.boardTable();
+        const QAbstractItemModel* m = board->view()->model();
+        const auto cell = [&](int row, const char* header) {
+            for (int c = 0; c < m->columnCount(); ++c)
+                if (m->headerData(c, Qt::Horizontal).toString() == header)
+                    return m->index(row, c).data().toString();
+            return QString();
+        };
+        EXPECT_EQ(cell(0, "tMaxX"), QStringLiteral("0,75"));
+        EXPECT_EQ(cell(0, "tMaxY"), QStringLiteral("1,5"));
+        EXPECT_EQ(cell(0, "tDeltaX"), QStringLiteral("1,25"));
+        QTemporaryDir dir;
+        ASSERT_TRUE(dir.isValid());
+        const QString csv = dir.filePath("board.csv");
+        EXPECT_EQ(board->exportTo(csv, BoardFormat::Csv), QString());
+        QFile f(csv);
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        ASSERT_GE(lines.size(), 2);
+        EXPECT_TRUE(lines[1].startsWith("0,0,0,0.75,1.5,1.25,2.5,")) << lines[1].toStdString();
+    }
+    setInterfaceLanguage(Language::En);
+}
+
 TEST(BoardDock, CopyAndExportWriteTheBoardSafely) {
     MainWindow w;
     w.resize(1400, 860);
@@ -488,6 +529,56 @@ TEST(LayoutBoard, LessonsSixAndElevenFitWithTheBoardAndTheControls) {
     check("lesson 11, build replay");
     shot("lesson11");
     QSettings().remove("window");
+}
+
+// lessons.md F14: on a 1366x768 laptop in Italian the live controls' second column ("Taglio",
+// "Primitive per foglia") and the statistics ran past the dock's edge, behind a sideways scroll
+// bar, though lesson 11 sends the student to "Taglio". The controls take one pair a row where
+// two do not fit: none is cut, none lies over another, in either language.
+TEST(LayoutBoard, TheLiveControlsFitTheirDockInBothLanguages) {
+    for (const Language lang : {Language::It, Language::En}) {
+        SCOPED_TRACE(lang == Language::It ? "it" : "en");
+        setInterfaceLanguage(lang);
+        {
+            QSettings().remove("window");
+            MainWindow w;
+            w.setLanguage(lang);
+            w.sizeForScreen();
+            w.show();
+            ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+            ASSERT_TRUE(QTest::qWaitFor([&] { return w.layoutSettled(); }));
+            w.openLesson("11", /*quiet=*/true);
+            ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+            QTest::qWait(100);
+            auto* controls = w.findChild<LiveControls*>();
+            ASSERT_NE(controls, nullptr);
+            auto* scroll = qobject_cast<QScrollArea*>(controls->parentWidget()->parentWidget());
+            ASSERT_NE(scroll, nullptr);
+            EXPECT_EQ(scroll->horizontalScrollBar()->maximum(), 0)
+                << controls->width() << " in " << scroll->viewport()->width();
+            const QRect room(QPoint(0, 0), scroll->viewport()->size());
+            std::vector<QRect> placed;
+            for (QWidget* c : std::initializer_list<QWidget*>{
+                     controls->structureBox(), controls->splitBox(), controls->lambdaBox(),
+                     controls->cTravBox(), controls->cIsectBox(), controls->emptyBonusBox(),
+                     controls->leafSizeBox(), controls->maxDepthBox(), controls->mailboxBox()}) {
+                const QRect r(c->mapTo(scroll->viewport(), QPoint(0, 0)), c->size());
+                EXPECT_LE(r.right(), room.right()) << c->objectName().toStdString();
+                EXPECT_GE(c->width(), c->minimumSizeHint().width())
+                    << c->objectName().toStdString();
+                for (const QRect& o : placed)
+                    EXPECT_FALSE(o.intersects(r)) << c->objectName().toStdString();
+                placed.push_back(r);
+            }
+            // The statistics wrap inside the dock.
+            const auto* stats = controls->findChild<QLabel*>("liveStats");
+            ASSERT_NE(stats, nullptr);
+            EXPECT_LE(stats->mapTo(scroll->viewport(), QPoint(stats->width(), 0)).x(),
+                      room.right() + 1);
+        }
+        QSettings().remove("window");
+    }
+    setInterfaceLanguage(Language::En);
 }
 
 }  // namespace

@@ -294,6 +294,69 @@ std::size_t kindOf() {
     return Event(T{}).index();
 }
 
+// Lesson 11's build replay keeps a strip under its scene for the SAH chart. A strip of a fixed
+// height left the scene 130 px wide at 1366x768 and a few pixels at 1024x600, where Fit (F) could
+// not help: the chart now takes at most a share of the view, and none when too short to read.
+TEST_F(Layout, LessonElevensSceneFitsItsViewOnALaptopAfterAResizeAndAFloatedDock) {
+    MainWindow w;
+    start(w);
+    w.setLecturerMode(true);
+    ASSERT_TRUE(openLesson(w, "11"));
+    Session& s = w.session();
+    ASSERT_TRUE(s.showingBuild());
+    s.setCursor(afterNth(s, kindOf<SplitCandidate>(), 6));  // candidates: the chart is drawn
+    View2D* view = w.view2D();
+    // Whole in the view and clear of the chart; at least `share` of the view's height, and most
+    // of the room above the chart (or of the view's width, when that is what binds it).
+    const auto fits = [&](const char* where, double share) {
+        SCOPED_TRACE(where);
+        QApplication::processEvents();
+        const BoxN<2> b = s.scene2D()->bounds();
+        const QRectF r =
+            QRectF(view->screenOf(Vec2(b.lo.x, b.hi.y)), view->screenOf(Vec2(b.hi.x, b.lo.y)))
+                .normalized();
+        const QString size = QStringLiteral("%1x%2 in %3x%4")
+                                 .arg(r.width())
+                                 .arg(r.height())
+                                 .arg(view->width())
+                                 .arg(view->height());
+        EXPECT_TRUE(QRectF(view->rect()).contains(r)) << size.toStdString();
+        double room = view->height();
+        if (const auto chart = view->costChart()) {
+            EXPECT_LT(r.bottom(), chart->plot.top()) << size.toStdString();
+            room = chart->plot.top() - 40;  // the chart's title row over its plot
+        }
+        EXPECT_GE(r.height(), share * view->height()) << size.toStdString();
+        EXPECT_TRUE(r.height() >= 0.6 * room || r.width() >= 0.6 * view->width())
+            << size.toStdString() << ", room " << room;
+    };
+    fits("as opened", 0.35);
+    QTest::keyClick(&w, Qt::Key_F);
+    fits("Fit", 0.35);
+    // A small window: the chart gives way to the scene it is about.
+    w.resize(1024, 600);
+    ASSERT_TRUE(waitFor([&] { return w.width() <= 1024 && w.height() <= 600; }));
+    QTest::qWait(100);
+    QTest::keyClick(&w, Qt::Key_F);
+    fits("1024x600 after Fit", 0.5);
+    // The docks under the view floated: the view grows, the scene with it.
+    auto* board = w.findChild<QDockWidget*>("boardDock");
+    auto* live = w.findChild<QDockWidget*>("liveControlsDock");
+    ASSERT_NE(board, nullptr);
+    ASSERT_NE(live, nullptr);
+    const int before = view->height();
+    board->setFloating(true);
+    live->setFloating(true);
+    ASSERT_TRUE(waitFor([&] { return view->height() > before; }));
+    w.activateWindow();
+    fits("the board floated", 0.35);
+    QTest::keyClick(&w, Qt::Key_F);
+    fits("the board floated, Fit", 0.35);
+    board->setFloating(false);
+    live->setFloating(false);
+    w.close();
+}
+
 /// Dark (text) pixels in a rectangle of the image.
 int inkIn(const QImage& image, QRect r, int grey = 110) {
     int n = 0;

@@ -4,6 +4,7 @@
 // the grid lists, undo and redo bring the scenes back, and the view zooms about the cursor, pans
 // and fits while a click on a cell stays a lesson's cell answer at any zoom.
 #include "live2d.h"
+#include "gui_testing.h"
 #include "main_window.h"
 #include "view2d.h"
 
@@ -15,11 +16,17 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 #include <QWheelEvent>
 
@@ -398,6 +405,200 @@ QImage shot(MainWindow& w, const char* name) {
     if (const QByteArray dir = qgetenv("RAYSTEP_SHOT_DIR"); !dir.isEmpty())
         image.save(QDir(QString::fromLocal8Bit(dir)).filePath(QString::fromLatin1(name) + ".png"));
     return image;
+}
+
+/// The ray the session replays now (its log's first ray), in 2D.
+Ray2 replayedRay(const Session& s) {
+    const RayRecord& r = s.log().rays().front();
+    return {Vec2(r.origin.x, r.origin.y), Vec2(r.dir.x, r.dir.y)};
+}
+
+/// Whether screen vectors a and b point the same way (within a pixel's worth of angle).
+bool sameDirection(QPointF a, QPointF b) {
+    const double cross = a.x() * b.y() - a.y() * b.x(), dot = QPointF::dotProduct(a, b);
+    return dot > 0 && std::abs(cross) <= 0.01 * std::hypot(a.x(), a.y()) * std::hypot(b.x(), b.y());
+}
+
+// Lessons 8 and 13 trace a ray of their own, not lecture-grid's example ray (0.4, 0.4) + t (0.8,
+// 0.4): the rings sit on that ray, a drag edits it, and a live control keeps it.
+TEST(Live2D, TheHandlesSitOnTheRayALessonReplaysAndADragEditsThatRay) {
+    struct Case {
+        const char* lesson;
+        Vec2 origin, dir;  // the lesson file's "trace": {"ray": [ox, oy, dx, dy]}
+        Vec2 to;           // where the test drags the origin ring
+    };
+    for (const Case& c : {Case{"8", {1.0, 3.6}, {1.0, 0.02}, {1.5, 2.5}},
+                          Case{"13", {0.4, 0.4}, {1.0, 1.0}, {2.5, 0.5}}}) {
+        SCOPED_TRACE(c.lesson);
+        MainWindow w;
+        w.resize(1400, 860);
+        w.show();
+        w.setLecturerMode(true);  // every step free: the drag is the lecturer's
+        w.openLesson(c.lesson, /*quiet=*/true);
+        ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+        Session& s = w.session();
+        View2D* view = w.view2D();
+        QApplication::processEvents();
+        ASSERT_FALSE(s.log().rays().empty());
+        EXPECT_EQ(replayedRay(s).origin, c.origin);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // The rings: the origin's on the ray's origin, the tip's along the ray's direction.
+        const auto shown = view->shownRay();
+        ASSERT_TRUE(shown);
+        EXPECT_EQ(shown->origin, c.origin);
+        ASSERT_TRUE(view->tipHandle());
+        const QPointF o = view->screenOf(c.origin);
+        EXPECT_TRUE(sameDirection(*view->tipHandle() - o, view->screenOf(c.origin + c.dir) - o))
+            << view->tipHandle()->x() << "," << view->tipHandle()->y();
+        // The origin ring is drawn there, in the ray's colour: a pixel on its rim.
+        const PaletteColour& p = rayColour(RayKind::Primary);
+        const QImage image = view->grab().toImage();
+        int ringPixels = 0;
+        for (int dx = -9; dx <= 9; ++dx)
+            for (int dy = -9; dy <= 9; ++dy) {
+                const QColor px = image.pixelColor((o + QPointF(dx, dy)).toPoint());
+                ringPixels += std::abs(px.red() - p.r) + std::abs(px.green() - p.g) +
+                                  std::abs(px.blue() - p.b) <
+                              30;
+            }
+        EXPECT_GT(ringPixels, 20);
+        // The scene's own example ray's origin, elsewhere in lesson 8, has no ring.
+        if (c.origin != Vec2(0.4, 0.4)) {
+            const QPointF e = view->screenOf(Vec2(0.4, 0.4));
+            int there = 0;
+            for (int dx = -9; dx <= 9; ++dx)
+                for (int dy = -9; dy <= 9; ++dy) {
+                    const QColor px = image.pixelColor((e + QPointF(dx, dy)).toPoint());
+                    there += std::abs(px.red() - p.r) + std::abs(px.green() - p.g) +
+                                 std::abs(px.blue() - p.b) <
+                             30;
+                }
+            EXPECT_EQ(there, 0);
+        }
+        // Dragging the origin ring moves the lesson's ray: its direction stays the lesson's.
+        act(w, "live2dSnapCorners")->setChecked(true);
+        drag(view, o, view->screenOf(c.to));
+        EXPECT_EQ(replayedRay(s).origin, c.to);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // A live control rebuilds the structure: the ray traced again is the edited one.
+        auto* mailbox = w.findChild<QCheckBox*>("liveMailbox");
+        ASSERT_TRUE(mailbox);
+        mailbox->click();
+        ASSERT_TRUE(w.waitUntilIdle());
+        EXPECT_EQ(replayedRay(s).origin, c.to);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+        // Undo: the lesson's own ray again (not the scene's example ray).
+        act(w, "live2dUndoAction")->trigger();
+        QApplication::processEvents();
+        EXPECT_EQ(replayedRay(s).origin, c.origin);
+        EXPECT_EQ(replayedRay(s).dir, c.dir);
+    }
+}
+
+// The DDA's labels on the ray: never over each other nor out of the view (lesson 8's ray runs
+// under the top wall), one label for a tie (lesson 13's ray through the grid's vertices), and
+// each tDelta bracket spans a whole cell's worth of t, ending at tMax (behind the origin where
+// the first boundary is nearer than a cell: lesson 6's first tDeltaY ran from t = 0 to 1.5).
+TEST(Live2D, TheDdaLabelsStayApartInTheViewAndEachTDeltaSpansAWholeCell) {
+    struct Case {
+        const char* lesson;
+        Vec2 tDelta;  // by hand: cell size 1 over |d| per axis
+        bool ties;    // every tMaxX equals tMaxY
+    };
+    // Lesson 6: d = (0.8, 0.4); lesson 8: d = (1, 0.02); lesson 13: d = (1, 1).
+    for (const Case& c : {Case{"6", {1.25, 2.5}, false}, Case{"8", {1.0, 50.0}, false},
+                          Case{"13", {1.0, 1.0}, true}}) {
+        SCOPED_TRACE(c.lesson);
+        MainWindow w;
+        w.resize(1400, 860);
+        w.show();
+        w.setLecturerMode(true);
+        w.openLesson(c.lesson, /*quiet=*/true);
+        ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+        Session& s = w.session();
+        View2D* view = w.view2D();
+        int cells = 0;
+        for (std::size_t i = 0; i < s.log().events().size(); ++i) {
+            const auto* cell = std::get_if<DdaCell>(&s.log().events()[i]);
+            if (!cell) continue;
+            ++cells;
+            s.setCursor(i + 1);
+            view->grab();  // a paint places the labels
+            SCOPED_TRACE(i);
+            const auto& labels = view->ddaLabels();
+            int tMaxLabels = 0;
+            for (std::size_t a = 0; a < labels.size(); ++a) {
+                tMaxLabels += labels[a].text.startsWith("tMax");
+                EXPECT_TRUE(QRectF(view->rect()).contains(labels[a].box))
+                    << labels[a].text.toStdString();
+                for (std::size_t b = a + 1; b < labels.size(); ++b)
+                    EXPECT_FALSE(labels[a].box.intersects(labels[b].box))
+                        << labels[a].text.toStdString() << " / " << labels[b].text.toStdString();
+            }
+            EXPECT_EQ(tMaxLabels, c.ties ? 1 : 2);
+            if (c.ties) {
+                EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const auto& l) {
+                    return l.text.startsWith("tMaxX = tMaxY = ");
+                }));
+            }
+            for (int axis = 0; axis < 2; ++axis) {
+                const auto& span = view->tDeltaSpans()[axis];
+                ASSERT_TRUE(span);
+                EXPECT_NEAR((*span)[1] - (*span)[0], c.tDelta[axis], 1e-12);
+                EXPECT_EQ((*span)[1], cell->tMax[axis]);
+            }
+        }
+        EXPECT_GE(cells, 3);
+    }
+}
+
+/// Answers the next file dialog: notes the folder it opened in, then chooses `path` in it.
+void answerNextFileDialog(QString* openedIn, const QString& path) {
+    QTimer::singleShot(0, [=] {
+        QFileDialog* d = nullptr;
+        waitFor([&] { return (d = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())); },
+                10000);
+        if (!d) return;
+        *openedIn = d->directory().absolutePath();
+        d->selectFile(path);
+        QMetaObject::invokeMethod(d, "accept");  // as the Save button does
+    });
+}
+
+// gui.md 17 and 18: a render's "Rendered in ... click a pixel" stayed on beside a 2D lesson; the
+// title kept the old scene after Save 2D scene as; every dialog opened in the working directory.
+TEST(Live2D, StatusTitleAndTheFileDialogsFollowWhatWasDone) {
+    QSettings().remove("dialogs");
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    w.openLesson("1", /*quiet=*/true);  // 3D: its image is rendered
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    ASSERT_TRUE(waitFor([&] { return w.statusBar()->currentMessage().startsWith("Rendered in"); }));
+    w.openLesson("6", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    EXPECT_FALSE(w.statusBar()->currentMessage().startsWith("Rendered in"))
+        << w.statusBar()->currentMessage().toStdString();
+    // Save 2D scene as: the first dialog starts where the app runs; the title names the file.
+    QString openedIn;
+    const QString saved = QDir(dir.path()).filePath("edited.json");
+    answerNextFileDialog(&openedIn, saved);
+    act(w, "live2dSave")->trigger();
+    EXPECT_EQ(openedIn, QDir::currentPath());
+    ASSERT_TRUE(QFile::exists(saved));
+    EXPECT_TRUE(w.windowTitle().contains(saved)) << w.windowTitle().toStdString();
+    // The next dialog, another one (the board's export), opens in that folder.
+    w.session().setCursor(w.session().size());
+    openedIn.clear();
+    answerNextFileDialog(&openedIn, QDir(dir.path()).filePath("board.csv"));
+    auto* exportButton = w.findChild<QPushButton*>("boardExport");
+    ASSERT_NE(exportButton, nullptr);
+    exportButton->click();
+    EXPECT_EQ(openedIn, QDir(dir.path()).absolutePath());
+    EXPECT_TRUE(QFile::exists(QDir(dir.path()).filePath("board.csv")));
+    QSettings().remove("dialogs");
 }
 
 TEST(Live2D, LessonSixWhileDraggingAndEditing) {

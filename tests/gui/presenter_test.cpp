@@ -2,6 +2,7 @@
 // Ctrl+0, remembered for the next window), full screen (F11), presenter mode's thicker lines, the
 // high-contrast palette, and Help > Keyboard shortcuts (F1, ?) listing every key of the window in
 // English and Italian. Each test leaves the presenter settings as it found them (HOME is shared).
+#include "compare_window.h"
 #include "gui_testing.h"
 #include "language.h"
 #include "lesson_panel.h"
@@ -16,12 +17,18 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QPointer>
+#include <QScreen>
 #include <QSettings>
 #include <QShortcut>
 #include <QTableWidget>
 #include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QTextDocument>
 
 #include <cmath>
 #include <functional>
@@ -132,6 +139,85 @@ TEST_F(Presenter, F11TogglesFullScreen) {
     QTest::keyClick(&w, Qt::Key_F11);
     EXPECT_TRUE(waitFor([&] { return !w.isFullScreen(); }));
     EXPECT_FALSE(w.findChild<QAction*>("fullScreen")->isChecked());
+}
+
+/// Lesson 6's grid as the 2D view draws it now: its width on screen, in pixels.
+double gridWidthOnScreen(MainWindow& w) {
+    const auto* grid = std::get_if<UniformGridT<Scene2DPrims>>(w.session().accel2D());
+    if (!grid) return 0;
+    const auto& spec = grid->spec();
+    return w.view2D()->screenOf(Vec2(spec.hi.x, spec.lo.y)).x() -
+           w.view2D()->screenOf(Vec2(spec.lo.x, spec.lo.y)).x();
+}
+
+/// The pixel size of the lesson text's first code fragment (a span or a block) and of its first
+/// plain fragment, as the text browser draws them.
+std::pair<int, int> codeAndTextPixels(const MainWindow& w) {
+    const auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+    int code = 0, plain = 0;
+    if (!text) return {0, 0};
+    const QTextDocument* doc = text->document();
+    for (QTextBlock b = doc->begin(); b.isValid() && !(code && plain); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextCharFormat f = it.fragment().charFormat();
+            const bool isCode = f.fontFixedPitch() || f.hasProperty(QTextFormat::FontFamilies);
+            const int px = QFontInfo(f.font().resolve(doc->defaultFont())).pixelSize();
+            if (isCode && !code) code = px;
+            const bool heading = f.hasProperty(QTextFormat::FontSizeAdjustment) ||
+                                 f.hasProperty(QTextFormat::FontWeight);
+            if (!isCode && !heading && !plain) plain = px;
+        }
+    return {code, plain};
+}
+
+/// Waits until the window's layout stops moving (fonts reach widgets by posted events, then the
+/// docks and splitters follow).
+void settle(MainWindow& w) {
+    QSize last;
+    for (int still = 0, k = 0; still < 3 && k < 100; ++k) {
+        QTest::qWait(40);
+        still = w.view2D()->size() == last ? still + 1 : 0;
+        last = w.view2D()->size();
+    }
+}
+
+TEST_F(Presenter, ZoomEnlargesTheContentTheSceneKeepsItsWidthAndCodeGrowsWithTheText) {
+    // The window on all of the screen (ctest's is 1600x1000), as a lecturer shows it.
+    MainWindow w;
+    QSettings().remove("window");
+    w.setGeometry(w.screen()->availableGeometry());
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    ASSERT_TRUE(waitFor([&] { return w.layoutSettled(); }));
+    ASSERT_TRUE(openLesson(w, "6"));
+    settle(w);
+    const double atBase = gridWidthOnScreen(w);
+    const auto [code100, text100] = codeAndTextPixels(w);
+    ASSERT_GT(atBase, 200);
+    ASSERT_GT(code100, 0);
+    ASSERT_GT(text100, 0);
+    const double lines100 = presentation().lineScale();
+    for (int zoom : Presentation::kZoomSteps) {
+        if (zoom <= 100) continue;
+        SCOPED_TRACE(zoom);
+        presentation().setZoomPercent(zoom);
+        settle(w);
+        // The scene is not made smaller to make room for larger chrome and labels.
+        EXPECT_GE(gridWidthOnScreen(w), atBase) << "at 100%: " << atBase;
+        // Nothing else on screen is larger than the 2D view.
+        const int area = w.view2D()->width() * w.view2D()->height();
+        for (QDockWidget* d : w.findChildren<QDockWidget*>())
+            if (d->isVisible()) {
+                EXPECT_LT(d->width() * d->height(), area) << d->objectName().toStdString();
+            }
+        EXPECT_LT(w.lessonPanel()->width() * w.lessonPanel()->height(), area);
+        // Code and formulas grow with the text they stand in, as far as the zoom goes.
+        const auto [code, text] = codeAndTextPixels(w);
+        EXPECT_GE(code, code100 * zoom / 100 - 2) << code100;
+        EXPECT_NEAR(code, text, std::max(2, text / 8)) << "text " << text;
+        // The views' lines too (the 3D view's rays, the 2D view's pens).
+        EXPECT_NEAR(presentation().lineScale(), lines100 * zoom / 100.0, 1e-9);
+    }
 }
 
 /// Where the 2D view draws the solid part of its ray: a point halfway along it, and the screen
@@ -287,6 +373,42 @@ TEST_F(Presenter, HighContrastPaletteKeepsEveryNameAndADistinctColourPerRole) {
     EXPECT_EQ(paletteVariant(), PaletteVariant::Standard);
 }
 
+/// A colour's hue in degrees and its saturation (HSV), by the usual formulas.
+std::pair<double, double> hueAndSaturation(const PaletteColour& c) {
+    const double r = c.r, g = c.g, b = c.b;
+    const double hi = std::max({r, g, b}), lo = std::min({r, g, b}), span = hi - lo;
+    if (span == 0) return {0, 0};
+    double h = hi == r   ? std::fmod((g - b) / span, 6.0)
+               : hi == g ? (b - r) / span + 2
+                         : (r - g) / span + 4;
+    h *= 60;
+    if (h < 0) h += 360;
+    return {h, span / hi};
+}
+
+// lessons.md F16: the current kd node was orange beside the primary ray's orange-red, the BVH's
+// boxes blue beside the reflection ray's sky blue. Every 3D structure is a grey (or white) or
+// keeps 45 degrees of hue from every ray, in both palettes. By hand: vermilion (213, 94, 0) is at
+// 26.5 degrees, orange (230, 159, 0) at 41.5; sky blue (86, 180, 233) and blue (0, 114, 178)
+// both at 201.6.
+TEST_F(Presenter, TheThreeDStructuresKeepClearOfTheRaysHues) {
+    for (const bool high : {false, true}) {
+        SCOPED_TRACE(high);
+        presentation().setHighContrast(high);
+        for (int r = 0; r < kStructureRoleCount; ++r) {
+            const PaletteColour& s = structureColour(static_cast<StructureRole>(r));
+            const auto [hue, saturation] = hueAndSaturation(s);
+            if (saturation < 0.15) continue;  // a grey or white: no hue to mistake
+            for (int k = 0; k < kRayKindCount; ++k) {
+                const PaletteColour& ray = rayColour(static_cast<RayKind>(k));
+                const double apart = std::abs(hue - hueAndSaturation(ray).first);
+                EXPECT_GE(std::min(apart, 360 - apart), 45) << s.key << " / " << ray.key;
+            }
+        }
+    }
+    presentation().setHighContrast(false);
+}
+
 /// The dialog's rows as (keys, what) pairs of text.
 std::vector<std::pair<QString, QString>> rowsOf(const QTableWidget* t) {
     std::vector<std::pair<QString, QString>> rows;
@@ -373,6 +495,52 @@ TEST_F(Presenter, ShortcutsDialogListsEveryKeyOfTheWindowAsItIsWhenItOpens) {
     QTest::keyClick(w.view2D(), Qt::Key_Question);
     ASSERT_TRUE(waitFor([&] { return w.shortcutsDialog() != nullptr; }));
     expectEveryAction(w, *w.shortcutsDialog());
+}
+
+// gui.md 16: with the compare window in front, Ctrl+Q and the window's keys did nothing (a
+// lecturer's second Ctrl+Q, every run of the reviewer's monkey). Esc closes it.
+TEST_F(Presenter, TheWindowsKeysWorkFromTheCompareWindow) {
+    auto* w = new MainWindow;
+    QPointer<MainWindow> alive(w);
+    w->setAttribute(Qt::WA_DeleteOnClose);
+    showActive(*w);
+    ASSERT_TRUE(openLesson(*w, "10"));
+    w->setLecturerMode(true);
+    w->openCompare();
+    ASSERT_TRUE(w->waitUntilIdle());
+    QPointer<CompareWindow> compare = w->compareWindow();
+    ASSERT_TRUE(compare);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+    // In front: the keys go to it, not to the app's window behind.
+    const auto inFront = [&] {
+        return waitFor([&] {
+            if (QApplication::activeWindow() != compare) compare->activateWindow();
+            return QApplication::activeWindow() == compare;
+        });
+    };
+    ASSERT_TRUE(inFront());
+    // Ctrl++ there zooms (the application's font), F1 there lists the keys.
+    QTest::keyClick(compare, Qt::Key_Plus, Qt::ControlModifier);
+    EXPECT_EQ(presentation().zoomPercent(), 110);
+    QTest::keyClick(compare, Qt::Key_0, Qt::ControlModifier);
+    EXPECT_EQ(presentation().zoomPercent(), 100);
+    QTest::keyClick(compare, Qt::Key_F1);
+    ASSERT_TRUE(waitFor([&] { return w->shortcutsDialog() != nullptr; }));
+    w->shortcutsDialog()->close();
+    ASSERT_TRUE(waitFor([&] { return w->shortcutsDialog() == nullptr; }));
+    // Esc closes the compare window; opened again, Ctrl+Q in it quits the app's window.
+    ASSERT_TRUE(inFront());
+    QTest::keyClick(compare, Qt::Key_Escape);
+    ASSERT_TRUE(waitFor([&] { return !compare; }));
+    w->openCompare();
+    ASSERT_TRUE(w->waitUntilIdle());
+    compare = w->compareWindow();
+    ASSERT_TRUE(compare);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+    ASSERT_TRUE(inFront());
+    QTest::keyClick(compare, Qt::Key_Q, Qt::ControlModifier);
+    EXPECT_TRUE(waitFor([&] { return !alive && !compare; }));
+    delete alive.data();
 }
 
 TEST_F(Presenter, ShortcutsDialogInItalian) {

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QImage>
 #include <QTest>
@@ -175,6 +176,115 @@ TEST(View3D, TheCornellBoxsGreenWallIsGreen) {
     }
     ASSERT_GE(samples, 10);
     EXPECT_GT(green, samples * 3 / 4) << green << " of " << samples;
+}
+
+// From beside the eye (the view's own framing, lessons 4 and 9) the camera is outside the box, on
+// the green wall's far side: a one-sided wall lit from inside was drawn black there.
+TEST(View3D, TheCornellBoxsGreenWallIsGreenFromBesideTheEyeToo) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(open(w, "cornell", AccelKind::Grid));
+    w.view3D()->frameBesideEye();
+    const QImage image = grab(w.view3D());
+    const Camera cam = w.view3D()->currentCamera();
+    const Scene& s = *w.session().scene3D();
+    // The camera is on the wall's far side from the light (x = 1, the light at x = 0).
+    ASSERT_GT(cam.eye.x, 1.0);
+    int samples = 0, green = 0;
+    for (const Triangle& t : s.triangles) {
+        const Color kd = s.materials[t.material].kd;
+        if (!(kd.y > 2 * kd.x && kd.y > 2 * kd.z)) continue;
+        for (int i = 1; i < 6; ++i)
+            for (int j = 1; i + j < 6; ++j) {
+                const Vec3 at = t.a + (t.b - t.a) * (i / 6.0) + (t.c - t.a) * (j / 6.0);
+                const Projected p = project(cam, at, image.size());
+                if (!image.rect().contains(p.at.toPoint()) || kLegend.contains(p.at.toPoint()))
+                    continue;
+                const QColor c = image.pixelColor(p.at.toPoint());
+                ++samples;
+                green += c.green() > 60 && c.green() > c.red() + 30 && c.green() > c.blue() + 30;
+            }
+    }
+    ASSERT_GE(samples, 10);
+    EXPECT_GT(green, samples * 3 / 4) << green << " of " << samples;
+}
+
+// Lesson 12's primary ray over the whitted floor's red and yellow checker: an outline keeps its
+// edges (the orange-red ray vanished on the red squares).
+TEST(View3D, ARayOverTheCheckerHasADarkOutline) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(openLesson(w, "12"));
+    putAwayAll(w.lessonPanel());
+    w.session().setCursor(w.session().size());
+    const QImage image = grab(w.view3D());
+    const Camera cam = w.view3D()->currentCamera();
+    const EventLog& log = w.session().log();
+    ASSERT_FALSE(log.rays().empty());
+    const RayRecord& ray = log.rays().front();
+    ASSERT_EQ(ray.kind, RayKind::Primary);
+    double tHit = -1;
+    for (const Event& e : log.events())
+        if (const auto* h = std::get_if<RayHit>(&e); h && h->ray == 0) tHit = h->t;
+    ASSERT_GT(tHit, 0);
+    const PaletteColour& primary = rayColour(RayKind::Primary);
+    const auto isRay = [&](QColor c) {
+        return std::abs(c.red() - primary.r) + std::abs(c.green() - primary.g) +
+                   std::abs(c.blue() - primary.b) <
+               90;
+    };
+    const auto isDark = [](QColor c) { return std::max({c.red(), c.green(), c.blue()}) < 60; };
+    int samples = 0, outlined = 0;
+    for (int k = 3; k <= 7; ++k) {
+        const Vec3 at = ray.origin + ray.dir * (tHit * k / 10.0);
+        const QPointF p = project(cam, at, image.size()).at,
+                      q = project(cam, ray.origin + ray.dir * (tHit * (k + 1) / 10.0), image.size())
+                              .at;
+        const QPointF along = (q - p) / std::hypot(q.x() - p.x(), q.y() - p.y());
+        const QPointF across(-along.y(), along.x());
+        if (!isRay(image.pixelColor(p.toPoint()))) continue;  // hidden here (the frustum, a sphere)
+        ++samples;
+        // Out from the ray's core on each side: a dark pixel within 3 pixels of its edge (one
+        // may blend the two).
+        int sides = 0;
+        for (const double sign : {-1.0, 1.0}) {
+            int d = 1;
+            while (d <= 14 && isRay(image.pixelColor((p + sign * d * across).toPoint()))) ++d;
+            bool dark = false;
+            for (int e = d; e < d + 3; ++e)
+                dark = dark || isDark(image.pixelColor((p + sign * e * across).toPoint()));
+            sides += dark;
+        }
+        outlined += sides == 2;
+    }
+    ASSERT_GE(samples, 3);
+    EXPECT_GE(outlined, samples - 1) << outlined << " of " << samples;
+}
+
+// gui.md 15: in a 2D lesson the 3D items did nothing (the heat map could even be checked) and the
+// 3D view's screenshot saved its hidden placeholder; in a 3D one the 2D view's did the same.
+TEST(View3D, ItemsOfOneKindOfSceneAreOffWithTheOther) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    const auto enabled = [&](const char* name) {
+        const auto* a = w.findChild<QAction*>(QString::fromLatin1(name));
+        EXPECT_NE(a, nullptr) << name;
+        return a && a->isEnabled();
+    };
+    const char* const threeD[] = {"heatmap",      "renderAgain",     "resetCamera",
+                                  "screenshot3D", "screenshotImage", "rayTraceView"};
+    ASSERT_TRUE(openLesson(w, "6"));  // 2D
+    for (const char* name : threeD) EXPECT_FALSE(enabled(name)) << name;
+    EXPECT_TRUE(enabled("screenshot2D"));
+    EXPECT_TRUE(enabled("live2dFit"));
+    ASSERT_TRUE(openLesson(w, "1"));  // 3D
+    for (const char* name : threeD) EXPECT_TRUE(enabled(name)) << name;
+    EXPECT_FALSE(enabled("screenshot2D"));
+    EXPECT_FALSE(enabled("live2dFit"));
+    w.tasks().cancel(TaskKind::Render);
 }
 
 TEST(View3D, ThePrimaryRayIsSeenSideOnBesideTheEye) {

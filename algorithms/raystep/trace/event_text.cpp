@@ -55,8 +55,16 @@ std::string leafText(const LeafMade& e, Language lang) {
     return trf(lang, "leaf %1: %2 primitives (few_primitives)", {node, prims});
 }
 
+/// A colour's components as the board writes them: one below what six digits of a unit value
+/// hold (a specular term's cos^n of 2e-230) is 0, not a number no screen could show.
+std::string colourText(std::array<double, 3> rgb, Language lang) {
+    for (double& c : rgb)
+        if (std::abs(c) < 5e-7) c = 0.0;
+    return tupleText(rgb, 3, lang);
+}
+
 std::string termText(const ShadingTerm& e, Language lang) {
-    const std::string rgb = tupleText(e.rgb, 3, lang);
+    const std::string rgb = colourText(e.rgb, lang);
     switch (e.term) {
         case ShadingTermKind::Ambient:
             return trf(lang, "ambient term %1", {rgb});
@@ -157,7 +165,7 @@ std::string eventText(const Event& event, int dims, Language lang) {
                 return termText(e, lang);
             else
                 return trf(lang, "pixel (%1, %2) = %3",
-                           {std::to_string(e.x), std::to_string(e.y), tupleText(e.rgb, 3, lang)});
+                           {std::to_string(e.x), std::to_string(e.y), colourText(e.rgb, lang)});
         },
         event);
 }
