@@ -98,7 +98,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     text_->setObjectName("lessonText");
     text_->setOpenExternalLinks(true);
     // A few lines of the step's text however tall the exercise box grows (1366x768).
-    text_->setMinimumHeight(120);
+    text_->setMinimumHeight(100);  // five lines: the window still fits 1024x600
     text_->installEventFilter(this);
     layout->addWidget(text_, 1);
 
@@ -545,7 +545,7 @@ void LessonPanel::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     // The exercise box scrolls before the lesson text loses its room: at most about 2/5 of the
     // panel for the prompt, hints and feedback.
-    static_cast<ExerciseScroll*>(exerciseScroll_)->fit(std::max(80, height() * 3 / 10));
+    static_cast<ExerciseScroll*>(exerciseScroll_)->fit(std::max(60, height() * 3 / 10));
 }
 
 bool LessonPanel::eventFilter(QObject* o, QEvent* e) {

@@ -292,9 +292,8 @@ void LiveControls::updateStatistics() {
         // presenting) reads as the whole, so none is shown until the exercise is answered or
         // put away.
         lines << (session_.limit()
-                      ? tr("Traced: the counts wait until the exercise is answered or put away")
-                      : tr("Traced: the counts wait until the question is answered or its "
-                           "answer shown"));
+                      ? tr("Traced: counts wait for the exercise")
+                      : tr("Traced: counts wait for the question's answer"));
     } else if (built > 0)
         lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
     else if (session_.kind() == AccelKind::Grid)
