@@ -48,8 +48,16 @@ class ExerciseScroll : public QScrollArea {
         const int content =
             w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
         const int h = std::min(content + 2 * frameWidth(), cap_);
-        if (h != minimumHeight() || h != maximumHeight()) setFixedHeight(h);
+        // As tall as its content (up to the cap), but never a floor under the window's least
+        // height: a height fixed at a large window's size kept the window from shrinking.
+        if (h != hint_ || h != maximumHeight()) {
+            hint_ = h;
+            setMinimumHeight(std::min(h, kLeast));
+            setMaximumHeight(h);
+            updateGeometry();
+        }
     }
+    QSize sizeHint() const override { return {QScrollArea::sizeHint().width(), hint_}; }
     bool eventFilter(QObject* o, QEvent* e) override {
         // The body's layout changed (a hint, the feedback): as tall as it now is.
         if (o == widget() && e->type() == QEvent::LayoutRequest) fit(cap_);
@@ -63,7 +71,9 @@ class ExerciseScroll : public QScrollArea {
     }
 
   private:
+    static constexpr int kLeast = 60;  // the prompt's first lines, scrolled
     int cap_ = 200;
+    int hint_ = 0;
 };
 
 // Markdown's code blocks are laid out unbroken: in a narrow panel (a 1366x768 laptop) their
