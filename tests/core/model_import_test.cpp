@@ -159,9 +159,10 @@ void expectRefused(const std::string& path, const std::string& why) {
 TEST(ModelImport, BadFilesAreOneLineNamingTheFile) {
     expectRefused(kModels + "missing.obj", "no such file");
     expectRefused(kModels + "empty.stl", "empty");
-    expectRefused(kModels + "truncated.stl", "cannot import the model");
-    expectRefused(kModels + "garbage.ply", "cannot import the model");
-    expectRefused(kModels + "nan_vertex.obj", "vertex 2: a coordinate is not a finite number");
+    // truncated.stl: 3 triangles need 84 + 3 x 50 = 234 bytes; the file keeps 134.
+    expectRefused(kModels + "truncated.stl", "header says 3 triangles, which take 234 bytes");
+    expectRefused(kModels + "garbage.ply", "not a PLY file");
+    expectRefused(kModels + "nan_vertex.obj", ":3: vertex coordinate 'nan' is not a finite number");
     expectRefused(kModels + "nan_vertex.ply", "not a finite number");
     expectRefused(kModels + "no_triangles.obj", "no triangles");
     expectRefused(kModels + "pyramid.json", "not a model file");
