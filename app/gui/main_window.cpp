@@ -135,6 +135,11 @@ void MainWindow::createViews() {
     connect(imageView_, &ImageView::pixelClicked, this, [this](int x, int y) {
         // The camera, size and settings the image was made with: the pixel's ray is the one
         // drawn there.
+        if (const auto& f = imageFrame_; f && slowPixelTraces()) {
+            tracePixelHereOrInBackground(x, y, f->width, f->height, f->camera, f->trace);
+            clicked_ = Clicked{x, y, f->width, f->height};
+            return;
+        }
         if (const auto& f = imageFrame_) {
             session_.tracePixel(x, y, f->width, f->height, f->camera, f->trace);
             clicked_ = Clicked{x, y, f->width, f->height};
@@ -368,7 +373,7 @@ void MainWindow::showScene(SceneRef scene, bool renderImage) {
         else
             imageView_->clear(tr("This view shows no rendered image."));
         // A first ray to replay before any click: the image's centre.
-        session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
+        tracePixelHereOrInBackground(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
 }
 
@@ -852,6 +857,11 @@ void MainWindow::exportTrace() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+    // Answers the last save could not write: asked about first (lesson_controller.h).
+    if (!lessons_->allowClose()) {
+        e->ignore();
+        return;
+    }
     saveLayout();
     // Stop and join every worker now, and start none after: the window is going away.
     runner_.shutdown();

@@ -14,7 +14,8 @@ namespace raystep::detail {
 /// The importer program's name, found beside the running program.
 constexpr const char* kImporterName = "raystep-import";
 
-/// The importer beside the running program (/proc/self/exe's folder), or "" when there is none.
+/// The importer beside the running program (/proc/self/exe's folder), or "" when there is none;
+/// the environment's RAYSTEP_IMPORTER instead when set (tests give a misbehaving one).
 std::string importerBesideThisProgram();
 
 /// The importer program's whole work: `argv` as importModel passes it (the limits, the parent's
