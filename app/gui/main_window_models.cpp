@@ -281,8 +281,15 @@ QString MainWindow::saveModelScene(const QString& path) {
         return tr("%1: the scene is written as a scene file; name it *.json").arg(path);
     const std::string meshName = json.stem().string() + ".mesh.obj";
     const std::string mesh = (json.parent_path() / meshName).string();
-    if (sameFile(mesh, session_.name()) || sameFile(json.string(), session_.name()))
-        return tr("%1: it would write over the model itself").arg(path);
+    // Nor any file the model refers to (a glTF's buffer, an OBJ's .mtl or texture).
+    for (const std::string& input : inputFilesOf(session_.name()))
+        for (const std::string& out : {mesh, json.string()})
+            if (std::error_code ec;
+                std::filesystem::is_regular_file(input, ec) && sameFile(out, input))
+                return input == session_.name()
+                           ? tr("%1: it would write over the model itself").arg(path)
+                           : tr("%1: it would write over %2, which the model refers to")
+                                 .arg(QString::fromStdString(out), QString::fromStdString(input));
     try {
         const SceneFiles files = sceneFilesFor(*scene, scene->triangles.size() - 2, meshName);
         writeFilesAtomic({{json.string(), files.sceneJson}, {mesh, files.meshObj}});

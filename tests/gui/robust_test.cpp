@@ -456,6 +456,25 @@ TEST(RobustModels, BruteForceOnABigModelIsAskedAboutBoundedAndCancelled) {
     EXPECT_LT(t.elapsed(), 1000);
 }
 
+// Review 3, class 12, in the app: File > Save scene as may not write over a file the model
+// refers to (here a glTF whose buffer is named like the scene file to be saved).
+TEST(RobustModels, SaveSceneAsNeverOverwritesAFileTheModelRefersTo) {
+    QTemporaryDir dir;
+    QByteArray gltf = slurp(kModels + "external.gltf");
+    gltf.replace("external.bin", "saved.json");
+    put(dir.filePath("model.gltf"), gltf);
+    const QByteArray buffer = slurp(kModels + "external.bin");
+    put(dir.filePath("saved.json"), buffer);
+    MainWindow w;
+    w.openScene(dir.filePath("model.gltf"), AccelKind::KdTree, true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false))
+        << w.lastOpenError().toStdString();
+    const QString why = w.saveModelScene(dir.filePath("saved.json"));
+    EXPECT_TRUE(why.contains("which the model refers to")) << why.toStdString();
+    EXPECT_EQ(slurp(dir.filePath("saved.json")), buffer);
+    EXPECT_FALSE(QFileInfo::exists(dir.filePath("saved.mesh.obj")));
+}
+
 // Measured, not run by ctest (a 1.2 M-triangle model is no unit test): scripts/measure_huge.sh
 // makes the model and runs this with --gtest_also_run_disabled_tests, printing the figures.
 TEST(RobustModels, DISABLED_BruteForceOnAHugeModel) {

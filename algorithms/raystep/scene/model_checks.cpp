@@ -370,8 +370,14 @@ void checkPly(const std::string& file, std::string_view bytes) {
         if (line == 1) continue;  // "ply"
         if (text.find('\r') != std::string_view::npos)
             refuse(file, line, "a CR inside a header line (PLY lines end with LF or CR LF)");
-        if (text.find('\0') != std::string_view::npos)
-            refuse(file, line, "a NUL byte in the PLY header");
+        // Data before any end_header: binary bytes, or numbers on a line of their own.
+        const std::size_t first = text.find_first_not_of(" \t");
+        if (text.find('\0') != std::string_view::npos ||
+            (first != std::string_view::npos &&
+             (std::isdigit(static_cast<unsigned char>(text[first])) || text[first] == '-')))
+            refuse(file, line,
+                   "data where the header goes on: the PLY header has no 'end_header' line (a "
+                   "line of its own ending the header) before it");
         const auto w = words(text);
         if (w.empty()) continue;
         const std::string_view keyword = w[0];
@@ -592,6 +598,8 @@ void checkObj(const std::string& file, std::string_view text) {
     std::array<std::uint64_t, 3> sofar{};
     std::uint64_t triangles = 0, pointsAndLines = 0, meshes = 0;
     static const std::array<const char*, 3> kinds = {"vertex", "texture coordinate", "normal"};
+    static const std::array<const char*, 3> plurals = {"vertices", "texture coordinates",
+                                                       "normals"};
     forEachAssimpObjLine(file, text, [&](int lineNo, std::string_view line) {
         if (line.empty()) return;
         const char first = line[0];
@@ -686,8 +694,8 @@ void checkObj(const std::string& file, std::string_view text) {
                                   : static_cast<std::uint64_t>(index) > count))
                         refuse(file, lineNo,
                                std::string(kinds[k]) + " index " + printable(part[k], 24) +
-                                   " is out of range (" + std::to_string(count) + " " + kinds[k] +
-                                   (negative ? "s before this line)" : "s)"));
+                                   " is out of range (" + std::to_string(count) + " " +
+                                   plurals[k] + (negative ? " before this line)" : ")"));
                 }
             }
             return;

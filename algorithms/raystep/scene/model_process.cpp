@@ -203,7 +203,12 @@ int runImporter(int argc, char** argv) {
         out.frame(kDone, &dropped, sizeof dropped);
         return 0;
     } catch (const std::bad_alloc&) {
-        out.frame(kOutOfMemory, nullptr, 0);
+        // The limit it ran into, which may be lower than asked (inherited from a ulimit -v).
+        rlimit l{};
+        std::uint64_t limit = ::getrlimit(RLIMIT_AS, &l) == 0 && l.rlim_cur != RLIM_INFINITY
+                                  ? std::uint64_t(l.rlim_cur)
+                                  : 0;
+        out.frame(kOutOfMemory, &limit, sizeof limit);
     } catch (const SceneError& e) {
         const std::int32_t line = e.line();
         std::string payload(reinterpret_cast<const char*>(&line), 4);
@@ -322,6 +327,7 @@ ImportedModel importModel(const std::string& path, const ImportOptions& options)
     ImportedModel model;
     std::optional<SceneError> error;
     bool outOfMemory = false, done = false, malformed = false;
+    std::uint64_t memoryLimit = 0;  // the importer's, as it found it
     double fraction = 0;
     std::string pending;
     std::size_t at = 0;
@@ -365,8 +371,9 @@ ImportedModel importModel(const std::string& path, const ImportOptions& options)
             } else if (type == kDone && length == 8) {
                 std::memcpy(&model.droppedDegenerateTriangles, p, 8);
                 done = true;
-            } else if (type == kOutOfMemory && length == 0) {
+            } else if (type == kOutOfMemory && length == 8) {
                 outOfMemory = true;
+                std::memcpy(&memoryLimit, p, 8);
             } else if (type == kError && length >= 6) {
                 std::int32_t line = 0;
                 std::memcpy(&line, p, 4);
@@ -437,8 +444,11 @@ ImportedModel importModel(const std::string& path, const ImportOptions& options)
     }
     if (error && exited && WEXITSTATUS(*status) == 2) throw *error;
     if (outOfMemory)
-        fail("reading the model needs more memory than the importer's limit of " +
-             megabytes(limits.memoryBytes) + "; the model is too big or malformed");
+        fail(memoryLimit > 0 ? "reading the model needs more memory than the importer's limit "
+                               "of " +
+                                   megabytes(memoryLimit) + "; the model is too big or malformed"
+                             : std::string("reading the model needs more memory than this "
+                                           "computer can give"));
     if (!done || (status && !(exited && WEXITSTATUS(*status) == 0)))
         fail(
             "the model importer ended without an answer" +

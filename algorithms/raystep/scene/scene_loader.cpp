@@ -658,8 +658,8 @@ std::optional<std::string> unreadableTypeProblem(const std::string& path) {
     for (const char* model : {".obj", ".ply", ".stl", ".gltf", ".glb"})
         if (ext == model)
             return std::string(
-                "a model file: render, build, trace, compare and the app read models, not this "
-                "command");
+                "a model file: render, build, trace and compare read models, and the app; a "
+                "lesson's or a command's scene here is a scene file (.json)");
     return "not a scene or model raystep reads " + std::string(sceneOrModelTypes());
 }
 
