@@ -112,6 +112,24 @@ int runRender(const RenderArgs& a) {
     opt.seed = a.seed;
     opt.trace.rayOffset = *offset;
 
+    // Every cap allows a render of years (8192^2 pixels x 4096 samples x 1024 diffuse rays): its
+    // size said before it starts, in rays and in time at a brisk pace. Ctrl+C stops it.
+    const double rays = double(opt.width) * opt.height * opt.spp * (1.0 + opt.trace.diffuseSamples);
+    if (rays > 1e11) {
+        const double seconds = rays / 1e7;
+        char when[64];
+        if (seconds < 86400 * 2)
+            std::snprintf(when, sizeof when, "%.0f hours", seconds / 3600);
+        else
+            std::snprintf(when, sizeof when, "%.0f days", seconds / 86400);
+        std::fprintf(stderr,
+                     "raystep-cli: warning: %s asks for about %.2g camera and diffuse rays (%dx%d "
+                     "pixels, %d samples, %d diffuse rays each): at 10 million rays a second, %s "
+                     "(Ctrl+C stops it)\n",
+                     scene.name.c_str(), rays, opt.width, opt.height, opt.spp,
+                     opt.trace.diffuseSamples, when);
+    }
+
     std::optional<Accelerator> accel;
     {
         ProgressBar buildBar("build " + describeAccel(choice));

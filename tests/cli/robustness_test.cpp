@@ -397,6 +397,26 @@ TEST_F(Robust, ThreadsAreClampedToTheCores) {
     EXPECT_EQ(nlohmann::json::parse(slurp(dir / "s.json"))["threads"], cores);
 }
 
+// Class 21: a scene inside every cap asks for years of work, and the progress stayed at "0%".
+// Its size is said before it starts (8192^2 x 4096 x (1 + 1024) = 2.8e14 rays: at 10 million a
+// second, 326 days); the test ends it after 2 s.
+TEST_F(Robust, ARenderOfYearsIsSaidBeforeItStarts) {
+    write("maxed.json", R"({"render": {"width": 8192, "height": 8192, "spp": 4096,
+ "diffuse_samples": 1024, "bounces": 64},
+ "objects": [{"type": "sphere", "center": [0, 0, -3], "radius": 1}]})");
+    const std::string cmd = "cd '" + dir.string() +
+                            "' && timeout -s KILL 2 '" RAYSTEP_CLI
+                            "' render maxed.json -o m.png > /dev/null 2> err.txt";
+    (void)std::system(cmd.c_str());
+    const std::string err = slurp(dir / "err.txt");
+    EXPECT_NE(err.find("raystep-cli: warning: maxed.json asks for about 2.8e+14 camera and "
+                       "diffuse rays (8192x8192 pixels, 4096 samples, 1024 diffuse rays each): "
+                       "at 10 million rays a second, 326 days"),
+              std::string::npos)
+        << err;
+    EXPECT_FALSE(fs::exists(dir / "m.png"));
+}
+
 // Class 17: Ctrl+C or SIGTERM while the outputs were being written left *.tmp.PID files. The
 // signal now waits for the write. Sent the moment the first temporary is created (inotify),
 // the command ends by it, with all three outputs complete and nothing else in the folder; or,
