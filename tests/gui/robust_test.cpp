@@ -298,13 +298,14 @@ TEST(RobustProgress, AKillAtAnyPointLeavesAWholeFile) {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("RAYSTEP_SAVE_FOREVER", path);
         saver.setProcessEnvironment(env);
+        QFile::remove(path);
         saver.start(QCoreApplication::applicationFilePath(),
                     {"--gtest_also_run_disabled_tests",
                      "--gtest_filter=RobustProgress.DISABLED_SaveForEver"});
-        QFile::remove(path);
         ASSERT_TRUE(saver.waitForStarted());
-        // Until its first save is there, then a little more: 0 to 55 ms of saving.
-        for (int i = 0; i < 1000 && !QFileInfo::exists(path); ++i)
+        // Until its first save is there (a loaded machine starts it slowly), then a little
+        // more: 0 to 55 ms of saving.
+        for (int i = 0; i < 6000 && !QFileInfo::exists(path); ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         std::this_thread::sleep_for(std::chrono::milliseconds(5 * k));
         ::kill(static_cast<pid_t>(saver.processId()), SIGKILL);
