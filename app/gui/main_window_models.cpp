@@ -45,7 +45,7 @@ bool hasSplit(AccelKind kind) {
 constexpr std::size_t kBruteForceAsk = 200'000;
 /// The events a pixel's trace keeps there: a million triangles by brute force recorded 3 million
 /// tests, whose replay and views took 10 GB and froze the window for 40 s.
-constexpr std::size_t kSlowPixelEventCap = 250'000;
+constexpr std::size_t kSlowPixelEventCap = 50'000;
 }  // namespace
 
 void MainWindow::createStructureControls() {
