@@ -516,6 +516,7 @@ void MainWindow::traceViewPoint(QPointF widgetPos) {
     TraceSettings settings;
     settings.bounces = bouncesBox_->value();
     settings.diffuseSamples = diffuseBox_->value();
+    if (slowPixelTraces()) return tracePixelHereOrInBackground(x, y, w, h, camera, settings);
     session_.tracePixel(x, y, w, h, camera, settings);
     session_.setCursor(session_.size());
     statusBar()->showMessage(
