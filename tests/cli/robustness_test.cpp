@@ -470,7 +470,7 @@ TEST_F(Robust, ASignalDuringTheWriteLeavesNoTemporary) {
         const bool all = names == std::vector<std::string>{"hm.png", "out.png", "st.json"};
         EXPECT_TRUE(all || names.empty()) << ::testing::PrintToString(names);
         if (all) {
-            EXPECT_NO_THROW(nlohmann::json::parse(slurp(dir / "st.json")));
+            EXPECT_TRUE(nlohmann::json::parse(slurp(dir / "st.json")).is_object());
             EXPECT_EQ(slurp(dir / "out.png").substr(1, 3), "PNG");
         }
         if (sent && WIFSIGNALED(status) && WTERMSIG(status) == sig && all) ++deferred;
