@@ -494,6 +494,50 @@ TEST(RobustModels, AnUnsupportedFileTypeIsNamedAsSuch) {
     EXPECT_EQ(w.session().name(), "whitted");
 }
 
+// Pictures of what the student and the lecturer see (not run by ctest): RAYSTEP_SHOTS names
+// a folder; the window with the unsaved-progress note, the unreadable-file dialog, the quit
+// question, and the brute-force question.
+TEST(RobustModels, DISABLED_Screenshots) {
+    const QString shots = qEnvironmentVariable("RAYSTEP_SHOTS");
+    ASSERT_FALSE(shots.isEmpty());
+    OwnHome home;
+    const QString path = home.progressPath();
+    put(path, "{\"lessons\": ");
+    MainWindow w;
+    w.resize(1366, 768);
+    w.show();
+    QMessageBox* box = boxNamed(w, "progressUnreadable");
+    ASSERT_NE(box, nullptr);
+    box->grab().save(shots + "/progress-unreadable.png");
+    box->close();
+    ASSERT_TRUE(openLesson(w, "6"));
+    QLockFile other(path + ".lock");
+    ASSERT_TRUE(other.tryLock(0));
+    w.lessonPanel()->goToStep(1);
+    runUntil([] { return false; }, 300);
+    w.grab().save(shots + "/progress-not-saved.png");
+    w.close();
+    box = boxNamed(w, "unsavedProgress");
+    ASSERT_NE(box, nullptr);
+    box->grab().save(shots + "/progress-quit-question.png");
+    buttonWithRole(box, QMessageBox::DestructiveRole)->click();
+    other.unlock();
+    QTemporaryDir dir;
+    MainWindow m;
+    m.resize(1366, 768);
+    m.show();
+    m.openScene(gridModel(dir, 360), AccelKind::Grid, true);
+    ASSERT_TRUE(m.waitUntilIdle() && m.lastOpenOk().value_or(false));
+    QComboBox* chooser = m.structureChooser();
+    const int index = chooser->findText("brute force");
+    chooser->setCurrentIndex(index);
+    emit chooser->activated(index);
+    box = boxNamed(m, "bruteForceQuestion");
+    ASSERT_NE(box, nullptr);
+    box->grab().save(shots + "/brute-force-question.png");
+    buttonWithRole(box, QMessageBox::RejectRole)->click();
+}
+
 // Measured, not run by ctest (a 1.2 M-triangle model is no unit test): scripts/measure_huge.sh
 // makes the model and runs this with --gtest_also_run_disabled_tests, printing the figures.
 TEST(RobustModels, DISABLED_BruteForceOnAHugeModel) {
