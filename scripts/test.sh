@@ -19,6 +19,10 @@ echo "== Core and CLI tests under AddressSanitizer + UndefinedBehaviorSanitizer 
 symbolizer=/usr/lib/llvm-14/bin/llvm-symbolizer
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:external_symbolizer_path=$symbolizer
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:external_symbolizer_path=$symbolizer
+# assimp's own leaks on its error paths are suppressed (tests/fuzz/lsan.supp); the model
+# importer's process shows its stderr here, so a report inside it is seen, not only its end.
+export LSAN_OPTIONS=suppressions=$RAYSTEP_ROOT/tests/fuzz/lsan.supp:print_suppressions=0
+export RAYSTEP_IMPORTER_STDERR=1
 asan="$RAYSTEP_ROOT/build-asan"
 # A build folder made by an earlier test.sh with GCC: the compiler of a build folder is fixed.
 if [ -f "$asan/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$asan/CMakeCache.txt"; then

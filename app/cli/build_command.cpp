@@ -38,7 +38,10 @@ SceneInfo infoOf(const std::variant<Scene, Scene2D>& any) {
 
 void addBuildCommand(CLI::App& app, BuildArgs& a) {
     CLI::App* cmd = app.add_subcommand("build", "Build an acceleration structure and report it");
-    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option(
+        "scene", a.scene,
+        "Built-in scene name, scene file, or model (.obj .ply .stl .gltf .glb, with the "
+        "scene render puts around it; default: default)");
     a.accel.accel = "kdtree";
     addAccelOptions(cmd, a.accel);
     cmd->add_flag("--json", a.json, "Print the report as JSON");
@@ -49,12 +52,14 @@ void addBuildCommand(CLI::App& app, BuildArgs& a) {
 }
 
 int runBuild(const BuildArgs& a) {
+    setCurrentInput(a.scene);
     AccelChoice choice;
     if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (auto problem = checkOutputs({{"--events", a.events}}, {a.scene})) return fail(*problem);
+    if (auto problem = checkOutputs({{"--events", a.events}}, inputsOf(a.scene)))
+        return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
-        any = loadAnyScene(a.scene);
+        any = loadInput(a.scene);
     } catch (const SceneError& e) {
         return fail(e.what());
     }

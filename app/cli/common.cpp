@@ -1,11 +1,20 @@
 // The shared CLI helpers: errors, number parsing, option checks and all-or-none output files.
 #include "common.h"
 
+#include "progress.h"
+
 #include "raystep/base/file_error.h"
+#include "raystep/scene/model_import.h"
+
+#include <tbb/info.h>
+
+#include <signal.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -65,13 +74,70 @@ std::optional<std::string> checkOutputs(
     return std::nullopt;
 }
 
+std::vector<std::string> inputsOf(const std::string& sceneOrModel) {
+    return inputFilesOf(sceneOrModel);
+}
+
+namespace {
+std::string& current() {
+    static std::string input;
+    return input;
+}
+}  // namespace
+
+const std::string& currentInput() {
+    return current();
+}
+
+void setCurrentInput(const std::string& nameOrPath) {
+    current() = nameOrPath;
+}
+
+std::variant<Scene, Scene2D> loadInput(const std::string& nameOrPath) {
+    setCurrentInput(nameOrPath);
+    if (!isModelPath(nameOrPath)) return loadAnyScene(nameOrPath);
+    ProgressBar bar("import " + nameOrPath);
+    auto scene = loadAnySceneOrModel(nameOrPath, [&](double f) { return bar.update(f); });
+    bar.finish();
+    return scene;
+}
+
+int threadCount(int asked) {
+    const int available = std::max(1, tbb::info::default_concurrency());
+    return asked > 0 ? std::min(asked, available) : available;
+}
+
+namespace {
+volatile std::sig_atomic_t deferredSignal = 0;
+extern "C" void deferSignal(int sig) {
+    deferredSignal = sig;
+}
+}  // namespace
+
 std::optional<std::string> writeOutputs(const std::vector<FileToWrite>& files) {
+    // Ctrl+C, a kill (SIGTERM), a closed terminal while the files are written wait for the
+    // write to end (every file in place, or none and no temporary), then end the program as they
+    // would have: a handler, not a blocked mask, since any thread (TBB's too) may receive them.
+    // SIGKILL cannot wait (docs/reliability.md says what it can leave).
+    constexpr std::array<int, 4> kSignals = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    std::array<struct sigaction, kSignals.size()> previous{};
+    struct sigaction defer {};
+    defer.sa_handler = deferSignal;
+    defer.sa_flags = SA_RESTART;  // the write's system calls go on
+    sigfillset(&defer.sa_mask);
+    deferredSignal = 0;
+    for (std::size_t i = 0; i < kSignals.size(); ++i)
+        ::sigaction(kSignals[i], &defer, &previous[i]);
+    std::optional<std::string> problem;
     try {
         writeFilesAtomic(files);
     } catch (const std::exception& e) {
-        return e.what();
+        problem = e.what();
     }
-    return std::nullopt;
+    for (std::size_t i = 0; i < kSignals.size(); ++i)
+        ::sigaction(kSignals[i], &previous[i], nullptr);
+    if (const int sig = deferredSignal) std::raise(sig);
+    return problem;
 }
 
 CLI::Validator wholeNumber(std::uint64_t lo, std::uint64_t hi) {

@@ -2,6 +2,8 @@
 // What every raystep-cli command shares: the one-line error, strict number parsing and option
 // checks, and the output files (checked before the work, written all or none after it).
 #include "raystep/render/image.h"
+#include "raystep/scene/scene.h"
+#include "raystep/scene/scene2d.h"
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace raystep::cli {
@@ -31,6 +34,22 @@ bool hasExtension(const std::string& path, const std::string& ext);
 std::optional<std::string> checkOutputs(
     const std::vector<std::pair<std::string, std::string>>& optionsAndPaths,
     const std::vector<std::string>& inputs = {});
+
+/// The files a command reads from its scene or model argument: itself and what it refers to (a
+/// scene's meshes, a glTF's buffers, an OBJ's .mtl files and textures), for checkOutputs.
+std::vector<std::string> inputsOf(const std::string& sceneOrModel);
+
+/// A built-in scene, a scene file or a model (.obj .ply .stl .gltf .glb), with a progress bar
+/// while a model is imported; throws SceneError. Remembers it for an out-of-memory message.
+std::variant<Scene, Scene2D> loadInput(const std::string& nameOrPath);
+
+/// The scene or model the command works on ("" before it has one): main names it when memory
+/// runs out.
+const std::string& currentInput();
+void setCurrentInput(const std::string& nameOrPath);
+
+/// `asked` threads (0: all cores) clamped to what TBB will give (TBB warns, and ignores, past it).
+int threadCount(int asked);
 
 /// CLI11 check for a file name option: not empty (`--events ""` would otherwise mean "none").
 CLI::Validator fileName();

@@ -6,6 +6,7 @@
 #include "tree_report.h"
 
 #include "raystep/render/tracer.h"
+#include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <tbb/info.h>
@@ -21,6 +22,8 @@ namespace {
 
 std::optional<Scene> loadOrFail(const std::string& name, int& code) {
     try {
+        // A scene file through loadScene: a 2D one is refused there with its line.
+        if (isModelPath(name)) return std::get<Scene>(loadInput(name));
         return loadScene(name);
     } catch (const SceneError& e) {
         code = fail(e.what());
@@ -33,7 +36,10 @@ std::optional<Scene> loadOrFail(const std::string& name, int& code) {
 void addCompareCommand(CLI::App& app, CompareArgs& a) {
     CLI::App* cmd = app.add_subcommand(
         "compare", "Midpoint against median against SAH on one scene: build and trace each");
-    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option(
+        "scene", a.scene,
+        "Built-in scene name, scene file, or model (.obj .ply .stl .gltf .glb, with the "
+        "scene render puts around it; default: default)");
     a.accel.accel = "kdtree";
     addAccelOptions(cmd, a.accel);
     cmd->add_option("--width", a.width, "Image width of the rays traced")
@@ -50,6 +56,7 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
 }
 
 int runCompare(const CompareArgs& a) {
+    setCurrentInput(a.scene);
     AccelChoice base;
     if (auto problem = resolveAccel(a.accel, base)) return fail(*problem);
     if (base.kind != AccelKind::KdTree && base.kind != AccelKind::Bvh)
@@ -62,7 +69,7 @@ int runCompare(const CompareArgs& a) {
     opt.width = a.width;
     opt.height = a.height;
     opt.trace.bounces = a.bounces.value_or(scene->settings.bounces);
-    opt.threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+    opt.threads = threadCount(a.threads);
 
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
 
 using namespace raystep::cli;
@@ -84,6 +85,12 @@ int main(int argc, char** argv) {
             code = runRender(renderArgs);
     } catch (const std::filesystem::filesystem_error& e) {
         return fail(e.path1().string() + ": " + e.code().message());
+    } catch (const std::bad_alloc&) {
+        // A scene or model at the caps can need more memory than the computer has.
+        const std::string& input = currentInput();
+        return fail((input.empty() ? std::string() : input + ": ") +
+                    "out of memory: the scene and the options ask for more than this computer "
+                    "can give (fewer triangles, a smaller image or fewer samples?)");
     } catch (const std::exception& e) {
         return fail(e.what());
     }

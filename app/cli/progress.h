@@ -9,14 +9,16 @@ class ProgressBar {
   public:
     explicit ProgressBar(std::string label);
     ~ProgressBar();
-    /// Redraws when the shown percentage changes; always returns true (never cancels).
+    /// Redraws when the shown percentage changes (to 0.01% below 10%, so a render of hours
+    /// moves), or a second has passed; always returns true (never cancels).
     bool update(double fraction);
     void finish();
 
   private:
     std::string label_;
     bool enabled_;
-    int lastPercent_ = -1;
+    long lastShown_ = -1;  // in hundredths of a percent
+    std::chrono::steady_clock::time_point lastDrawn_;
     bool finished_ = false;
     std::chrono::steady_clock::time_point start_;
 };

@@ -57,6 +57,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
 }
 
 int runRender(const RenderArgs& a) {
+    setCurrentInput(a.scene);
     const std::string output =
         a.output.empty() ? std::filesystem::path(a.scene).stem().string() + ".png" : a.output;
     if (!hasExtension(output, ".png"))
@@ -82,7 +83,7 @@ int runRender(const RenderArgs& a) {
                                      {"--heatmap", a.heatmap},
                                      {"--save-scene", a.saveScene},
                                      {"--save-scene (its mesh)", meshPath}},
-                                    {a.scene}))
+                                    inputsOf(a.scene)))
         return fail(*problem);
     // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says otherwise.
     AccelArgs accelArgs = a.accel;
@@ -94,7 +95,8 @@ int runRender(const RenderArgs& a) {
 
     Scene scene;
     try {
-        scene = model ? importModelScene(a.scene) : loadScene(a.scene);
+        // A scene file through loadScene: a 2D one is refused there with its line.
+        scene = model ? std::get<Scene>(loadInput(a.scene)) : loadScene(a.scene);
     } catch (const SceneError& e) {
         return fail(e.what());
     }
@@ -106,9 +108,27 @@ int runRender(const RenderArgs& a) {
     opt.spp = a.spp.value_or(scene.settings.spp);
     opt.trace.bounces = a.bounces.value_or(scene.settings.bounces);
     opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene.settings.diffuseSamples);
-    opt.threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+    opt.threads = threadCount(a.threads);
     opt.seed = a.seed;
     opt.trace.rayOffset = *offset;
+
+    // Every cap allows a render of years (8192^2 pixels x 4096 samples x 1024 diffuse rays): its
+    // size said before it starts, in rays and in time at a brisk pace. Ctrl+C stops it.
+    const double rays = double(opt.width) * opt.height * opt.spp * (1.0 + opt.trace.diffuseSamples);
+    if (rays > 1e11) {
+        const double seconds = rays / 1e7;
+        char when[64];
+        if (seconds < 86400 * 2)
+            std::snprintf(when, sizeof when, "%.0f hours", seconds / 3600);
+        else
+            std::snprintf(when, sizeof when, "%.0f days", seconds / 86400);
+        std::fprintf(stderr,
+                     "raystep-cli: warning: %s asks for about %.2g camera and diffuse rays (%dx%d "
+                     "pixels, %d samples, %d diffuse rays each): at 10 million rays a second, %s "
+                     "(Ctrl+C stops it)\n",
+                     scene.name.c_str(), rays, opt.width, opt.height, opt.spp,
+                     opt.trace.diffuseSamples, when);
+    }
 
     std::optional<Accelerator> accel;
     {

@@ -5,6 +5,7 @@
 
 #include "raystep/geometry/kernels.h"
 #include "raystep/render/tracer.h"
+#include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/trace_io.h"
 
@@ -20,7 +21,11 @@ namespace raystep::cli {
 void addTraceCommand(CLI::App& app, TraceArgs& a) {
     CLI::App* cmd =
         app.add_subcommand("trace", "Record every event of one pixel's ray tree to a trace file");
-    cmd->add_option("scene", a.scene, "Built-in scene name or scene file (default: default)");
+    cmd->add_option(
+        "scene", a.scene,
+        "Built-in scene name, scene file, or model (.obj .ply .stl .gltf .glb, with the "
+        "scene render puts around it, traced with a kd-tree unless --accel says; "
+        "default: default)");
     cmd->add_option("--pixel", a.pixel, "3D scenes: the pixel X,Y (0,0 is the top left)");
     cmd->add_option("--ray", a.ray,
                     "2D scenes: the ray OX,OY,DX,DY (default: the scene's example ray)");
@@ -40,6 +45,7 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
         ->transform(wholeNumber(0, UINT64_MAX))
         ->capture_default_str();
     addAccelOptions(cmd, a.accel);
+    a.accelOption = cmd->get_option("--accel");
     addMaxEventsOption(cmd, a.maxEvents);
 }
 
@@ -87,12 +93,18 @@ int trace2D(const TraceArgs& a, const AccelChoice& choice, const Scene2D& scene)
 }  // namespace
 
 int runTrace(const TraceArgs& a) {
+    setCurrentInput(a.scene);
     AccelChoice choice;
-    if (auto problem = resolveAccel(a.accel, choice)) return fail(*problem);
-    if (auto problem = checkOutputs({{"-o", a.output}}, {a.scene})) return fail(*problem);
+    // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says otherwise
+    // (as render does; brute force would record a test of every triangle).
+    AccelArgs accelArgs = a.accel;
+    if (isModelPath(a.scene) && !(a.accelOption && a.accelOption->count() > 0))
+        accelArgs.accel = "kdtree";
+    if (auto problem = resolveAccel(accelArgs, choice)) return fail(*problem);
+    if (auto problem = checkOutputs({{"-o", a.output}}, inputsOf(a.scene))) return fail(*problem);
     std::variant<Scene, Scene2D> any;
     try {
-        any = loadAnyScene(a.scene);
+        any = loadInput(a.scene);
     } catch (const SceneError& e) {
         return fail(e.what());
     }

@@ -15,6 +15,7 @@ namespace raystep::cli {
 struct TraceArgs {
     std::string scene = "default";
     AccelArgs accel;
+    const CLI::Option* accelOption = nullptr;  // whether --accel was given (models: a tree)
     std::string pixel;
     std::string ray;
     std::string output;

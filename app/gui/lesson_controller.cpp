@@ -10,20 +10,20 @@
 #include "vtk_view.h"
 
 #include <QDate>
-#include <QDir>
 #include <QFile>
 #include <QFileDialog>
-#include <QFileInfo>
 #include <QInputDialog>
+#include <QLabel>
 #include <QLineEdit>
-#include <QLockFile>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace raystep::gui {
 
@@ -65,17 +65,25 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
       lesson_(panel),
       events_(events),
       view3D_(view3D) {
-    // The student's progress: one JSON file under the user's data folder, replaced atomically.
+    // The student's progress: one JSON file under the user's data folder, replaced atomically;
+    // one that cannot be read is kept aside, never written over (progress_store.h).
     progressPath_ =
         QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
-    try {
-        if (auto saved = loadProgressFile(progressPath_.toStdString()))
-            studentProgress_ = std::move(*saved);
-    } catch (const LessonError& e) {
-        // Keep the unreadable file aside rather than overwrite it at the next answer.
-        QFile::rename(progressPath_, progressPath_ + ".unreadable");
-        window_.statusBar()->showMessage(tr("Progress file unreadable, kept as %1: %2")
-                                             .arg(progressPath_ + ".unreadable", e.what()));
+    store_ = ProgressStore(progressPath_);
+    ProgressStore::Unreadable unreadable;
+    studentProgress_ = store_.open(unreadable);
+    saveNote_ = new QLabel;
+    saveNote_->setObjectName("progressNote");
+    saveNote_->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold"));
+    saveNote_->setWordWrap(false);
+    saveNote_->hide();
+    window_.statusBar()->addPermanentWidget(saveNote_);
+    if (!unreadable.why.isEmpty()) {
+        tellUnreadable(unreadable);
+        if (unreadable.keptAs.isEmpty())
+            showSaveProblem(tr("%1 could not be read and cannot be moved aside (%2); it is not "
+                               "written over")
+                                .arg(progressPath_, unreadable.moveProblem));
     }
 
     // The lesson panel asks; the controller moves the replay and saves the progress.
@@ -190,25 +198,66 @@ void LessonController::showLessonTrace() {
 }
 
 void LessonController::saveProgress() {
-    // Another window of the app may have saved since: fold its answers in under a lock, then
-    // write beside and rename (QSaveFile), so neither a crash nor a second window loses work.
-    QDir().mkpath(QFileInfo(progressPath_).absolutePath());
-    QLockFile lock(progressPath_ + ".lock");
-    if (!lock.tryLock(2000)) {
-        window_.statusBar()->showMessage(
-            tr("Cannot save the progress: %1 is locked").arg(progressPath_));
+    ProgressStore::Unreadable unreadable;
+    const QString why = store_.save(studentProgress_, unreadable);
+    if (!unreadable.why.isEmpty()) tellUnreadable(unreadable);
+    // Unsaved answers stay in memory; the next answer tries again, and quitting asks.
+    unsaved_ = !why.isEmpty();
+    showSaveProblem(why);
+}
+
+void LessonController::showSaveProblem(const QString& why) {
+    saveProblem_ = why;
+    if (why.isEmpty()) {
+        saveNote_->hide();
         return;
     }
-    try {
-        if (const auto saved = loadProgressFile(progressPath_.toStdString()))
-            mergeProgress(studentProgress_, *saved);
-    } catch (const LessonError&) {
-        // Unreadable now (it was read at start): replaced by what this window knows.
-    }
-    QSaveFile f(progressPath_);
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(QByteArray::fromStdString(progressToJson(studentProgress_))) < 0 || !f.commit())
-        window_.statusBar()->showMessage(tr("Cannot save the progress to %1").arg(progressPath_));
+    saveNote_->setText(tr("Progress not saved: %1").arg(why));
+    saveNote_->setToolTip(
+        tr("Your answers are kept while raystep is open; it tries to save them again at your "
+           "next answer, and asks before quitting."));
+    saveNote_->show();
+}
+
+void LessonController::tellUnreadable(const ProgressStore::Unreadable& u) {
+    const QString text =
+        u.keptAs.isEmpty()
+            ? tr("Your progress file could not be read:\n\n%1\n\nIt could not be moved aside "
+                 "either (%2), so raystep leaves it as it is and does not write over it. Your "
+                 "answers in this window are kept in memory only.")
+                  .arg(u.why, u.moveProblem)
+            : tr("Your progress file could not be read:\n\n%1\n\nIt was kept as %2 (nothing "
+                 "in it is lost); raystep starts a new progress file.")
+                  .arg(u.why, u.keptAs);
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Progress file unreadable"), text,
+                                QMessageBox::Ok, &window_);
+    box->setObjectName("progressUnreadable");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    // Once the window is up (at start the controller is made before it is shown).
+    QTimer::singleShot(0, box, [box] { box->open(); });
+}
+
+bool LessonController::allowClose() {
+    if (!unsaved_ || quitUnsaved_) return true;
+    saveProgress();  // one more try: the disk may have room now
+    if (!unsaved_) return true;
+    auto* box = new QMessageBox(
+        QMessageBox::Warning, tr("Progress not saved"),
+        tr("Your latest answers could not be saved: %1\n\nQuit anyway and lose them?")
+            .arg(saveProblem_),
+        QMessageBox::NoButton, &window_);
+    box->setObjectName("unsavedProgress");
+    QPushButton* quit = box->addButton(tr("Quit without saving"), QMessageBox::DestructiveRole);
+    QPushButton* stay = box->addButton(tr("Keep raystep open"), QMessageBox::RejectRole);
+    box->setDefaultButton(stay);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(box, &QMessageBox::finished, this, [this, box, quit] {
+        if (box->clickedButton() != quit) return;
+        quitUnsaved_ = true;
+        window_.close();
+    });
+    box->open();
+    return false;
 }
 
 void LessonController::exportProgressReport() {

@@ -2,6 +2,7 @@
 // The lesson controller: what the window does for the open lesson. It moves the replay to the
 // lesson's steps and exercises, keeps and saves the student's progress, runs the grid sweep, and
 // writes the lecture's help texts (texts/) into the lesson panel.
+#include "progress_store.h"
 #include "session.h"
 #include "task_runner.h"
 
@@ -13,6 +14,7 @@
 
 #include <optional>
 
+class QLabel;
 class QMainWindow;
 class QMenu;
 
@@ -54,6 +56,12 @@ class LessonController : public QObject {
     void setLessonsMenu(QMenu* menu);
     const Progress& studentProgress() const { return studentProgress_; }
     QString progressPath() const { return progressPath_; }
+    /// The last save failed: the answers since are in memory only (the note says so).
+    bool progressUnsaved() const { return unsaved_; }
+    /// The window may close: nothing is unsaved, or saving again worked, or the student chose
+    /// to quit without saving. Otherwise a question is opened (without a nested event loop)
+    /// and false returned; its "Quit without saving" closes the window.
+    bool allowClose();
     void exportProgressReport();
 
     /// "Back to the lesson": its own trace again, at the open exercise or the step shown.
@@ -78,6 +86,11 @@ class LessonController : public QObject {
     /// A lesson's steps and exercises are positions in its trace: replay it again if needed.
     void showLessonTrace();
     void saveProgress();
+    /// The student is told, in a dialog, that the progress file could not be read and where it
+    /// was kept (or that it could not be moved, and is left alone).
+    void tellUnreadable(const ProgressStore::Unreadable& u);
+    /// The persistent note in the status bar: the save's problem, or hidden when "".
+    void showSaveProblem(const QString& why);
     void runSweep();
     void fillLessonsMenu();
     /// The panel's text for a new replay: a note when it is not the lesson's trace, the SAH's
@@ -101,6 +114,11 @@ class LessonController : public QObject {
     Language lang_ = Language::En;
     Progress studentProgress_;
     QString progressPath_;
+    ProgressStore store_{QString()};
+    bool unsaved_ = false;        // the last save failed
+    bool quitUnsaved_ = false;    // the student chose to quit without saving
+    QLabel* saveNote_ = nullptr;  // the status bar's note while the progress is unsaved
+    QString saveProblem_;         // why the last save failed
 };
 
 }  // namespace raystep::gui

@@ -139,6 +139,11 @@ void MainWindow::createViews() {
         if (refusedWhileHeld(tr("trace a pixel's ray tree"))) return;
         // The camera, size and settings the image was made with: the pixel's ray is the one
         // drawn there.
+        if (const auto& f = imageFrame_; f && slowPixelTraces()) {
+            tracePixelHereOrInBackground(x, y, f->width, f->height, f->camera, f->trace);
+            clicked_ = Clicked{x, y, f->width, f->height};
+            return;
+        }
         if (const auto& f = imageFrame_) {
             session_.tracePixel(x, y, f->width, f->height, f->camera, f->trace);
             clicked_ = Clicked{x, y, f->width, f->height};
@@ -428,7 +433,7 @@ void MainWindow::showScene(SceneRef scene, bool renderImage) {
         else
             imageView_->clear(tr("This view shows no rendered image."));
         // A first ray to replay before any click: the image's centre.
-        session_.tracePixel(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
+        tracePixelHereOrInBackground(kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight);
     }
 }
 
@@ -575,6 +580,7 @@ void MainWindow::traceViewPoint(QPointF widgetPos) {
     TraceSettings settings;
     settings.bounces = bouncesBox_->value();
     settings.diffuseSamples = diffuseBox_->value();
+    if (slowPixelTraces()) return tracePixelHereOrInBackground(x, y, w, h, camera, settings);
     session_.tracePixel(x, y, w, h, camera, settings);
     session_.setCursor(session_.size());
     statusBar()->showMessage(
@@ -960,6 +966,11 @@ void MainWindow::exportTrace() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+    // Answers the last save could not write: asked about first (lesson_controller.h).
+    if (!lessons_->allowClose()) {
+        e->ignore();
+        return;
+    }
     saveLayout();
     // Stop and join every worker now, and start none after: the window is going away.
     runner_.shutdown();

@@ -212,6 +212,17 @@ class MainWindow : public QMainWindow {
     void showLiveBuild(const std::function<SceneRef()>& build);
     /// The structure chooser (a tool bar) and the status bar's structure (main_window_models.cpp).
     void createStructureControls();
+    /// Brute force on a scene so big that a pixel's trace takes more than a moment (every ray
+    /// tests every primitive): the pixel is traced in the background, its log capped.
+    bool slowPixelTraces() const;
+    /// Records pixel (x, y) of a w x h image (the scene's camera and settings unless given: a
+    /// click, replayed to its end) and replays it: here and now, or in the background when
+    /// slowPixelTraces().
+    void tracePixelHereOrInBackground(int x, int y, int w, int h,
+                                      const std::optional<Camera>& camera = std::nullopt,
+                                      const TraceSettings& settings = {});
+    /// The chooser's pick, once asked about where it needs asking (brute force on a big scene).
+    void buildChosenStructure(AccelKind kind, SplitMethod split);
     /// The chooser and the status bar say what the session's scene uses.
     void syncStructureControls();
     /// View > Reset layout, and the docks' smallest width (layout: window sizing and memory).

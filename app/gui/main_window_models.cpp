@@ -10,12 +10,14 @@
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
+#include "raystep/render/tracer.h"
 #include "raystep/scene/model_import.h"
 
 #include <QComboBox>
 #include <QFileDialog>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -38,6 +40,13 @@ QString splitName(SplitMethod split) {
 bool hasSplit(AccelKind kind) {
     return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
 }
+/// Past this many primitives brute force is asked about first and its pixel traces run in the
+/// background: a pixel's three rays then test 600,000 primitives or more (most of a second on
+/// a student's laptop), and its image takes minutes to hours.
+constexpr std::size_t kBruteForceAsk = 200'000;
+/// The events a pixel's trace keeps there: a million triangles by brute force recorded 3 million
+/// tests, whose replay and views took 10 GB and froze the window for 40 s.
+constexpr std::size_t kSlowPixelEventCap = 50'000;
 }  // namespace
 
 void MainWindow::createStructureControls() {
@@ -112,6 +121,91 @@ AccelOptions MainWindow::openOptions() const {
 }
 
 void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
+    const Scene* scene = session_.scene3D();
+    if (kind != AccelKind::BruteForce || !scene || session_.kind() == AccelKind::BruteForce ||
+        scene->primitiveCount() <= kBruteForceAsk)
+        return buildChosenStructure(kind, split);
+    // Asked first, without a nested event loop: the answer builds it, or keeps what is there.
+    const std::size_t n = scene->primitiveCount();
+    auto* box = new QMessageBox(
+        QMessageBox::Warning, tr("Brute force on %1 primitives?").arg(n),
+        tr("Brute force tests every ray against each of the %1 primitives: a pixel's trace "
+           "records %2 tests or more, and the image takes a very long time (Cancel stops "
+           "it). A grid, a kd-tree or a BVH tests a few dozen.")
+            .arg(n)
+            .arg(3 * n),
+        QMessageBox::NoButton, this);
+    box->setObjectName("bruteForceQuestion");
+    QPushButton* go = box->addButton(tr("Use brute force"), QMessageBox::AcceptRole);
+    QPushButton* keep = box->addButton(tr("Keep the %1").arg(structureName(session_.kind())),
+                                       QMessageBox::RejectRole);
+    box->setDefaultButton(keep);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(box, &QMessageBox::finished, this, [this, box, go, kind, split] {
+        if (box->clickedButton() == go) {
+            buildChosenStructure(kind, split);
+            return;
+        }
+        syncStructureControls();  // back to what the scene uses
+        statusBar()->showMessage(tr("Brute force not built: the structure stays as it was"));
+        emit structureChanged(false, tr("brute force not chosen"));
+    });
+    box->open();
+}
+
+bool MainWindow::slowPixelTraces() const {
+    const Scene* scene = session_.scene3D();
+    return scene && session_.kind() == AccelKind::BruteForce &&
+           scene->primitiveCount() > kBruteForceAsk;
+}
+
+void MainWindow::tracePixelHereOrInBackground(int x, int y, int w, int h,
+                                              const std::optional<Camera>& camera,
+                                              const TraceSettings& settings) {
+    if (!slowPixelTraces()) {
+        if (camera)
+            session_.tracePixel(x, y, w, h, *camera, settings);
+        else
+            session_.tracePixel(x, y, w, h);
+        return;
+    }
+    const std::uint64_t generation = generation_;
+    const std::size_t n = session_.scene3D()->primitiveCount();
+    runner_.start<LogRef>(
+        TaskKind::Pixel,
+        tr("Tracing pixel (%1, %2) by brute force, %3 primitives...").arg(x).arg(y).arg(n),
+        [ref = session_.sceneRef(), x, y, w, h, camera, settings](const ProgressFn&) {
+            auto log = std::make_shared<EventLog>(kSlowPixelEventCap);
+            const Scene& s = std::get<Scene>(ref->scene);
+            if (camera)
+                tracePixelEvents(s, *ref->accel3D, *camera, settings, x, y, w, h, *log);
+            else
+                tracePixelEvents(s, *ref->accel3D, x, y, w, h, *log);
+            return LogRef(std::move(log));
+        },
+        [this, generation, x, y, clicked = camera.has_value()](LogRef&& log,
+                                                               const TaskOutcome& outcome) {
+            // A newer pixel, or another scene: this trace is of no use now.
+            if (outcome.superseded || generation != generation_ || !outcome.ok() || !log) return;
+            session_.showLog(log, LogKind::Pixel);
+            // A click replays its pixel to the end, as a click does; the first pixel from 0.
+            if (clicked) session_.setCursor(session_.size());
+            statusBar()->showMessage(
+                log->truncated()
+                    ? tr("Pixel (%1, %2): the first %3 events recorded, %4 more left out "
+                         "(brute force tests every primitive)")
+                          .arg(x)
+                          .arg(y)
+                          .arg(log->events().size())
+                          .arg(log->dropped())
+                    : tr("Pixel (%1, %2): %3 events recorded")
+                          .arg(x)
+                          .arg(y)
+                          .arg(log->events().size()));
+        });
+}
+
+void MainWindow::buildChosenStructure(AccelKind kind, SplitMethod split) {
     chosenStructure_ = {kind, split};
     splitBox_->setEnabled(hasSplit(kind));
     AccelOptions options = session_.options();
@@ -188,8 +282,15 @@ QString MainWindow::saveModelScene(const QString& path) {
         return tr("%1: the scene is written as a scene file; name it *.json").arg(path);
     const std::string meshName = json.stem().string() + ".mesh.obj";
     const std::string mesh = (json.parent_path() / meshName).string();
-    if (sameFile(mesh, session_.name()) || sameFile(json.string(), session_.name()))
-        return tr("%1: it would write over the model itself").arg(path);
+    // Nor any file the model refers to (a glTF's buffer, an OBJ's .mtl or texture).
+    for (const std::string& input : inputFilesOf(session_.name()))
+        for (const std::string& out : {mesh, json.string()})
+            if (std::error_code ec;
+                std::filesystem::is_regular_file(input, ec) && sameFile(out, input))
+                return input == session_.name()
+                           ? tr("%1: it would write over the model itself").arg(path)
+                           : tr("%1: it would write over %2, which the model refers to")
+                                 .arg(QString::fromStdString(out), QString::fromStdString(input));
     try {
         const SceneFiles files = sceneFilesFor(*scene, scene->triangles.size() - 2, meshName);
         writeFilesAtomic({{json.string(), files.sceneJson}, {mesh, files.meshObj}});

@@ -22,7 +22,8 @@ void buildIn(LoadedScene& l, const AccelOptions& options) {
 SceneRef Session::prepare(const std::string& nameOrPath, AccelKind kind,
                           const AccelOptions& options) {
     auto l = std::make_shared<LoadedScene>();
-    l->scene = loadAnySceneOrModel(nameOrPath);
+    // A model's import reports to the task's progress, and is killed by its cancel.
+    l->scene = loadAnySceneOrModel(nameOrPath, options.kdtree.progress);
     l->name = nameOrPath;
     l->kind = kind;
     l->options = options;

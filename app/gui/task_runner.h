@@ -27,7 +27,8 @@ namespace raystep::gui {
 /// What a task does. A new task of a kind supersedes the running one of that kind (a second
 /// lesson picked while the first loads, a render of the new scene while the old one renders).
 /// Structure: the open scene's structure built again as the user chose it (the chooser).
-enum class TaskKind { Scene, Render, Build, Compare, Sweep, Structure };
+/// Pixel: a pixel's trace that takes more than a moment (brute force on a big scene).
+enum class TaskKind { Scene, Render, Build, Compare, Sweep, Structure, Pixel };
 
 /// How a task ended, as its `done` sees it.
 struct TaskOutcome {

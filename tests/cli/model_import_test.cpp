@@ -126,8 +126,8 @@ TEST_F(ModelCli, BadModelsAreOneLineAndExitTwo) {
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"missing.obj", "no such file"},
         {"empty.stl", "empty"},
-        {"truncated.stl", "cannot import the model"},
-        {"garbage.ply", "cannot import the model"},
+        {"truncated.stl", "header says 3 triangles, which take 234 bytes"},
+        {"garbage.ply", "not a PLY file"},
         {"nan_vertex.obj", "not a finite number"},
         {"nan_vertex.ply", "not a finite number"},
         {"no_triangles.obj", "no triangles"},

@@ -159,9 +159,10 @@ void expectRefused(const std::string& path, const std::string& why) {
 TEST(ModelImport, BadFilesAreOneLineNamingTheFile) {
     expectRefused(kModels + "missing.obj", "no such file");
     expectRefused(kModels + "empty.stl", "empty");
-    expectRefused(kModels + "truncated.stl", "cannot import the model");
-    expectRefused(kModels + "garbage.ply", "cannot import the model");
-    expectRefused(kModels + "nan_vertex.obj", "vertex 2: a coordinate is not a finite number");
+    // truncated.stl: 3 triangles need 84 + 3 x 50 = 234 bytes; the file keeps 134.
+    expectRefused(kModels + "truncated.stl", "header says 3 triangles, which take 234 bytes");
+    expectRefused(kModels + "garbage.ply", "not a PLY file");
+    expectRefused(kModels + "nan_vertex.obj", ":3: vertex coordinate 'nan' is not a finite number");
     expectRefused(kModels + "nan_vertex.ply", "not a finite number");
     expectRefused(kModels + "no_triangles.obj", "no triangles");
     expectRefused(kModels + "pyramid.json", "not a model file");
@@ -201,6 +202,102 @@ TEST(ModelImport, FoldersAndFifosAreRefusedWithoutWaiting) {
     expectRefused((dir / "pipe.stl").string(), "not a regular file");
     expectRefused((dir / "external.gltf").string(), "external.bin': not a regular file");
     fs::remove_all(dir);
+}
+
+// The importer process and its limits (model_process.h), through importModel's options.
+class ImporterProcess : public ::testing::Test {
+  protected:
+    fs::path dir = fs::temp_directory_path() /
+                   ("raystep-importer-" + std::to_string(getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+    /// A script standing in for the importer.
+    std::string script(const std::string& body) {
+        const fs::path p = dir / "importer";
+        std::ofstream(p) << "#!/bin/sh\n" << body << "\n";
+        fs::permissions(p, fs::perms::owner_all);
+        return p.string();
+    }
+};
+
+// The clock: an importer that never answers is killed at the limit, and the error says so.
+TEST_F(ImporterProcess, TheWallClockLimitEndsAnImporterThatNeverAnswers) {
+    ImportOptions o;
+    o.importer = script("exec sleep 600");
+    o.limits.wallSeconds = 1;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        importModel(kModels + "tetra.ply", o);
+        ADD_FAILURE() << "imported";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("took longer than 1 s"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+}
+
+// A cancel (the progress answering false) kills it within a fifth of a second.
+TEST_F(ImporterProcess, ACancelKillsTheImporterAtOnce) {
+    ImportOptions o;
+    o.importer = script("exec sleep 600");
+    const auto start = std::chrono::steady_clock::now();
+    o.progress = [&](double) {
+        return std::chrono::steady_clock::now() - start < std::chrono::milliseconds(300);
+    };
+    EXPECT_THROW(importModel(kModels + "tetra.ply", o), BuildCancelled);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(600));
+}
+
+// Memory: the real importer under 64 MB of address space, given a 300,000-triangle binary STL
+// (15 MB; assimp's vertices and normals alone take 21 MB more): out of its memory, said with
+// the limit. (AddressSanitizer reserves terabytes: no address-space limit there.)
+TEST_F(ImporterProcess, TheMemoryLimitIsNamed) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "no RLIMIT_AS under AddressSanitizer";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    GTEST_SKIP() << "no RLIMIT_AS under AddressSanitizer";
+#endif
+#endif
+    const std::uint32_t n = 300000;
+    std::string stl(80, '\0');
+    stl.append(reinterpret_cast<const char*>(&n), 4).append(std::size_t(50) * n, '\0');
+    std::ofstream(dir / "zeros.stl", std::ios::binary) << stl;
+    ImportOptions o;
+    o.limits.memoryBytes = std::uint64_t(64) << 20;
+    try {
+        importModel((dir / "zeros.stl").string(), o);
+        ADD_FAILURE() << "imported";
+    } catch (const SceneError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("needs more memory than the importer's limit of 64 MB"),
+            std::string::npos)
+            << e.what();
+    }
+    // Within the default limits the same file is read: its triangles are all degenerate.
+    try {
+        importModel((dir / "zeros.stl").string());
+        ADD_FAILURE() << "imported";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("no triangles of non-zero area (300000 degenerate"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// The in-process import (the importer's work, the fuzz target's) and the isolated one agree.
+TEST(ModelImport, InProcessAndIsolatedGiveTheSameTriangles) {
+    for (const char* file : {"pyramid.obj", "tetra.ply", "wedge_binary.stl", "quad.glb"}) {
+        SCOPED_TRACE(file);
+        const ImportedModel a = importModel(kModels + file),
+                            b = importModelInProcess(kModels + file);
+        ASSERT_EQ(a.triangles.size(), b.triangles.size());
+        for (std::size_t i = 0; i < a.triangles.size(); ++i) {
+            EXPECT_EQ(a.triangles[i].a, b.triangles[i].a);
+            EXPECT_EQ(a.triangles[i].c, b.triangles[i].c);
+        }
+    }
 }
 
 }  // namespace

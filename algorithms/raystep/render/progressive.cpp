@@ -118,8 +118,17 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
                                       if (stop) return;
                                       const int y = row * b;
                                       RayCounters rowCounters;
-                                      for (int x = 0; x < w; x += b)
+                                      for (int x = 0; x < w; x += b) {
+                                          // A row can take seconds (brute force on a million
+                                          // triangles): a cancel is looked at every pixel.
+                                          if (stop) return;
                                           if (traced(x, y)) sample(x, y, from, to, rowCounters);
+                                          if (progress && progressMutex.try_lock()) {
+                                              if (!progress((rowsDone + double(x) / w) / rows))
+                                                  stop = true;
+                                              progressMutex.unlock();
+                                          }
+                                      }
                                       {
                                           const std::lock_guard lock(totalsMutex);
                                           counters_ += rowCounters;

@@ -2,12 +2,18 @@
 
 #include "raystep/base/json_reader.h"
 #include "raystep/geometry/kernels.h"
+#include "raystep/render/image.h"
+#include "raystep/scene/model_checks.h"
+#include "raystep/scene/resources.h"
 
+#include <assimp/BaseImporter.h>
+#include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
@@ -18,6 +24,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -30,16 +37,18 @@ namespace {
 
 // Same caps as a scene's OBJ mesh (scene_loader.cpp): a model is a mesh by another name.
 constexpr std::size_t kMaxModelBytes = detail::kMaxObjFileBytes;
-constexpr std::uint64_t kMaxModelTriangles = 10'000'000;
+using detail::kMaxGltfNodes;
+using detail::kMaxModelPointsAndLines;
+using detail::kMaxModelTriangles;
 
-/// A file's bytes held in memory, as assimp reads them.
+/// A file's bytes held in memory, as assimp reads them (shared: the model's are read once).
 class StringStream : public Assimp::IOStream {
   public:
-    explicit StringStream(std::string bytes) : bytes_(std::move(bytes)) {}
+    explicit StringStream(std::shared_ptr<const std::string> bytes) : bytes_(std::move(bytes)) {}
     size_t Read(void* buffer, size_t size, size_t count) override {
         if (size == 0) return 0;
-        const size_t n = std::min(count, (bytes_.size() - pos_) / size);
-        std::memcpy(buffer, bytes_.data() + pos_, n * size);
+        const size_t n = std::min(count, (bytes_->size() - pos_) / size);
+        std::memcpy(buffer, bytes_->data() + pos_, n * size);
         pos_ += n * size;
         return n;
     }
@@ -51,113 +60,46 @@ class StringStream : public Assimp::IOStream {
         } else if (origin == aiOrigin_CUR) {
             to = pos_ + offset;
         } else {
-            if (offset > bytes_.size()) return aiReturn_FAILURE;
-            to = bytes_.size() - offset;
+            if (offset > bytes_->size()) return aiReturn_FAILURE;
+            to = bytes_->size() - offset;
         }
-        if (to > bytes_.size()) return aiReturn_FAILURE;
+        if (to > bytes_->size()) return aiReturn_FAILURE;
         pos_ = to;
         return aiReturn_SUCCESS;
     }
     size_t Tell() const override { return pos_; }
-    size_t FileSize() const override { return bytes_.size(); }
+    size_t FileSize() const override { return bytes_->size(); }
     void Flush() override {}
 
   private:
-    std::string bytes_;
+    std::shared_ptr<const std::string> bytes_;
     size_t pos_ = 0;
 };
 
-/// A PLY header's element counts must fit what follows it (ASCII: one value a property, a list
-/// at least its count; binary: the types' sizes). Assimp reserves memory for what a header
-/// declares and looks for every element: 200 bytes declaring 3 million vertices took 0.5 s and
-/// 48 MB, then an assert aborted (300 million: 50 s and 3.5 GB); 100,000 vertices declared over
-/// 700 KB of blanks took 22 s. The problem in words, or nullopt.
-std::optional<std::string> plyHeaderProblem(std::string_view bytes) {
-    const std::size_t end = bytes.find("end_header");
-    if (bytes.substr(0, 3) != "ply" || end == std::string_view::npos) return std::nullopt;
-    const std::size_t body = bytes.find('\n', end);
-    const std::uint64_t bodyBytes = body == std::string_view::npos ? 0 : bytes.size() - body - 1;
-    const auto typeSize = [](std::string_view t) -> std::uint64_t {
-        if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-        if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-        if (t == "double" || t == "float64") return 8;
-        return 4;
-    };
-    bool ascii = true;
-    struct Element {
-        std::string name;
-        std::uint64_t count = 0, minBytes = 0;
-    };
-    std::vector<Element> elements;
-    std::size_t pos = 0;
-    while (pos < end) {
-        std::size_t eol = bytes.find('\n', pos);
-        if (eol == std::string_view::npos || eol > end) eol = end;
-        std::vector<std::string_view> words;
-        for (std::size_t i = pos; i < eol;) {
-            while (i < eol && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r')) ++i;
-            const std::size_t from = i;
-            while (i < eol && bytes[i] != ' ' && bytes[i] != '\t' && bytes[i] != '\r') ++i;
-            if (i > from) words.push_back(bytes.substr(from, i - from));
-        }
-        pos = eol + 1;
-        if (words.size() >= 2 && words[0] == "format") ascii = words[1] == "ascii";
-        if (words.size() >= 3 && words[0] == "element") {
-            Element e{std::string(words[1]), 0, 0};
-            const auto [p, ec] =
-                std::from_chars(words[2].data(), words[2].data() + words[2].size(), e.count);
-            if (ec != std::errc()) e.count = std::numeric_limits<std::uint64_t>::max();
-            elements.push_back(e);
-        }
-        if (words.size() >= 3 && words[0] == "property" && !elements.empty())
-            // ASCII: one value; binary: the type's size (a list: its count's).
-            elements.back().minBytes +=
-                ascii ? 1 : typeSize(words[1] == "list" && words.size() >= 4 ? words[2] : words[1]);
-    }
-    // ASCII: the values (blank-separated words) after the header; binary: its bytes.
-    std::uint64_t available = bodyBytes;
-    if (ascii) {
-        available = 0;
-        bool inWord = false;
-        for (std::size_t i = bytes.size() - bodyBytes; i < bytes.size(); ++i) {
-            const bool blank = std::isspace(static_cast<unsigned char>(bytes[i])) != 0;
-            available += !blank && !inWord;
-            inWord = !blank;
-        }
-    }
-    std::uint64_t needed = 0;
-    for (const Element& e : elements) {
-        const std::uint64_t each = std::max<std::uint64_t>(e.minBytes, 1);
-        if (e.count > (available - std::min(needed, available)) / each)
-            return "the PLY header declares " + std::to_string(e.count) + " '" +
-                   printable(e.name, 24) + "' elements, more than the " +
-                   std::to_string(available) + (ascii ? " values" : " bytes") +
-                   " after it can hold";
-        needed += e.count * each;
-    }
-    return std::nullopt;
-}
-
-/// Every file assimp opens (the model, a glTF's .bin, an OBJ's .mtl) goes through the core's
-/// checked reader: a FIFO or device is refused before it is opened (no hang), size is capped,
-/// nothing is written. The first refusal is kept, to name that file in the error.
+/// Every file assimp opens goes through here: the model itself (its bytes, already read and
+/// checked by model_checks.h) and the glTF buffers the checks listed, each read through the
+/// core's checked reader (regular files only, size capped), nothing else (an OBJ's .mtl is never
+/// given: raystep ignores a model's materials, and assimp's MTL parser crashed on a texture
+/// statement before any newmtl). The first refusal of a listed file is kept to name it.
 class CheckedIOSystem : public Assimp::IOSystem {
   public:
-    bool Exists(const char* file) const override {
-        struct stat st {};
-        return ::stat(file, &st) == 0;
-    }
+    CheckedIOSystem(const detail::ModelFiles& files, std::string model,
+                    std::shared_ptr<const std::string> bytes, std::vector<std::string> buffers)
+        : files_(files),
+          model_(std::move(model)),
+          bytes_(std::move(bytes)),
+          buffers_(std::move(buffers)) {}
+    bool Exists(const char* file) const override { return allowed(file); }
     char getOsSeparator() const override { return '/'; }
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         if (std::strchr(mode, 'w') || std::strchr(mode, 'a') || std::strchr(mode, '+'))
             return nullptr;
+        if (!allowed(file)) return nullptr;
+        // The model: the very bytes checked (assimp opens it more than once).
+        if (files_.same(file, model_)) return new StringStream(bytes_);
         try {
-            std::string bytes = detail::readRegularFile(file, kMaxModelBytes);
-            if (const auto problem = plyHeaderProblem(bytes)) {
-                if (!failure) failure = {file, *problem};
-                return nullptr;
-            }
-            return new StringStream(std::move(bytes));
+            return new StringStream(
+                std::make_shared<const std::string>(files_.read(file, kMaxModelBytes)));
         } catch (const detail::ReadFailure& f) {
             if (!failure) failure = {file, f.what()};
             return nullptr;
@@ -166,6 +108,35 @@ class CheckedIOSystem : public Assimp::IOSystem {
     void Close(Assimp::IOStream* stream) override { delete stream; }
 
     std::optional<std::pair<std::string, std::string>> failure;  // the file, why
+
+  private:
+    bool allowed(const char* file) const {
+        if (files_.same(file, model_)) return true;
+        return std::any_of(buffers_.begin(), buffers_.end(),
+                           [&](const std::string& b) { return files_.same(file, b); });
+    }
+    const detail::ModelFiles& files_;
+    std::string model_;
+    std::shared_ptr<const std::string> bytes_;
+    std::vector<std::string> buffers_;
+};
+
+/// assimp's progress (coarse: the file read, then each step) as a share of the import's.
+class ForwardedProgress : public Assimp::ProgressHandler {
+  public:
+    ForwardedProgress(const ProgressFn& fn, double from, double to)
+        : fn_(fn), from_(from), to_(to) {}
+    bool Update(float percentage) override {
+        if (!fn_ || percentage < 0) return !cancelled;
+        if (!fn_(from_ + (to_ - from_) * std::clamp(double(percentage), 0.0, 1.0)))
+            cancelled = true;
+        return !cancelled;
+    }
+    bool cancelled = false;
+
+  private:
+    const ProgressFn& fn_;
+    double from_, to_;
 };
 
 bool hasSuffix(std::string_view s, std::string_view suffix) {
@@ -222,90 +193,174 @@ bool isModelPath(std::string_view path) {
                        [&](const std::string& e) { return hasSuffix(path, e); });
 }
 
-ImportedModel importModel(const std::string& path) {
+namespace detail {
+
+ModelFiles diskFiles() {
+    ModelFiles files;
+    files.read = [](const std::string& path, std::size_t maxBytes) {
+        return readRegularFile(path, maxBytes);
+    };
+    files.size = [](const std::string& path) -> std::uint64_t {
+        struct stat st {};
+        if (::stat(path.c_str(), &st) != 0) throwReadFailure(errno);
+        requireRegular(st, kMaxModelBytes);
+        return static_cast<std::uint64_t>(st.st_size);
+    };
+    files.same = [](const std::string& a, const std::string& b) { return sameFile(a, b); };
+    return files;
+}
+
+void importModelTriangles(const std::string& path, const ModelFiles& files,
+                          const std::function<void(const Triangle&)>& sink,
+                          std::uint64_t& droppedDegenerate, const ProgressFn& progress,
+                          const std::function<void(std::uint64_t)>& bound) {
     const auto fail = [&](const std::string& message) { failModel(path, message); };
+    const auto report = [&](double f) {
+        if (progress && !progress(f)) throw BuildCancelled();
+    };
     if (!isModelPath(path)) fail("not a model file (expected .obj, .ply, .stl, .gltf or .glb)");
-    // The model itself: refused here by name before assimp looks (a FIFO would block its open).
-    struct stat st {};
+    // The model itself: refused by name before anything looks (a FIFO would block its open).
+    std::shared_ptr<const std::string> bytes;
     try {
-        if (::stat(path.c_str(), &st) != 0) detail::throwReadFailure(errno);
-        detail::requireRegular(st, kMaxModelBytes);
-    } catch (const detail::ReadFailure& f) {
+        bytes = std::make_shared<const std::string>(files.read(path, kMaxModelBytes));
+    } catch (const ReadFailure& f) {
         fail(std::string("cannot read the model: ") + f.what());
     }
-    if (st.st_size == 0) fail("the model file is empty");
+    if (bytes->empty()) fail("the model file is empty");
+    report(0.02);
+    const ModelChecked checked = checkModelBytes(path, *bytes, files.size);
+    report(0.1);
 
     Assimp::Importer importer;  // no DefaultLogger is created: assimp's NullLogger stays quiet
-    auto* io = new CheckedIOSystem;
+    // The one reader of the extension: assimp would otherwise pick one by the content too (a .obj
+    // holding a PLY header would reach the PLY parser unchecked).
+    // (glTF: the 2.0 reader, not the 1.0 one, which claims the same extensions.)
+    std::string ext = std::filesystem::path(path).extension().string().substr(1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    Assimp::BaseImporter* kept = nullptr;
+    for (std::size_t i = 0; i < importer.GetImporterCount() && !kept; ++i) {
+        const aiImporterDesc* info = importer.GetImporterInfo(i);
+        if (!info || !info->mFileExtensions) continue;
+        const std::string list = std::string(" ") + info->mFileExtensions + " ";
+        const bool gltf2 =
+            std::string(info->mName ? info->mName : "").find("glTF2") != std::string::npos;
+        if (list.find(" " + ext + " ") != std::string::npos &&
+            ((ext != "gltf" && ext != "glb") || gltf2))
+            kept = importer.GetImporter(i);
+    }
+    if (!kept) fail("assimp has no reader for ." + ext);
+    std::vector<Assimp::BaseImporter*> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i)
+        if (importer.GetImporter(i) != kept) others.push_back(importer.GetImporter(i));
+    for (Assimp::BaseImporter* other : others) {
+        importer.UnregisterLoader(other);
+        delete other;  // unregistered, the importer no longer owns it
+    }
+    auto* io = new CheckedIOSystem(files, path, bytes, checked.buffers);
     importer.SetIOHandler(io);  // the importer owns it
+    auto* forwarded = new ForwardedProgress(progress, 0.1, 0.6);
+    importer.SetProgressHandler(forwarded);  // and this
     const aiScene* ai = nullptr;
     try {
         ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
     } catch (const std::exception& e) {
         fail(std::string("cannot import the model: ") + e.what());
     }
+    if (forwarded->cancelled) throw BuildCancelled();
     // A file assimp could not open (the model changed under us, a glTF buffer that is a FIFO).
     if (!ai && io->failure)
-        fail(io->failure->first == path
+        fail(files.same(io->failure->first, path)
                  ? io->failure->second
                  : "cannot read '" + printable(io->failure->first) + "': " + io->failure->second);
     if (!ai) {
         std::string why = importer.GetErrorString();
+        // Out of the importer's memory (its limit): said so by the importer program.
+        if (why.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
         while (!why.empty() && (why.back() == '\n' || why.back() == '.')) why.pop_back();
         fail("cannot import the model: " + (why.empty() ? std::string("unknown error") : why));
     }
     if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) fail("the model is incomplete (no geometry)");
 
-    ImportedModel model;
     // The node tree, walked without recursion; every instance of a mesh with its transform.
+    struct Instance {
+        const aiMesh* mesh;
+        unsigned index;
+        aiMatrix4x4 xf;
+    };
+    std::vector<Instance> instances;
     std::vector<std::pair<const aiNode*, aiMatrix4x4>> stack;
     if (ai->mRootNode) stack.emplace_back(ai->mRootNode, ai->mRootNode->mTransformation);
-    std::uint64_t nodes = 0;
+    std::uint64_t nodes = 0, faces = 0;
     while (!stack.empty()) {
         const auto [node, xf] = stack.back();
         stack.pop_back();
-        if (++nodes > 1'000'000) fail("more than a million nodes in the model's node tree");
+        if (++nodes > kMaxGltfNodes) fail("more than a million nodes in the model's node tree");
         for (unsigned c = 0; c < node->mNumChildren; ++c)
             if (node->mChildren[c])
                 stack.emplace_back(node->mChildren[c], xf * node->mChildren[c]->mTransformation);
         for (unsigned k = 0; k < node->mNumMeshes; ++k) {
             const unsigned mi = node->mMeshes[k];
             if (mi >= ai->mNumMeshes || !ai->mMeshes[mi]) fail("a node refers to a missing mesh");
-            const aiMesh& mesh = *ai->mMeshes[mi];
+            instances.push_back({ai->mMeshes[mi], mi, xf});
+            // Points, lines and zero-area triangles cost the walk too.
+            faces += ai->mMeshes[mi]->mNumFaces;
+            if (faces > kMaxModelTriangles + kMaxModelPointsAndLines)
+                fail("the model's nodes place more than " +
+                     std::to_string(kMaxModelTriangles + kMaxModelPointsAndLines) +
+                     " faces, lines and points");
+        }
+    }
+    if (bound) bound(std::min<std::uint64_t>(faces, kMaxModelTriangles));
+    // Each mesh's vertices are checked once, however many nodes place it.
+    std::vector<bool> checkedMesh(ai->mNumMeshes, false);
+    std::uint64_t walked = 0, found = 0;
+    for (const Instance& in : instances) {
+        const aiMesh& mesh = *in.mesh;
+        if (!checkedMesh[in.index]) {
+            checkedMesh[in.index] = true;
             for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
                 const aiVector3D& p = mesh.mVertices[v];
                 if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                    fail(meshName(mesh, mi) + ", vertex " + std::to_string(v) +
+                    fail(meshName(mesh, in.index) + ", vertex " + std::to_string(v) +
                          ": a coordinate is not a finite number");
             }
-            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-                const aiFace& face = mesh.mFaces[f];
-                if (face.mNumIndices != 3) continue;  // points and lines: no surface
-                std::array<Vec3, 3> p;
-                for (int i = 0; i < 3; ++i) {
-                    const unsigned index = face.mIndices[i];
-                    if (index >= mesh.mNumVertices)
-                        fail(meshName(mesh, mi) + ", face " + std::to_string(f) +
-                             ": vertex index " + std::to_string(index) + " is out of range (" +
-                             std::to_string(mesh.mNumVertices) + " vertices)");
-                    p[i] = transformed(xf, mesh.mVertices[index]);
-                    if (!isFinite(p[i]))
-                        fail(meshName(mesh, mi) + ", face " + std::to_string(f) +
-                             ": the node's transform makes a vertex overflow");
-                }
-                const Triangle t{p[0], p[1], p[2], 0};
-                if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0) {
-                    ++model.droppedDegenerateTriangles;
-                    continue;
-                }
-                if (model.triangles.size() >= kMaxModelTriangles)
-                    fail("more than " + std::to_string(kMaxModelTriangles) +
-                         " triangles, the most raystep reads from one model");
-                model.triangles.push_back(t);
-                for (const Vec3& q : p) model.bounds.extend(q);
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            if ((++walked & 0xffff) == 0) report(0.6 + 0.4 * double(walked) / double(faces));
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines: no surface
+            std::array<Vec3, 3> p;
+            for (int i = 0; i < 3; ++i) {
+                const unsigned index = face.mIndices[i];
+                if (index >= mesh.mNumVertices)
+                    fail(meshName(mesh, in.index) + ", face " + std::to_string(f) +
+                         ": vertex index " + std::to_string(index) + " is out of range (" +
+                         std::to_string(mesh.mNumVertices) + " vertices)");
+                p[i] = transformed(in.xf, mesh.mVertices[index]);
+                if (!isFinite(p[i]))
+                    fail(meshName(mesh, in.index) + ", face " + std::to_string(f) +
+                         ": the node's transform makes a vertex overflow");
             }
+            const Triangle t{p[0], p[1], p[2], 0};
+            if (glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0) {
+                ++droppedDegenerate;
+                continue;
+            }
+            if (++found > kMaxModelTriangles)
+                fail("more than " + std::to_string(kMaxModelTriangles) +
+                     " triangles, the most raystep reads from one model");
+            sink(t);
         }
     }
+    report(1.0);
+}
+
+void checkImportedModel(const std::string& path, const ImportedModel& model) {
+    const auto fail = [&](const std::string& message) { failModel(path, message); };
+    if (model.triangles.size() > kMaxModelTriangles)
+        fail("more than " + std::to_string(kMaxModelTriangles) +
+             " triangles, the most raystep reads from one model");
     if (model.triangles.empty())
         fail(model.droppedDegenerateTriangles > 0
                  ? "the model has no triangles of non-zero area (" +
@@ -320,6 +375,23 @@ ImportedModel importModel(const std::string& path) {
     }
     if (const auto problem = primitiveRangeProblem(Precision::Double, reach, size)) fail(*problem);
     if (const auto problem = kernelRangeProblem(Precision::Double, reach)) fail(*problem);
+}
+
+}  // namespace detail
+
+ImportedModel importModelInProcess(const std::string& path, const ProgressFn& progress) {
+    ImportedModel model;
+    detail::importModelTriangles(
+        path, detail::diskFiles(),
+        [&](const Triangle& t) {
+            model.triangles.push_back(t);
+            model.bounds.extend(t.a);
+            model.bounds.extend(t.b);
+            model.bounds.extend(t.c);
+        },
+        model.droppedDegenerateTriangles, progress,
+        [&](std::uint64_t bound) { model.triangles.reserve(bound); });
+    detail::checkImportedModel(path, model);
     return model;
 }
 
@@ -390,8 +462,8 @@ Scene sceneAroundModel(const ImportedModel& model, const std::string& name) {
     return scene;
 }
 
-Scene importModelScene(const std::string& path) {
-    return sceneAroundModel(importModel(path), path);
+Scene importModelScene(const std::string& path, const ImportOptions& options) {
+    return sceneAroundModel(importModel(path, options), path);
 }
 
 namespace {
@@ -514,9 +586,41 @@ SceneFiles sceneFilesFor(const Scene& scene, std::size_t meshTriangles,
     return out;
 }
 
-std::variant<Scene, Scene2D> loadAnySceneOrModel(const std::string& nameOrPath) {
-    if (isModelPath(nameOrPath)) return importModelScene(nameOrPath);
+std::variant<Scene, Scene2D> loadAnySceneOrModel(const std::string& nameOrPath,
+                                                 const ProgressFn& progress) {
+    if (isModelPath(nameOrPath)) {
+        ImportOptions options;
+        options.progress = progress;
+        return importModelScene(nameOrPath, options);
+    }
     return loadAnyScene(nameOrPath);
+}
+
+std::vector<std::string> inputFilesOf(const std::string& nameOrPath) {
+    std::vector<std::string> files;
+    try {
+        if (embeddedFile(nameOrPath + ".json")) return files;  // a built-in scene
+        files.push_back(nameOrPath);
+        if (isModelPath(nameOrPath)) {
+            const std::string bytes = detail::readRegularFile(nameOrPath, kMaxModelBytes);
+            for (std::string& f : detail::modelReferences(nameOrPath, bytes))
+                files.push_back(std::move(f));
+            return files;
+        }
+        // A scene file: its meshes, beside it.
+        const std::string text = detail::readRegularFile(nameOrPath, detail::kMaxJsonFileBytes);
+        if (JsonLineMap::tooDeepLine(text)) return files;
+        const auto root = nlohmann::json::parse(text, nullptr, false, true);
+        if (!root.is_object() || !root.contains("objects") || !root["objects"].is_array())
+            return files;
+        const std::filesystem::path folder = std::filesystem::path(nameOrPath).parent_path();
+        for (const auto& o : root["objects"])
+            if (o.is_object() && o.contains("file") && o["file"].is_string())
+                files.push_back((folder / o["file"].get<std::string>()).string());
+    } catch (const std::exception&) {
+        // Unreadable: the command's own read says why.
+    }
+    return files;
 }
 
 }  // namespace raystep

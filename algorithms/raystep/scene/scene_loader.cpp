@@ -1,14 +1,16 @@
 #include "raystep/scene/scene_loader.h"
 
-#include "raystep/base/json_reader.h"
 #include "raystep/base/json_lines.h"
+#include "raystep/base/json_reader.h"
 #include "raystep/geometry/kernels.h"
+#include "raystep/scene/obj_text.h"
 #include "raystep/scene/resources.h"
 
 #include <tiny_obj_loader.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -19,7 +21,11 @@
 namespace raystep {
 
 using detail::ifPresent;
+using detail::isObjInteger;
+using detail::isObjNumber;
 using detail::joinNames;
+using detail::kMaxFaceVertices;
+using detail::objFields;
 using nlohmann::json;
 using Reader = detail::JsonReader<SceneError>;
 
@@ -128,53 +134,6 @@ struct ObjProblem {
     std::string message;
 };
 
-/// A whole number as tinyobjloader's parseTriple reads one with atoi: [+-]digits.
-bool isObjInteger(std::string_view s) {
-    if (!s.empty() && (s[0] == '+' || s[0] == '-')) s.remove_prefix(1);
-    return !s.empty() &&
-           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// A number in the grammar tinyobjloader's tryParseDouble reads ([+-] digits [. digits] [e[+-]
-/// digits], or [+-] . digits ...), taken whole, so strtod and tinyobjloader agree on what it is
-/// (tinyobjloader would read "0x10" as 0 and "nan" or "abc" as 0).
-bool isObjNumber(std::string_view s) {
-    std::size_t i = 0;
-    const auto digits = [&] {
-        const std::size_t from = i;
-        while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
-        return i > from;
-    };
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    bool mantissa = digits();
-    if (i < s.size() && s[i] == '.') {
-        ++i;
-        mantissa = digits() || mantissa;
-    }
-    if (!mantissa) return false;
-    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-        ++i;
-        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-        if (!digits()) return false;
-    }
-    return i == s.size();
-}
-
-/// The blank- or tab-separated fields of a statement, up to a '#' comment.
-std::vector<std::string_view> objFields(std::string_view rest) {
-    std::vector<std::string_view> fields;
-    std::size_t i = 0;
-    while (i < rest.size()) {
-        while (i < rest.size() && (rest[i] == ' ' || rest[i] == '\t')) ++i;
-        if (i >= rest.size() || rest[i] == '#') break;
-        const std::size_t from = i;
-        while (i < rest.size() && rest[i] != ' ' && rest[i] != '\t') ++i;
-        fields.push_back(rest.substr(from, i - from));
-    }
-    return fields;
-}
-
-constexpr std::size_t kMaxFaceVertices = 256;  // tinyobjloader's ear clipping is cubic in it
 // "f 1 2 3" is 8 bytes of file and over 200 of memory (tinyobjloader's face and indices, the
 // triangle): 10M such lines took 2.3 GB and 10 s to load; 256 MB of them would take 7 GB.
 constexpr std::uint64_t kMaxObjTriangles = 10'000'000;
@@ -249,17 +208,8 @@ std::string checkedObj(std::string_view text, std::vector<int>& vertexLines) {
         out += 'f';
         for (const std::string_view f : fields) {
             // i, i/j, i//k or i/j/k: only the vertex index i is used.
-            const std::size_t slash = f.find('/');
-            const std::string_view v = f.substr(0, slash);
-            bool ok = isObjInteger(v);
-            if (ok && slash != std::string_view::npos) {
-                const std::string_view rest = f.substr(slash + 1);
-                const std::size_t slash2 = rest.find('/');
-                const std::string_view vt = rest.substr(0, slash2);
-                ok = (vt.empty() ? slash2 != std::string_view::npos : isObjInteger(vt)) &&
-                     (slash2 == std::string_view::npos || isObjInteger(rest.substr(slash2 + 1)));
-            }
-            if (!ok)
+            std::string_view v, vt, vn;
+            if (!detail::splitObjCorner(f, v, vt, vn))
                 throw ObjProblem{lineNo, "face vertex '" + printable(f, 24) +
                                              "' is not an index (i, i/j, i//k or i/j/k)"};
             std::int64_t index = 0;
@@ -695,6 +645,31 @@ Scene loadBuiltinScene(const std::string& name) {
     return scene;
 }
 
+std::string_view sceneOrModelTypes() {
+    return "(.json, .obj, .ply, .stl, .gltf, .glb)";
+}
+
+std::optional<std::string> unreadableTypeProblem(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    // No extension: a scene file named without one (or a built-in scene's name) is read as JSON.
+    if (ext.empty() || ext == ".json") return std::nullopt;
+    for (const char* model : {".obj", ".ply", ".stl", ".gltf", ".glb"})
+        if (ext == model)
+            return std::string(
+                "a model file: render, build, trace and compare read models, and the app; a "
+                "lesson's or a command's scene here is a scene file (.json)");
+    return "not a scene or model raystep reads " + std::string(sceneOrModelTypes());
+}
+
+namespace {
+/// A scene path whose extension says it is no scene file: refused by its type, not as bad JSON.
+void requireSceneType(const std::string& path) {
+    if (auto problem = unreadableTypeProblem(path)) throw SceneError(path, 0, "", *problem);
+}
+}  // namespace
+
 std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath) {
     if (const auto text = embeddedFile(nameOrPath + ".json")) {
         if (!isScene2DText(*text)) return loadBuiltinScene(nameOrPath);
@@ -702,6 +677,7 @@ std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath) {
         s.name = nameOrPath;
         return s;
     }
+    requireSceneType(nameOrPath);
     const std::string text = readSceneFile(nameOrPath, true);
     if (isScene2DText(text)) return loadScene2DText(text, nameOrPath);
     return loadSceneText(text, nameOrPath, filesBeside(nameOrPath));
@@ -709,6 +685,7 @@ std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath) {
 
 Scene loadScene(const std::string& nameOrPath) {
     if (embeddedFile(nameOrPath + ".json")) return loadBuiltinScene(nameOrPath);
+    requireSceneType(nameOrPath);
     return loadSceneText(readSceneFile(nameOrPath, true), nameOrPath, filesBeside(nameOrPath));
 }
 

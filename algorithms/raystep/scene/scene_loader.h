@@ -44,7 +44,14 @@ std::vector<std::string> builtinScene2DNames();
 bool isScene2DText(std::string_view text);
 /// Parses a 2D scene (docs/scene-format.md, "2D scenes").
 Scene2D loadScene2DText(std::string_view text, const std::string& fileName);
-/// A built-in name or a file, 3D or 2D.
+/// A built-in name or a file, 3D or 2D. A file whose extension is neither .json nor none is
+/// refused by its type (a model's: "a model file ...", any other: "not a scene or model ...").
 std::variant<Scene, Scene2D> loadAnyScene(const std::string& nameOrPath);
+
+/// The file types raystep opens, for messages: "(.json, .obj, .ply, .stl, .gltf, .glb)".
+std::string_view sceneOrModelTypes();
+/// Why a path's extension is no scene file's (a model, or a type raystep does not read), or
+/// nullopt for .json and a name without one.
+std::optional<std::string> unreadableTypeProblem(const std::string& path);
 
 }  // namespace raystep

@@ -79,22 +79,45 @@ void applyEvent(ReplayState& s, const Event& event) {
         event);
 }
 
+namespace {
+/// What a copy of a state holds, roughly, in bytes.
+std::size_t bytesOf(const ReplayState& s) {
+    const auto v = [](const auto& vec) { return vec.size() * sizeof(vec[0]); };
+    return sizeof s + v(s.visitedCells) + v(s.tests) + v(s.mailboxSkips) + v(s.nodesEntered) +
+           v(s.nodesSkipped) + v(s.candidates) + v(s.terms);
+}
+}  // namespace
+
 Replay::Replay(const EventLog& log) : log_(&log) {
-    // One pass keeps a state every kCheckpointEvery events (and the state at 0).
+    // One pass keeps a state every every_ events (and the state at 0); past the byte budget
+    // every other checkpoint goes and the spacing doubles, so memory stays bounded.
     ReplayState s;
     checkpoints_.push_back(s);
+    std::size_t bytes = bytesOf(s);
     const auto& events = log.events();
     for (std::size_t i = 0; i < events.size(); ++i) {
         applyEvent(s, events[i]);
-        if (s.cursor % kCheckpointEvery == 0) checkpoints_.push_back(s);
+        if (s.cursor % every_ != 0) continue;
+        checkpoints_.push_back(s);
+        bytes += bytesOf(s);
+        while (bytes > kCheckpointBytes && checkpoints_.size() > 2) {
+            std::vector<ReplayState> kept;
+            bytes = 0;
+            for (std::size_t k = 0; k < checkpoints_.size(); k += 2) {
+                bytes += bytesOf(checkpoints_[k]);
+                kept.push_back(std::move(checkpoints_[k]));
+            }
+            checkpoints_ = std::move(kept);
+            every_ *= 2;
+        }
     }
 }
 
 const ReplayState& Replay::seek(std::size_t cursor) {
     cursor = std::min(cursor, size());
     // Forward from where we are when that is near; otherwise from the checkpoint below.
-    if (cursor < state_.cursor || cursor - state_.cursor > kCheckpointEvery)
-        state_ = checkpoints_[cursor / kCheckpointEvery];
+    if (cursor < state_.cursor || cursor - state_.cursor > every_)
+        state_ = checkpoints_[std::min(cursor / every_, checkpoints_.size() - 1)];
     const auto& events = log_->events();
     while (state_.cursor < cursor) applyEvent(state_, events[state_.cursor]);
     return state_;

@@ -55,6 +55,10 @@ void applyEvent(ReplayState& state, const Event& event);
 class Replay {
   public:
     static constexpr std::size_t kCheckpointEvery = 4096;
+    /// Bytes all checkpoints may hold together: a ray's state grows with its tests (brute force
+    /// on a million triangles records millions), so a copy every few thousand events grew as
+    /// the square of the log (9.5 GB for 2.4 million events). Past it they are spaced wider.
+    static constexpr std::size_t kCheckpointBytes = std::size_t(64) << 20;
 
     explicit Replay(const EventLog& log);
 
@@ -70,7 +74,8 @@ class Replay {
 
   private:
     const EventLog* log_;
-    std::vector<ReplayState> checkpoints_;  // checkpoints_[i]: the state at i * kCheckpointEvery
+    std::vector<ReplayState> checkpoints_;  // checkpoints_[i]: the state at i * every_
+    std::size_t every_ = kCheckpointEvery;  // a power of two times kCheckpointEvery
     ReplayState state_;
 };
 
