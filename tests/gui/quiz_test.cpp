@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <QAbstractTextDocumentLayout>
 #include <QAction>
 #include <QApplication>
@@ -491,6 +493,17 @@ TEST(Presenting, TheCommandLineTakesOneMode) {
 // At 1366x768 the step's own text stays in sight when the exercise's hints and feedback grow
 // and the step has notes under it: the exercise box scrolls instead.
 TEST(Layout1366, TheStepTextStaysInSightWhenTheExerciseGrows) {
+    // The default layout at this size: a layout or zoom another test saved would be measured.
+    const auto forget = [] {
+        QSettings settings;
+        settings.remove("window");
+        settings.remove("presenter");
+    };
+    forget();
+    struct Forget {
+        std::function<void()> f;
+        ~Forget() { f(); }
+    } after{forget};
     QTemporaryDir dir;
     Window win(QSize(1326, 708));  // the window's size on a 1366x768 screen (fitToScreen)
     MainWindow& w = win.w;
@@ -541,10 +554,11 @@ void shot(MainWindow& w, const QString& name) {
     EXPECT_TRUE(w.grab().save(file)) << file.toStdString();
 }
 
-// Screenshots to look at (not a check): lesson 8 held, lesson 6 presenting, a lesson switch, a
-// later prompt waiting, lesson 6's step text beside a long feedback. Only with RAYSTEP_SHOT_DIR.
-TEST(Shots, WhatTheStudentAndTheLecturerSee) {
-    if (qgetenv("RAYSTEP_SHOT_DIR").isEmpty()) GTEST_SKIP() << "RAYSTEP_SHOT_DIR not set";
+// Screenshots to look at (a tool, not run by ctest): lesson 8 held, lesson 6 presenting, a lesson
+// switch, a later prompt waiting, lesson 6's step text beside a long feedback. Run with
+// RAYSTEP_SHOT_DIR set and --gtest_also_run_disabled_tests --gtest_filter=Shots.*.
+TEST(Shots, DISABLED_WhatTheStudentAndTheLecturerSee) {
+    ASSERT_FALSE(qgetenv("RAYSTEP_SHOT_DIR").isEmpty()) << "RAYSTEP_SHOT_DIR names a folder";
     forgetProgress();
     QSettings().remove("lessons/mode");
     MainWindow w;
