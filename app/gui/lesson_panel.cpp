@@ -317,6 +317,7 @@ void LessonPanel::showText(const QString& markdown) {
     exploring_ = exerciseOpen_ = false;
     heldNote_.clear();
     stepAnchor_ = -1;
+    clearSequence();
     freeText_ = markdown;
     text_->setMarkdown(markdown);
     wrapLongLines(text_);
@@ -626,7 +627,15 @@ void LessonPanel::updateWidgets() {
     }
 }
 
+void LessonPanel::clearSequence() {
+    // The cells a sequence answer clicked are drawn numbered on the grid: they go with it.
+    if (sequence_.isEmpty()) return;
+    sequence_.clear();
+    emit sequenceChanged(sequence_);
+}
+
 void LessonPanel::refreshExercise() {
+    clearSequence();
     if (lesson_.exercises.empty()) return;
     const Exercise& ex = lesson_.exercises[exercise_];
     // An exercise that waits for a held one shows nothing of itself: no prompt, hint or choice.
@@ -649,10 +658,6 @@ void LessonPanel::refreshExercise() {
     choiceBox_->hide();
     sweepPicker_->hide();
     clearButton_->hide();
-    if (!sequence_.isEmpty()) {
-        sequence_.clear();
-        emit sequenceChanged(sequence_);
-    }
     if (split && log_ && !waits) {
         // The candidates without their cost: computing it is the exercise.
         for (const SplitCandidate& c : splitCandidates(ex, *log_))
@@ -837,8 +842,13 @@ void LessonPanel::check() {
         return;
     }
     // The course's rule (recordAnswer): once solved, an answer is no attempt and is not kept.
-    const bool wasSolved = recordAnswer(*progress_, ex.id, typed.toStdString(), v.correct);
-    const LessonProgress::ExerciseRecord& rec = record(exercise_);
+    // Only a student's answers are the student's progress: the room's (presenting) and the
+    // lecturer's are not recorded, and a right one there reveals that exercise's answer.
+    const bool quiz = mode_ == LessonMode::Quiz;
+    const bool wasSolved =
+        quiz ? recordAnswer(*progress_, ex.id, typed.toStdString(), v.correct) : solved(exercise_);
+    const int attempts = quiz ? record(exercise_).attempts : 0;
+    if (!quiz && v.correct) revealed_ = true;
     feedback_->setProperty("correct", v.correct);
     // Right: why, from the trace. Wrong: try again; the explanation after three tries.
     if (v.correct) {
@@ -860,14 +870,14 @@ void LessonPanel::check() {
                 : q(v.slip);
         feedback_->setText(
             mode_ == LessonMode::Presenting ? tr("Not right yet. %1").arg(advice)
-            : rec.attempts >= 3 || mode_ == LessonMode::Lecturer
+            : attempts >= 3 || mode_ == LessonMode::Lecturer
                 ? tr("Not right. The answer is %1: %2").arg(q(v.expected), q(v.feedback))
-                : tr("Not right yet (try %1 of 3). %2").arg(rec.attempts).arg(advice));
+                : tr("Not right yet (try %1 of 3). %2").arg(attempts).arg(advice));
     }
     updateWidgets();
     exerciseScroll_->ensureWidgetVisible(feedback_);
-    emit answered(q(ex.id), v.correct, typed);
-    // Answered right: the replay may go past the exercise now.
+    if (quiz) emit answered(q(ex.id), v.correct, typed);
+    // Answered right: the replay may go past the exercise now (or the room's question ends).
     if (v.correct && !wasSolved) emit quizChanged();
 }
 

@@ -142,6 +142,8 @@ class LessonPanel : public QWidget {
   private:
     void refreshText();
     void refreshExercise();
+    /// Forgets a sequence answer's clicked cells (the 2D view draws them).
+    void clearSequence();
     void check();
     void hint();
     /// Whether the shown exercise's answer lies past where the replay is held.

@@ -195,6 +195,11 @@ void MainWindow::createDocks() {
             [this](const QString& id) { openLesson(id); });
     connect(lessons_, &LessonController::lessonRequested, this,
             [this](const QString& id) { openLesson(id); });
+    // The compare window replays whole traces: it closes when an exercise comes to hold the
+    // replay (a lesson opened, a mode changed), and with its scene (showScene).
+    connect(&session_, &Session::limitChanged, this, [this] {
+        if (compare_ && session_.held()) compare_->close();
+    });
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
     connect(lessons_, &LessonController::lessonSceneRequested, this,
             [this](SceneRef scene) { showScene(std::move(scene), !imageView_->isHidden()); });
@@ -303,21 +308,14 @@ void MainWindow::createActions() {
            "shown when you reveal it"));
     a.lecturer = mode(tr("&Lecturer mode (show answers)"), QKeySequence(Qt::CTRL | Qt::Key_L),
                       tr("Every step and view free, every answer shown"));
-    // The user's pick of quiz or presenting mode is remembered (not a mode set by a script or
-    // --present); lecturer mode never is: the next run, perhaps on a projector or a student's
-    // screen, does not start with every answer shown.
+    // Every run starts in quiz mode (--present or --lecturer say otherwise): a mode picked on a
+    // shared lab computer must not leave the next student's run without its holds.
     connect(modes, &QActionGroup::triggered, this, [this] {
-        const LessonMode m = actions_.presentMode->isChecked() ? LessonMode::Presenting
-                             : actions_.lecturer->isChecked()  ? LessonMode::Lecturer
-                                                               : LessonMode::Quiz;
-        if (m != LessonMode::Lecturer) QSettings().setValue("lessons/mode", static_cast<int>(m));
-        setLessonMode(m);
+        setLessonMode(actions_.presentMode->isChecked() ? LessonMode::Presenting
+                      : actions_.lecturer->isChecked()  ? LessonMode::Lecturer
+                                                        : LessonMode::Quiz);
     });
-    {
-        const int saved = QSettings().value("lessons/mode", 0).toInt();
-        setLessonMode(saved == static_cast<int>(LessonMode::Presenting) ? LessonMode::Presenting
-                                                                        : LessonMode::Quiz);
-    }
+    setLessonMode(LessonMode::Quiz);
     // The one way back after a pixel click, R or B: the lesson's trace, steps and exercises.
     a.backToLesson = action(tr("&Back to the lesson"), QKeySequence(Qt::Key_Escape),
                             [this] { lessons_->backToLesson(); });
@@ -418,6 +416,7 @@ void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet
 
 void MainWindow::showScene(SceneRef scene, bool renderImage) {
     ++generation_;
+    if (compare_) compare_->close();  // its trees are of the scene shown until now
     // What ran for the old scene is of no use now (and holds its own share of it meanwhile).
     runner_.cancel(TaskKind::Render);
     runner_.cancel(TaskKind::Build);
@@ -835,6 +834,8 @@ void MainWindow::openCompare() {
         },
         [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
+            // An exercise may have come to hold the replay while the trees were built.
+            if (refusedWhileHeld(tr("compare the midpoint, median and SAH trees"))) return;
             if (outcome.cancelled) {
                 statusBar()->showMessage(tr("Compare cancelled"));
                 return;

@@ -126,7 +126,9 @@ void Session::showLog(LogRef log, LogKind kind) {
 
 void Session::relive(SceneRef scene) {
     const Step at = step();
-    bool build = logKind_ == LogKind::Build;
+    // A lesson's trace that is a build is recorded again as a build, and so is any trace while
+    // such a lesson holds: a ray traced instead would draw the whole tree, the held answers.
+    bool build = logKind_ == LogKind::Build || holdsBuild();
     if (logKind_ == LogKind::Lesson)
         for (const Event& e : log_->events())
             if (std::holds_alternative<BuildNode>(e)) {
@@ -175,6 +177,13 @@ void Session::setHideAhead(bool on) {
     if (on == hideAhead_) return;
     hideAhead_ = on;
     emit shownChanged();
+}
+
+bool Session::holdsBuild() const {
+    if (!limit_ || !limitLog_) return false;
+    for (const Event& e : limitLog_->events())
+        if (std::holds_alternative<BuildNode>(e)) return true;
+    return false;
 }
 
 std::optional<std::size_t> Session::limit() const {

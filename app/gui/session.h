@@ -129,6 +129,9 @@ class Session : public QObject {
     void setLimit(const LogRef& log, std::optional<std::size_t> limit);
     /// Whether a lesson's trace is held (an exercise waits for its answer).
     bool held() const { return limit_.has_value(); }
+    /// Whether the held trace is a build: its answers are the tree's planes, which no view
+    /// draws whole while it holds.
+    bool holdsBuild() const;
     /// The limit on the log replayed now, if it has one that hides events (0 for a trace other
     /// than the held one).
     std::optional<std::size_t> limit() const;

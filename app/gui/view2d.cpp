@@ -115,6 +115,10 @@ View2D::View2D(Session& session, QWidget* parent) : QWidget(parent), session_(se
         layerDirty_ = true;
         indexBuild();
     });
+    connect(&session_, &Session::limitChanged, this, [this] {
+        layerDirty_ = true;  // the tree's planes are drawn or not with the hold
+        update();
+    });
     // Presenter mode: the labels' font (zoomed, larger), line widths and palette.
     const auto restyle = [this] {
         setFont(presentation().labelFont());
@@ -735,8 +739,10 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
             if (n.leaf()) return;
             const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
             const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
-            // A build's replay draws only the planes chosen so far (paintEvent), not the answer.
-            if (!session_.showingBuild()) lp.drawLine(toScreen(a), toScreen(b));
+            // A build's replay draws only the planes chosen so far (paintEvent), not the answer;
+            // nor does any trace while a held build's exercise asks for them.
+            if (!session_.showingBuild() && !session_.holdsBuild())
+                lp.drawLine(toScreen(a), toScreen(b));
         });
     }
     lp.setPen(QPen(ink.primitive, px(2.0)));

@@ -2,6 +2,7 @@
 // cells and tMax values of the board in the inspector, the views change as the cursor moves,
 // clicking a pixel records and replays its ray tree, and --screenshot writes the window.
 #include "compare_window.h"
+#include "gui_testing.h"
 #include "image_view.h"
 #include "lesson_panel.h"
 #include "main_window.h"
@@ -69,10 +70,6 @@ QImage grab(QWidget* w) {
 /// Opens a scene and waits for it (the window opens in the background); true if it opened.
 bool open(MainWindow& w, const QString& scene, AccelKind kind, bool render = true) {
     w.openScene(scene, kind, /*quiet=*/true, {}, render);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
-}
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
     return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
 }
 CompareWindow* compare(MainWindow& w) {

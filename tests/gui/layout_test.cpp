@@ -64,11 +64,6 @@ void start(MainWindow& w) {
     ASSERT_TRUE(waitFor([&] { return w.layoutSettled(); }));
 }
 
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
-}
-
 QList<QDockWidget*> docks(const MainWindow& w) {
     // The right column's docks; the board and the live controls, under the views, have their
     // own test (board_test.cpp, LayoutBoard).

@@ -3,6 +3,7 @@
 // lesson's pixel marked on the image, the slides' errata and the hints, the event filter, N
 // following the lesson, and the colours of the one palette.
 #include "event_list.h"
+#include "gui_testing.h"
 #include "image_view.h"
 #include "lesson_panel.h"
 #include "main_window.h"
@@ -52,11 +53,6 @@ void putAwayAll(LessonPanel* p) {
     }
 }
 
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
-}
-
 QImage grab(QWidget* w) {
     QApplication::processEvents();
     return w->grab().toImage();
@@ -97,13 +93,6 @@ struct Window {
 
 /// Writes a lesson file in `dir` (lessons of the test's own, so that the content helpers'
 /// edits of the built-in lessons do not change what these tests check).
-QString writeLesson(const QTemporaryDir& dir, const QString& name, const QByteArray& json) {
-    const QString path = dir.filePath(name);
-    QFile out(path);
-    EXPECT_TRUE(out.open(QIODevice::WriteOnly));
-    out.write(json);
-    return path;
-}
 
 /// The slides' 2D example: the lecture grid (unit cells) and the ray o = (0.4, 0.4),
 /// d = (1, 0.75), with mailboxing; a first step at the start, a last one at the end; two
@@ -645,12 +634,6 @@ QString lessonWithNewKinds(const QTemporaryDir& dir) {
     EXPECT_TRUE(out.open(QIODevice::WriteOnly));
     out.write(text);
     return path;
-}
-
-QPushButton* buttonNamed(QWidget* in, const QString& text) {
-    for (QPushButton* b : in->findChildren<QPushButton*>())
-        if (b->text() == text && b->isVisible()) return b;
-    return nullptr;
 }
 
 // A choice answered with its radio buttons: the chosen option's why, and no quiz limit of its

@@ -76,11 +76,6 @@ void showActive(MainWindow& w) {
     ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
 }
 
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
-}
-
 TEST_F(Presenter, ZoomKeysScaleTheAppFontAndTheNextWindowStartsAtTheRememberedZoom) {
     MainWindow w;
     showActive(w);

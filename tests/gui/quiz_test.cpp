@@ -7,6 +7,7 @@
 // expected are worked out by hand in the comments, not read from the code under test.
 #include "compare_window.h"
 #include "event_list.h"
+#include "gui_testing.h"
 #include "image_view.h"
 #include "lesson_panel.h"
 #include "live_controls.h"
@@ -50,11 +51,6 @@ void forgetProgress() {
                   "/progress.json");
 }
 
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
-}
-
 /// No answer from an earlier test: the progress file goes before the window reads it.
 struct NoProgress {
     NoProgress() { forgetProgress(); }
@@ -70,20 +66,6 @@ struct Window : NoProgress {
     }
     ~Window() { w.tasks().cancel(TaskKind::Render); }
 };
-
-QString writeLesson(const QTemporaryDir& dir, const QString& name, const QByteArray& json) {
-    const QString path = dir.filePath(name);
-    QFile out(path);
-    EXPECT_TRUE(out.open(QIODevice::WriteOnly));
-    out.write(json);
-    return path;
-}
-
-QPushButton* buttonNamed(QWidget* in, const QString& text) {
-    for (QPushButton* b : in->findChildren<QPushButton*>())
-        if (b->text() == text && b->isVisible()) return b;
-    return nullptr;
-}
 
 /// The lesson 8 ray of the slides' mailboxing frame, o = (1, 3.6), d = (1, 0.02), over the
 /// lecture grid with mailboxing; two count exercises from the start (as lesson 8 asks them).
@@ -233,8 +215,7 @@ TEST(Held, TheLiveControlsCountsWaitForTheExercises) {
     EXPECT_FALSE(held.contains("3 tests")) << held.toStdString();
     EXPECT_FALSE(held.contains("5 mailbox skips")) << held.toStdString();
     EXPECT_FALSE(held.contains("5 cells")) << held.toStdString();
-    EXPECT_TRUE(held.contains("counts wait for the exercise"))
-        << held.toStdString();
+    EXPECT_TRUE(held.contains("counts wait for the exercise")) << held.toStdString();
     EXPECT_EQ(w.eventList()->rowCount(), 0);  // both count from the start
     // Answered wrong, the counts still wait.
     p->selectExercise(0);
@@ -356,6 +337,29 @@ TEST(QuizPrompts, AnExerciseAfterAHeldOneWaits) {
     EXPECT_TRUE(p->submit("2,2"));
 }
 
+// A held build's answers are the tree's planes: a structure changed to a grid and back (the live
+// controls) records the build again, held at its exercise, not the example ray over a tree
+// drawn whole (which showed the root's SAH plane, the answer).
+TEST(Quiz, AHeldBuildIsRecordedAgainAfterAStructureRoundTrip) {
+    QTemporaryDir dir;
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "build.json", kBuildLesson)));
+    Session& s = w.session();
+    ASSERT_TRUE(s.held());
+    EXPECT_TRUE(s.holdsBuild());
+    const AccelOptions options = s.options();
+    w.applyStructure(AccelKind::Grid, options);
+    ASSERT_TRUE(w.waitUntilIdle());
+    ASSERT_EQ(s.kind(), AccelKind::Grid);
+    w.applyStructure(AccelKind::KdTree, options);
+    ASSERT_TRUE(w.waitUntilIdle());
+    ASSERT_EQ(s.kind(), AccelKind::KdTree);
+    EXPECT_EQ(s.logKind(), LogKind::Build);
+    EXPECT_TRUE(s.holdsBuild());
+    EXPECT_EQ(s.end(), 0u);  // nothing of it shown while the exercise holds
+}
+
 // A wrong answer's advice: while the replay is held before the answer it never says "step the
 // replay" (the replay cannot go there), nor for a compute or a choice; after the hold is lifted
 // (presenting mode) a trace exercise may.
@@ -370,7 +374,8 @@ TEST(QuizPrompts, TheRetryAdviceFitsTheExercise) {
     EXPECT_TRUE(p->feedback().startsWith("Not right yet (try 1 of 3)."))
         << p->feedback().toStdString();
     EXPECT_FALSE(p->feedback().contains("Step the replay")) << p->feedback().toStdString();
-    EXPECT_TRUE(p->feedback().contains("waits here until you answer")) << p->feedback().toStdString();
+    EXPECT_TRUE(p->feedback().contains("waits here until you answer"))
+        << p->feedback().toStdString();
     for (int i = 0; i < 2; ++i) {
         p->selectExercise(i);
         p->closeExercise();
@@ -391,9 +396,8 @@ TEST(QuizPrompts, TheRetryAdviceFitsTheExercise) {
 // Presenting mode, picked in the Lessons menu: every step and view free (End reaches the end,
 // the last step's text reads), compare (C) and the build's replay (B) work, the prompt is shown
 // as a question, wrong answers never show the answer, Show answer reveals that one exercise
-// only; the choice is remembered by the next window.
+// only; the choice is not remembered (the next window is in quiz mode).
 TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
-    QSettings().remove("lessons/mode");
     QTemporaryDir dir;
     {
         Window win;
@@ -448,7 +452,15 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         QTest::keyClick(&w, Qt::Key_C);
         ASSERT_TRUE(w.waitUntilIdle());
         EXPECT_NE(w.compareWindow(), nullptr);
-        if (w.compareWindow()) w.compareWindow()->close();
+        // Back in quiz mode an exercise holds the replay: the compare window (whole traces)
+        // closes. The room's answers were not the student's: the exercises still hold.
+        w.modeAction(LessonMode::Quiz)->trigger();
+        EXPECT_TRUE(waitFor([&] { return w.compareWindow() == nullptr; }));
+        EXPECT_TRUE(s.held());
+        const auto& lessons = w.studentProgress().lessons;
+        const auto quiz = lessons.find("quiz");
+        EXPECT_TRUE(quiz == lessons.end() || quiz->second.exercises.empty());
+        w.modeAction(LessonMode::Presenting)->trigger();
         // A lesson opened presenting: its first exercise waits closed until the lecturer asks
         // it (the views beside the step could hold its answer); Try it goes to its position.
         ASSERT_TRUE(openLesson(w, writeLesson(dir, "build.json", kBuildLesson)));
@@ -464,16 +476,17 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         EXPECT_EQ(s.logKind(), LogKind::Build);
         EXPECT_NE(s.logRef(), build);
     }
-    // Remembered, as the menu left it.
+    // Not remembered: the next window (a student's, on a shared lab computer) is in quiz mode;
+    // Presenting's key there presents, and pressed again goes back to quiz mode.
     {
         Window again;
+        EXPECT_EQ(again.w.lessonMode(), LessonMode::Quiz);
+        EXPECT_TRUE(again.w.modeAction(LessonMode::Quiz)->isChecked());
+        QTest::keyClick(&again.w, Qt::Key_L, Qt::ControlModifier | Qt::ShiftModifier);
         EXPECT_EQ(again.w.lessonMode(), LessonMode::Presenting);
-        EXPECT_TRUE(again.w.modeAction(LessonMode::Presenting)->isChecked());
-        // Its key pressed again goes back to quiz mode.
         QTest::keyClick(&again.w, Qt::Key_L, Qt::ControlModifier | Qt::ShiftModifier);
         EXPECT_EQ(again.w.lessonMode(), LessonMode::Quiz);
     }
-    QSettings().remove("lessons/mode");
 }
 
 // --present and --lecturer at start-up: one of them (both: one line, exit 2).
@@ -560,7 +573,6 @@ void shot(MainWindow& w, const QString& name) {
 TEST(Shots, DISABLED_WhatTheStudentAndTheLecturerSee) {
     ASSERT_FALSE(qgetenv("RAYSTEP_SHOT_DIR").isEmpty()) << "RAYSTEP_SHOT_DIR names a folder";
     forgetProgress();
-    QSettings().remove("lessons/mode");
     MainWindow w;
     w.sizeForScreen();
     w.show();

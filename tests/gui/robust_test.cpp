@@ -3,6 +3,7 @@
 // model is asked about first, bounded in memory and cancelled within a second; an unreadable
 // progress file is kept aside under a name of its own, and a save that fails says why, keeps
 // the answers and warns at quit.
+#include "gui_testing.h"
 #include "lesson_controller.h"
 #include "lesson_panel.h"
 #include "main_window.h"
@@ -112,11 +113,6 @@ void put(const QString& path, const QByteArray& bytes) {
     QFile f(path);
     ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
     f.write(bytes);
-}
-
-bool openLesson(MainWindow& w, const QString& lesson) {
-    w.openLesson(lesson, /*quiet=*/true);
-    return w.waitUntilIdle() && w.lastOpenOk().value_or(false);
 }
 
 QMessageBox* boxNamed(QWidget& w, const char* name) {
