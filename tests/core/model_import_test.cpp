@@ -300,5 +300,64 @@ TEST(ModelImport, InProcessAndIsolatedGiveTheSameTriangles) {
     }
 }
 
+// Review 27b: valid files the checks refused, and checks that cost too much.
+class ModelChecksReview : public ::testing::Test {
+  protected:
+    fs::path dir = fs::temp_directory_path() /
+                   ("raystep-checks-" + std::to_string(getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& bytes) {
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        return (dir / name).string();
+    }
+    template <typename T>
+    static void put(std::string& s, std::initializer_list<T> values) {
+        for (const T v : values) s.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+};
+
+// A sparse accessor's indices have their own componentType (Khronos' SimpleSparseAccessor uses
+// 5123, two bytes each): they were counted as four bytes, and a valid file was refused.
+TEST_F(ModelChecksReview, SparseAccessorIndicesAreSizedByTheirComponentType) {
+    for (const int type : {5121, 5123, 5125}) {
+        SCOPED_TRACE(type);
+        const std::size_t each = type == 5121 ? 1 : type == 5123 ? 2 : 4;
+        // A triangle (0,0,0) (1,0,0) (0,1,0); the sparse part moves vertex 1 to (5,0,0).
+        std::string bin;
+        put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});  // bytes 0..35
+        if (each == 1) put<std::uint8_t>(bin, {1});
+        if (each == 2) put<std::uint16_t>(bin, {1});
+        if (each == 4) put<std::uint32_t>(bin, {1});
+        bin.resize(40, '\0');
+        put<float>(bin, {5, 0, 0});  // bytes 40..51
+        write("sparse.bin", bin);
+        const std::string gltf = write(
+            "sparse.gltf",
+            R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "buffers": [{"uri": "sparse.bin", "byteLength": 52}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+                std::to_string(each) + R"(},
+                 {"buffer": 0, "byteOffset": 40, "byteLength": 12}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": )" +
+                std::to_string(type) + R"(},
+                           "values": {"bufferView": 2}}}]})");
+        const ImportedModel m = importModel(gltf);
+        ASSERT_EQ(m.triangles.size(), 1u);
+        expectBounds(m.bounds, {0, 0, 0}, {5, 1, 0});
+    }
+    // Signed or float indices are no sparse indices.
+    write("bad.gltf",
+          R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "sparse.bin", "byteLength": 52}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 4}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5122},
+                           "values": {"bufferView": 1}}}]})");
+    expectRefused((dir / "bad.gltf").string(), "sparse indices are unsigned: 5121, 5123 or 5125");
+}
+
 }  // namespace
 }  // namespace raystep

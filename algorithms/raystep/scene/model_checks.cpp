@@ -694,8 +694,8 @@ void checkObj(const std::string& file, std::string_view text) {
                                   : static_cast<std::uint64_t>(index) > count))
                         refuse(file, lineNo,
                                std::string(kinds[k]) + " index " + printable(part[k], 24) +
-                                   " is out of range (" + std::to_string(count) + " " +
-                                   plurals[k] + (negative ? " before this line)" : ")"));
+                                   " is out of range (" + std::to_string(count) + " " + plurals[k] +
+                                   (negative ? " before this line)" : ")"));
                 }
             }
             return;
@@ -978,7 +978,18 @@ class GltfCheck {
                     const std::uint64_t view = index(*it, pp, "bufferView", "bufferViews");
                     const std::uint64_t offset =
                         optWhole(*it, pp, "byteOffset", 0, viewBytes_[view]).value_or(0);
-                    const std::uint64_t each = std::string(part) == "values" ? size : 4;
+                    // The indices' own type: unsigned bytes, shorts or ints (5121, 5123, 5125).
+                    std::uint64_t each = size;
+                    if (std::string_view(part) == "indices") {
+                        const std::string cp = JsonLineMap::child(pp, "componentType");
+                        if (!it->contains("componentType"))
+                            r_.fail(pp, "sparse indices need their componentType");
+                        const std::uint64_t type = whole((*it)["componentType"], cp, 5121, 5125);
+                        if (type != 5121 && type != 5123 && type != 5125)
+                            r_.fail(cp, "sparse indices are unsigned: 5121, 5123 or 5125, got " +
+                                            std::to_string(type));
+                        each = type == 5121 ? 1 : type == 5123 ? 2 : 4;
+                    }
                     if (offset + n * each > viewBytes_[view])
                         r_.fail(pp, std::to_string(n) + " sparse elements do not fit buffer view " +
                                         std::to_string(view));
