@@ -359,5 +359,36 @@ TEST_F(ModelChecksReview, SparseAccessorIndicesAreSizedByTheirComponentType) {
     expectRefused((dir / "bad.gltf").string(), "sparse indices are unsigned: 5121, 5123 or 5125");
 }
 
+// A comment at the end of an OBJ statement: the checks counted its words as fields (a vertex of
+// 5 fields was refused), and assimp 5.2.5 read a face's comment as indices ("Invalid face
+// index") and a vertex comment's numbers as its colour. Both now read the statement only, as
+// the scene loader does; '#' inside a field ("3#x") is no comment, as there.
+TEST_F(ModelChecksReview, ObjStatementsMayEndWithAComment) {
+    const std::string obj = write("commented.obj",
+                                  "# a triangle\n"
+                                  "v 0 0 0 # origin\n"
+                                  "v 4 0 0 # 1 2 3\n"
+                                  "v 0 2 0\t#tab\n"
+                                  "vn 0 0 1 # up\n"
+                                  "vt 0 0 # 7 8\n"
+                                  "g part # the only one\n"
+                                  "f 1/1/1 2/1/1 3/1/1 # c\n"
+                                  "f 1 2 3 # 4 5 6\n"
+                                  "f 3 2 1 #\n");
+    for (const bool isolated : {true, false}) {
+        SCOPED_TRACE(isolated);
+        const ImportedModel m = isolated ? importModel(obj) : importModelInProcess(obj);
+        EXPECT_EQ(m.triangles.size(), 3u);
+        expectBounds(m.bounds, {0, 0, 0}, {4, 2, 0});
+    }
+    // The scene loader reads the same file the same way.
+    write("scene.json", R"({"objects": [{"type": "mesh", "file": "commented.obj"}]})");
+    EXPECT_EQ(loadSceneFile((dir / "scene.json").string()).triangles.size(), 3u);
+    write("inside.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0#x\nf 1 2 3\n");
+    expectRefused((dir / "inside.obj").string(), ":3: vertex coordinate '0#x' is not a finite");
+    write("face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 # 3\n");
+    expectRefused((dir / "face.obj").string(), ":4: a face needs at least 3 vertices");
+}
+
 }  // namespace
 }  // namespace raystep

@@ -606,8 +606,9 @@ void checkObj(const std::string& file, std::string_view text) {
         if (first == 'v' && line.size() >= 2 &&
             (objBlank(line[1]) || line[1] == 't' || line[1] == 'n')) {
             const int kind = objBlank(line[1]) ? 0 : line[1] == 't' ? 1 : 2;
-            // Every field: assimp counts the ones that begin with a digit or a sign, '#' aside.
-            const auto fields = words(line.substr(objBlank(line[1]) ? 1 : 2));
+            // Every field up to a '#' comment, as the scene loader reads them (assimp is given
+            // the line without its comment: blankObjComments).
+            const auto fields = objFields(line.substr(objBlank(line[1]) ? 1 : 2));
             const std::size_t n = fields.size();
             if (kind == 0 && n != 3 && n != 4 && n != 6)
                 refuse(file, lineNo,
@@ -647,7 +648,7 @@ void checkObj(const std::string& file, std::string_view text) {
                             : first == 'l' ? "a line"
                                            : "points") +
                            ")");
-            const auto fields = words(line.substr(1));
+            const auto fields = objFields(line.substr(1));
             if (first == 'f' && fields.size() < 3)
                 refuse(file, lineNo, "a face needs at least 3 vertices");
             if (fields.empty()) refuse(file, lineNo, "no vertices");
@@ -708,6 +709,24 @@ void checkObj(const std::string& file, std::string_view text) {
                            "of its own");
         }
     });
+}
+
+void blankObjComments(std::string& text) {
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = pos;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r' && text[end] != '\f')
+            ++end;
+        // A comment begins a field (after a blank), on a line that is no comment itself.
+        if (end > pos && text[pos] != '#')
+            for (std::size_t i = pos + 1; i < end; ++i)
+                if (text[i] == '#' && objBlank(text[i - 1])) {
+                    std::fill(text.begin() + std::ptrdiff_t(i), text.begin() + std::ptrdiff_t(end),
+                              ' ');
+                    break;
+                }
+        pos = end + 1;
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1278,11 +1297,12 @@ std::vector<std::string> modelReferences(const std::string& path, std::string_vi
             const std::string_view line = bytes.substr(pos, end - pos);
             pos = end + 1;
             if (!line.starts_with("mtllib")) continue;
-            const auto w = words(line.substr(6));
+            const auto w = objFields(line.substr(6));
             for (const auto name : w) add(name, folder);
             if (w.size() > 1) {
-                const std::size_t from = line.find_first_not_of(" \t", 6);
-                add(line.substr(from), folder);
+                const std::size_t from = w.front().data() - line.data();
+                add(line.substr(from, w.back().data() + w.back().size() - line.data() - from),
+                    folder);
             }
         }
         // The textures a library names (map_Kd tex.png ...: the last word of the statement).
