@@ -12,8 +12,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace raystep {
 namespace {
@@ -388,6 +390,25 @@ TEST_F(ModelChecksReview, ObjStatementsMayEndWithAComment) {
     expectRefused((dir / "inside.obj").string(), ":3: vertex coordinate '0#x' is not a finite");
     write("face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 # 3\n");
     expectRefused((dir / "face.obj").string(), ":4: a face needs at least 3 vertices");
+}
+
+// A glb's header length below 20 wrapped round in the check's 32-bit arithmetic (length - 20):
+// every JSON length passed. A header length below 28 is refused, the sums done in 64 bits.
+TEST_F(ModelChecksReview, AGlbHeaderLengthTooSmallIsRefusedNotWrappedRound) {
+    std::ifstream in(kModels + "quad.glb", std::ios::binary);
+    const std::string glb((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(glb.size(), 28u);
+    for (const std::uint32_t length : {0u, 12u, 19u, 27u}) {
+        SCOPED_TRACE(length);
+        std::string bad = glb;
+        std::memcpy(bad.data() + 8, &length, 4);
+        expectRefused(write("short.glb", bad), "the glb's header says " + std::to_string(length) +
+                                                   " bytes; a glb is at least 28");
+    }
+    expectRefused(write("tiny.glb", glb.substr(0, 24)), "a glb file is at least 28 bytes");
+    // The file as it was is read.
+    const ImportedModel m = importModel(write("whole.glb", glb));
+    EXPECT_EQ(m.triangles.size(), 2u);
 }
 
 }  // namespace

@@ -755,18 +755,27 @@ struct GlbParts {
 };
 
 GlbParts splitGlb(const std::string& file, std::string_view b) {
-    if (b.size() < 20)
+    // The smallest glb: its 12-byte header, the JSON chunk's 8-byte header, 8 bytes of JSON.
+    constexpr std::uint64_t kMinGlb = 28;
+    if (b.size() < kMinGlb)
         refuse(file, 0,
-               "a glb file is at least 20 bytes (its header and a chunk's), this one " +
+               "a glb file is at least 28 bytes (its header, its JSON chunk's header and the "
+               "JSON), this one " +
                    std::to_string(b.size()));
-    const std::uint32_t version = le32(b, 4), length = le32(b, 8);
+    // In 64 bits: a header length below 20 wrapped round in 32 (length - 20).
+    const std::uint64_t version = le32(b, 4), length = le32(b, 8);
     if (version != 2)
         refuse(file, 0, "glb version " + std::to_string(version) + ": raystep reads glTF 2.0");
+    if (length < kMinGlb)
+        refuse(file, 0,
+               "the glb's header says " + std::to_string(length) +
+                   " bytes; a glb is at least 28 (its header, its JSON chunk's header and the "
+                   "JSON)");
     if (length > b.size())
         refuse(file, 0,
                "the glb's header says " + std::to_string(length) + " bytes, the file has " +
                    std::to_string(b.size()));
-    const std::uint32_t jsonLength = le32(b, 12), jsonType = le32(b, 16);
+    const std::uint64_t jsonLength = le32(b, 12), jsonType = le32(b, 16);
     if (jsonType != kChunkJson) refuse(file, 0, "the glb's first chunk is not its JSON");
     if (jsonLength > length - 20)
         refuse(file, 0,
@@ -774,10 +783,10 @@ GlbParts splitGlb(const std::string& file, std::string_view b) {
                    std::to_string(length - 20) + " after its header");
     GlbParts parts;
     parts.json = b.substr(20, jsonLength);
-    std::uint64_t at = 20 + std::uint64_t(jsonLength);
+    std::uint64_t at = 20 + jsonLength;
     at = (at + 3) & ~std::uint64_t(3);  // chunks start on 4 bytes
     if (at + 8 <= length) {
-        const std::uint32_t binLength = le32(b, at), binType = le32(b, at + 4);
+        const std::uint64_t binLength = le32(b, at), binType = le32(b, at + 4);
         if (binType == kChunkBin) {
             if (binLength > length - at - 8)
                 refuse(file, 0,
