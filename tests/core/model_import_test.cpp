@@ -3,6 +3,7 @@
 // bunny, the scene made around a model and its scene file, and every kind of bad file.
 #include "raystep/scene/model_import.h"
 
+#include "raystep/scene/model_checks.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <assimp/material.h>
@@ -409,6 +410,34 @@ TEST_F(ModelChecksReview, AGlbHeaderLengthTooSmallIsRefusedNotWrappedRound) {
     // The file as it was is read.
     const ImportedModel m = importModel(write("whole.glb", glb));
     EXPECT_EQ(m.triangles.size(), 2u);
+}
+
+// The glTF check looked its tables over again at every index into them (every accessor walked
+// all the buffer views, every node all the meshes): 20,000 of each took minutes, past ctest's
+// timeout. Checked once, they are read in well under a second.
+TEST_F(ModelChecksReview, TwentyThousandAccessorsViewsMeshesAndNodesAreChecked) {
+    const int n = 20000;
+    std::string views, accessors, meshes, nodes, roots;
+    for (int i = 0; i < n; ++i) {
+        const std::string c = i ? "," : "", k = std::to_string(i);
+        views += c + R"({"buffer": 0, "byteOffset": )" + std::to_string(36 * i) +
+                 R"(, "byteLength": 36})";
+        accessors += c + R"({"bufferView": )" + k +
+                     R"(, "componentType": 5126, "count": 3, "type": "VEC3"})";
+        meshes += c + R"({"primitives": [{"attributes": {"POSITION": )" + k + "}}]}";
+        nodes += c + R"({"mesh": )" + k + "}";
+        roots += c + k;
+    }
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [)" +
+                             roots + R"(]}], "nodes": [)" + nodes + R"(], "meshes": [)" + meshes +
+                             R"(], "accessors": [)" + accessors + R"(], "bufferViews": [)" + views +
+                             R"(], "buffers": [{"uri": "big.bin", "byteLength": )" +
+                             std::to_string(36 * n) + "}]}";
+    const auto sizeOf = [&](const std::string&) { return std::uint64_t(36) * n; };
+    const detail::ModelChecked checked =
+        detail::checkModelBytes((dir / "many.gltf").string(), gltf, sizeOf);
+    ASSERT_EQ(checked.buffers.size(), 1u);
+    EXPECT_NE(checked.buffers[0].find("big.bin"), std::string::npos);
 }
 
 }  // namespace

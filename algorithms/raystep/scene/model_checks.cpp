@@ -840,6 +840,8 @@ class GltfCheck {
         static const Json empty = Json::array();
         const Json* j = member(root_, "", key);
         if (!j) return empty;
+        // Checked once: index() asks for its table at every reference (accessors x views).
+        if (!listed_.insert(key).second) return *j;
         if (!j->is_array()) r_.fail(key, "expected an array, got " + GltfReader::typeName(*j));
         for (std::size_t i = 0; i < j->size(); ++i)
             r_.requireObject((*j)[i], JsonLineMap::element(key, i));
@@ -1261,6 +1263,7 @@ class GltfCheck {
     std::vector<std::uint64_t> bufferBytes_, viewBytes_, viewStride_, counts_, componentTypes_;
     std::vector<int> components_;
     std::vector<MeshCost> meshCost_;
+    mutable std::set<std::string> listed_;  ///< the tables list() has checked
     std::uint64_t elements_ = 0;
     std::vector<std::string> external_;
 };
