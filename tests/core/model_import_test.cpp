@@ -3,6 +3,7 @@
 // bunny, the scene made around a model and its scene file, and every kind of bad file.
 #include "raystep/scene/model_import.h"
 
+#include "raystep/scene/model_checks.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <assimp/material.h>
@@ -12,8 +13,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace raystep {
 namespace {
@@ -298,6 +301,143 @@ TEST(ModelImport, InProcessAndIsolatedGiveTheSameTriangles) {
             EXPECT_EQ(a.triangles[i].c, b.triangles[i].c);
         }
     }
+}
+
+// Review 27b: valid files the checks refused, and checks that cost too much.
+class ModelChecksReview : public ::testing::Test {
+  protected:
+    fs::path dir = fs::temp_directory_path() /
+                   ("raystep-checks-" + std::to_string(getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& bytes) {
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        return (dir / name).string();
+    }
+    template <typename T>
+    static void put(std::string& s, std::initializer_list<T> values) {
+        for (const T v : values) s.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+};
+
+// A sparse accessor's indices have their own componentType (Khronos' SimpleSparseAccessor uses
+// 5123, two bytes each): they were counted as four bytes, and a valid file was refused.
+TEST_F(ModelChecksReview, SparseAccessorIndicesAreSizedByTheirComponentType) {
+    for (const int type : {5121, 5123, 5125}) {
+        SCOPED_TRACE(type);
+        const std::size_t each = type == 5121 ? 1 : type == 5123 ? 2 : 4;
+        // A triangle (0,0,0) (1,0,0) (0,1,0); the sparse part moves vertex 1 to (5,0,0).
+        std::string bin;
+        put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});  // bytes 0..35
+        if (each == 1) put<std::uint8_t>(bin, {1});
+        if (each == 2) put<std::uint16_t>(bin, {1});
+        if (each == 4) put<std::uint32_t>(bin, {1});
+        bin.resize(40, '\0');
+        put<float>(bin, {5, 0, 0});  // bytes 40..51
+        write("sparse.bin", bin);
+        const std::string gltf = write(
+            "sparse.gltf",
+            R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "buffers": [{"uri": "sparse.bin", "byteLength": 52}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+                std::to_string(each) + R"(},
+                 {"buffer": 0, "byteOffset": 40, "byteLength": 12}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": )" +
+                std::to_string(type) + R"(},
+                           "values": {"bufferView": 2}}}]})");
+        const ImportedModel m = importModel(gltf);
+        ASSERT_EQ(m.triangles.size(), 1u);
+        expectBounds(m.bounds, {0, 0, 0}, {5, 1, 0});
+    }
+    // Signed or float indices are no sparse indices.
+    write("bad.gltf",
+          R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "sparse.bin", "byteLength": 52}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 4}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5122},
+                           "values": {"bufferView": 1}}}]})");
+    expectRefused((dir / "bad.gltf").string(), "sparse indices are unsigned: 5121, 5123 or 5125");
+}
+
+// A comment at the end of an OBJ statement: the checks counted its words as fields (a vertex of
+// 5 fields was refused), and assimp 5.2.5 read a face's comment as indices ("Invalid face
+// index") and a vertex comment's numbers as its colour. Both now read the statement only, as
+// the scene loader does; '#' inside a field ("3#x") is no comment, as there.
+TEST_F(ModelChecksReview, ObjStatementsMayEndWithAComment) {
+    const std::string obj = write("commented.obj",
+                                  "# a triangle\n"
+                                  "v 0 0 0 # origin\n"
+                                  "v 4 0 0 # 1 2 3\n"
+                                  "v 0 2 0\t#tab\n"
+                                  "vn 0 0 1 # up\n"
+                                  "vt 0 0 # 7 8\n"
+                                  "g part # the only one\n"
+                                  "f 1/1/1 2/1/1 3/1/1 # c\n"
+                                  "f 1 2 3 # 4 5 6\n"
+                                  "f 3 2 1 #\n");
+    for (const bool isolated : {true, false}) {
+        SCOPED_TRACE(isolated);
+        const ImportedModel m = isolated ? importModel(obj) : importModelInProcess(obj);
+        EXPECT_EQ(m.triangles.size(), 3u);
+        expectBounds(m.bounds, {0, 0, 0}, {4, 2, 0});
+    }
+    // The scene loader reads the same file the same way.
+    write("scene.json", R"({"objects": [{"type": "mesh", "file": "commented.obj"}]})");
+    EXPECT_EQ(loadSceneFile((dir / "scene.json").string()).triangles.size(), 3u);
+    write("inside.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0#x\nf 1 2 3\n");
+    expectRefused((dir / "inside.obj").string(), ":3: vertex coordinate '0#x' is not a finite");
+    write("face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 # 3\n");
+    expectRefused((dir / "face.obj").string(), ":4: a face needs at least 3 vertices");
+}
+
+// A glb's header length below 20 wrapped round in the check's 32-bit arithmetic (length - 20):
+// every JSON length passed. A header length below 28 is refused, the sums done in 64 bits.
+TEST_F(ModelChecksReview, AGlbHeaderLengthTooSmallIsRefusedNotWrappedRound) {
+    std::ifstream in(kModels + "quad.glb", std::ios::binary);
+    const std::string glb((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(glb.size(), 28u);
+    for (const std::uint32_t length : {0u, 12u, 19u, 27u}) {
+        SCOPED_TRACE(length);
+        std::string bad = glb;
+        std::memcpy(bad.data() + 8, &length, 4);
+        expectRefused(write("short.glb", bad), "the glb's header says " + std::to_string(length) +
+                                                   " bytes; a glb is at least 28");
+    }
+    expectRefused(write("tiny.glb", glb.substr(0, 24)), "a glb file is at least 28 bytes");
+    // The file as it was is read.
+    const ImportedModel m = importModel(write("whole.glb", glb));
+    EXPECT_EQ(m.triangles.size(), 2u);
+}
+
+// The glTF check looked its tables over again at every index into them (every accessor walked
+// all the buffer views, every node all the meshes): 20,000 of each took minutes, past ctest's
+// timeout. Checked once, they are read in well under a second.
+TEST_F(ModelChecksReview, TwentyThousandAccessorsViewsMeshesAndNodesAreChecked) {
+    const int n = 20000;
+    std::string views, accessors, meshes, nodes, roots;
+    for (int i = 0; i < n; ++i) {
+        const std::string c = i ? "," : "", k = std::to_string(i);
+        views += c + R"({"buffer": 0, "byteOffset": )" + std::to_string(36 * i) +
+                 R"(, "byteLength": 36})";
+        accessors += c + R"({"bufferView": )" + k +
+                     R"(, "componentType": 5126, "count": 3, "type": "VEC3"})";
+        meshes += c + R"({"primitives": [{"attributes": {"POSITION": )" + k + "}}]}";
+        nodes += c + R"({"mesh": )" + k + "}";
+        roots += c + k;
+    }
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [)" +
+                             roots + R"(]}], "nodes": [)" + nodes + R"(], "meshes": [)" + meshes +
+                             R"(], "accessors": [)" + accessors + R"(], "bufferViews": [)" + views +
+                             R"(], "buffers": [{"uri": "big.bin", "byteLength": )" +
+                             std::to_string(36 * n) + "}]}";
+    const auto sizeOf = [&](const std::string&) { return std::uint64_t(36) * n; };
+    const detail::ModelChecked checked =
+        detail::checkModelBytes((dir / "many.gltf").string(), gltf, sizeOf);
+    ASSERT_EQ(checked.buffers.size(), 1u);
+    EXPECT_NE(checked.buffers[0].find("big.bin"), std::string::npos);
 }
 
 }  // namespace

@@ -606,8 +606,9 @@ void checkObj(const std::string& file, std::string_view text) {
         if (first == 'v' && line.size() >= 2 &&
             (objBlank(line[1]) || line[1] == 't' || line[1] == 'n')) {
             const int kind = objBlank(line[1]) ? 0 : line[1] == 't' ? 1 : 2;
-            // Every field: assimp counts the ones that begin with a digit or a sign, '#' aside.
-            const auto fields = words(line.substr(objBlank(line[1]) ? 1 : 2));
+            // Every field up to a '#' comment, as the scene loader reads them (assimp is given
+            // the line without its comment: blankObjComments).
+            const auto fields = objFields(line.substr(objBlank(line[1]) ? 1 : 2));
             const std::size_t n = fields.size();
             if (kind == 0 && n != 3 && n != 4 && n != 6)
                 refuse(file, lineNo,
@@ -647,7 +648,7 @@ void checkObj(const std::string& file, std::string_view text) {
                             : first == 'l' ? "a line"
                                            : "points") +
                            ")");
-            const auto fields = words(line.substr(1));
+            const auto fields = objFields(line.substr(1));
             if (first == 'f' && fields.size() < 3)
                 refuse(file, lineNo, "a face needs at least 3 vertices");
             if (fields.empty()) refuse(file, lineNo, "no vertices");
@@ -694,8 +695,8 @@ void checkObj(const std::string& file, std::string_view text) {
                                   : static_cast<std::uint64_t>(index) > count))
                         refuse(file, lineNo,
                                std::string(kinds[k]) + " index " + printable(part[k], 24) +
-                                   " is out of range (" + std::to_string(count) + " " +
-                                   plurals[k] + (negative ? " before this line)" : ")"));
+                                   " is out of range (" + std::to_string(count) + " " + plurals[k] +
+                                   (negative ? " before this line)" : ")"));
                 }
             }
             return;
@@ -708,6 +709,24 @@ void checkObj(const std::string& file, std::string_view text) {
                            "of its own");
         }
     });
+}
+
+void blankObjComments(std::string& text) {
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = pos;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r' && text[end] != '\f')
+            ++end;
+        // A comment begins a field (after a blank), on a line that is no comment itself.
+        if (end > pos && text[pos] != '#')
+            for (std::size_t i = pos + 1; i < end; ++i)
+                if (text[i] == '#' && objBlank(text[i - 1])) {
+                    std::fill(text.begin() + std::ptrdiff_t(i), text.begin() + std::ptrdiff_t(end),
+                              ' ');
+                    break;
+                }
+        pos = end + 1;
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -736,18 +755,27 @@ struct GlbParts {
 };
 
 GlbParts splitGlb(const std::string& file, std::string_view b) {
-    if (b.size() < 20)
+    // The smallest glb: its 12-byte header, the JSON chunk's 8-byte header, 8 bytes of JSON.
+    constexpr std::uint64_t kMinGlb = 28;
+    if (b.size() < kMinGlb)
         refuse(file, 0,
-               "a glb file is at least 20 bytes (its header and a chunk's), this one " +
+               "a glb file is at least 28 bytes (its header, its JSON chunk's header and the "
+               "JSON), this one " +
                    std::to_string(b.size()));
-    const std::uint32_t version = le32(b, 4), length = le32(b, 8);
+    // In 64 bits: a header length below 20 wrapped round in 32 (length - 20).
+    const std::uint64_t version = le32(b, 4), length = le32(b, 8);
     if (version != 2)
         refuse(file, 0, "glb version " + std::to_string(version) + ": raystep reads glTF 2.0");
+    if (length < kMinGlb)
+        refuse(file, 0,
+               "the glb's header says " + std::to_string(length) +
+                   " bytes; a glb is at least 28 (its header, its JSON chunk's header and the "
+                   "JSON)");
     if (length > b.size())
         refuse(file, 0,
                "the glb's header says " + std::to_string(length) + " bytes, the file has " +
                    std::to_string(b.size()));
-    const std::uint32_t jsonLength = le32(b, 12), jsonType = le32(b, 16);
+    const std::uint64_t jsonLength = le32(b, 12), jsonType = le32(b, 16);
     if (jsonType != kChunkJson) refuse(file, 0, "the glb's first chunk is not its JSON");
     if (jsonLength > length - 20)
         refuse(file, 0,
@@ -755,10 +783,10 @@ GlbParts splitGlb(const std::string& file, std::string_view b) {
                    std::to_string(length - 20) + " after its header");
     GlbParts parts;
     parts.json = b.substr(20, jsonLength);
-    std::uint64_t at = 20 + std::uint64_t(jsonLength);
+    std::uint64_t at = 20 + jsonLength;
     at = (at + 3) & ~std::uint64_t(3);  // chunks start on 4 bytes
     if (at + 8 <= length) {
-        const std::uint32_t binLength = le32(b, at), binType = le32(b, at + 4);
+        const std::uint64_t binLength = le32(b, at), binType = le32(b, at + 4);
         if (binType == kChunkBin) {
             if (binLength > length - at - 8)
                 refuse(file, 0,
@@ -812,6 +840,8 @@ class GltfCheck {
         static const Json empty = Json::array();
         const Json* j = member(root_, "", key);
         if (!j) return empty;
+        // Checked once: index() asks for its table at every reference (accessors x views).
+        if (!listed_.insert(key).second) return *j;
         if (!j->is_array()) r_.fail(key, "expected an array, got " + GltfReader::typeName(*j));
         for (std::size_t i = 0; i < j->size(); ++i)
             r_.requireObject((*j)[i], JsonLineMap::element(key, i));
@@ -978,7 +1008,18 @@ class GltfCheck {
                     const std::uint64_t view = index(*it, pp, "bufferView", "bufferViews");
                     const std::uint64_t offset =
                         optWhole(*it, pp, "byteOffset", 0, viewBytes_[view]).value_or(0);
-                    const std::uint64_t each = std::string(part) == "values" ? size : 4;
+                    // The indices' own type: unsigned bytes, shorts or ints (5121, 5123, 5125).
+                    std::uint64_t each = size;
+                    if (std::string_view(part) == "indices") {
+                        const std::string cp = JsonLineMap::child(pp, "componentType");
+                        if (!it->contains("componentType"))
+                            r_.fail(pp, "sparse indices need their componentType");
+                        const std::uint64_t type = whole((*it)["componentType"], cp, 5121, 5125);
+                        if (type != 5121 && type != 5123 && type != 5125)
+                            r_.fail(cp, "sparse indices are unsigned: 5121, 5123 or 5125, got " +
+                                            std::to_string(type));
+                        each = type == 5121 ? 1 : type == 5123 ? 2 : 4;
+                    }
                     if (offset + n * each > viewBytes_[view])
                         r_.fail(pp, std::to_string(n) + " sparse elements do not fit buffer view " +
                                         std::to_string(view));
@@ -1222,6 +1263,7 @@ class GltfCheck {
     std::vector<std::uint64_t> bufferBytes_, viewBytes_, viewStride_, counts_, componentTypes_;
     std::vector<int> components_;
     std::vector<MeshCost> meshCost_;
+    mutable std::set<std::string> listed_;  ///< the tables list() has checked
     std::uint64_t elements_ = 0;
     std::vector<std::string> external_;
 };
@@ -1267,11 +1309,12 @@ std::vector<std::string> modelReferences(const std::string& path, std::string_vi
             const std::string_view line = bytes.substr(pos, end - pos);
             pos = end + 1;
             if (!line.starts_with("mtllib")) continue;
-            const auto w = words(line.substr(6));
+            const auto w = objFields(line.substr(6));
             for (const auto name : w) add(name, folder);
             if (w.size() > 1) {
-                const std::size_t from = line.find_first_not_of(" \t", 6);
-                add(line.substr(from), folder);
+                const std::size_t from = w.front().data() - line.data();
+                add(line.substr(from, w.back().data() + w.back().size() - line.data() - from),
+                    folder);
             }
         }
         // The textures a library names (map_Kd tex.png ...: the last word of the statement).

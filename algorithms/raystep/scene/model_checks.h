@@ -42,6 +42,12 @@ struct ModelChecked {
 ModelChecked checkModelBytes(const std::string& path, std::string_view bytes,
                              const FileSizer& sizeOf);
 
+/// An OBJ's text as assimp is given it: every comment that ends a statement ("v 1 2 3 # top",
+/// "f 1 2 3 # c": a '#' beginning a field, as the scene loader reads them) blanked out to the
+/// end of its line. assimp 5.2.5 read a face's comment as indices ("Invalid face index") and the
+/// numbers of a vertex's comment as its colour; a line's length and the lines stay as they were.
+void blankObjComments(std::string& text);
+
 /// The files `bytes` (model file `path`) refers to, resolved against its folder: an OBJ's
 /// mtllib files and the textures they name, a glTF's external buffers and images. Best effort
 /// (what cannot be read is left out); for refusing an output that would overwrite them.

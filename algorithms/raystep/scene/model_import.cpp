@@ -95,7 +95,7 @@ class CheckedIOSystem : public Assimp::IOSystem {
         if (std::strchr(mode, 'w') || std::strchr(mode, 'a') || std::strchr(mode, '+'))
             return nullptr;
         if (!allowed(file)) return nullptr;
-        // The model: the very bytes checked (assimp opens it more than once).
+        // The model: the bytes checked (an OBJ's comments blanked; assimp opens it more than once).
         if (files_.same(file, model_)) return new StringStream(bytes_);
         try {
             return new StringStream(
@@ -219,25 +219,28 @@ void importModelTriangles(const std::string& path, const ModelFiles& files,
         if (progress && !progress(f)) throw BuildCancelled();
     };
     if (!isModelPath(path)) fail("not a model file (expected .obj, .ply, .stl, .gltf or .glb)");
+    std::string ext = std::filesystem::path(path).extension().string().substr(1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     // The model itself: refused by name before anything looks (a FIFO would block its open).
-    std::shared_ptr<const std::string> bytes;
+    std::string text;
     try {
-        bytes = std::make_shared<const std::string>(files.read(path, kMaxModelBytes));
+        text = files.read(path, kMaxModelBytes);
     } catch (const ReadFailure& f) {
         fail(std::string("cannot read the model: ") + f.what());
     }
-    if (bytes->empty()) fail("the model file is empty");
+    if (text.empty()) fail("the model file is empty");
     report(0.02);
-    const ModelChecked checked = checkModelBytes(path, *bytes, files.size);
+    const ModelChecked checked = checkModelBytes(path, text, files.size);
+    // An OBJ's statements without their comments, as the checks read them (in place: no copy).
+    if (ext == "obj") blankObjComments(text);
+    const auto bytes = std::make_shared<const std::string>(std::move(text));
     report(0.1);
 
     Assimp::Importer importer;  // no DefaultLogger is created: assimp's NullLogger stays quiet
     // The one reader of the extension: assimp would otherwise pick one by the content too (a .obj
     // holding a PLY header would reach the PLY parser unchecked).
     // (glTF: the 2.0 reader, not the 1.0 one, which claims the same extensions.)
-    std::string ext = std::filesystem::path(path).extension().string().substr(1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     Assimp::BaseImporter* kept = nullptr;
     for (std::size_t i = 0; i < importer.GetImporterCount() && !kept; ++i) {
         const aiImporterDesc* info = importer.GetImporterInfo(i);
