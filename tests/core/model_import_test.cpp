@@ -413,8 +413,8 @@ TEST_F(ModelChecksReview, AGlbHeaderLengthTooSmallIsRefusedNotWrappedRound) {
 }
 
 // The glTF check looked its tables over again at every index into them (every accessor walked
-// all the buffer views, every node all the meshes): 20,000 of each took minutes, past ctest's
-// timeout. Checked once, they are read in well under a second.
+// all the buffer views, every node all the meshes): 20,000 of each took 37 s on the 2-core CI
+// machine, 0.2 s checked once. This test checks such a file is read right; the time is not tested.
 TEST_F(ModelChecksReview, TwentyThousandAccessorsViewsMeshesAndNodesAreChecked) {
     const int n = 20000;
     std::string views, accessors, meshes, nodes, roots;
