@@ -20,8 +20,10 @@ QString num(double v) {
 QString describeState(const Session& s) {
     const ReplayState& st = s.state();
     QStringList lines;
-    // Of the events the replay may show (an open exercise hides the rest: quiz mode).
-    lines << Inspector::tr("step %1 of %2").arg(st.cursor).arg(s.end());
+    // Of the events the replay may show (an open exercise hides the rest: quiz mode); while a
+    // question to the room hides what is ahead, the trace's length is not told either.
+    lines << (s.hidesAhead() ? Inspector::tr("step %1").arg(st.cursor)
+                             : Inspector::tr("step %1 of %2").arg(st.cursor).arg(s.end()));
     if (st.cursor > 0)
         lines << QString::fromStdString(eventText(s.log(), st.cursor - 1, interfaceLanguage()));
     if (st.ray != kNoId) lines << Inspector::tr("ray %1").arg(st.ray);
@@ -104,6 +106,8 @@ QString describeState(const Session& s) {
 Inspector::Inspector(Session& s, QWidget* parent) : QTextBrowser(parent), session_(s) {
     setObjectName("inspector");
     connect(&session_, &Session::cursorChanged, this,
+            [this] { setPlainText(describeState(session_)); });
+    connect(&session_, &Session::shownChanged, this,
             [this] { setPlainText(describeState(session_)); });
     connect(&session_, &Session::limitChanged, this,
             [this] { setPlainText(describeState(session_)); });

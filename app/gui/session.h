@@ -140,6 +140,8 @@ class Session : public QObject {
     /// Presenting mode: while a question to the room is open, nothing past the cursor is shown
     /// (the event list's later rows, the counts of the whole trace), though the cursor is free.
     void setHideAhead(bool on);
+    /// Whether a question to the room hides what lies past the cursor (presenting mode).
+    bool hidesAhead() const { return hideAhead_; }
     /// Whether part of the log is not shown now (a quiz limit, or hidden ahead).
     bool hiding() const { return shownEvents().size() < size(); }
     /// What may be shown of the replayed log: its events before end(), and before the cursor

@@ -76,6 +76,7 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     scrubber_ = new QSlider(Qt::Horizontal);
     tl->addWidget(scrubber_, 1);
     position_ = new QLabel;
+    position_->setObjectName("position");
     tl->addWidget(position_);
     // Quiz mode: why the replay stops at an open exercise.
     quizCue_ = new QLabel(tr("Answer the exercise to see what comes next"));
@@ -98,6 +99,7 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     timer_->setInterval(1000 / speed_->value());
     connect(&session_, &Session::cursorChanged, this, [this] { updateTimeline(); });
     connect(&session_, &Session::limitChanged, this, [this] { updateTimeline(); });
+    connect(&session_, &Session::shownChanged, this, [this] { updateTimeline(); });
 }
 
 void Timeline::stepForward() {
@@ -142,7 +144,10 @@ void Timeline::updateTimeline() {
     // In quiz mode the scrubber ends at the exercise: what lies past it is not shown.
     scrubber_->setRange(0, static_cast<int>(session_.end()));
     scrubber_->setValue(static_cast<int>(session_.cursor()));
-    position_->setText(tr("%1 / %2").arg(session_.cursor()).arg(session_.end()));
+    // A question to the room: the trace's length is not told (the scrubber still reaches it).
+    position_->setText(session_.hidesAhead()
+                           ? QString::number(session_.cursor())
+                           : tr("%1 / %2").arg(session_.cursor()).arg(session_.end()));
     quizCue_->setVisible(session_.limit().has_value());
 }
 

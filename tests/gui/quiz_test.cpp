@@ -9,6 +9,7 @@
 #include "event_list.h"
 #include "gui_testing.h"
 #include "image_view.h"
+#include "inspector.h"
 #include "lesson_panel.h"
 #include "live_controls.h"
 #include "main_window.h"
@@ -430,6 +431,12 @@ TEST(Presenting, EveryStepFreeAndAnswersHiddenUntilRevealed) {
         QTest::keyClick(&w, Qt::Key_Right);
         EXPECT_EQ(w.eventList()->rowCount(), static_cast<int>(s.cursor()));
         QTest::keyClick(&w, Qt::Key_Left);
+        // Nor is the trace's length told, by the inspector or by the timeline.
+        const QString total = QString::number(s.size());
+        EXPECT_FALSE(describeState(s).contains(total)) << describeState(s).toStdString();
+        auto* position = w.timeline()->findChild<QLabel*>("position");
+        ASSERT_NE(position, nullptr);
+        EXPECT_EQ(position->text(), QString::number(s.cursor()));
         // Three wrong answers: never the answer (the next cell is (2, 2), by hand above).
         for (const char* wrong : {"3,1", "1,2", "3,2"}) {
             EXPECT_FALSE(p->submit(wrong));
