@@ -7,6 +7,7 @@
 
 #include "image_view.h"
 #include "language.h"
+#include "lesson_panel.h"
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
@@ -187,6 +188,11 @@ void MainWindow::tracePixelHereOrInBackground(int x, int y, int w, int h,
                                                                const TaskOutcome& outcome) {
             // A newer pixel, or another scene: this trace is of no use now.
             if (outcome.superseded || generation != generation_ || !outcome.ok() || !log) return;
+            // Nor does it take the place of a lesson's trace: unasked (the scene's first pixel)
+            // or while an exercise holds the replay.
+            const bool lessonShown =
+                lesson_->lessonLog() && session_.logRef() == lesson_->lessonLog();
+            if (lessonShown && (!clicked || session_.held())) return;
             session_.showLog(log, LogKind::Pixel);
             // A click replays its pixel to the end, as a click does; the first pixel from 0.
             if (clicked) session_.setCursor(session_.size());
