@@ -7,6 +7,7 @@
 #include "raystep/trace/event_text.h"
 
 #include <QLineEdit>
+
 #include <QListView>
 #include <QStyledItemDelegate>
 #include <QVBoxLayout>
@@ -24,6 +25,42 @@ class ElidedRows : public QStyledItemDelegate {
     }
 };
 }  // namespace
+
+QString eventKindLabel(std::size_t kind) {
+    // tr() with a literal each, so the catalogue test finds them.
+    switch (kind) {
+        case variantIndex<RayBegin>():
+            return EventList::tr("ray begin");
+        case variantIndex<DdaSetup>():
+            return EventList::tr("DDA set-up");
+        case variantIndex<DdaCell>():
+            return EventList::tr("DDA step");
+        case variantIndex<MailboxSkip>():
+            return EventList::tr("mailbox skip");
+        case variantIndex<PrimitiveTest>():
+            return EventList::tr("primitive test");
+        case variantIndex<NodeEnter>():
+            return EventList::tr("node enter");
+        case variantIndex<NodeSkip>():
+            return EventList::tr("node skip");
+        case variantIndex<BuildNode>():
+            return EventList::tr("build node");
+        case variantIndex<SplitCandidate>():
+            return EventList::tr("split candidate");
+        case variantIndex<SplitChosen>():
+            return EventList::tr("split chosen");
+        case variantIndex<LeafMade>():
+            return EventList::tr("leaf made");
+        case variantIndex<RayHit>():
+            return EventList::tr("hit");
+        case variantIndex<RayMiss>():
+            return EventList::tr("miss");
+        case variantIndex<ShadingTerm>():
+            return EventList::tr("shading term");
+        default:
+            return EventList::tr("pixel result");
+    }
+}
 
 EventListModel::EventListModel(Session& s, QObject* parent) : QAbstractListModel(parent), s_(s) {
     const auto reset = [this] {
@@ -59,13 +96,15 @@ bool EventFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
     if (parent.isValid() || row >= static_cast<int>(shown.size())) return false;
     // The lessons' rule (course/lesson_trace.h), so a step's filter shows what validation saw;
     // and the line as this list shows it (in the app's language).
+    const QString text = QString::fromStdString(text_);
     return eventMatchesFilter(shown[row], s_.log().dims(), text_) ||
+           eventKindLabel(shown[row].index()).contains(text, Qt::CaseInsensitive) ||
            sourceModel()
                ->index(row, 0)
                .data()
                .toString()
                .section(QStringLiteral("  "), 1)  // not the row's number
-               .contains(QString::fromStdString(text_), Qt::CaseInsensitive);
+               .contains(text, Qt::CaseInsensitive);
 }
 
 EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
@@ -73,14 +112,16 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
     ll->setContentsMargins(0, 0, 0, 0);
     filterEdit_ = new QLineEdit;
     filterEdit_->setObjectName("eventFilter");
-    filterEdit_->setPlaceholderText(tr("Filter: a kind (dda_cell, primitive_test) or any text"));
+    filterEdit_->setPlaceholderText(tr("Filter: a kind (DDA step, primitive test) or any text"));
     filterEdit_->setClearButtonEnabled(true);
     ll->addWidget(filterEdit_);
     model_ = new EventListModel(session_, this);
     filter_ = new EventFilter(session_, this);
     filter_->setSourceModel(model_);
     connect(filterEdit_, &QLineEdit::textChanged, this, [this](const QString& text) {
-        filter_->setText(text);
+        // A step's kind, as the box names it, filters by the kind's trace name; edited, by text.
+        if (text != kindShown_) kindKey_.clear(), kindShown_.clear();
+        filter_->setText(filter());
         showCursor();  // the rows moved: the highlight follows the cursor, not the old row
     });
     list_ = new QListView;
@@ -100,11 +141,26 @@ EventList::EventList(Session& s, QWidget* parent) : QWidget(parent), session_(s)
 }
 
 void EventList::setFilter(const QString& text) {
-    filterEdit_->setText(text);
+    // A step's filter names kinds by their trace names ("primitive_test", "node"): the box
+    // shows those kinds in the interface language.
+    QStringList kinds;
+    if (!text.trimmed().isEmpty())
+        for (std::size_t k = 0; k < kEventNames.size(); ++k)
+            if (QString::fromUtf8(kEventNames[k].data(), qsizetype(kEventNames[k].size()))
+                    .contains(text.trimmed(), Qt::CaseInsensitive))
+                kinds << eventKindLabel(k);
+    kindKey_ = kinds.isEmpty() ? QString() : text;
+    kindShown_ = kinds.join(QStringLiteral(", "));
+    filterEdit_->setText(kindKey_.isEmpty() ? text : kindShown_);
+    filter_->setText(filter());  // the box may have shown this name already
     showCursor();
 }
 
 QString EventList::filter() const {
+    return kindKey_.isEmpty() ? filterEdit_->text() : kindKey_;
+}
+
+QString EventList::filterShown() const {
     return filterEdit_->text();
 }
 

@@ -13,6 +13,10 @@ class QListView;
 
 namespace raystep::gui {
 
+/// An event kind's name in the interface language (variant index; "primitive test", "test di
+/// intersezione"): what the event list's filter shows for a kind and what the timeline jumps to.
+QString eventKindLabel(std::size_t kind);
+
 /// The log as a list: rows are made when shown, so a million events cost nothing up front. It
 /// ends at Session::end(): no row for an event past an open exercise.
 class EventListModel : public QAbstractListModel {
@@ -28,7 +32,8 @@ class EventListModel : public QAbstractListModel {
 };
 
 /// A filter text matches an event when it is part of its kind name (the trace file's:
-/// dda_cell, primitive_test, ...) or of the line the list shows (docs/lesson-format.md).
+/// dda_cell, primitive_test, ...; or in the interface language: eventKindLabel) or of the line
+/// the list shows (docs/lesson-format.md).
 class EventFilter : public QSortFilterProxyModel {
   public:
     EventFilter(Session& s, QObject* parent) : QSortFilterProxyModel(parent), s_(s) {}
@@ -46,9 +51,15 @@ class EventList : public QWidget {
     Q_OBJECT
   public:
     explicit EventList(Session& s, QWidget* parent = nullptr);
-    /// Shows only the events the filter text matches (a lesson's step sets it).
+    /// Shows only the events the filter text matches (a lesson's step sets it). A filter of
+    /// trace names (primitive_test; node: node_enter, node_skip, build_node) is shown as those
+    /// kinds' names in the interface language and still filters as the trace name does (the
+    /// lesson's validation counted those rows).
     void setFilter(const QString& text);
+    /// The filter in force: a step's kind as its trace name, else the text typed.
     QString filter() const;
+    /// What the filter box shows.
+    QString filterShown() const;
     /// The rows shown (tests read them) and the highlighted one (-1: none).
     int rowCount() const;
     QString rowText(int row) const;
@@ -64,6 +75,7 @@ class EventList : public QWidget {
     EventFilter* filter_ = nullptr;
     QLineEdit* filterEdit_ = nullptr;
     QListView* list_ = nullptr;
+    QString kindKey_, kindShown_;  // a step's kind filter and the name the box shows for it
 };
 
 }  // namespace raystep::gui

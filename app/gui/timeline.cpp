@@ -1,6 +1,8 @@
 // The timeline: its buttons and scrubber move the session's replay cursor; a timer plays it.
 #include "timeline.h"
 
+#include "event_list.h"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -22,22 +24,6 @@ const std::size_t kJumpKinds[] = {
     variantIndex<ShadingTerm>(),
 };
 
-/// The combo's name of a kind (tr() with a literal each, so the catalogue test finds them).
-QString jumpKindLabel(std::size_t kind) {
-    if (kind == variantIndex<DdaCell>()) return Timeline::tr("DDA step");
-    if (kind == variantIndex<PrimitiveTest>()) return Timeline::tr("primitive test");
-    if (kind == variantIndex<MailboxSkip>()) return Timeline::tr("mailbox skip");
-    if (kind == variantIndex<NodeEnter>()) return Timeline::tr("node enter");
-    if (kind == variantIndex<RayBegin>()) return Timeline::tr("ray begin");
-    if (kind == variantIndex<RayHit>()) return Timeline::tr("hit");
-    if (kind == variantIndex<SplitChosen>()) return Timeline::tr("split chosen");
-    if (kind == variantIndex<SplitCandidate>()) return Timeline::tr("split candidate");
-    if (kind == variantIndex<BuildNode>()) return Timeline::tr("build node");
-    if (kind == variantIndex<LeafMade>()) return Timeline::tr("leaf made");
-    if (kind == variantIndex<DdaSetup>()) return Timeline::tr("DDA set-up");
-    if (kind == variantIndex<NodeSkip>()) return Timeline::tr("node skip");
-    return Timeline::tr("shading term");
-}
 }  // namespace
 
 Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
@@ -63,7 +49,7 @@ Timeline::Timeline(Session& s, QWidget* parent) : QWidget(parent), session_(s) {
     kindCombo_ = new QComboBox;
     kindCombo_->setObjectName("jumpKind");
     for (const std::size_t kind : kJumpKinds)
-        kindCombo_->addItem(jumpKindLabel(kind), QVariant::fromValue<qulonglong>(kind));
+        kindCombo_->addItem(eventKindLabel(kind), QVariant::fromValue<qulonglong>(kind));
     tl->addWidget(kindCombo_);
     button(tr("next"), tr("Jump to the next event of this kind (N)"),
            [this] { jumpToNextOfKind(); });

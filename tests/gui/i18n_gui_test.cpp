@@ -212,6 +212,9 @@ TEST(ItalianInterface, EveryLessonsStepsAndExercisesAreItalian) {
             for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
                 w.lessonPanel()->goToStep(static_cast<int>(i));
                 keep(QStringLiteral("step %1: ").arg(i + 1));
+                // The step's filter, as the event list's box shows it (not "dda_cell").
+                add(texts, QStringLiteral("step %1: event filter").arg(i + 1),
+                    w.eventList()->filterShown());
             }
             for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
                 w.lessonPanel()->selectExercise(static_cast<int>(i));

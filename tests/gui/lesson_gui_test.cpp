@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
@@ -346,6 +348,13 @@ TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     EXPECT_EQ(w.session().logRef(), lessonLog);
     p->goToStep(0);
     EXPECT_EQ(w.eventList()->filter(), "primitive_test");
+    EXPECT_EQ(w.eventList()->filterShown(), "primitive test");  // the interface's words
+    // The rows are the kind's, as the lesson's validation counted them (by its trace name).
+    const auto events = w.session().shownEvents();
+    const auto tests = std::count_if(events.begin(), events.end(), [](const Event& e) {
+        return std::holds_alternative<PrimitiveTest>(e);
+    });
+    EXPECT_EQ(w.eventList()->rowCount(), tests);
     const std::size_t exerciseAt = indexOfNth<PrimitiveTest>(*lessonLog, 1);
     EXPECT_EQ(w.session().cursor(), 1u);  // after the first event, the primary's ray_begin
     ASSERT_GT(exerciseAt, 1u);
