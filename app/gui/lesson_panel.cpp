@@ -800,7 +800,8 @@ void LessonPanel::check() {
     }
     heldNote_.clear();
     if (!exerciseOpen_) {
-        exerciseOpen_ = true;  // answering an exercise is working on it
+        exerciseOpen_ = true;  // answering an exercise is working on it: it holds again
+        putAway_.erase(exercise_);
         updateWidgets();
         emit quizChanged();
     }

@@ -259,6 +259,24 @@ TEST(Held, APixelClickIsRefusedWhileAnExerciseHolds) {
     EXPECT_TRUE(p->exploring());
 }
 
+// An exercise put away and then answered is worked on again: it holds the replay again.
+TEST(Held, AnExercisePutAwayHoldsAgainWhenAnswered) {
+    QTemporaryDir dir;
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
+    LessonPanel* p = w.lessonPanel();
+    Session& s = w.session();
+    const auto first = s.limit();
+    ASSERT_TRUE(first.has_value());
+    p->closeExercise();
+    ASSERT_NE(s.limit(), first);  // the next exercise holds, or nothing
+    EXPECT_FALSE(p->submit("9"));  // tMaxX is 1.6 (by hand: 0.6 / 1 + 1 / 1)
+    EXPECT_EQ(s.limit(), first);
+    QTest::keyClick(&w, Qt::Key_End);
+    EXPECT_EQ(s.cursor(), *first);
+}
+
 // B in a build lesson, R in a ray lesson and a structure picked in the live controls, while an
 // exercise holds: B and R are refused; the structure's new walk (the same ray under a kd-tree,
 // which holds the same answers) is shown with nothing of its trace until the exercise is
