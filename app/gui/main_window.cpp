@@ -9,6 +9,7 @@
 #include "language.h"
 #include "lesson_controller.h"
 #include "lesson_panel.h"
+#include "live2d.h"
 #include "timeline.h"
 #include "view2d.h"
 #include "vtk_view.h"
@@ -690,6 +691,9 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             // the replay are not applied to what replaces them.
             lessons_->replaceLesson();
             showScene(std::move(o.scene), shows(LessonView::Image));
+            // A new history, even on the same scene (lessons 10 and 11): an undo would bring
+            // back an edit made in the lesson left.
+            if (live2d_) live2d_->undoStack()->clear();
             session_.showLog(o.trace, LessonController::logKind(lesson));
             showViews(shows(LessonView::View2D), shows(LessonView::View3D),
                       shows(LessonView::Image));

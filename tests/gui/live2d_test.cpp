@@ -495,6 +495,32 @@ TEST(Live2D, TheHandlesSitOnTheRayALessonReplaysAndADragEditsThatRay) {
     }
 }
 
+// Another lesson is a new history, even on the same scene (lessons 10 and 11): an edit undone
+// in lesson 10 leaves its scene as lesson 11 opens it, and a redo there would bring it back.
+TEST(Live2D, AnotherLessonOnTheSameSceneStartsANewHistory) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    w.setLecturerMode(true);
+    w.openLesson("10", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    QApplication::processEvents();
+    View2D* view = w.view2D();
+    const auto shown = view->shownRay();
+    ASSERT_TRUE(shown);
+    drag(view, view->screenOf(shown->origin), view->screenOf(shown->origin + Vec2(0.5, 0.5)));
+    auto* undo = w.findChild<QUndoStack*>("live2dUndo");
+    ASSERT_TRUE(undo);
+    ASSERT_EQ(undo->count(), 1);
+    act(w, "live2dUndoAction")->trigger();
+    QApplication::processEvents();
+    ASSERT_TRUE(undo->canRedo());
+    w.openLesson("11", /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    EXPECT_EQ(undo->count(), 0);
+    EXPECT_FALSE(undo->canRedo());
+}
+
 // The DDA's labels on the ray: never over each other nor out of the view (lesson 8's ray runs
 // under the top wall), one label for a tie (lesson 13's ray through the grid's vertices), and
 // each tDelta bracket spans a whole cell's worth of t, ending at tMax (behind the origin where
