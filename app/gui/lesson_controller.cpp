@@ -100,6 +100,8 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
     connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
     connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
     connect(&session_, &Session::logChanged, this, [this] { showReplayText(); });
+    // The exploring note says whether a hold hides the explored trace: it follows the hold.
+    connect(&session_, &Session::limitChanged, this, [this] { showReplayText(); });
 }
 
 void LessonController::replaceLesson() {

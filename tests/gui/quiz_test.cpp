@@ -259,6 +259,26 @@ TEST(Held, APixelClickIsRefusedWhileAnExerciseHolds) {
     EXPECT_TRUE(p->exploring());
 }
 
+// Exploring a pixel while presenting, then back to quiz mode: the exercise holds again, and
+// the exploring note says so (it was written when nothing held).
+TEST(Held, TheExploringNoteFollowsTheHold) {
+    QTemporaryDir dir;
+    Window win;
+    MainWindow& w = win.w;
+    ASSERT_TRUE(openLesson(w, writeLesson(dir, "pixel.json", kPixelLesson)));
+    ASSERT_TRUE(w.waitUntilIdle());
+    LessonPanel* p = w.lessonPanel();
+    w.modeAction(LessonMode::Presenting)->trigger();
+    ImageView* image = w.imageView();
+    QTest::mouseClick(image, Qt::LeftButton, {}, QPoint(image->width() / 4, image->height() / 3));
+    ASSERT_TRUE(p->exploring());
+    EXPECT_FALSE(p->replayNote().contains("holds the replay")) << p->replayNote().toStdString();
+    w.modeAction(LessonMode::Quiz)->trigger();
+    EXPECT_TRUE(w.session().held());
+    EXPECT_TRUE(p->replayNote().contains("An exercise holds the replay"))
+        << p->replayNote().toStdString();
+}
+
 // An exercise put away and then answered is worked on again: it holds the replay again.
 TEST(Held, AnExercisePutAwayHoldsAgainWhenAnswered) {
     QTemporaryDir dir;
@@ -270,7 +290,7 @@ TEST(Held, AnExercisePutAwayHoldsAgainWhenAnswered) {
     const auto first = s.limit();
     ASSERT_TRUE(first.has_value());
     p->closeExercise();
-    ASSERT_NE(s.limit(), first);  // the next exercise holds, or nothing
+    ASSERT_NE(s.limit(), first);   // the next exercise holds, or nothing
     EXPECT_FALSE(p->submit("9"));  // tMaxX is 1.6 (by hand: 0.6 / 1 + 1 / 1)
     EXPECT_EQ(s.limit(), first);
     QTest::keyClick(&w, Qt::Key_End);
