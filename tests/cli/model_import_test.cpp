@@ -1,5 +1,7 @@
 // `raystep-cli render MODEL`: models of every format rendered with a tree by default, the scene
 // around them saved and loaded back, and bad model files as one line and exit code 2.
+#include "cli_folder.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -15,41 +17,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+using raystep::testing::CliFolder;
+using raystep::testing::CliResult;
 const std::string kModels = RAYSTEP_SOURCE_DIR "/tests/data/models/";
 const std::string kBunny = "/usr/share/glmark2/models/bunny.obj";
 
-struct CliResult {
-    int code;
-    std::string out, err;
-};
-
-class ModelCli : public ::testing::Test {
+class ModelCli : public CliFolder {
   protected:
-    fs::path dir = fs::temp_directory_path() /
-                   ("raystep-model-cli-" + std::to_string(::getpid()) + "-" +
-                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    void SetUp() override { fs::create_directories(dir); }
-    void TearDown() override { fs::remove_all(dir); }
-
-    static std::string slurp(const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-    /// raystep-cli in the test's folder, its outputs outside it; ended after 120 s (a hang on a
-    /// FIFO fails the test with 124 rather than blocking the suite).
-    CliResult run(const std::string& args) {
-        const fs::path out = dir.string() + ".out", err = dir.string() + ".err";
-        const std::string cmd = "cd '" + dir.string() + "' && timeout 120 '" RAYSTEP_CLI "' " +
-                                args + " > '" + out.string() + "' 2> '" + err.string() +
-                                "' < /dev/null";
-        const int status = std::system(cmd.c_str());
-        CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-        fs::remove(out);
-        fs::remove(err);
-        return r;
-    }
     nlohmann::json stats() { return nlohmann::json::parse(slurp(dir / "s.json")); }
     /// Exit code 2, one line on stderr naming `file` and saying `why`, and no file written.
     void expectBad(const std::string& args, const std::string& file, const std::string& why) {

@@ -3,6 +3,8 @@
 // to, other commands given models, unsupported types, --threads past the cores, a kill during
 // the write, and the importer process's own failures. Each bad input: one line naming the file
 // (and its line or key), exit code 2, old outputs untouched, nothing new written.
+#include "cli_folder.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -30,13 +32,9 @@ extern char** environ;
 namespace {
 
 namespace fs = std::filesystem;
+using raystep::testing::CliFolder;
+using raystep::testing::CliResult;
 const std::string kModels = RAYSTEP_SOURCE_DIR "/tests/data/models/";
-
-struct CliResult {
-    int code;
-    std::string out, err;
-    double seconds;
-};
 
 std::string binary(std::initializer_list<std::uint32_t> words) {
     std::string s;
@@ -44,39 +42,8 @@ std::string binary(std::initializer_list<std::uint32_t> words) {
     return s;
 }
 
-class Robust : public ::testing::Test {
+class Robust : public CliFolder {
   protected:
-    fs::path dir = fs::temp_directory_path() /
-                   ("raystep-robust-" + std::to_string(::getpid()) + "-" +
-                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::string env;  // "NAME=value " before the command
-    void SetUp() override { fs::create_directories(dir); }
-    void TearDown() override { fs::remove_all(dir); }
-
-    static std::string slurp(const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-    void write(const std::string& name, const std::string& bytes) {
-        std::ofstream(dir / name, std::ios::binary) << bytes;
-    }
-    /// raystep-cli in the test's folder; ended after 120 s (a hang fails with 124).
-    CliResult run(const std::string& args) {
-        const fs::path out = dir.string() + ".out", err = dir.string() + ".err";
-        const std::string cmd = "cd '" + dir.string() + "' && " + env +
-                                "timeout 120 '" RAYSTEP_CLI "' " + args + " > '" + out.string() +
-                                "' 2> '" + err.string() + "' < /dev/null";
-        const auto start = std::chrono::steady_clock::now();
-        const int status = std::system(cmd.c_str());
-        const double s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err), s};
-        fs::remove(out);
-        fs::remove(err);
-        return r;
-    }
     /// The folder's files and their bytes.
     std::map<std::string, std::string> folder() {
         std::map<std::string, std::string> files;
