@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -58,6 +59,14 @@ class CliFolder : public ::testing::Test {
         std::filesystem::remove(out);
         std::filesystem::remove(err);
         return r;
+    }
+    /// Bad input's answer: exit code 2 and one line, raystep-cli's, naming `file`, saying `why`.
+    static void expectOneLine(const CliResult& r, const std::string& file, const std::string& why) {
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
     }
 };
 

@@ -28,12 +28,7 @@ class ModelCli : public CliFolder {
     /// Exit code 2, one line on stderr naming `file` and saying `why`, and no file written.
     void expectBad(const std::string& args, const std::string& file, const std::string& why) {
         SCOPED_TRACE(args);
-        const CliResult r = run(args);
-        EXPECT_EQ(r.code, 2) << r.err;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        EXPECT_EQ(r.err.rfind("raystep-cli: error: ", 0), 0u) << r.err;
-        EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
-        EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+        expectOneLine(run(args), file, why);
         for (const auto& e : fs::directory_iterator(dir))
             EXPECT_FALSE(e.path().extension() == ".png" || e.path().extension() == ".json")
                 << "bad input left " << e.path();
