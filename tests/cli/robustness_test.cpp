@@ -450,7 +450,7 @@ TEST_F(Robust, TheImportersCrashIsOneLineNamingTheModel) {
         {"kill -ABRT $$", "crashed inside assimp (an abort)"},
         {"kill -XCPU $$", "more than 120 s of processor time"},
         {"kill -KILL $$", "was killed (by the system: out of memory?)"},
-        {"echo garbage; exit 0", "the model importer's answer is malformed"},
+        {"echo garbage >&3; exit 0", "the model importer's answer is malformed"},
         {"exit 0", "ended without an answer (exit code 0)"}};
     for (const auto& [body, why] : importers) {
         write("importer", "#!/bin/sh\n" + body + "\n");
@@ -458,6 +458,19 @@ TEST_F(Robust, TheImportersCrashIsOneLineNamingTheModel) {
         env = "RAYSTEP_IMPORTER='" + (dir / "importer").string() + "' ";
         expectRefused("render '" + kModels + "tetra.ply' -o o.png", "tetra.ply", why);
     }
+}
+
+// What a library inside the importer prints on its standard output is not its answer (that
+// goes on descriptor 3): the real importer behind a script that prints first still answers.
+TEST_F(Robust, WhatTheImporterPrintsIsNotItsAnswer) {
+    const std::string real = (fs::path(RAYSTEP_CLI).parent_path() / "raystep-import").string();
+    ASSERT_TRUE(fs::exists(real)) << real;
+    write("importer", "#!/bin/sh\necho 'Info,  T0: Load tetra.ply'\nexec '" + real + "' \"$@\"\n");
+    fs::permissions(dir / "importer", fs::perms::owner_all);
+    env = "RAYSTEP_IMPORTER='" + (dir / "importer").string() + "' ";
+    const CliResult r = run("render '" + kModels + "tetra.ply' -o o.png --width 16 --height 12");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "o.png"));
 }
 
 }  // namespace

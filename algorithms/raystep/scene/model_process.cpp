@@ -56,6 +56,9 @@ namespace {
 constexpr char kProgress = 'P', kBound = 'B', kTriangles = 'T', kError = 'E', kOutOfMemory = 'K',
                kDone = 'D';
 constexpr std::uint32_t kTrianglesAFrame = 16384;
+// The answer's descriptor in the importer: not its standard output, which a library it runs
+// may print on (a line there would break the frames).
+constexpr int kAnswerFd = 3;
 constexpr std::uint32_t kMaxFrame = kTrianglesAFrame * 9 * sizeof(double);
 
 std::string megabytes(std::uint64_t bytes) {
@@ -172,7 +175,7 @@ int runImporter(int argc, char** argv) {
     if (cpu > 0) setLimit(RLIMIT_CPU, std::uint64_t(std::ceil(cpu)), std::uint64_t(cpu) + 5);
     if (stack > 0) setLimit(RLIMIT_STACK, stack, stack);
 
-    FrameWriter out(STDOUT_FILENO);
+    FrameWriter out(kAnswerFd);
     std::vector<double> chunk;
     chunk.reserve(std::size_t(kTrianglesAFrame) * 9);
     const auto flush = [&] {
@@ -280,10 +283,21 @@ ImportedModel importModel(const std::string& path, const ImportOptions& options)
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0)
         fail(std::string("cannot start the model importer: ") + std::strerror(errno));
+    if (fds[1] == kAnswerFd) {
+        // dup2 onto itself would keep its close-on-exec flag: the child would get no answer fd.
+        const int moved = ::fcntl(fds[1], F_DUPFD_CLOEXEC, kAnswerFd + 1);
+        ::close(fds[1]);
+        if (moved < 0) {
+            ::close(fds[0]);
+            fail(std::string("cannot start the model importer: ") + std::strerror(errno));
+        }
+        fds[1] = moved;
+    }
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], kAnswerFd);
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     // Its stderr is nobody's business (one line is the rule), unless asked for while debugging.
     if (!std::getenv("RAYSTEP_IMPORTER_STDERR"))
         posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);

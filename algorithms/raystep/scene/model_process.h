@@ -19,7 +19,8 @@ constexpr const char* kImporterName = "raystep-import";
 std::string importerBesideThisProgram();
 
 /// The importer program's whole work: `argv` as importModel passes it (the limits, the parent's
-/// process id, the model's path); writes its answer on standard output; returns the exit code.
+/// process id, the model's path); writes its answer on descriptor 3 (its standard output is
+/// /dev/null: what assimp may print there is not an answer); returns the exit code.
 int runImporter(int argc, char** argv);
 
 }  // namespace raystep::detail
