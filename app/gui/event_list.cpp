@@ -7,7 +7,6 @@
 #include "raystep/trace/event_text.h"
 
 #include <QLineEdit>
-
 #include <QListView>
 #include <QStyledItemDelegate>
 #include <QVBoxLayout>

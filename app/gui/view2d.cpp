@@ -734,15 +734,15 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
         // Every node's box (for the node being entered) and the split lines.
         kdBoxes_.resize(kd->nodes().size());
         lp.setPen(QPen(ink.gridLine, px(1)));
+        // A build's replay draws only the planes chosen so far (paintEvent), not the answer;
+        // nor does any trace while a held build's exercise asks for them.
+        const bool planes = !session_.showingBuild() && !session_.holdsBuild();
         kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<2>& box) {
             kdBoxes_[id] = box;
             if (n.leaf()) return;
             const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
             const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
-            // A build's replay draws only the planes chosen so far (paintEvent), not the answer;
-            // nor does any trace while a held build's exercise asks for them.
-            if (!session_.showingBuild() && !session_.holdsBuild())
-                lp.drawLine(toScreen(a), toScreen(b));
+            if (planes) lp.drawLine(toScreen(a), toScreen(b));
         });
     }
     lp.setPen(QPen(ink.primitive, px(2.0)));
