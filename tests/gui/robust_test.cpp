@@ -441,7 +441,9 @@ TEST(RobustModels, BruteForceOnABigModelIsAskedAboutBoundedAndCancelled) {
     EXPECT_EQ(w.session().kind(), AccelKind::BruteForce);
     // The centre pixel's three rays test every primitive: 3 x 259,202 events, capped.
     EXPECT_EQ(w.session().size(), 50000u);
-    EXPECT_LT(stall, 2000);
+    // Traced on the GUI thread it was away about 18 s (82.5 s on 1.2 M triangles); in the
+    // background well under a second quiet. The bound leaves room for a loaded CI machine.
+    EXPECT_LT(stall, 5000);
     // The image renders by brute force meanwhile: Cancel stops it within a second.
     ASSERT_TRUE(w.tasks().busy(TaskKind::Render));
     QElapsedTimer t;
@@ -451,7 +453,9 @@ TEST(RobustModels, BruteForceOnABigModelIsAskedAboutBoundedAndCancelled) {
     std::printf("render stopped after %lld ms (the GUI thread away at most %.0f ms)\n",
                 (long long)t.elapsed(), away);
     runUntil([&] { return !w.tasks().busy(); }, 30000);
-    EXPECT_LT(t.elapsed(), 1000);
+    // Measured 0.3 to 0.8 s here on a loaded machine (docs/reliability.md); a render that did
+    // not look at Cancel ran on for minutes. The bound leaves room for a loaded CI machine.
+    EXPECT_LT(t.elapsed(), 5000);
 }
 
 // Review 3, class 12, in the app: File > Save scene as may not write over a file the model
