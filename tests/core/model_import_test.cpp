@@ -240,7 +240,8 @@ TEST_F(ImporterProcess, TheWallClockLimitEndsAnImporterThatNeverAnswers) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
 }
 
-// A cancel (the progress answering false) kills it within a fifth of a second.
+// A cancel (the progress answering false) kills it at the importer's next poll (0.1 s); the
+// bound leaves room for a loaded CI machine (the script would sleep 600 s).
 TEST_F(ImporterProcess, ACancelKillsTheImporterAtOnce) {
     ImportOptions o;
     o.importer = script("exec sleep 600");
@@ -249,7 +250,7 @@ TEST_F(ImporterProcess, ACancelKillsTheImporterAtOnce) {
         return std::chrono::steady_clock::now() - start < std::chrono::milliseconds(300);
     };
     EXPECT_THROW(importModel(kModels + "tetra.ply", o), BuildCancelled);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(600));
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
 }
 
 // Memory: the real importer under 64 MB of address space, given a 300,000-triangle binary STL

