@@ -227,7 +227,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     prompt_ = new QLabel;
     prompt_->setObjectName("prompt");
     prompt_->setWordWrap(true);
-    prompt_->setTextFormat(Qt::MarkdownText);
+    prompt_->setTextFormat(Qt::RichText);  // markdownForLabel: its code follows the zoom
     el->addWidget(prompt_);
     answer_ = new QLineEdit;
     answer_->setObjectName("answer");
@@ -273,7 +273,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     hints_ = new QLabel;
     hints_->setObjectName("hints");
     hints_->setWordWrap(true);
-    hints_->setTextFormat(Qt::MarkdownText);
+    hints_->setTextFormat(Qt::RichText);
     hints_->setStyleSheet(QStringLiteral("color: #1f4e99"));
     el->addWidget(hints_);
     feedback_ = new QLabel;
@@ -640,13 +640,15 @@ void LessonPanel::refreshExercise() {
     const Exercise& ex = lesson_.exercises[exercise_];
     // An exercise that waits for a held one shows nothing of itself: no prompt, hint or choice.
     const bool waits = waitingFor(exercise_).has_value();
-    prompt_->setText(waits ? QString() : q(ex.prompt.in(lang_)));
+    promptSource_ = waits ? QString() : q(ex.prompt.in(lang_));
+    prompt_->setText(promptSource_.isEmpty() ? QString() : markdownForLabel(promptSource_));
     answer_->clear();
     feedback_->clear();
     feedback_->setStyleSheet({});
     hintsShown_ = 0;
     revealed_ = false;
     hints_->clear();
+    hintsSource_.clear();
     hints_->hide();
     hintButton_->setEnabled(!ex.hints.empty());
     hintButton_->setText(tr("Hint"));
@@ -776,10 +778,10 @@ QString LessonPanel::feedback() const {
     return feedback_->text();
 }
 QString LessonPanel::exerciseText() const {
-    return prompt_->text();
+    return promptSource_;
 }
 QString LessonPanel::hintsText() const {
-    return hints_->text();
+    return hintsSource_;
 }
 
 void LessonPanel::check() {
@@ -902,7 +904,8 @@ void LessonPanel::hint() {
                      .arg(k + 1)
                      .arg(ex.hints.size())
                      .arg(q(ex.hints[k].in(lang_)));
-    hints_->setText(shown.join(QStringLiteral("\n\n")));
+    hintsSource_ = shown.join(QStringLiteral("\n\n"));
+    hints_->setText(markdownForLabel(hintsSource_));
     hints_->show();
     exerciseScroll_->ensureWidgetVisible(hints_);
     const bool more = hintsShown_ < static_cast<int>(ex.hints.size());

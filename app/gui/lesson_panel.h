@@ -204,6 +204,7 @@ class LessonPanel : public QWidget {
     QWidget* buttonRow_ = nullptr;
     QLabel* hints_ = nullptr;
     QLabel* prompt_ = nullptr;
+    QString promptSource_, hintsSource_;  // their Markdown, as the lesson gives it
     QLineEdit* answer_ = nullptr;
     QComboBox* candidates_ = nullptr;
     QWidget* choiceBox_ = nullptr;  // a choice exercise's radio buttons

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QTextBlock>
 #include <QTextCursor>
@@ -124,6 +125,17 @@ void Presentation::apply() {
         if (auto* dock = qobject_cast<QDockWidget*>(w); dock && dock->styleSheet() != title)
             dock->setStyleSheet(title);
     emit changed();
+}
+
+QString markdownForLabel(const QString& markdown) {
+    QTextDocument document;
+    document.setMarkdown(markdown);
+    codeFollowsTextSize(document);
+    QString html = document.toHtml();
+    // The body's style names the document's default font and size: the label's are meant.
+    static const QRegularExpression bodyStyle(QStringLiteral("<body style=\"[^\"]*\""));
+    html.replace(bodyStyle, QStringLiteral("<body"));
+    return html;
 }
 
 void codeFollowsTextSize(QTextDocument& document) {

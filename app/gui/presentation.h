@@ -91,6 +91,11 @@ class Presentation : public QObject {
 /// point size, which no zoom would change. Call it after each setMarkdown.
 void codeFollowsTextSize(QTextDocument& document);
 
+/// Markdown as rich text for a label (an exercise's prompt, its hints) with no font size of its
+/// own, code included: the label's font, which the zoom sets, sizes all of it. (A label given
+/// Markdown keeps its code at the fixed font's size: tiny beside the text at 150%.)
+QString markdownForLabel(const QString& markdown);
+
 /// Presentation::instance().
 inline Presentation& presentation() {
     return Presentation::instance();

@@ -19,6 +19,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
 #include <QScreen>
@@ -145,13 +146,10 @@ double gridWidthOnScreen(MainWindow& w) {
            w.view2D()->screenOf(Vec2(spec.lo.x, spec.lo.y)).x();
 }
 
-/// The pixel size of the lesson text's first code fragment (a span or a block) and of its first
-/// plain fragment, as the text browser draws them.
-std::pair<int, int> codeAndTextPixels(const MainWindow& w) {
-    const auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+/// The pixel size of a document's first code fragment (a span or a block) and of its first
+/// plain fragment, as it is drawn.
+std::pair<int, int> codeAndTextPixels(const QTextDocument* doc) {
     int code = 0, plain = 0;
-    if (!text) return {0, 0};
-    const QTextDocument* doc = text->document();
     for (QTextBlock b = doc->begin(); b.isValid() && !(code && plain); b = b.next())
         for (auto it = b.begin(); !it.atEnd(); ++it) {
             const QTextCharFormat f = it.fragment().charFormat();
@@ -163,6 +161,28 @@ std::pair<int, int> codeAndTextPixels(const MainWindow& w) {
             if (!isCode && !heading && !plain) plain = px;
         }
     return {code, plain};
+}
+
+/// The same of the lesson text, as the text browser draws it.
+std::pair<int, int> codeAndTextPixels(const MainWindow& w) {
+    const auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
+    return text ? codeAndTextPixels(text->document()) : std::pair<int, int>{0, 0};
+}
+
+/// The exercise's prompt as its label holds it: its text read once, in the label's font then;
+/// a zoom gives the document the label's new font without reading the text again.
+void readPrompt(const MainWindow& w, QTextDocument& doc) {
+    const auto* prompt = w.lessonPanel()->findChild<QLabel*>("prompt");
+    ASSERT_NE(prompt, nullptr);
+    doc.setDefaultFont(prompt->font());
+    if (prompt->textFormat() == Qt::MarkdownText)
+        doc.setMarkdown(prompt->text());
+    else
+        doc.setHtml(prompt->text());
+}
+std::pair<int, int> promptCodeAndTextPixels(const MainWindow& w, QTextDocument& doc) {
+    doc.setDefaultFont(w.lessonPanel()->findChild<QLabel*>("prompt")->font());
+    return codeAndTextPixels(&doc);
 }
 
 /// Waits until the window's layout stops moving (fonts reach widgets by posted events, then the
@@ -191,6 +211,13 @@ TEST_F(Presenter, ZoomEnlargesTheContentTheSceneKeepsItsWidthAndCodeGrowsWithThe
     ASSERT_GT(atBase, 200);
     ASSERT_GT(code100, 0);
     ASSERT_GT(text100, 0);
+    // Exercise 1's prompt: "The ray is `(0.4, 0.4) + t (0.8, 0.4)` ...".
+    w.lessonPanel()->selectExercise(0);
+    QTextDocument prompt;
+    readPrompt(w, prompt);
+    const auto [promptCode100, promptText100] = promptCodeAndTextPixels(w, prompt);
+    ASSERT_GT(promptCode100, 0);
+    ASSERT_GT(promptText100, 0);
     const double lines100 = presentation().lineScale();
     for (int zoom : Presentation::kZoomSteps) {
         if (zoom <= 100) continue;
@@ -210,6 +237,10 @@ TEST_F(Presenter, ZoomEnlargesTheContentTheSceneKeepsItsWidthAndCodeGrowsWithThe
         const auto [code, text] = codeAndTextPixels(w);
         EXPECT_GE(code, code100 * zoom / 100 - 2) << code100;
         EXPECT_NEAR(code, text, std::max(2, text / 8)) << "text " << text;
+        // The same in the exercise's prompt (a label: its code kept the fixed font's size).
+        const auto [promptCode, promptText] = promptCodeAndTextPixels(w, prompt);
+        EXPECT_GE(promptCode, promptCode100 * zoom / 100 - 2) << promptCode100;
+        EXPECT_NEAR(promptCode, promptText, std::max(2, promptText / 8)) << promptText;
         // The views' lines too (the 3D view's rays, the 2D view's pens).
         EXPECT_NEAR(presentation().lineScale(), lines100 * zoom / 100.0, 1e-9);
     }
