@@ -232,8 +232,8 @@ std::optional<std::pair<std::uint32_t, double>> endPoint(const Event& e) {
 std::vector<double> rayEnds(const EventLog& log, std::size_t upTo, double cap) {
     std::vector<double> ends(log.rays().size(), -1.0);
     for (std::size_t i = 0; i < std::min(upTo, log.events().size()); ++i)
-        if (const auto end = endPoint(log.events()[i]))
-            if (end->first < ends.size()) ends[end->first] = end->second;
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < ends.size()) ends[stop->first] = stop->second;
     for (std::size_t r = 0; r < ends.size(); ++r) {
         const RayRecord& ray = log.rays()[r];
         const double length = glm::length(ray.dir);
@@ -451,8 +451,8 @@ std::vector<Vec3> pointsThatMatter(const Session& session) {
     const std::vector<double> ends = rayEnds(log, end, cap);
     std::vector<bool> hit(log.rays().size(), false), begun(log.rays().size(), false);
     for (std::size_t i = 0; i < end; ++i) {
-        if (const auto end = endPoint(log.events()[i]))
-            if (end->first < hit.size()) hit[end->first] = std::isfinite(end->second);
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < hit.size()) hit[stop->first] = std::isfinite(stop->second);
         if (const auto* rb = std::get_if<RayBegin>(&log.events()[i]))
             if (rb->ray < begun.size()) begun[rb->ray] = true;
     }
@@ -526,8 +526,8 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
             if (rb->ray < begun.size()) begun[rb->ray] = true;
     std::vector<bool> hit(log.rays().size(), false);
     for (std::size_t i = 0; i < std::min(st.cursor, log.events().size()); ++i)
-        if (const auto end = endPoint(log.events()[i]))
-            if (end->first < hit.size()) hit[end->first] = std::isfinite(end->second);
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < hit.size()) hit[stop->first] = std::isfinite(stop->second);
     const double cap = std::max(glm::length(s->camera.lookAt - s->camera.eye), size);
     // A ray not yet ended by the cursor runs on (its hit is still to be found).
     const std::vector<double> ends = rayEnds(log, st.cursor, cap);
