@@ -104,6 +104,25 @@ TEST(Replay, EveryBuildNodeCarriesItsLeafCostAtTheCIsectInUse) {
     }
 }
 
+TEST(Replay, ABlockedShadowRayEndsBlockedNotHit) {
+    EventLog log;
+    const std::uint32_t primary = log.beginRay(Ray{}, RayKind::Primary, 0, kNoId);
+    log(RayHit{primary, 2, 3.0, 0.0, 0.0});
+    const std::uint32_t shadow = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    log(PrimitiveTest{shadow, 4, true, 0.5});
+    log(RayBlocked{shadow, 4, 0.5});
+    log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    Replay r(log);
+    const ReplayState& at = r.seek(5);  // just after the RayBlocked
+    EXPECT_EQ(at.ray, shadow);
+    ASSERT_TRUE(at.blocked);
+    EXPECT_EQ(at.blocked->prim, 4u);
+    EXPECT_EQ(at.blocked->t, 0.5);
+    EXPECT_FALSE(at.hit);  // the shadow ray's own state: no nearest hit of its own
+    EXPECT_FALSE(at.missed);
+    EXPECT_FALSE(r.seek(6).blocked);  // the next ray starts afresh
+}
+
 TEST(Replay, EveryChosenSplitIsTheCheapestCandidate) {
     // Replaying a SAH build: at each choice, the candidates shown so far include one of exactly
     // the chosen cost and none cheaper (the build picks the minimum of what it evaluated).
