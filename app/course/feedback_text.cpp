@@ -50,6 +50,8 @@ std::string afterEvent(Language lang, std::size_t kind, const std::string& nth) 
             return trf(lang, "after the %1 intersection found", {nth});
         case variantIndex<RayMiss>():
             return trf(lang, "after the %1 ray that hits nothing", {nth});
+        case variantIndex<RayBlocked>():
+            return trf(lang, "after the %1 shadow ray blocked", {nth});
         case variantIndex<ShadingTerm>():
             return trf(lang, "after the %1 shading term", {nth});
         case variantIndex<PixelResult>():
@@ -86,6 +88,8 @@ std::string beforeEvent(Language lang, std::size_t kind, const std::string& nth)
             return trf(lang, "before the %1 intersection found", {nth});
         case variantIndex<RayMiss>():
             return trf(lang, "before the %1 ray that hits nothing", {nth});
+        case variantIndex<RayBlocked>():
+            return trf(lang, "before the %1 shadow ray blocked", {nth});
         case variantIndex<ShadingTerm>():
             return trf(lang, "before the %1 shading term", {nth});
         case variantIndex<PixelResult>():
@@ -121,6 +125,8 @@ std::string eventsCounted(Language lang, std::size_t kind) {
             return tr(lang, "Intersections found");
         case variantIndex<RayMiss>():
             return tr(lang, "Rays that hit nothing");
+        case variantIndex<RayBlocked>():
+            return tr(lang, "Shadow rays blocked");
         case variantIndex<ShadingTerm>():
             return tr(lang, "Shading terms");
         case variantIndex<PixelResult>():

@@ -54,6 +54,8 @@ QString eventKindLabel(std::size_t kind) {
             return EventList::tr("hit");
         case variantIndex<RayMiss>():
             return EventList::tr("miss");
+        case variantIndex<RayBlocked>():
+            return EventList::tr("blocked");
         case variantIndex<ShadingTerm>():
             return EventList::tr("shading term");
         default:

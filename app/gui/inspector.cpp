@@ -66,8 +66,8 @@ QString describeState(const Session& s) {
                      .arg(st.nearestPrim)
                      .arg(num(*st.nearestT));
     // The ray's hit on a triangle: its barycentric u, v (lesson 12), as the event records them.
-    if (st.hit && s.scene3D() && st.hit->prim != kNoId &&
-        st.hit->prim < s.scene3D()->primitiveCount() && !s.scene3D()->isSphere(st.hit->prim))
+    if (st.hit && s.scene3D() && st.hit->prim < s.scene3D()->primitiveCount() &&
+        !s.scene3D()->isSphere(st.hit->prim))
         lines << Inspector::tr("hit on triangle %1: t = %2   u = %3   v = %4")
                      .arg(st.hit->prim)
                      .arg(num(st.hit->t), num(st.hit->u), num(st.hit->v));

@@ -142,16 +142,12 @@ void MainWindow::createViews() {
         // drawn there.
         if (const auto& f = imageFrame_; f && slowPixelTraces()) {
             tracePixelHereOrInBackground(x, y, f->width, f->height, f->camera, f->trace);
-            clicked_ = Clicked{x, y, f->width, f->height};
             return;
         }
-        if (const auto& f = imageFrame_) {
+        if (const auto& f = imageFrame_)
             session_.tracePixel(x, y, f->width, f->height, f->camera, f->trace);
-            clicked_ = Clicked{x, y, f->width, f->height};
-        } else {
+        else
             session_.tracePixel(x, y, kImageWidth, kImageHeight);
-            clicked_ = Clicked{x, y, kImageWidth, kImageHeight};
-        }
         session_.setCursor(session_.size());
         statusBar()->showMessage(
             tr("Pixel (%1, %2): %3 events recorded").arg(x).arg(y).arg(session_.size()));
@@ -810,24 +806,15 @@ void MainWindow::openCompare() {
     // Compare mode replays whole traces: not while an exercise holds the replay (quiz mode).
     if (refusedWhileHeld(tr("compare the midpoint, median and SAH trees"))) return;
     const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
-    // 3D: the pixel being replayed (clicked, or a lesson's, in the lesson's image size), else
-    // the image's centre.
+    // 3D: the pixel being replayed, in the image it is a pixel of (its event says: clicked on
+    // the image, or a lesson's), else the image's centre.
     CompareWindow::Pixel pixel{kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight};
     for (const Event& e : session_.log().events())
         if (const auto* p = std::get_if<PixelResult>(&e)) {
             pixel = {static_cast<int>(p->x), static_cast<int>(p->y), kImageWidth, kImageHeight};
-            // A pixel clicked on an image of another size: in that image's frame.
-            if (clicked_ && clicked_->x == pixel.x && clicked_->y == pixel.y) {
-                pixel.width = clicked_->width;
-                pixel.height = clicked_->height;
-            }
-            const bool lessons =
-                lesson_->hasLesson() && lesson_->lesson().trace.kind == LessonTrace::Kind::Pixel;
-            if (lessons && lesson_->lesson().trace.x == pixel.x &&
-                lesson_->lesson().trace.y == pixel.y) {
-                pixel.width = lesson_->lesson().trace.width;
-                pixel.height = lesson_->lesson().trace.height;
-            }
+            if (p->width > 0 && p->height > 0)  // 0: a trace written before the frame was
+                pixel.width = static_cast<int>(p->width),
+                pixel.height = static_cast<int>(p->height);
         }
     // Three trees of a big mesh take seconds: built in the background, with Cancel.
     const std::uint64_t generation = generation_;

@@ -350,10 +350,6 @@ class MainWindow : public QMainWindow {
     std::uint64_t imageGeneration_ = ~std::uint64_t(0);  // the scene the image was made for
     bool renderPending_ = false;
     std::shared_ptr<FrameBox> frames_;  // the running render's newest pass
-    struct Clicked {
-        int x, y, width, height;
-    };
-    std::optional<Clicked> clicked_;  // the last pixel clicked, in its image's frame
 };
 
 }  // namespace raystep::gui

@@ -597,7 +597,7 @@ void View2D::paintEvent(QPaintEvent*) {
         double reached = 0.0;
         if (st.ddaCell) reached = std::min(st.ddaCell->tMax[0], st.ddaCell->tMax[1]);
         if (st.node) reached = std::max(reached, st.node->tFar);
-        if (st.nearestT && (st.hit || st.missed)) reached = *st.nearestT;
+        if (st.nearestT && (st.hit || st.blocked || st.missed)) reached = *st.nearestT;
         if (std::isfinite(reached) && reached > 0) {
             g.setPen(QPen(ink.ray, px(2.5)));
             g.drawLine(toScreen(o), toScreen(o + reached * d));
@@ -793,10 +793,11 @@ std::optional<CostChart> View2D::costChart() const {
         lo = std::min(lo, k.sahCost), hi = std::max(hi, k.sahCost);
         onAxis[k.axis & 1] = true;
     }
-    // The leaf's cost (not splitting) as the kd-tree's default C_isect = 5 makes it until the
-    // choice says it.
-    c.leafCost = st.chosen ? st.chosen->leafCost : st.buildNode->prims * 5.0;
-    lo = std::min(lo, c.leafCost), hi = std::max(hi, c.leafCost);
+    // The leaf's cost (not splitting) with the build's own C_isect, from the node's first step;
+    // an old trace cut before the node's outcome does not know it (no line).
+    c.leafCost = st.buildNode->leafCost;
+    if (std::isnan(c.leafCost) && st.chosen) c.leafCost = st.chosen->leafCost;
+    if (std::isfinite(c.leafCost)) lo = std::min(lo, c.leafCost), hi = std::max(hi, c.leafCost);
     if (hi - lo < 1e-9 * std::max(1.0, std::abs(hi))) lo -= 1, hi += 1;  // one value: a band
     const double pad = 0.06 * (hi - lo);
     c.costLo = lo - pad, c.costHi = hi + pad;
@@ -874,9 +875,11 @@ void View2D::drawCostChart(QPainter& g, const ReplayState& st) const {
         if (line.size() < 200)
             for (const QPointF& p : line) g.drawEllipse(p, 2, 2);
     }
-    g.setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
-    const double yLeaf = c.at(0, c.nodeLo[0], c.leafCost).y();
-    g.drawLine(QPointF(c.plot.left(), yLeaf), QPointF(c.plot.right(), yLeaf));
+    if (std::isfinite(c.leafCost)) {
+        g.setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
+        const double yLeaf = c.at(0, c.nodeLo[0], c.leafCost).y();
+        g.drawLine(QPointF(c.plot.left(), yLeaf), QPointF(c.plot.right(), yLeaf));
+    }
     g.setClipping(false);
     // A value in a small white box beside its point, kept inside the strip.
     const auto tag = [&](QPointF p, const QString& text, const QColor& border) {

@@ -27,7 +27,7 @@ struct CostChart {
     std::array<std::vector<double>, 2> positionTicks;  // per axis (empty: no candidate on it)
     std::array<double, 2> nodeLo{};  // the node's low edge per axis: at plot.left()
     double scale = 1;                // pixels per scene unit, the view's
-    double leafCost = 0;             // not splitting (dashed)
+    double leafCost = 0;             // not splitting (dashed): C_isect N; NaN if not known
     QPointF at(int axis, double position, double cost) const {
         return {plot.left() + (position - nodeLo[axis]) * scale,
                 plot.bottom() - (cost - costLo) / (costHi - costLo) * plot.height()};

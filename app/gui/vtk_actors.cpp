@@ -220,12 +220,20 @@ vtkSmartPointer<vtkTexture> checkerTexture(const Material& m) {
     return t;
 }
 
-/// Where each recorded ray ends: its hit in the whole log, else its tMax, else `cap` long.
+/// The ray an event ends at a point, and its t: a hit, or what blocks a shadow ray.
+std::optional<std::pair<std::uint32_t, double>> endPoint(const Event& e) {
+    if (const auto* h = std::get_if<RayHit>(&e)) return std::pair{h->ray, h->t};
+    if (const auto* b = std::get_if<RayBlocked>(&e)) return std::pair{b->ray, b->t};
+    return std::nullopt;
+}
+
+/// Where each recorded ray ends: its hit (or blocker) in the whole log, else its tMax, else
+/// `cap` long.
 std::vector<double> rayEnds(const EventLog& log, std::size_t upTo, double cap) {
     std::vector<double> ends(log.rays().size(), -1.0);
     for (std::size_t i = 0; i < std::min(upTo, log.events().size()); ++i)
-        if (const auto* h = std::get_if<RayHit>(&log.events()[i]))
-            if (h->ray < ends.size()) ends[h->ray] = h->t;
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < ends.size()) ends[stop->first] = stop->second;
     for (std::size_t r = 0; r < ends.size(); ++r) {
         const RayRecord& ray = log.rays()[r];
         const double length = glm::length(ray.dir);
@@ -443,8 +451,8 @@ std::vector<Vec3> pointsThatMatter(const Session& session) {
     const std::vector<double> ends = rayEnds(log, end, cap);
     std::vector<bool> hit(log.rays().size(), false), begun(log.rays().size(), false);
     for (std::size_t i = 0; i < end; ++i) {
-        if (const auto* h = std::get_if<RayHit>(&log.events()[i]))
-            if (h->ray < hit.size()) hit[h->ray] = true;
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < hit.size()) hit[stop->first] = std::isfinite(stop->second);
         if (const auto* rb = std::get_if<RayBegin>(&log.events()[i]))
             if (rb->ray < begun.size()) begun[rb->ray] = true;
     }
@@ -518,8 +526,8 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
             if (rb->ray < begun.size()) begun[rb->ray] = true;
     std::vector<bool> hit(log.rays().size(), false);
     for (std::size_t i = 0; i < std::min(st.cursor, log.events().size()); ++i)
-        if (const auto* h = std::get_if<RayHit>(&log.events()[i]))
-            if (h->ray < hit.size()) hit[h->ray] = true;
+        if (const auto stop = endPoint(log.events()[i]))
+            if (stop->first < hit.size()) hit[stop->first] = std::isfinite(stop->second);
     const double cap = std::max(glm::length(s->camera.lookAt - s->camera.eye), size);
     // A ray not yet ended by the cursor runs on (its hit is still to be found).
     const std::vector<double> ends = rayEnds(log, st.cursor, cap);

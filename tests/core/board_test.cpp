@@ -136,11 +136,11 @@ TEST(Board, TheLastRayAtTheCursorIsShown) {
 
 TEST(Board, ABuildListsItsNodes) {
     EventLog log;
-    log(BuildNode{0, kNoId, 0, 5});
+    log(BuildNode{0, kNoId, 0, 5, 5.0, 25.0});
     log(SplitCandidate{0, 0, 2, 3, 1.5, 0.4, 0.6, 21.0});
     log(SplitCandidate{0, 1, 5, 1, 2.0, 0.5, 0.5, 16.0});
     log(SplitChosen{0, 1, 2.0, 16.0, 25.0});
-    log(BuildNode{1, 0, 1, 5});
+    log(BuildNode{1, 0, 1, 5, 5.0, 25.0});
     log(LeafMade{1, LeafReason::SahCheaper, 5, 1, 25.0});
     const Board half = makeBoard(log, 3);
     ASSERT_EQ(half.kind, BoardKind::Build);
@@ -160,7 +160,7 @@ TEST(Board, ABuildListsItsNodes) {
     for (auto reason : {LeafReason::FewPrimitives, LeafReason::MaxDepth, LeafReason::SahCheaper,
                         LeafReason::NoSplit, LeafReason::NoProgress}) {
         EventLog leaf;
-        leaf(BuildNode{0, kNoId, 0, 2});
+        leaf(BuildNode{0, kNoId, 0, 2, 5.0, 10.0});
         leaf(LeafMade{0, reason, 2, 0, 10.0});
         const std::string outcome = makeBoard(leaf, 2, it).rows.at(0).cells.back();
         EXPECT_EQ(outcome.rfind("foglia (", 0), 0u) << outcome;

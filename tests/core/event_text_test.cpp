@@ -61,7 +61,8 @@ TEST(EventText, OneLinePerEvent) {
     EXPECT_EQ(eventText(PrimitiveTest{0, 4, false, kInf}, 2), "test primitive 4: miss");
     EXPECT_EQ(eventText(NodeEnter{0, 5, 0.5, kInf}, 3), "enter node 5 [0.5, inf]");
     EXPECT_EQ(eventText(NodeSkip{0, 6, 1.0, 2.0}, 3), "skip node 6");
-    EXPECT_EQ(eventText(BuildNode{1, 0, 1, 12}, 2), "build node 1: 12 primitives, depth 1");
+    EXPECT_EQ(eventText(BuildNode{1, 0, 1, 12, 5.0, 60.0}, 2),
+              "build node 1: 12 primitives, depth 1");
     EXPECT_EQ(eventText(SplitCandidate{1, 0, 4, 8, 2.5, 0.25, 0.75, 10.5}, 2),
               "candidate X = 2.5: NL 4, NR 8, cost 10.5");
     EXPECT_EQ(eventText(SplitChosen{1, 1, 3.2, 33.65625, 40.0}, 2),
@@ -73,11 +74,13 @@ TEST(EventText, OneLinePerEvent) {
     EXPECT_EQ(eventText(RayMiss{2}, 3), "ray 2 misses");
     EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::Diffuse, 0, {0.5, 0.25, 0.0}}, 3),
               "diffuse term (0.5, 0.25, 0)");
-    EXPECT_EQ(eventText(PixelResult{160, 120, {1.0, 0.5, 0.125}}, 3),
+    EXPECT_EQ(eventText(PixelResult{160, 120, 320, 240, {1.0, 0.5, 0.125}}, 3),
               "pixel (160, 120) = (1, 0.5, 0.125)");
-    // A blocked shadow ray's any-hit query has no hit of its own to report (t = infinity): it
-    // read "ray 2 hits primitive - at t = inf".
-    EXPECT_EQ(eventText(RayHit{2, kNoId, kInf, 0.0, 0.0}, 3),
+    // A blocked shadow ray is its own event, naming what blocks it; one whose trace does not say
+    // (a hand-written one) is still blocked, not "ray 2 hits primitive - at t = inf".
+    EXPECT_EQ(eventText(RayBlocked{2, 4, 0.5}, 3),
+              "shadow ray 2 blocked by primitive 4 at t = 0.5: the point is in shadow");
+    EXPECT_EQ(eventText(RayBlocked{2, kNoId, kInf}, 3),
               "shadow ray 2 blocked: the point is in shadow");
 }
 
@@ -90,7 +93,8 @@ TEST(EventText, TinyColoursAreZeroTinyTsAreNot) {
     EXPECT_EQ(
         eventText(ShadingTerm{0, ShadingTermKind::Specular, 0, {6e-7, 0, 0}}, 3, Language::It),
         "termine speculare (6e-07; 0; 0)");
-    EXPECT_EQ(eventText(PixelResult{1, 2, {1e-300, 0.25, 1}}, 3), "pixel (1, 2) = (0, 0.25, 1)");
+    EXPECT_EQ(eventText(PixelResult{1, 2, 4, 4, {1e-300, 0.25, 1}}, 3),
+              "pixel (1, 2) = (0, 0.25, 1)");
     EXPECT_EQ(eventText(PrimitiveTest{0, 3, true, 1e-12}, 3), "test primitive 3: hit at t = 1e-12");
 }
 
@@ -124,6 +128,10 @@ TEST(EventText, ItalianUsesTheSlidesTermsAndDecimalCommas) {
     EXPECT_EQ(eventText(RayHit{0, 3, 2.25, 0.0, 0.0}, 3, it),
               "raggio 0: intersezione con la primitiva 3 a t = 2,25");
     EXPECT_EQ(eventText(RayMiss{2}, 3, it), "raggio 2: nessuna intersezione");
+    EXPECT_EQ(eventText(RayBlocked{2, 4, 0.5}, 3, it),
+              "raggio d'ombra 2 bloccato dalla primitiva 4 a t = 0,5: il punto è in ombra");
+    EXPECT_EQ(eventText(RayBlocked{2, kNoId, kInf}, 3, it),
+              "raggio d'ombra 2 bloccato: il punto è in ombra");
     EXPECT_EQ(eventText(ShadingTerm{0, ShadingTermKind::Diffuse, 0, {0.5, 0.25, 0.0}}, 3, it),
               "termine diffuso (0,5; 0,25; 0)");
     // No internal name (sah_cheaper, diffuse_bounce) reaches an Italian line.
@@ -146,7 +154,7 @@ TEST(EventText, ABlockedShadowRayNamesWhatBlocksIt) {
     const std::uint32_t shadow = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
     log(PrimitiveTest{shadow, 6, false, kInf});
     log(PrimitiveTest{shadow, 4, true, 0.5});
-    log(RayHit{shadow, kNoId, kInf, 0.0, 0.0});
+    log(RayBlocked{shadow, 4, 0.5});
     const std::uint32_t lit = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
     log(PrimitiveTest{lit, 6, false, kInf});
     log(RayMiss{lit});
@@ -176,6 +184,21 @@ TEST(EventText, EveryBlockedShadowRayOfARealTraceNamesAPrimitive) {
                 EXPECT_EQ(line.find("inf:"), std::string::npos) << line;
                 EXPECT_EQ(line.find("primitive -"), std::string::npos) << line;
                 if (line.find("blocked by primitive") != std::string::npos) ++blocked;
+                // A shadow ray ends blocked or missing, never with a hit; what blocks it is a
+                // test of that ray that hit, inside the ray's interval towards the light.
+                if (const auto* h = std::get_if<RayHit>(&log.events()[i])) {
+                    EXPECT_NE(log.rays()[h->ray].kind, RayKind::Shadow) << line;
+                }
+                if (const auto* b = std::get_if<RayBlocked>(&log.events()[i])) {
+                    EXPECT_EQ(log.rays()[b->ray].kind, RayKind::Shadow);
+                    EXPECT_TRUE(b->t > 0 && b->t < log.rays()[b->ray].tMax) << line;
+                    bool tested = false;
+                    for (std::size_t k = 0; k < i; ++k)
+                        if (const auto* t = std::get_if<PrimitiveTest>(&log.events()[k]))
+                            tested |=
+                                t->ray == b->ray && t->prim == b->prim && t->hit && t->t == b->t;
+                    EXPECT_TRUE(tested) << line;
+                }
             }
         }
     EXPECT_GT(blocked, 0);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <optional>
 #include <random>
 
 namespace raystep {
@@ -62,6 +63,64 @@ TEST(Replay, TheSlidesDdaExampleStepByStep) {
         }
     EXPECT_TRUE(segmentSeen);
     EXPECT_EQ(end.mailboxSkips.size(), c.mailboxSkips);
+}
+
+// Lesson 11's "raise cIsect and watch where the SAH stops cutting": every node opens with what
+// making it a leaf costs at the C_isect in use, before any candidate, leaves included.
+TEST(Replay, EveryBuildNodeCarriesItsLeafCostAtTheCIsectInUse) {
+    const Scene2D s = std::get<Scene2D>(loadAnyScene("lecture-kdtree"));
+    ASSERT_EQ(s.primitiveCount(), 15u);  // lesson 11: "all 15 primitives"
+    for (const AccelKind kind : {AccelKind::KdTree, AccelKind::Bvh}) {
+        SCOPED_TRACE(accelKindName(kind));
+        AccelOptions options;
+        options.kdtree.cIsect = options.bvh.cIsect = 20.0;
+        EventLog log;
+        buildAccelerator2D(s, kind, options, &log);
+        std::size_t nodes = 0, leaves = 0;
+        std::optional<BuildNode> open;
+        for (const Event& e : log.events()) {
+            if (const auto* b = std::get_if<BuildNode>(&e)) {
+                ++nodes;
+                open = *b;
+                EXPECT_EQ(b->cIsect, 20.0);
+                EXPECT_EQ(b->leafCost, 20.0 * b->prims);
+                if (b->parent == kNoId) {
+                    EXPECT_EQ(b->leafCost, 300.0);  // 20 x 15
+                }
+            }
+            // The node's outcome says the same cost as its opening did.
+            if (const auto* c = std::get_if<SplitChosen>(&e)) {
+                ASSERT_TRUE(open && open->node == c->node);
+                EXPECT_EQ(c->leafCost, open->leafCost);
+            }
+            if (const auto* l = std::get_if<LeafMade>(&e)) {
+                ++leaves;
+                ASSERT_TRUE(open && open->node == l->node);
+                EXPECT_EQ(l->leafCost, open->leafCost);
+            }
+        }
+        EXPECT_GT(nodes, 1u);
+        EXPECT_GT(leaves, 1u);
+    }
+}
+
+TEST(Replay, ABlockedShadowRayEndsBlockedNotHit) {
+    EventLog log;
+    const std::uint32_t primary = log.beginRay(Ray{}, RayKind::Primary, 0, kNoId);
+    log(RayHit{primary, 2, 3.0, 0.0, 0.0});
+    const std::uint32_t shadow = log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    log(PrimitiveTest{shadow, 4, true, 0.5});
+    log(RayBlocked{shadow, 4, 0.5});
+    log.beginRay(Ray{}, RayKind::Shadow, 1, primary);
+    Replay r(log);
+    const ReplayState& at = r.seek(5);  // just after the RayBlocked
+    EXPECT_EQ(at.ray, shadow);
+    ASSERT_TRUE(at.blocked);
+    EXPECT_EQ(at.blocked->prim, 4u);
+    EXPECT_EQ(at.blocked->t, 0.5);
+    EXPECT_FALSE(at.hit);  // the shadow ray's own state: no nearest hit of its own
+    EXPECT_FALSE(at.missed);
+    EXPECT_FALSE(r.seek(6).blocked);  // the next ray starts afresh
 }
 
 TEST(Replay, EveryChosenSplitIsTheCheapestCandidate) {

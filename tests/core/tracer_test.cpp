@@ -74,6 +74,39 @@ TEST(Tracer, ShadowRayBlockedLeavesAmbientOnly) {
     EXPECT_GT(lit.color.r, 0.1);
 }
 
+TEST(Tracer, ABlockedShadowRayIsRecordedAsBlockedByWhatStopsIt) {
+    // Looking straight down at the floor point (3, 0, 0) through the middle of a 3 x 3 image.
+    const Scene s = litFloor(true);
+    Camera cam;
+    cam.eye = Vec3(3, 1, 0);
+    cam.lookAt = Vec3(3, 0, 0);
+    cam.up = Vec3(0, 0, -1);
+    const Accelerator accel = buildAccelerator(s, AccelKind::BruteForce);
+    EventLog log;
+    tracePixelEvents(s, accel, cam, {}, 1, 1, 3, 3, log);
+    const RayBlocked* blocked = nullptr;
+    const PixelResult* pixel = nullptr;
+    for (const Event& e : log.events()) {
+        if (const auto* b = std::get_if<RayBlocked>(&e)) blocked = b;
+        if (const auto* p = std::get_if<PixelResult>(&e)) pixel = p;
+        if (const auto* h = std::get_if<RayHit>(&e)) {
+            EXPECT_EQ(h->ray, 0u);  // the floor's hit
+        }
+    }
+    ASSERT_TRUE(blocked);
+    EXPECT_EQ(log.rays()[blocked->ray].kind, RayKind::Shadow);
+    // The sphere (primitive 0) sits on the segment to the light, centred sqrt(1.5^2 + 5^2) =
+    // sqrt(27.25) from the floor point: the ray enters it 0.5 before that.
+    EXPECT_EQ(blocked->prim, 0u);
+    EXPECT_NEAR(blocked->t, std::sqrt(27.25) - 0.5, 1e-6);
+    // The pixel says which image it is a pixel of.
+    ASSERT_TRUE(pixel);
+    EXPECT_EQ(pixel->x, 1u);
+    EXPECT_EQ(pixel->y, 1u);
+    EXPECT_EQ(pixel->width, 3u);
+    EXPECT_EQ(pixel->height, 3u);
+}
+
 TEST(Tracer, LightBehindTheSurfaceCastsNoShadowRay) {
     Scene s = litFloor(false);
     s.lights[0].position = Vec3(0, -10, 0);

@@ -52,7 +52,8 @@ class BvhBuilder {
         stats_.maxDepth = std::max<std::uint32_t>(stats_.maxDepth, depth);
         if constexpr (Rec::kEnabled) {
             rec_.node(id, box.lo3(), box.hi3());
-            rec_(BuildNode{id, parent, static_cast<std::uint32_t>(depth), n});
+            rec_(BuildNode{id, parent, static_cast<std::uint32_t>(depth), n, opt_.cIsect,
+                           opt_.cIsect * n});
         }
         const int axis = centreBox.longestAxis();
         if (n <= 1 || (opt_.split != SplitMethod::Sah && n <= maxLeaf()))

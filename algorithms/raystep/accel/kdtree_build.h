@@ -106,7 +106,8 @@ class KdNodeWriter {
         stats_.maxDepth = std::max<std::uint32_t>(stats_.maxDepth, depth);
         if constexpr (Rec::kEnabled) {
             rec.node(id, box.lo3(), box.hi3());
-            rec(BuildNode{id, parent, static_cast<std::uint32_t>(depth), count});
+            rec(BuildNode{id, parent, static_cast<std::uint32_t>(depth), count, opt.cIsect,
+                          leafCost(opt.cIsect, count)});
         }
         return id;
     }

@@ -86,8 +86,11 @@ Color Tracer::shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int dep
         ++counters[RayKind::Shadow];
         const Ray shadow{origin, toLight, 0.0, dist};
         const std::uint32_t shadowId = rec.beginRay(shadow, RayKind::Shadow, depth + 1, rayId);
+        std::size_t shadowFrom = 0;  // the shadow ray's first event after its RayBegin
+        if constexpr (Rec::kEnabled) shadowFrom = rec.events().size();
         if (occluded(accel_, shadow, counters.traversal, rec, shadowId)) {
-            if constexpr (Rec::kEnabled) rec(RayHit{shadowId, kNoId, kInfinity, 0.0, 0.0});
+            if constexpr (Rec::kEnabled)
+                rec(blockedBy(rec.events(), shadowId, shadowFrom, rec.events().size()));
             continue;
         }
         if constexpr (Rec::kEnabled) rec(RayMiss{shadowId});
@@ -146,7 +149,11 @@ Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounter
                           EventLog& log) const {
     log.setDims(3);
     const Color c = pixel(x, y, options, counters, log);
-    log(PixelResult{static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), {c.x, c.y, c.z}});
+    log(PixelResult{static_cast<std::uint32_t>(x),
+                    static_cast<std::uint32_t>(y),
+                    static_cast<std::uint32_t>(options.width),
+                    static_cast<std::uint32_t>(options.height),
+                    {c.x, c.y, c.z}});
     return c;
 }
 

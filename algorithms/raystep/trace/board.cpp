@@ -43,7 +43,8 @@ std::optional<std::uint32_t> rayOf(const Event& event) {
                           std::is_same_v<E, DdaCell> || std::is_same_v<E, MailboxSkip> ||
                           std::is_same_v<E, PrimitiveTest> || std::is_same_v<E, NodeEnter> ||
                           std::is_same_v<E, NodeSkip> || std::is_same_v<E, RayHit> ||
-                          std::is_same_v<E, RayMiss> || std::is_same_v<E, ShadingTerm>)
+                          std::is_same_v<E, RayBlocked> || std::is_same_v<E, RayMiss> ||
+                          std::is_same_v<E, ShadingTerm>)
                 return e.ray;
             else
                 return std::nullopt;
@@ -102,7 +103,8 @@ Board rayBoard(const EventLog& log, std::size_t subject, std::uint32_t ray, std:
                const BoardOptions& options) {
     const auto& events = log.events();
     const Language lang = options.lang;
-    // The ray's events run from its RayBegin to its RayHit or RayMiss, before any other ray's.
+    // The ray's events run from its RayBegin to how it ends (RayHit, RayBlocked or RayMiss),
+    // before any other ray's.
     std::size_t begin = subject;
     while (begin > 0) {
         const auto* b = std::get_if<RayBegin>(&events[begin]);
@@ -122,7 +124,8 @@ Board rayBoard(const EventLog& log, std::size_t subject, std::uint32_t ray, std:
         }
         dda = dda || std::holds_alternative<DdaCell>(e);
         tree = tree || std::holds_alternative<NodeEnter>(e);
-        if (std::holds_alternative<RayHit>(e) || std::holds_alternative<RayMiss>(e)) {
+        if (std::holds_alternative<RayHit>(e) || std::holds_alternative<RayBlocked>(e) ||
+            std::holds_alternative<RayMiss>(e)) {
             ++end;
             break;
         }

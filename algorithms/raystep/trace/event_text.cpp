@@ -82,12 +82,12 @@ std::string termText(const ShadingTerm& e, Language lang) {
     return trf(lang, "ambient term %1", {rgb});
 }
 
-/// A shadow ray's any-hit query records no hit of its own (RayHit with t = infinity): the
-/// blocker is the last primitive test of that ray that hit (the query stops there).
-std::string blockedText(std::uint32_t ray, const PrimitiveTest* blocker, Language lang) {
-    if (!blocker) return trf(lang, "shadow ray %1 blocked: the point is in shadow", {id(ray)});
+/// A blocked shadow ray names what blocks it, when the trace says (a hand-written one may not).
+std::string blockedText(const RayBlocked& e, Language lang) {
+    if (e.prim == kNoId)
+        return trf(lang, "shadow ray %1 blocked: the point is in shadow", {id(e.ray)});
     return trf(lang, "shadow ray %1 blocked by primitive %2 at t = %3: the point is in shadow",
-               {id(ray), id(blocker->prim), numberText(blocker->t, lang)});
+               {id(e.ray), id(e.prim), numberText(e.t, lang)});
 }
 }  // namespace
 
@@ -156,33 +156,25 @@ std::string eventText(const Event& event, int dims, Language lang) {
             else if constexpr (std::is_same_v<E, LeafMade>)
                 return leafText(e, lang);
             else if constexpr (std::is_same_v<E, RayHit>)
-                return std::isinf(e.t) ? blockedText(e.ray, nullptr, lang)
-                                       : trf(lang, "ray %1 hits primitive %2 at t = %3",
-                                             {id(e.ray), id(e.prim), num(e.t)});
+                return trf(lang, "ray %1 hits primitive %2 at t = %3",
+                           {id(e.ray), id(e.prim), num(e.t)});
+            else if constexpr (std::is_same_v<E, RayBlocked>)
+                return blockedText(e, lang);
             else if constexpr (std::is_same_v<E, RayMiss>)
                 return trf(lang, "ray %1 misses", {id(e.ray)});
             else if constexpr (std::is_same_v<E, ShadingTerm>)
                 return termText(e, lang);
-            else
+            else if constexpr (std::is_same_v<E, PixelResult>)
                 return trf(lang, "pixel (%1, %2) = %3",
                            {std::to_string(e.x), std::to_string(e.y), colourText(e.rgb, lang)});
+            else
+                static_assert(sizeof(E) == 0, "every event has its sentence");
         },
         event);
 }
 
 std::string eventText(const EventLog& log, std::size_t index, Language lang) {
     const Event& event = log.events().at(index);
-    if (const auto* hit = std::get_if<RayHit>(&event); hit && std::isinf(hit->t)) {
-        // Back to the ray's own start: its last test that hit is what stopped the query.
-        for (std::size_t i = index; i-- > 0;) {
-            const Event& before = log.events()[i];
-            if (const auto* b = std::get_if<RayBegin>(&before); b && b->ray == hit->ray) break;
-            if (const auto* t = std::get_if<PrimitiveTest>(&before);
-                t && t->ray == hit->ray && t->hit)
-                return blockedText(hit->ray, t, lang);
-        }
-        return blockedText(hit->ray, nullptr, lang);
-    }
     if (const auto* miss = std::get_if<RayMiss>(&event);
         miss && miss->ray < log.rays().size() && log.rays()[miss->ray].kind == RayKind::Shadow)
         return trf(lang, "shadow ray %1 misses: nothing lies between the point and the light",

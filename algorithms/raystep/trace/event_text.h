@@ -23,8 +23,8 @@ std::string tupleText(const std::array<double, 3>& v, int dims, Language lang = 
 std::string axesText(unsigned axes);
 /// One line describing `e`, an event of a log of `dims` dimensions (EventLog::dims()).
 std::string eventText(const Event& e, int dims, Language lang = Language::En);
-/// Event `index` of `log` as one line, with what only the log knows: a blocked shadow ray names
-/// the primitive that blocks it, and a shadow ray that misses says the light is visible.
+/// Event `index` of `log` as one line, with what only the log knows: a shadow ray that misses
+/// says the light is visible (its RayMiss does not say it is a shadow ray).
 std::string eventText(const EventLog& log, std::size_t index, Language lang = Language::En);
 
 }  // namespace raystep

@@ -6,6 +6,7 @@
 // (bounds). docs/trace-format.md describes the file these are saved to.
 #include "raystep/base/ray.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -64,12 +65,15 @@ struct NodeSkip {
     std::uint32_t node;
     double tNear, tFar;
 };
-/// Build: a node is opened with its primitives (bounds in nodes[node] of the log).
+/// Build: a node is opened with its primitives (bounds in nodes[node] of the log), and what
+/// making it a leaf would cost with the build's C_isect: the chart's leaf line from the first step.
 struct BuildNode {
     std::uint32_t node;
     std::uint32_t parent;
     std::uint32_t depth;
     std::uint32_t prims;
+    double cIsect;    // the build's cost of one ray-primitive test
+    double leafCost;  // C_isect N (NaN: a trace that did not record it, nor its node's outcome)
 };
 /// Build: one candidate split plane and its cost,
 /// sahCost = C_trav + C_isect (pL nL + pR nR) (times 1 - emptyBonus when a side is empty).
@@ -112,6 +116,13 @@ struct RayHit {
 struct RayMiss {
     std::uint32_t ray;
 };
+/// A shadow ray's any-hit query found something between the point and the light: primitive
+/// `prim` at `t`, the first hit found (the query stops there), not necessarily the nearest.
+struct RayBlocked {
+    std::uint32_t ray;
+    std::uint32_t prim;  // kNoId when the trace does not say (a hand-written one)
+    double t;
+};
 enum class ShadingTermKind : std::uint8_t {
     Ambient,
     Diffuse,
@@ -127,22 +138,25 @@ struct ShadingTerm {
     std::uint32_t light;  // the light of a diffuse or specular term, kNoId otherwise
     std::array<double, 3> rgb;
 };
+/// The pixel's colour, and the image it is a pixel of (its frame: x < width, y < height).
 struct PixelResult {
     std::uint32_t x, y;
+    std::uint32_t width, height;  // 0 when a trace did not record it
     std::array<double, 3> rgb;
 };
 
 using Event = std::variant<RayBegin, DdaSetup, DdaCell, MailboxSkip, PrimitiveTest, NodeEnter,
                            NodeSkip, BuildNode, SplitCandidate, SplitChosen, LeafMade, RayHit,
-                           RayMiss, ShadingTerm, PixelResult>;
+                           RayMiss, ShadingTerm, PixelResult, RayBlocked>;
 static_assert(sizeof(Event) <= 64, "an event must fit in 64 bytes");
 static_assert(std::is_trivially_copyable_v<Event>);
 
-/// Names used in the trace file, by variant index.
+/// Names used in the trace file, by variant index (a new event goes last: the others keep
+/// their index).
 constexpr std::array<std::string_view, std::variant_size_v<Event>> kEventNames = {
-    "ray_begin",  "dda_setup", "dda_cell",   "mailbox_skip",    "primitive_test",
-    "node_enter", "node_skip", "build_node", "split_candidate", "split_chosen",
-    "leaf_made",  "ray_hit",   "ray_miss",   "shading_term",    "pixel_result"};
+    "ray_begin", "dda_setup",    "dda_cell",        "mailbox_skip", "primitive_test", "node_enter",
+    "node_skip", "build_node",   "split_candidate", "split_chosen", "leaf_made",      "ray_hit",
+    "ray_miss",  "shading_term", "pixel_result",    "ray_blocked"};
 constexpr std::array<std::string_view, 5> kLeafReasonNames = {
     "few_primitives", "max_depth", "sah_cheaper", "no_split", "no_progress"};
 constexpr std::array<std::string_view, 6> kShadingTermNames = {
@@ -228,6 +242,18 @@ class EventLog {
     std::size_t dropped_ = 0;
     int dims_ = 3;
 };
+
+/// What blocks shadow ray `ray`, from its events in [from, to): its last primitive test that
+/// hit, where the any-hit query stopped. No such test (a log cut by the cap): prim kNoId.
+inline RayBlocked blockedBy(const std::vector<Event>& events, std::uint32_t ray, std::size_t from,
+                            std::size_t to) {
+    for (std::size_t i = std::min(to, events.size()); i-- > from;) {
+        if (const auto* t = std::get_if<PrimitiveTest>(&events[i]); t && t->ray == ray && t->hit)
+            return {ray, t->prim, t->t};
+        if (const auto* b = std::get_if<RayBegin>(&events[i]); b && b->ray == ray) break;
+    }
+    return {ray, kNoId, kInfinity};
+}
 
 /// What a cap message says: one line for the user.
 inline std::string capMessage(const EventLog& log) {

@@ -19,6 +19,7 @@ void startRay(ReplayState& s, std::uint32_t ray) {
     s.nodesSkipped.clear();
     s.node.reset();
     s.hit.reset();
+    s.blocked.reset();
     s.missed = false;
 }
 }  // namespace
@@ -66,6 +67,9 @@ void applyEvent(ReplayState& s, const Event& event) {
             } else if constexpr (std::is_same_v<E, RayHit>) {
                 s.ray = e.ray;
                 s.hit = e;
+            } else if constexpr (std::is_same_v<E, RayBlocked>) {
+                s.ray = e.ray;
+                s.blocked = e;
             } else if constexpr (std::is_same_v<E, RayMiss>) {
                 s.ray = e.ray;
                 s.missed = true;

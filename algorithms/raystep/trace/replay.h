@@ -31,8 +31,9 @@ struct ReplayState {
     std::vector<std::uint32_t> nodesEntered;
     std::vector<std::uint32_t> nodesSkipped;
     std::optional<NodeEnter> node;
-    // How it ended (once it has).
+    // How it ended (once it has): its nearest hit, blocked (a shadow ray), or no hit.
     std::optional<RayHit> hit;
+    std::optional<RayBlocked> blocked;
     bool missed = false;
 
     // A build: the node being split, its candidates so far, its choice, and the leaves made.

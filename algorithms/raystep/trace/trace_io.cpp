@@ -5,15 +5,31 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace raystep {
 
 using nlohmann::ordered_json;
 
 namespace {
+
+/// A field added to version 1 after its first files: always written, read when present (a trace
+/// written before it still reads; readEvent says what stands in, readTrace fills it in).
+template <typename T>
+struct Added {
+    T& v;
+};
+template <typename T>
+constexpr bool kAdded = false;
+template <typename T>
+constexpr bool kAdded<Added<T>> = true;
 
 // Each event's fields, named once: the writer and the reader both walk this list, so the file
 // and the structs cannot drift apart.
@@ -49,6 +65,7 @@ void fields(NodeSkip& e, F&& f) {
 template <typename F>
 void fields(BuildNode& e, F&& f) {
     f("node", e.node), f("parent", e.parent), f("depth", e.depth), f("prims", e.prims);
+    f("c_isect", Added<double>{e.cIsect}), f("leaf_cost", Added<double>{e.leafCost});
 }
 template <typename F>
 void fields(SplitCandidate& e, F&& f) {
@@ -78,8 +95,13 @@ void fields(ShadingTerm& e, F&& f) {
     f("ray", e.ray), f("term", e.term), f("light", e.light), f("rgb", e.rgb);
 }
 template <typename F>
+void fields(RayBlocked& e, F&& f) {
+    f("ray", e.ray), f("prim", e.prim), f("t", e.t);
+}
+template <typename F>
 void fields(PixelResult& e, F&& f) {
-    f("x", e.x), f("y", e.y), f("rgb", e.rgb);
+    f("x", e.x), f("y", e.y), f("width", Added<std::uint32_t>{e.width});
+    f("height", Added<std::uint32_t>{e.height}), f("rgb", e.rgb);
 }
 
 template <typename E, std::size_t N>
@@ -102,7 +124,12 @@ struct Writer {
     ordered_json& j;
     template <typename T>
     void operator()(const char* key, const T& v) {
-        if constexpr (std::is_same_v<T, RayKind>)
+        if constexpr (kAdded<T>) {
+            // Not recorded (an old trace's, read): left out, so it reads back as not recorded.
+            if constexpr (std::is_same_v<T, Added<double>>)
+                if (std::isnan(v.v)) return;
+            (*this)(key, v.v);
+        } else if constexpr (std::is_same_v<T, RayKind>)
             j[key] = enumName(kRayKindNames, v);
         else if constexpr (std::is_same_v<T, LeafReason>)
             j[key] = enumName(kLeafReasonNames, v);
@@ -213,6 +240,10 @@ struct FieldReader {
     const ordered_json& j;
     const std::string& path;
     template <typename T>
+    void operator()(const char* key, Added<T> added) {
+        if (j.contains(key)) (*this)(key, added.v);
+    }
+    template <typename T>
     void operator()(const char* key, T& v) {
         const ordered_json& x = r.at(j, path, key);
         const std::string p = JsonLineMap::child(path, key);
@@ -263,6 +294,10 @@ Event readEvent(const Reader& r, const std::string& type, const ordered_json& j,
     } else {
         if (type != kEventNames[I]) return readEvent<I + 1>(r, type, j, path);
         std::variant_alternative_t<I, Event> e{};
+        // What an added field reads as when the file has none: "not recorded" (readTrace fills
+        // in the leaf cost from the node's outcome and the frame from the file's "image").
+        if constexpr (std::is_same_v<decltype(e), BuildNode>)
+            e.cIsect = e.leafCost = std::numeric_limits<double>::quiet_NaN();
         fields(e, FieldReader{r, j, path});
         return e;
     }
@@ -356,6 +391,15 @@ void checkEvent(const Reader& r, const Event& e, const EventLog& log, std::size_
                 r.checkId(ev.parent, nodes, true, child("parent"), "node", "nodes");
             if constexpr (requires { ev.axis; }) r.checkRange(ev.axis, 0, 2, child("axis"));
             if constexpr (std::is_same_v<E, DdaCell>) r.checkRange(ev.axes, 0, 7, child("axes"));
+            if constexpr (std::is_same_v<E, PixelResult>) {
+                // A frame of 0 by 0 is a trace that did not record it.
+                r.checkRange(ev.width, 0, 1 << 20, child("width"));
+                r.checkRange(ev.height, 0, 1 << 20, child("height"));
+                if (ev.width > 0 && ev.height > 0) {
+                    r.checkRange(ev.x, 0, ev.width - 1, child("x"));
+                    r.checkRange(ev.y, 0, ev.height - 1, child("y"));
+                }
+            }
             if constexpr (std::is_same_v<E, DdaSetup>) {
                 r.checkRange(ev.dims, 2, 3, child("dims"));
                 for (std::size_t k = 0; k < ev.step.size(); ++k)
@@ -363,6 +407,42 @@ void checkEvent(const Reader& r, const Event& e, const EventLog& log, std::size_
             }
         },
         e);
+}
+
+/// What a trace written before a field was added says in its place (docs/trace-format.md):
+/// a blocked shadow ray was a hit on no primitive at infinity, a build node's leaf cost is its
+/// outcome's, and a pixel's frame is the file's "image".
+void fillAdded(std::vector<Event>& events, const TraceInfo& info) {
+    std::map<std::uint32_t, std::size_t> open;  // node -> its BuildNode without a leaf cost
+    double cIsect = std::numeric_limits<double>::quiet_NaN();  // the build's, once known
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        Event& e = events[i];
+        if (const auto* h = std::get_if<RayHit>(&e); h && h->prim == kNoId && std::isinf(h->t)) {
+            e = blockedBy(events, h->ray, 0, i);  // back to the ray's own start
+        } else if (auto* b = std::get_if<BuildNode>(&e); b && std::isnan(b->leafCost)) {
+            open[b->node] = i;
+        } else if (auto* p = std::get_if<PixelResult>(&e);
+                   p && p->width == 0 && p->x < std::uint32_t(std::max(info.width, 0)) &&
+                   p->y < std::uint32_t(std::max(info.height, 0))) {
+            // The file's image, when the pixel is in it (a frame it is not in would not read).
+            p->width = static_cast<std::uint32_t>(info.width);
+            p->height = static_cast<std::uint32_t>(info.height);
+        }
+        std::optional<std::pair<std::uint32_t, double>> outcome;  // node, leaf cost
+        if (const auto* c = std::get_if<SplitChosen>(&e)) outcome = {c->node, c->leafCost};
+        if (const auto* l = std::get_if<LeafMade>(&e)) outcome = {l->node, l->leafCost};
+        if (!outcome) continue;
+        const auto at = open.find(outcome->first);
+        if (at == open.end()) continue;
+        auto& b = std::get<BuildNode>(events[at->second]);
+        b.leafCost = outcome->second;
+        if (b.prims > 0 && std::isnan(b.cIsect)) b.cIsect = b.leafCost / b.prims;
+        if (!std::isnan(b.cIsect)) cIsect = b.cIsect;
+        open.erase(at);
+    }
+    // An empty node's leaf cost says nothing of C_isect: the build's, from its other nodes.
+    for (Event& e : events)
+        if (auto* b = std::get_if<BuildNode>(&e); b && std::isnan(b->cIsect)) b->cIsect = cIsect;
 }
 
 EventLog readTrace(std::string_view text, const std::string& fileName, TraceInfo* info) {
@@ -441,16 +521,21 @@ EventLog readTrace(std::string_view text, const std::string& fileName, TraceInfo
     }
     const ordered_json& events = r.at(root, "", "events");
     if (!events.is_array()) r.fail("events", "expected an array");
+    std::vector<Event> recorded;
+    recorded.reserve(events.size());
     for (std::size_t i = 0; i < events.size(); ++i) {
         const std::string p = JsonLineMap::element("events", i);
         const ordered_json& j = events[i];
         const ordered_json& type = r.at(j, p, "type");
         if (!type.is_string()) r.fail(JsonLineMap::child(p, "type"), "expected a string");
-        const Event e = readEvent(r, type.get<std::string>(), j, p);
+        Event e = readEvent(r, type.get<std::string>(), j, p);
         // Ids must point into the tables, so a replay never reads past them.
         checkEvent(r, e, log, nodeCount, p);
-        log.append(e);  // past the cap too: the file is what was recorded
+        recorded.push_back(e);
     }
+    fillAdded(recorded, read);
+    for (const Event& e : recorded)
+        log.append(e);  // past the cap too: the file is what was recorded
     if (info) *info = read;
     return log;
 }
