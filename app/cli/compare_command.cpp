@@ -59,8 +59,9 @@ int runCompare(const CompareArgs& a) {
     setCurrentInput(a.scene);
     AccelChoice base;
     if (auto problem = resolveAccel(a.accel, base)) return fail(*problem);
-    if (base.kind != AccelKind::KdTree && base.kind != AccelKind::Bvh)
-        return fail("--accel " + a.accel.accel + ": compare takes kdtree or bvh");
+    // The split methods are compared: a structure without them has nothing to compare.
+    if (!hasSplit(base.kind))
+        return fail("--accel " + a.accel.accel + ": compare takes " + kindList(hasSplit));
     int code = 0;
     const auto scene = loadOrFail(a.scene, code);
     if (!scene) return code;
@@ -72,9 +73,9 @@ int runCompare(const CompareArgs& a) {
     opt.threads = threadCount(a.threads);
 
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    for (SplitMethod split : {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah}) {
+    for (const SplitMethod split : structureInfo(base.kind).splits) {
         AccelChoice c = base;
-        c.options.kdtree.split = c.options.bvh.split = split;
+        c.options.setSplit(split);
         ProgressBar buildBar("build " + describeAccel(c));
         c.options.setProgress([&](double f) { return buildBar.update(f); });
         const Accelerator accel = buildAccelerator(*scene, c.kind, c.kernels, c.options);

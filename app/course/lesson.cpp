@@ -5,6 +5,7 @@
 #include "course/embedded_lessons.h"
 #include "course/palette.h"
 
+#include "raystep/base/format.h"
 #include "raystep/base/json_reader.h"
 #include "raystep/base/names.h"
 #include "raystep/geometry/kernels.h"
@@ -188,57 +189,69 @@ ReplayPosition readPosition(const Reader& r, const json& j, const std::string& p
 
 void readSetup(const Reader& r, const json& j, const std::string& path, Lesson& l) {
     r.requireObject(j, path);
-    r.checkKeys(j, path,
-                {"accel", "split", "mailbox", "grid_res", "grid_lambda", "leaf_size", "max_depth",
-                 "c_trav", "c_isect", "empty_bonus", "buckets"});
+    // The keys: "accel" and every option of the structures' table (structure_info.h).
+    std::string allowed = "accel";
+    for (const OptionInfo& o : accelOptions()) allowed += ", " + std::string(o.key);
+    for (const auto& [key, value] : j.items()) {
+        bool known = key == "accel";
+        for (const OptionInfo& o : accelOptions()) known = known || key == o.key;
+        if (!known)
+            r.fail(JsonLineMap::child(path, key), "unknown key (allowed here: " + allowed + ")");
+    }
     AccelOptions& o = l.options;
     ifPresent(j, path, "accel", [&](const json& v, const std::string& p) {
         const auto k = parseAccelKind(r.string(v, p));
-        if (!k) r.fail(p, "expected bruteforce, grid, kdtree or bvh");
+        if (!k) r.fail(p, "expected " + kindList());
         l.accel = *k;
     });
-    ifPresent(j, path, "split", [&](const json& v, const std::string& p) {
-        const auto s = parseSplitMethod(r.string(v, p));
-        if (!s) r.fail(p, "expected midpoint, median or sah");
-        o.kdtree.split = o.bvh.split = *s;
-    });
-    ifPresent(j, path, "mailbox", [&](const json& v, const std::string& p) {
-        if (!v.is_boolean()) r.fail(p, "expected true or false, got " + Reader::typeName(v));
-        o.grid.mailbox = o.kdtree.mailbox = v.get<bool>();
-    });
-    ifPresent(j, path, "grid_res", [&](const json& v, const std::string& p) {
-        if (!v.is_array() || v.size() < 2 || v.size() > 3)
-            r.fail(p, "expected [NX, NY] or [NX, NY, NZ], got " + Reader::typeName(v));
-        std::array<int, 3> res{1, 1, 1};
-        for (std::size_t i = 0; i < v.size(); ++i)
-            res[i] = r.integer(v[i], JsonLineMap::element(p, i), 1, GridOptions::kMaxCellsPerAxis);
-        const std::size_t cells = std::size_t(res[0]) * res[1] * res[2];
-        if (cells > GridOptions::kMaxCells)
-            r.fail(p, std::to_string(cells) + " cells, more than the grid's " +
-                          std::to_string(GridOptions::kMaxCells) + " (2^24)");
-        o.grid.res = res;
-    });
-    ifPresent(j, path, "grid_lambda",
-              [&](const json& v, const std::string& p) { o.grid.lambda = r.positive(v, p); });
-    ifPresent(j, path, "leaf_size", [&](const json& v, const std::string& p) {
-        o.kdtree.leafSize = o.bvh.leafSize = r.integer(v, p, 1, 1'000'000);
-    });
-    ifPresent(j, path, "max_depth", [&](const json& v, const std::string& p) {
-        o.kdtree.maxDepth = r.integer(v, p, 1, 60);
-    });
-    ifPresent(j, path, "c_trav", [&](const json& v, const std::string& p) {
-        o.kdtree.cTrav = o.bvh.cTrav = r.nonNegative(v, p);
-    });
-    ifPresent(j, path, "c_isect", [&](const json& v, const std::string& p) {
-        o.kdtree.cIsect = o.bvh.cIsect = r.positive(v, p);
-    });
-    ifPresent(j, path, "empty_bonus", [&](const json& v, const std::string& p) {
-        o.kdtree.emptyBonus = r.nonNegative(v, p);
-        if (o.kdtree.emptyBonus > 1.0) r.fail(p, "must be between 0 and 1");
-    });
-    ifPresent(j, path, "buckets", [&](const json& v, const std::string& p) {
-        o.bvh.buckets = r.integer(v, p, 2, 256);
-    });
+    for (const OptionInfo& info : accelOptions()) {
+        const std::string key(info.key);
+        ifPresent(j, path, key.c_str(), [&](const json& v, const std::string& p) {
+            switch (info.type) {
+                case OptionType::Choice:
+                    if (info.option == AccelOption::Split) {
+                        const auto s = parseSplitMethod(r.string(v, p));
+                        if (!s) r.fail(p, "expected midpoint, median or sah");
+                        o.setSplit(*s);
+                    } else {
+                        const auto b = parseKdBuild(r.string(v, p));
+                        if (!b) r.fail(p, "expected exact or fast");
+                        o.kdtree.build = *b;
+                    }
+                    return;
+                case OptionType::Switch:
+                    if (!v.is_boolean())
+                        r.fail(p, "expected true or false, got " + Reader::typeName(v));
+                    o.set(info.option, v.get<bool>());
+                    return;
+                case OptionType::Cells: {
+                    if (!v.is_array() || v.size() < 2 || v.size() > 3)
+                        r.fail(p, "expected [NX, NY] or [NX, NY, NZ], got " + Reader::typeName(v));
+                    std::array<int, 3> res{1, 1, 1};
+                    for (std::size_t i = 0; i < v.size(); ++i)
+                        res[i] =
+                            r.integer(v[i], JsonLineMap::element(p, i), int(info.lo), int(info.hi));
+                    const std::size_t cells = std::size_t(res[0]) * res[1] * res[2];
+                    if (cells > GridOptions::kMaxCells)
+                        r.fail(p, std::to_string(cells) + " cells, more than the grid's " +
+                                      std::to_string(GridOptions::kMaxCells) + " (2^24)");
+                    o.grid.res = res;
+                    return;
+                }
+                case OptionType::Number:
+                case OptionType::Whole: {
+                    const double x = r.number(v, p);
+                    if (auto why = optionProblem(info.option, x))
+                        r.fail(p, *why + ", got " + formatNumber(x));
+                    o.set(info.option, x);
+                    return;
+                }
+            }
+        });
+    }
+    if (o.kdtree.build == KdBuild::Fast && j.contains("bin_above"))
+        r.fail(JsonLineMap::child(path, "bin_above"),
+               "the fast build (kd_build) bins every node already");
 }
 
 std::array<int, 2> readPair(const Reader& r, const json& j, const std::string& path, int lo,
@@ -767,9 +780,8 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         if (l.exercises[i].kind == ExerciseKind::SweepPick && !l.sweep)
             r.fail(JsonLineMap::child(JsonLineMap::element("exercises", i), "type"),
                    "a sweep_pick exercise needs the lesson's \"sweep\"");
-    if (l.trace.kind == LessonTrace::Kind::Build && l.accel != AccelKind::KdTree &&
-        l.accel != AccelKind::Bvh)
-        r.fail("trace", "a build can be recorded for a kdtree or a bvh (setup.accel)");
+    if (l.trace.kind == LessonTrace::Kind::Build && !recordsBuild(l.accel))
+        r.fail("trace", "a build can be recorded for " + kindList(recordsBuild) + " (setup.accel)");
     return l;
 }
 

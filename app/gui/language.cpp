@@ -70,17 +70,8 @@ std::string sceneDescription(const std::string& english) {
 }
 
 QString structureName(AccelKind kind) {
-    switch (kind) {
-        case AccelKind::BruteForce:
-            return QCoreApplication::translate("raystep", "brute force");
-        case AccelKind::Grid:
-            return QCoreApplication::translate("raystep", "grid");
-        case AccelKind::KdTree:
-            return QCoreApplication::translate("raystep", "kd-tree");
-        case AccelKind::Bvh:
-            return QCoreApplication::translate("raystep", "BVH");
-    }
-    return QString::fromUtf8(accelKindName(kind).data());
+    // The table's label, translated by the core from the same catalogue Qt's tr() reads.
+    return QString::fromStdString(structureLabel(kind, gLanguage));
 }
 
 }  // namespace raystep::gui

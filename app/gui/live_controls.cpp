@@ -4,8 +4,6 @@
 
 #include "language.h"
 
-#include "raystep/accel/kdtree_build.h"
-
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -16,18 +14,20 @@
 #include <QSpinBox>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace raystep::gui {
 
 namespace {
-bool hasSplit(AccelKind kind) {
-    return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
-}
+using O = AccelOption;
 
-QDoubleSpinBox* doubleBox(const char* name, double lo, double hi, double step, int decimals) {
+/// A box over an option of the table (structure_info.h): its limits, as the CLI and the lesson
+/// reader check them, with auto (0) first where the option has one.
+QDoubleSpinBox* doubleBox(const char* name, AccelOption option, double step, int decimals) {
     auto* b = new QDoubleSpinBox;
     b->setObjectName(name);
+    const auto [lo, hi] = controlRange(option, std::pow(10.0, -decimals));
     b->setRange(lo, hi);
     b->setSingleStep(step);
     b->setDecimals(decimals);
@@ -35,10 +35,11 @@ QDoubleSpinBox* doubleBox(const char* name, double lo, double hi, double step, i
     return b;
 }
 
-QSpinBox* intBox(const char* name, int lo, int hi) {
+QSpinBox* intBox(const char* name, AccelOption option) {
     auto* b = new QSpinBox;
     b->setObjectName(name);
-    b->setRange(lo, hi);
+    const auto [lo, hi] = controlRange(option, 1.0);
+    b->setRange(static_cast<int>(lo), static_cast<int>(hi));
     b->setKeyboardTracking(false);
     return b;
 }
@@ -64,9 +65,8 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
 
     structure_ = new QComboBox;
     structure_->setObjectName("liveStructure");
-    for (const AccelKind k :
-         {AccelKind::BruteForce, AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh})
-        structure_->addItem(structureName(k), static_cast<int>(k));
+    for (const StructureInfo& info : structures())
+        structure_->addItem(structureName(info.kind), static_cast<int>(info.kind));
     split_ = new QComboBox;
     split_->setObjectName("liveSplit");
     split_->addItem(tr("midpoint"), static_cast<int>(SplitMethod::Midpoint));
@@ -78,7 +78,7 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     auto* cellsRow = new QHBoxLayout;
     cellsRow->setSpacing(2);
     for (int i = 0; i < 3; ++i) {
-        cells_[i] = intBox(cellNames[i], 1, GridOptions::kMaxCellsPerAxis);
+        cells_[i] = intBox(cellNames[i], O::GridRes);
         if (i == 2) {
             // NZ and its "x" together, hidden for a 2D scene.
             zCells_ = new QWidget;
@@ -102,20 +102,20 @@ LiveControls::LiveControls(Session& s, QWidget* parent) : QWidget(parent), sessi
     byLambda_->setToolTip(
         tr("Cells from Cleary and Wyvill's rule: λ cells per primitive, in all (else the cells "
            "per axis above)"));
-    lambda_ = doubleBox("liveLambda", 0.01, 1000.0, 0.5, 2);
-    cTrav_ = doubleBox("liveCTrav", 0.0, 1000.0, 0.5, 2);
+    lambda_ = doubleBox("liveLambda", O::GridLambda, 0.5, 2);
+    cTrav_ = doubleBox("liveCTrav", O::CTrav, 0.5, 2);
     cTrav_->setToolTip(tr("SAH: the cost of one traversal step (cTrav)"));
-    cIsect_ = doubleBox("liveCIsect", 0.01, 1000.0, 0.5, 2);
+    cIsect_ = doubleBox("liveCIsect", O::CIsect, 0.5, 2);
     cIsect_->setToolTip(tr("SAH: the cost of one ray-primitive test (cIsect)"));
-    emptyBonus_ = doubleBox("liveEmptyBonus", 0.0, 1.0, 0.1, 2);
+    emptyBonus_ = doubleBox("liveEmptyBonus", O::EmptyBonus, 0.1, 2);
     emptyBonus_->setToolTip(
         tr("kd-tree SAH: a split with an empty side costs (1 - bonus) times as much"));
-    leafSize_ = intBox("liveLeafSize", 0, 1000000);
+    leafSize_ = intBox("liveLeafSize", O::LeafSize);
     leafSize_->setSpecialValueText(tr("auto"));
     leafSize_->setToolTip(
         tr("This many primitives or fewer make a leaf (auto: 1 for the SAH, "
            "4 for midpoint and median)"));
-    maxDepth_ = intBox("liveMaxDepth", 0, kdbuild::kMaxDepthCap);
+    maxDepth_ = intBox("liveMaxDepth", O::MaxDepth);
     maxDepth_->setSpecialValueText(tr("auto"));
     maxDepth_->setToolTip(tr("The kd-tree's depth limit (auto: 8 + 1.3 log2 N)"));
     mailbox_ = new QCheckBox(tr("Mailboxing"));
@@ -174,8 +174,7 @@ AccelKind LiveControls::kind() const {
 AccelOptions LiveControls::options() const {
     AccelOptions o = session_.options();
     o.setProgress({});  // the last build's progress belonged to its task
-    const auto split = static_cast<SplitMethod>(split_->currentData().toInt());
-    o.kdtree.split = o.bvh.split = split;
+    o.setSplit(static_cast<SplitMethod>(split_->currentData().toInt()));
     if (byLambda_->isChecked()) {
         o.grid.res.reset();
         o.grid.lambda = lambda_->value();
@@ -183,14 +182,12 @@ AccelOptions LiveControls::options() const {
         o.grid.res = std::array<int, 3>{cells_[0]->value(), cells_[1]->value(),
                                         session_.is2D() ? 1 : cells_[2]->value()};
     }
-    o.grid.mailbox = o.kdtree.mailbox = mailbox_->isChecked();
-    o.kdtree.cTrav = o.bvh.cTrav = cTrav_->value();
-    o.kdtree.cIsect = o.bvh.cIsect = cIsect_->value();
-    o.kdtree.emptyBonus = emptyBonus_->value();
-    o.kdtree.maxDepth = maxDepth_->value();
-    o.kdtree.leafSize = leafSize_->value();
-    o.bvh.leafSize = leafSize_->value() > 0 ? leafSize_->value() : BvhOptions{}.leafSize;
-    o.bvh.maxLeafSize = std::max(BvhOptions{}.maxLeafSize, o.bvh.leafSize);
+    o.set(O::Mailbox, mailbox_->isChecked());
+    o.set(O::CTrav, cTrav_->value());
+    o.set(O::CIsect, cIsect_->value());
+    o.set(O::EmptyBonus, emptyBonus_->value());
+    o.set(O::MaxDepth, maxDepth_->value());
+    o.set(O::LeafSize, leafSize_->value());
     return o;
 }
 
@@ -205,8 +202,8 @@ void LiveControls::sync() {
     const AccelKind k = session_.kind();
     const AccelOptions o = session_.options();
     structure_->setCurrentIndex(structure_->findData(static_cast<int>(k)));
-    const bool bvh = k == AccelKind::Bvh;
-    split_->setCurrentIndex(split_->findData(static_cast<int>(bvh ? o.bvh.split : o.kdtree.split)));
+    split_->setCurrentIndex(
+        split_->findData(static_cast<int>(o.split(k).value_or(o.kdtree.split))));
     // A 2D scene may name the grid its slides draw: that grid is not lambda's.
     const Scene2D* s2 = session_.scene2D();
     const bool byRule = !o.grid.res && !(s2 && s2->gridRes);
@@ -218,12 +215,12 @@ void LiveControls::sync() {
     if (res)
         for (int i = 0; i < 3; ++i) cells_[i]->setValue((*res)[i]);
     zCells_->setVisible(!session_.is2D());
-    mailbox_->setChecked(k == AccelKind::KdTree ? o.kdtree.mailbox : o.grid.mailbox);
-    cTrav_->setValue(bvh ? o.bvh.cTrav : o.kdtree.cTrav);
-    cIsect_->setValue(bvh ? o.bvh.cIsect : o.kdtree.cIsect);
-    emptyBonus_->setValue(o.kdtree.emptyBonus);
-    leafSize_->setValue(bvh ? o.bvh.leafSize : o.kdtree.leafSize);
-    maxDepth_->setValue(o.kdtree.maxDepth);
+    mailbox_->setChecked(o.value(k, O::Mailbox) != 0.0);
+    cTrav_->setValue(o.value(k, O::CTrav));
+    cIsect_->setValue(o.value(k, O::CIsect));
+    emptyBonus_->setValue(o.value(k, O::EmptyBonus));
+    leafSize_->setValue(static_cast<int>(o.value(k, O::LeafSize)));
+    maxDepth_->setValue(static_cast<int>(o.value(k, O::MaxDepth)));
     enableForKind();
     syncing_ = false;
     updateStatistics();
@@ -232,21 +229,21 @@ void LiveControls::sync() {
 void LiveControls::enableForKind() {
     const AccelKind k = kind();
     const bool scene = session_.hasScene();
-    const bool isGrid = k == AccelKind::Grid, kd = k == AccelKind::KdTree;
+    const auto split = static_cast<SplitMethod>(split_->currentData().toInt());
+    // A control is on where the structure's row says its build reads the option (the SAH's
+    // costs for the SAH only).
+    const auto on = [&](AccelOption o) { return scene && readsOption(k, o, split); };
     structure_->setEnabled(scene);
-    split_->setEnabled(scene && hasSplit(k));
-    byLambda_->setEnabled(scene && isGrid);
-    lambda_->setEnabled(scene && isGrid && byLambda_->isChecked());
-    for (QSpinBox* b : cells_) b->setEnabled(scene && isGrid && !byLambda_->isChecked());
-    mailbox_->setEnabled(scene && (isGrid || kd));
-    // The costs steer the SAH only; the empty bonus and the depth limit are the kd-tree's.
-    const bool sah =
-        hasSplit(k) && static_cast<SplitMethod>(split_->currentData().toInt()) == SplitMethod::Sah;
-    cTrav_->setEnabled(scene && sah);
-    cIsect_->setEnabled(scene && sah);
-    emptyBonus_->setEnabled(scene && sah && kd);
-    leafSize_->setEnabled(scene && hasSplit(k));
-    maxDepth_->setEnabled(scene && kd);
+    split_->setEnabled(on(O::Split));
+    byLambda_->setEnabled(on(O::GridLambda));
+    lambda_->setEnabled(on(O::GridLambda) && byLambda_->isChecked());
+    for (QSpinBox* b : cells_) b->setEnabled(on(O::GridRes) && !byLambda_->isChecked());
+    mailbox_->setEnabled(on(O::Mailbox));
+    cTrav_->setEnabled(on(O::CTrav));
+    cIsect_->setEnabled(on(O::CIsect));
+    emptyBonus_->setEnabled(on(O::EmptyBonus));
+    leafSize_->setEnabled(on(O::LeafSize));
+    maxDepth_->setEnabled(on(O::MaxDepth));
 }
 
 void LiveControls::updateStatistics() {
@@ -291,9 +288,8 @@ void LiveControls::updateStatistics() {
         // The rest waits with the replay: a count up to an exercise's position (or the cursor,
         // presenting) reads as the whole, so none is shown until the exercise is answered or
         // put away.
-        lines << (session_.limit()
-                      ? tr("Traced: counts wait for the exercise")
-                      : tr("Traced: counts wait for the question's answer"));
+        lines << (session_.limit() ? tr("Traced: counts wait for the exercise")
+                                   : tr("Traced: counts wait for the question's answer"));
     } else if (built > 0)
         lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
     else if (session_.kind() == AccelKind::Grid)

@@ -44,7 +44,9 @@ int main(int argc, char** argv) {
         "Presenting mode: every step and view free, the exercises questions to the room, an "
         "answer shown when revealed. Without --present or --lecturer, the mode of the last run.");
     const QCommandLineOption accelOpt(
-        "accel", "Structure: bruteforce, grid, kdtree or bvh (default: grid; kdtree for a model).",
+        "accel",
+        QString::fromStdString("Structure: " + raystep::kindList() +
+                               " (default: grid; kdtree for a model)."),
         "kind", "grid");
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
     const QCommandLineOption replayOpt("replay", "What to replay: ray (the default) or build.",
@@ -68,8 +70,8 @@ int main(int argc, char** argv) {
     raystep::gui::setInterfaceLanguage(*language);
     const auto kind = raystep::parseAccelKind(parser.value(accelOpt).toStdString());
     if (!kind)
-        return fail("--accel " + parser.value(accelOpt) +
-                    ": expected bruteforce, grid, kdtree or bvh");
+        return fail("--accel " + parser.value(accelOpt) + ": expected " +
+                    QString::fromStdString(raystep::kindList()));
     const QString replay = parser.value(replayOpt);
     if (replay != "ray" && replay != "build")
         return fail("--replay " + replay + ": expected ray or build");

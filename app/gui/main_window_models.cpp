@@ -38,9 +38,6 @@ QString splitName(SplitMethod split) {
     }
     return MainWindow::tr("SAH");
 }
-bool hasSplit(AccelKind kind) {
-    return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
-}
 /// Past this many primitives brute force is asked about first and its pixel traces run in the
 /// background: a pixel's three rays then test 600,000 primitives or more (most of a second on
 /// a student's laptop), and its image takes minutes to hours.
@@ -55,9 +52,8 @@ void MainWindow::createStructureControls() {
     bar->setObjectName("structureToolBar");  // saveState/restoreState need a name
     structureBox_ = new QComboBox;
     structureBox_->setObjectName("structureChooser");
-    for (const AccelKind k :
-         {AccelKind::BruteForce, AccelKind::Grid, AccelKind::KdTree, AccelKind::Bvh})
-        structureBox_->addItem(structureName(k), static_cast<int>(k));
+    for (const StructureInfo& s : structures())
+        structureBox_->addItem(structureName(s.kind), static_cast<int>(s.kind));
     structureBox_->setToolTip(
         tr("The acceleration structure the scene is traced with; changing it builds it again"));
     splitBox_ = new QComboBox;
@@ -89,7 +85,7 @@ void MainWindow::syncStructureControls() {
     const bool scene = session_.hasScene();
     const AccelKind kind = scene ? session_.kind() : openKind();
     const AccelOptions options = scene ? session_.options() : openOptions();
-    const SplitMethod split = kind == AccelKind::Bvh ? options.bvh.split : options.kdtree.split;
+    const SplitMethod split = options.split(kind).value_or(options.kdtree.split);
     structureBox_->setCurrentIndex(structureBox_->findData(static_cast<int>(kind)));
     splitBox_->setCurrentIndex(splitBox_->findData(static_cast<int>(split)));
     splitBox_->setEnabled(hasSplit(kind));
@@ -215,7 +211,7 @@ void MainWindow::buildChosenStructure(AccelKind kind, SplitMethod split) {
     chosenStructure_ = {kind, split};
     splitBox_->setEnabled(hasSplit(kind));
     AccelOptions options = session_.options();
-    options.kdtree.split = options.bvh.split = split;
+    options.setSplit(split);
     applyStructure(kind, options);
 }
 
@@ -231,7 +227,7 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
     }
     const std::uint64_t generation = generation_;
     const bool render = !imageView_->isHidden();
-    const SplitMethod split = kind == AccelKind::Bvh ? options.bvh.split : options.kdtree.split;
+    const SplitMethod split = options.split(kind).value_or(options.kdtree.split);
     const QString what = hasSplit(kind)
                              ? tr("%1, %2 splits").arg(structureName(kind), splitName(split))
                              : structureName(kind);

@@ -58,10 +58,8 @@ class Session : public QObject {
     /// Records the construction of the scene's structure (kd-tree or BVH; 2D or 3D); any thread.
     /// Throws BuildCancelled when `progress` says stop.
     static LogRef recordBuild(const SceneRef& scene, const ProgressFn& progress = {});
-    /// Whether the structure has a construction to replay (a grid or brute force has none).
-    static bool hasBuild(AccelKind kind) {
-        return kind == AccelKind::KdTree || kind == AccelKind::Bvh;
-    }
+    /// Whether the structure has a construction to replay (its row in structure_info.h).
+    static bool hasBuild(AccelKind kind) { return recordsBuild(kind); }
 
     /// Shows a prepared scene (GUI thread), with an empty log.
     void adopt(SceneRef scene);

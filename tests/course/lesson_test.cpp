@@ -399,6 +399,34 @@ TEST(Lessons, ABadLessonFileNamesLineAndKey) {
                       "version 1");
 }
 
+TEST(Lessons, TheSetupReadsTheStructureTablesLimits) {
+    // setup's keys, limits and structures are the table's (structure_info.h), as the CLI's.
+    const auto withSetup = [](const std::string& setup) {
+        std::string text = lessonWith("");
+        text.replace(text.find("{\"accel\": \"grid\"}"), 17, setup);
+        return text;
+    };
+    expectLessonError(withSetup("{\"accel\": \"kdtree\", \"max_depth\": 61}"), 9, "setup.max_depth",
+                      "must be from 1 to 60, got 61");
+    expectLessonError(withSetup("{\"accel\": \"bvh\", \"c_isect\": 0}"), 9, "setup.c_isect",
+                      "must be greater than 0");
+    expectLessonError(withSetup("{\"accel\": \"bvh\", \"buckets\": 1.5}"), 9, "setup.buckets",
+                      "expected a whole number");
+    expectLessonError(withSetup("{\"accel\": \"octree\"}"), 9, "setup.accel",
+                      "expected bruteforce, grid, kdtree or bvh");
+    expectLessonError(withSetup("{\"accel\": \"grid\", \"depth\": 3}"), 9, "setup.depth",
+                      "bin_above, kd_build)");
+    const Lesson l =
+        loadLessonText(withSetup("{\"accel\": \"kdtree\", \"kd_build\": \"fast\", \"c_isect\": 20, "
+                                 "\"leaf_size\": 2}"),
+                       "ok.json");
+    EXPECT_EQ(l.accel, AccelKind::KdTree);
+    EXPECT_EQ(l.options.kdtree.build, KdBuild::Fast);
+    EXPECT_EQ(l.options.kdtree.cIsect, 20.0);
+    EXPECT_EQ(l.options.bvh.cIsect, 20.0);
+    EXPECT_EQ(l.options.kdtree.leafSize, 2);
+}
+
 TEST(Lessons, TheRobustnessLessonSetsTheSlidesLoopBesideTheExactWalk) {
     Lesson l = loadLesson("robustness");
     const LessonRun run = runLesson(l);

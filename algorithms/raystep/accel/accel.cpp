@@ -1,23 +1,87 @@
 #include "raystep/accel/accel.h"
 
-#include "raystep/base/names.h"
-
+#include <algorithm>
 #include <stdexcept>
 
 namespace raystep {
 
-namespace {
-constexpr NameTable<AccelKind, 4> kAccelNames{{{AccelKind::BruteForce, "bruteforce"},
-                                               {AccelKind::Grid, "grid"},
-                                               {AccelKind::KdTree, "kdtree"},
-                                               {AccelKind::Bvh, "bvh"}}};
-}  // namespace
-
-std::optional<AccelKind> parseAccelKind(std::string_view name) {
-    return valueNamed(kAccelNames, name);
+std::optional<SplitMethod> AccelOptions::split(AccelKind kind) const {
+    if (!hasSplit(kind)) return std::nullopt;
+    return kind == AccelKind::Bvh ? bvh.split : kdtree.split;
 }
-std::string_view accelKindName(AccelKind kind) {
-    return nameOf(kAccelNames, kind);
+
+double AccelOptions::value(AccelKind kind, AccelOption option) const {
+    const bool isBvh = kind == AccelKind::Bvh;
+    switch (option) {
+        case AccelOption::Split:
+            return static_cast<int>(isBvh ? bvh.split : kdtree.split);
+        case AccelOption::Mailbox:
+            return (kind == AccelKind::KdTree ? kdtree.mailbox : grid.mailbox) ? 1.0 : 0.0;
+        case AccelOption::GridLambda:
+            return grid.lambda;
+        case AccelOption::LeafSize:
+            return isBvh ? bvh.leafSize : kdtree.leafSize;
+        case AccelOption::MaxDepth:
+            return kdtree.maxDepth;
+        case AccelOption::CTrav:
+            return isBvh ? bvh.cTrav : kdtree.cTrav;
+        case AccelOption::CIsect:
+            return isBvh ? bvh.cIsect : kdtree.cIsect;
+        case AccelOption::EmptyBonus:
+            return kdtree.emptyBonus;
+        case AccelOption::Buckets:
+            return bvh.buckets;
+        case AccelOption::BinAbove:
+            return kdtree.binAbove;
+        case AccelOption::KdBuild:
+            return static_cast<int>(kdtree.build);
+        case AccelOption::GridRes:
+            break;
+    }
+    throw std::logic_error("the grid's resolution is three values: read grid.res");
+}
+
+void AccelOptions::set(AccelOption option, double v) {
+    switch (option) {
+        case AccelOption::Split:
+            return setSplit(static_cast<SplitMethod>(static_cast<int>(v)));
+        case AccelOption::Mailbox:
+            grid.mailbox = kdtree.mailbox = v != 0.0;
+            return;
+        case AccelOption::GridLambda:
+            grid.lambda = v;
+            return;
+        case AccelOption::LeafSize:
+            kdtree.leafSize = static_cast<int>(v);
+            // The BVH has no auto size; its SAH leaves may grow past a larger size asked for.
+            bvh.leafSize = v > 0 ? static_cast<int>(v) : BvhOptions{}.leafSize;
+            bvh.maxLeafSize = std::max(BvhOptions{}.maxLeafSize, bvh.leafSize);
+            return;
+        case AccelOption::MaxDepth:
+            kdtree.maxDepth = static_cast<int>(v);
+            return;
+        case AccelOption::CTrav:
+            kdtree.cTrav = bvh.cTrav = v;
+            return;
+        case AccelOption::CIsect:
+            kdtree.cIsect = bvh.cIsect = v;
+            return;
+        case AccelOption::EmptyBonus:
+            kdtree.emptyBonus = v;
+            return;
+        case AccelOption::Buckets:
+            bvh.buckets = static_cast<int>(v);
+            return;
+        case AccelOption::BinAbove:
+            kdtree.binAbove = static_cast<int>(v);
+            return;
+        case AccelOption::KdBuild:
+            kdtree.build = static_cast<KdBuild>(static_cast<int>(v));
+            return;
+        case AccelOption::GridRes:
+            break;
+    }
+    throw std::logic_error("the grid's resolution is three values: set grid.res");
 }
 
 namespace {
@@ -41,35 +105,45 @@ AcceleratorT<Prims> build(const Prims& prims, AccelKind kind, const AccelOptions
     throw std::logic_error("unknown accelerator kind");
 }
 
+// One overload per structure (std::visit): a new alternative of the variant fails to compile here.
 template <typename Prims>
-BuildSummary summarizeT(const AcceleratorT<Prims>& accel) {
-    constexpr int N = Prims::N;
+BuildSummary summaryOf(const UniformGridT<Prims>& g) {
     BuildSummary s;
-    if (const auto* g = std::get_if<UniformGridT<Prims>>(&accel)) {
-        s.stats.nodes = static_cast<std::uint32_t>(g->cellCount());
-        s.stats.leaves = s.stats.nodes;
-        s.stats.emptyLeaves = static_cast<std::uint32_t>(g->emptyCells());
-        s.stats.references = g->references();
-        s.stats.buildMs = g->buildMs();
-        s.description = "grid ";
-        for (int i = 0; i < N; ++i) {
-            if (i) s.description += 'x';
-            s.description += std::to_string(g->spec().res[i]);
-        }
-    } else if (const auto* k = std::get_if<KdTree<Prims>>(&accel)) {
-        s.stats = k->stats();
-        s.description = "kdtree " + std::string(name(k->options().split));
-    } else if (const auto* b = std::get_if<Bvh<Prims>>(&accel)) {
-        s.stats = b->stats();
-        s.description = "bvh " + std::string(name(b->options().split));
-    } else {
-        const auto& bf = std::get<BruteForceT<Prims>>(accel);
-        s.stats.nodes = s.stats.leaves = 1;
-        s.stats.references = bf.primitives().count();
-        s.stats.sahCost = KdTreeOptions{}.cIsect * bf.primitives().count();  // C_isect N
-        s.description = "bruteforce";
+    s.stats.nodes = static_cast<std::uint32_t>(g.cellCount());
+    s.stats.leaves = s.stats.nodes;
+    s.stats.emptyLeaves = static_cast<std::uint32_t>(g.emptyCells());
+    s.stats.references = g.references();
+    s.stats.buildMs = g.buildMs();
+    s.description = std::string(accelKindName(AccelKind::Grid)) + " ";
+    for (int i = 0; i < Prims::N; ++i) {
+        if (i) s.description += 'x';
+        s.description += std::to_string(g.spec().res[i]);
     }
     return s;
+}
+template <typename Prims>
+BuildSummary summaryOf(const KdTree<Prims>& k) {
+    return {k.stats(), std::string(accelKindName(AccelKind::KdTree)) + " " +
+                           std::string(name(k.options().split))};
+}
+template <typename Prims>
+BuildSummary summaryOf(const Bvh<Prims>& b) {
+    return {b.stats(), std::string(accelKindName(AccelKind::Bvh)) + " " +
+                           std::string(name(b.options().split))};
+}
+template <typename Prims>
+BuildSummary summaryOf(const BruteForceT<Prims>& bf) {
+    BuildSummary s;
+    s.stats.nodes = s.stats.leaves = 1;
+    s.stats.references = bf.primitives().count();
+    s.stats.sahCost = KdTreeOptions{}.cIsect * bf.primitives().count();  // C_isect N
+    s.description = std::string(accelKindName(AccelKind::BruteForce));
+    return s;
+}
+
+template <typename Prims>
+BuildSummary summarizeT(const AcceleratorT<Prims>& accel) {
+    return std::visit([](const auto& a) { return summaryOf(a); }, accel);
 }
 }  // namespace
 

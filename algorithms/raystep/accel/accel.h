@@ -9,6 +9,7 @@
 #include "raystep/accel/kdtree.h"
 #include "raystep/accel/mailbox.h"
 #include "raystep/accel/query.h"
+#include "raystep/accel/structure_info.h"
 #include "raystep/base/progress.h"
 #include "raystep/base/ray.h"
 #include "raystep/scene/scene.h"
@@ -22,12 +23,6 @@
 
 namespace raystep {
 
-enum class AccelKind { BruteForce, Grid, KdTree, Bvh };
-
-/// Parses "bruteforce|grid|kdtree|bvh"; nullopt for anything else.
-std::optional<AccelKind> parseAccelKind(std::string_view name);
-std::string_view accelKindName(AccelKind kind);
-
 using KdTree3 = KdTree<ScenePrims>;
 using Bvh3 = Bvh<ScenePrims>;
 /// The structures over any primitive set: the 3D scene, or a 2D lecture scene.
@@ -36,6 +31,9 @@ using AcceleratorT =
     std::variant<BruteForceT<Prims>, UniformGridT<Prims>, KdTree<Prims>, Bvh<Prims>>;
 using Accelerator = AcceleratorT<ScenePrims>;
 using Accelerator2D = AcceleratorT<Scene2DPrims>;
+// A new structure is a new alternative, a new AccelKind and its row in structure_info.cpp.
+static_assert(std::variant_size_v<Accelerator> == kAccelKindCount,
+              "every structure has an AccelKind and a row in structure_info.cpp");
 
 /// Build parameters of the structures (each reads its own).
 struct AccelOptions {
@@ -46,6 +44,16 @@ struct AccelOptions {
     void setProgress(const ProgressFn& progress) {
         grid.progress = kdtree.progress = bvh.progress = progress;
     }
+    /// The split method `kind` builds with; nullopt for a structure without one.
+    std::optional<SplitMethod> split(AccelKind kind) const;
+    /// Sets the split method of every structure that has one.
+    void setSplit(SplitMethod method) { kdtree.split = bvh.split = method; }
+    /// An option's value as `kind` reads it: a number, a switch as 0 or 1, a choice (Split,
+    /// KdBuild) by its index, an auto value as 0. Not GridRes (three values: grid.res).
+    double value(AccelKind kind, AccelOption option) const;
+    /// Sets such an option (or a choice, by its index) for every structure that reads it; the
+    /// value must pass optionProblem (structure_info.h), or be 0 for an option with an auto value.
+    void set(AccelOption option, double value);
 };
 
 /// Builds the chosen structure over `scene` (which must outlive it).

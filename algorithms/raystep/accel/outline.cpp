@@ -1,0 +1,133 @@
+// The outline of each structure: one function per structure, chosen by std::visit.
+#include "raystep/accel/outline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raystep {
+
+template <int N>
+std::optional<IVecN<N>> OutlineGrid<N>::cellAt(const VecN<N, double>& p) const {
+    IVecN<N> c;
+    for (int a = 0; a < N; ++a) {
+        const double f = std::floor((p[a] - spec.lo[a]) / spec.cellSize(a));
+        if (!(f >= 0 && f < spec.res[a])) return std::nullopt;
+        c[a] = static_cast<int>(f);
+    }
+    return c;
+}
+template struct OutlineGrid<2>;
+template struct OutlineGrid<3>;
+
+namespace {
+
+template <typename Prims>
+BoxN<Prims::N> primitivesBounds(const Prims& prims) {
+    BoxN<Prims::N> b;
+    for (std::uint32_t p = 0; p < prims.count(); ++p) b.extend(prims.bounds(p));
+    return b;
+}
+
+template <typename Prims>
+StructureOutline<Prims::N> outlineOf(const BruteForceT<Prims>& bf) {
+    // One leaf holding everything: the slides' RaySceneIntersection.
+    StructureOutline<Prims::N> o;
+    o.kind = AccelKind::BruteForce;
+    o.bounds = primitivesBounds(bf.primitives());
+    OutlineNode<Prims::N> root;
+    root.box = o.bounds;
+    root.leaf = true;
+    root.primitives = bf.primitives().count();
+    o.nodes.push_back(root);
+    return o;
+}
+
+template <typename Prims>
+StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g) {
+    constexpr int N = Prims::N;
+    StructureOutline<N> o;
+    o.kind = AccelKind::Grid;
+    OutlineGrid<N> grid;
+    grid.spec = g.spec();
+    // lo + i * cellSize, as the views draw them (equal to the DDA's boundaries on the lecture's
+    // grids, whose cells have exact binary sizes).
+    for (int a = 0; a < N; ++a)
+        for (int i = 0; i <= grid.spec.res[a]; ++i)
+            grid.lines[a].push_back(grid.spec.lo[a] + i * grid.spec.cellSize(a));
+    o.bounds.lo = grid.spec.lo;
+    o.bounds.hi = grid.spec.hi;
+    o.grid = std::move(grid);
+    return o;
+}
+
+template <typename Prims>
+StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd) {
+    constexpr int N = Prims::N;
+    StructureOutline<N> o;
+    o.kind = AccelKind::KdTree;
+    o.bounds = kd.bounds();
+    const auto& nodes = kd.nodes();
+    o.nodes.resize(nodes.size());
+    // forEachNode gives each node its box, parents first: a child's depth and parent are known
+    // from its parent's, set when the parent was met.
+    kd.forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<N>& box) {
+        OutlineNode<N>& out = o.nodes[id];
+        out.box = box;
+        out.leaf = n.leaf();
+        o.maxDepth = std::max(o.maxDepth, out.depth);
+        if (out.leaf) {
+            out.primitives = n.count;
+            return;
+        }
+        out.plane = static_cast<std::uint32_t>(o.planes.size());
+        o.planes.push_back({id, n.axis, n.split, box});
+        for (const std::uint32_t child : {id + 1, n.index}) {
+            o.nodes[child].parent = id;
+            o.nodes[child].depth = out.depth + 1;
+        }
+    });
+    return o;
+}
+
+template <typename Prims>
+StructureOutline<Prims::N> outlineOf(const Bvh<Prims>& bvh) {
+    constexpr int N = Prims::N;
+    StructureOutline<N> o;
+    o.kind = AccelKind::Bvh;
+    o.overlapping = true;
+    const auto& nodes = bvh.nodes();
+    o.nodes.resize(nodes.size());
+    // The nodes are stored parents first (left child next, right child at `index`).
+    for (std::uint32_t id = 0; id < nodes.size(); ++id) {
+        OutlineNode<N>& out = o.nodes[id];
+        out.box = nodes[id].bounds;
+        out.leaf = nodes[id].leaf();
+        o.maxDepth = std::max(o.maxDepth, out.depth);
+        if (out.leaf) {
+            out.primitives = nodes[id].count;
+            continue;
+        }
+        for (const std::uint32_t child : {id + 1, nodes[id].index}) {
+            o.nodes[child].parent = id;
+            o.nodes[child].depth = out.depth + 1;
+        }
+    }
+    if (!nodes.empty()) o.bounds = nodes[0].bounds;
+    return o;
+}
+
+template <typename Prims>
+StructureOutline<Prims::N> outlineT(const AcceleratorT<Prims>& accel) {
+    return std::visit([](const auto& a) { return outlineOf(a); }, accel);
+}
+
+}  // namespace
+
+StructureOutline<3> outline(const Accelerator& accel) {
+    return outlineT<ScenePrims>(accel);
+}
+StructureOutline<2> outline(const Accelerator2D& accel) {
+    return outlineT<Scene2DPrims>(accel);
+}
+
+}  // namespace raystep
