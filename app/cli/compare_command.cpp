@@ -1,4 +1,4 @@
-// `raystep-cli compare`: the three split rules built and traced, as a table or as JSON.
+// `raystep-cli compare`: structures built and traced on the same rays, as a table or as JSON.
 #include "compare_command.h"
 
 #include "common.h"
@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <variant>
+#include <vector>
 
 namespace raystep::cli {
 
@@ -31,11 +33,70 @@ std::optional<Scene> loadOrFail(const std::string& name, int& code) {
     }
 }
 
+/// "a,b,c" as its parts ("" gives none).
+std::vector<std::string> commaList(const std::string& text) {
+    std::vector<std::string> parts;
+    std::size_t from = 0;
+    while (from <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', from), text.size());
+        parts.push_back(text.substr(from, comma - from));
+        from = comma + 1;
+    }
+    return parts;
+}
+
+/// One row to build and trace: a structure and, for a tree, its split method.
+struct Row {
+    AccelKind kind;
+    std::optional<SplitMethod> split;
+};
+
+/// The rows --accel and --split ask for, or the one-line problem.
+std::variant<std::vector<Row>, std::string> rowsAsked(const CompareArgs& a) {
+    std::vector<AccelKind> kinds;
+    for (const std::string& name : commaList(a.accel.accel)) {
+        const auto kind = parseAccelKind(name);
+        if (!kind)
+            return "--accel " + a.accel.accel + ": expected a comma list of " + kindList() + " (" +
+                   name + ")";
+        if (std::find(kinds.begin(), kinds.end(), *kind) != kinds.end())
+            return "--accel " + a.accel.accel + ": " + name + " twice";
+        kinds.push_back(*kind);
+    }
+    std::vector<SplitMethod> splits;
+    for (const std::string& name : commaList(a.accel.split)) {
+        const auto split = parseSplitMethod(name);
+        if (!split)
+            return "--split " + a.accel.split +
+                   ": expected a comma list of midpoint, median or sah";
+        if (std::find(splits.begin(), splits.end(), *split) == splits.end())
+            splits.push_back(*split);
+    }
+    // One tree and no --split: its split methods against each other (the slides' comparison).
+    const bool splitGiven = a.command && a.command->count("--split") > 0;
+    if (kinds.size() == 1 && hasSplit(kinds[0]) && !splitGiven) {
+        const auto all = structureInfo(kinds[0]).splits;
+        splits.assign(all.begin(), all.end());
+    }
+    std::vector<Row> rows;
+    for (const AccelKind kind : kinds) {
+        if (!hasSplit(kind)) {
+            rows.push_back({kind, std::nullopt});
+            continue;
+        }
+        for (const SplitMethod split : splits) rows.push_back({kind, split});
+    }
+    return rows;
+}
+
 }  // namespace
 
 void addCompareCommand(CLI::App& app, CompareArgs& a) {
     CLI::App* cmd = app.add_subcommand(
-        "compare", "Midpoint against median against SAH on one scene: build and trace each");
+        "compare",
+        "Structures side by side on one scene's rays: a tree's split methods (midpoint, median, "
+        "SAH), or any set of kinds (--accel grid,kdtree,bvh[,bruteforce] [--split ...])");
+    a.command = cmd;
     cmd->add_option(
         "scene", a.scene,
         "Built-in scene name, scene file, or model (.obj .ply .stl .gltf .glb, with the "
@@ -50,6 +111,11 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
         ->capture_default_str();
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (default: the scene's)")
         ->transform(wholeNumber(0, 64));
+    cmd->add_option("--spp", a.spp, "Samples per pixel (default: the scene's)")
+        ->transform(wholeNumber(1, 4096));
+    cmd->add_option("--diffuse-samples", a.diffuseSamples,
+                    "Diffuse bounce rays at the first diffuse hit (default: the scene's)")
+        ->transform(wholeNumber(0, 1024));
     cmd->add_option("--threads", a.threads, "Threads (default: all cores)")
         ->transform(wholeNumber(1, 1024));
     cmd->add_flag("--json", a.json, "Print the table as JSON");
@@ -57,67 +123,97 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
 
 int runCompare(const CompareArgs& a) {
     setCurrentInput(a.scene);
+    const auto asked = rowsAsked(a);
+    if (const auto* problem = std::get_if<std::string>(&asked)) return fail(*problem);
+    const auto& rows = std::get<std::vector<Row>>(asked);
+    // Every other option checked once, as render checks it (the first kind stands for all).
+    AccelArgs first = a.accel;
+    first.accel = std::string(accelKindName(rows.front().kind));
+    first.split = "sah";
     AccelChoice base;
-    if (auto problem = resolveAccel(a.accel, base)) return fail(*problem);
-    // The split methods are compared: a structure without them has nothing to compare.
-    if (!hasSplit(base.kind))
-        return fail("--accel " + a.accel.accel + ": compare takes " + kindList(hasSplit));
+    if (auto problem = resolveAccel(first, base)) return fail(*problem);
     int code = 0;
     const auto scene = loadOrFail(a.scene, code);
     if (!scene) return code;
     if (auto problem = checkKernelRange(a.scene, *scene, base)) return fail(*problem);
+    // The rays render traces with the same options (render --stats counts the same tests).
     RenderOptions opt;
     opt.width = a.width;
     opt.height = a.height;
+    opt.spp = a.spp.value_or(scene->settings.spp);
     opt.trace.bounces = a.bounces.value_or(scene->settings.bounces);
+    opt.trace.diffuseSamples = a.diffuseSamples.value_or(scene->settings.diffuseSamples);
     opt.threads = threadCount(a.threads);
 
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    for (const SplitMethod split : structureInfo(base.kind).splits) {
+    nlohmann::ordered_json results = nlohmann::ordered_json::array();
+    for (const Row& asked : rows) {
         AccelChoice c = base;
-        c.options.setSplit(split);
+        c.kind = asked.kind;
+        if (asked.split) c.options.setSplit(*asked.split);
         ProgressBar buildBar("build " + describeAccel(c));
         c.options.setProgress([&](double f) { return buildBar.update(f); });
         const Accelerator accel = buildAccelerator(*scene, c.kind, c.kernels, c.options);
         buildBar.finish();
         BuildSummary b = summarize(accel);
-        b.description = describeAccel(c);
-        ProgressBar bar("trace " + b.description);
+        ProgressBar bar("trace " + describeAccel(c));
         const RenderResult r = render(*scene, accel, opt, [&](double f) { return bar.update(f); });
         bar.finish();
-        const double rays = std::max<double>(1.0, r.counters.totalRays());
-        nlohmann::ordered_json row = statsJson(b);
-        row["rays"] = r.counters.totalRays();
-        row["primitive_tests_per_ray"] = r.counters.traversal.primitiveTests / rays;
-        row["node_visits_per_ray"] = r.counters.traversal.nodeVisits / rays;
-        row["mailbox_skips_per_ray"] = r.counters.traversal.mailboxSkips / rays;
+        const RayCounters& n = r.counters;
+        const double rays = std::max<double>(1.0, n.totalRays());
+        nlohmann::ordered_json row;
+        row["accel"] = describeAccel(c);  // as render --stats names it
+        row["kind"] = accelKindName(c.kind);
+        row["split"] = asked.split ? nlohmann::ordered_json(name(*asked.split)) : nullptr;
+        const nlohmann::ordered_json built = statsJson(b);  // kept: items() refers to it
+        for (const auto& [key, value] : built.items()) row[key] = value;
+        // A grid and brute force have no SAH cost of their own.
+        if (c.kind == AccelKind::Grid || c.kind == AccelKind::BruteForce) row["sah_cost"] = nullptr;
+        for (int k = 0; k < kRayKindCount; ++k)
+            row["rays"][std::string(kRayKindNames[k])] = n.rays[k];
+        row["rays"]["total"] = n.totalRays();
+        row["primitive_tests"] = n.traversal.primitiveTests;
+        row["node_visits"] = n.traversal.nodeVisits;
+        row["mailbox_skips"] = n.traversal.mailboxSkips;
+        row["primitive_tests_per_ray"] = n.traversal.primitiveTests / rays;
+        row["node_visits_per_ray"] = n.traversal.nodeVisits / rays;
+        row["mailbox_skips_per_ray"] = n.traversal.mailboxSkips / rays;
         row["render_ms"] = r.renderMs;
         row["mrays_per_s"] = rays / (r.renderMs * 1e3);
-        rows.push_back(row);
+        results.push_back(row);
     }
     if (a.json) {
         nlohmann::ordered_json j;
         j["scene"] = scene->name;
         j["primitives"] = scene->primitiveCount();
         j["image"] = {opt.width, opt.height};
+        j["spp"] = opt.spp;
         j["bounces"] = opt.trace.bounces;
+        j["diffuse_samples"] = opt.trace.diffuseSamples;
         j["threads"] = opt.threads;
-        j["results"] = rows;
+        j["results"] = results;
         std::printf("%s\n", j.dump(2).c_str());
         return 0;
     }
-    std::printf("%s, %u primitives, %dx%d, %d bounces, %d threads\n", scene->name.c_str(),
-                scene->primitiveCount(), opt.width, opt.height, opt.trace.bounces, opt.threads);
-    std::printf("%-16s %9s %8s %6s %9s %10s %12s %12s %9s\n", "structure", "build ms", "nodes",
-                "depth", "SAH cost", "refs/prim", "tests/ray", "visits/ray", "Mrays/s");
-    const double n = std::max(1u, scene->primitiveCount());
-    for (const auto& row : rows)
-        std::printf("%-16s %9.1f %8u %6u %9.4g %10.2f %12.2f %12.2f %9.3f\n",
+    std::printf("%s, %u primitives, %dx%d, %d spp, %d bounces, %d threads\n", scene->name.c_str(),
+                scene->primitiveCount(), opt.width, opt.height, opt.spp, opt.trace.bounces,
+                opt.threads);
+    // A grid's nodes are its cells, and what it visits per ray are cells.
+    std::printf("%-18s %9s %9s %6s %9s %10s %10s %12s %11s %9s\n", "structure", "build ms", "nodes",
+                "depth", "SAH cost", "refs/prim", "tests/ray", "visits/ray", "skips/ray",
+                "Mrays/s");
+    const double prims = std::max(1u, scene->primitiveCount());
+    for (const auto& row : results) {
+        char sah[32] = "-";
+        if (!row["sah_cost"].is_null())
+            std::snprintf(sah, sizeof sah, "%.4g", row["sah_cost"].get<double>());
+        std::printf("%-18s %9.1f %9u %6u %9s %10.2f %10.2f %12.2f %11.2f %9.3f\n",
                     row["structure"].get<std::string>().c_str(), row["build_ms"].get<double>(),
-                    row["nodes"].get<unsigned>(), row["max_depth"].get<unsigned>(),
-                    row["sah_cost"].get<double>(), row["references"].get<double>() / n,
+                    row["nodes"].get<unsigned>(), row["max_depth"].get<unsigned>(), sah,
+                    row["references"].get<double>() / prims,
                     row["primitive_tests_per_ray"].get<double>(),
-                    row["node_visits_per_ray"].get<double>(), row["mrays_per_s"].get<double>());
+                    row["node_visits_per_ray"].get<double>(),
+                    row["mailbox_skips_per_ray"].get<double>(), row["mrays_per_s"].get<double>());
+    }
     return 0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// `raystep-cli compare`: midpoint, median and SAH splits of one tree on one scene, built and
-// traced side by side.
+// `raystep-cli compare`: structures built and traced side by side on one scene's rays: a tree's
+// midpoint, median and SAH splits, or any set of kinds (--accel grid,kdtree,bvh,bruteforce).
 #include "accel_args.h"
 
 #include <CLI/CLI.hpp>
@@ -14,9 +14,10 @@ struct CompareArgs {
     std::string scene = "default";
     AccelArgs accel;
     int width = 320, height = 240;
-    std::optional<int> bounces;
+    std::optional<int> bounces, spp, diffuseSamples;
     int threads = 0;
     bool json = false;
+    const CLI::App* command = nullptr;  // whether --split was given (a tree alone: every split)
 };
 void addCompareCommand(CLI::App& app, CompareArgs& a);
 int runCompare(const CompareArgs& a);

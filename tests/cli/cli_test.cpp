@@ -205,7 +205,10 @@ TEST_F(Cli, BadCommandLineValues) {
     expectBadInput("trace --pixel -1,0 -o t.json", "--pixel");
     expectBadInput("trace --pixel 640,0 -o t.json", "outside the 640x480 image");
     expectBadInput("trace --pixel 0,0 -o missing/t.json", "does not exist");
-    expectBadInput("compare --accel grid", "compare takes kdtree or bvh");
+    expectBadInput("compare --accel grid,octree", "--accel grid,octree: expected a comma list");
+    expectBadInput("compare --accel grid,kdtree,grid", "grid twice");
+    expectBadInput("compare --accel grid,bvh --split sah,middle", "--split sah,middle");
+    expectBadInput("compare --accel grid,", "expected a comma list");
     expectBadInput("render -o picture.jpg", "*.png");
     expectBadInput("render -o missing/dir/x.png", "does not exist");
     expectBadInput("render --stats missing/s.json", "does not exist");
@@ -322,6 +325,58 @@ TEST_F(Cli, CompareShowsThreeSplits) {
     const CliRun text = run("compare default --accel bvh --width 24 --height 18");
     ASSERT_EQ(text.code, 0) << text.err;
     EXPECT_NE(text.out.find("bvh sah"), std::string::npos);
+}
+
+// Any set of structures on the same rays: one row each, counted as render --stats counts the
+// same rays with the same options, to the last test.
+TEST_F(Cli, CompareAnyStructuresAgreesWithRenderStats) {
+    const std::string size = " --width 24 --height 18 --bounces 2";
+    const CliRun r = run("compare whitted --accel grid,kdtree,bvh,bruteforce --json" + size);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto rows = nlohmann::json::parse(r.out)["results"];
+    ASSERT_EQ(rows.size(), 4u);
+    const char* kinds[] = {"grid", "kdtree", "bvh", "bruteforce"};
+    for (std::size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE(kinds[i]);
+        const auto& row = rows[i];
+        EXPECT_EQ(row["kind"], kinds[i]);
+        // A tree in a list gets --split's method (sah by default); grid and brute force none.
+        const bool tree = i == 1 || i == 2;
+        EXPECT_EQ(row["split"], tree ? nlohmann::json("sah") : nlohmann::json(nullptr));
+        EXPECT_EQ(row["sah_cost"].is_null(), !tree);
+        ASSERT_EQ(run(std::string("render whitted --accel ") + kinds[i] + size +
+                      " -o r.png --stats s.json")
+                      .code,
+                  0);
+        const auto stats = nlohmann::json::parse(slurp(dir / "s.json"));
+        EXPECT_EQ(row["accel"], stats["accel"]);
+        EXPECT_EQ(row["rays"], stats["rays"]);
+        EXPECT_EQ(row["primitive_tests"], stats["primitive_tests"]);
+        EXPECT_EQ(row["node_visits"], stats["node_visits"]);
+        EXPECT_EQ(row["mailbox_skips"], stats["mailbox_skips"]);
+    }
+    // Brute force tests every primitive for every nearest-hit ray; a shadow ray stops at its
+    // first blocker, so it may test fewer.
+    const auto prims = nlohmann::json::parse(r.out)["primitives"].get<std::uint64_t>();
+    const auto& bf = rows[3];
+    const auto total = bf["rays"]["total"].get<std::uint64_t>(),
+               shadow = bf["rays"]["shadow"].get<std::uint64_t>();
+    EXPECT_GE(bf["primitive_tests"].get<std::uint64_t>(), prims * (total - shadow));
+    EXPECT_LE(bf["primitive_tests"].get<std::uint64_t>(), prims * total);
+    // --split lists the trees' methods: each tree once per method, in the order given.
+    const CliRun m =
+        run("compare whitted --accel kdtree,grid --split median,midpoint --json" + size);
+    ASSERT_EQ(m.code, 0) << m.err;
+    const auto mrows = nlohmann::json::parse(m.out)["results"];
+    ASSERT_EQ(mrows.size(), 3u);
+    EXPECT_EQ(mrows[0]["accel"], "kdtree median");
+    EXPECT_EQ(mrows[1]["accel"], "kdtree midpoint");
+    EXPECT_EQ(mrows[2]["accel"], "grid");
+    // The table names each row.
+    const CliRun text = run("compare whitted --accel grid,bvh" + size);
+    ASSERT_EQ(text.code, 0) << text.err;
+    EXPECT_NE(text.out.find("\ngrid "), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("\nbvh sah "), std::string::npos) << text.out;
 }
 
 TEST_F(Cli, BadSceneFilesNameFileLineAndKey) {
