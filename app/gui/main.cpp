@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption presentOpt(
         "present",
         "Presenting mode: every step and view free, the exercises questions to the room, an "
-        "answer shown when revealed. Without --present or --lecturer, the mode of the last run.");
+        "answer shown when revealed. Without --present or --lecturer, quiz mode (a mode is never "
+        "remembered from one run to the next).");
     const QCommandLineOption accelOpt(
         "accel",
         QString::fromStdString("Structure: " + raystep::kindList() +

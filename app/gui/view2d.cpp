@@ -493,17 +493,33 @@ void View2D::paintEvent(QPaintEvent*) {
         const Vec2 hi(lo.x + spec.cellSize(0), lo.y + spec.cellSize(1));
         return QRectF(toScreen(Vec2(lo.x, hi.y)), toScreen(Vec2(hi.x, lo.y)));
     };
-    const auto* kd = accel ? std::get_if<KdTree<Scene2DPrims>>(accel) : nullptr;
-    if (layerDirty_ || layerSize_ != size()) buildLayer(grid, kd);
+    if (layerDirty_ || layerSize_ != size()) buildLayer(accel);
     // What moves with the cursor goes under the cached lines: visited and current cells, the
     // tree node being entered.
     if (grid) {
         for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), ink.visited);
         if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), ink.current);
-    } else if (kd && st.node && st.node->node < kdBoxes_.size()) {
-        const BoxN<2>& box = kdBoxes_[st.node->node];
-        g.fillRect(QRectF(toScreen(Vec2(box.lo.x, box.hi.y)), toScreen(Vec2(box.hi.x, box.lo.y))),
-                   role(PaletteRole::Current, 110));
+    } else if (!outline_.nodes.empty() && !session_.showingBuild()) {
+        // A tree's walk, from its outline (any tree: the kd-tree's cells, the BVH's boxes): the
+        // nodes it skipped dashed in grey, the ones it entered outlined in the visited colour,
+        // the one being entered filled.
+        const auto boxRect = [&](std::uint32_t id) -> std::optional<QRectF> {
+            const BoxN<2>* b = outline_.nodeBox(id);
+            if (!b) return std::nullopt;
+            return QRectF(toScreen(Vec2(b->lo.x, b->hi.y)), toScreen(Vec2(b->hi.x, b->lo.y)));
+        };
+        if (st.node)
+            if (const auto r = boxRect(st.node->node))
+                g.fillRect(*r, role(PaletteRole::Current, 110));
+        g.setBrush(Qt::NoBrush);
+        QPen skip(role(PaletteRole::Skipped), px(2.0), Qt::CustomDashLine);
+        skip.setDashPattern({3, 2});  // in pen widths: dashes a box's small edge still shows
+        g.setPen(skip);
+        for (const std::uint32_t id : st.nodesSkipped)
+            if (const auto r = boxRect(id)) g.drawRect(*r);
+        g.setPen(QPen(role(PaletteRole::Visited, 230), px(2.5)));
+        for (const std::uint32_t id : st.nodesEntered)
+            if (const auto r = boxRect(id)) g.drawRect(*r);
     }
 
     // A build being replayed: the node being split, the candidate planes so far, the choice.
@@ -694,7 +710,9 @@ void View2D::drawPrimitive(QPainter& painter, std::uint32_t p) const {
     }
 }
 
-void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Scene2DPrims>* kd) {
+void View2D::buildLayer(const Accelerator2D* accel) {
+    outline_ = accel ? outline(*accel) : StructureOutline<2>{};
+    const OutlineGrid<2>* grid = outline_.grid ? &*outline_.grid : nullptr;
     const Scene2D* s = session_.scene2D();
     layer_ = QPixmap(size());
     layer_.fill(Qt::transparent);
@@ -703,7 +721,7 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
     const Ink ink = raystep::gui::ink();
     const QFontMetricsF fm(font());
     if (grid) {
-        const auto& spec = grid->spec();
+        const auto& spec = grid->spec;
         lp.setPen(QPen(ink.gridLine, px(1)));
         for (int i = 0; i <= spec.res.x; ++i) {
             const double x = spec.lo.x + i * spec.cellSize(0);
@@ -729,21 +747,34 @@ void View2D::buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Sce
                         n);
         }
     }
-    kdBoxes_.clear();
-    if (kd && !kd->nodes().empty()) {
-        // Every node's box (for the node being entered) and the split lines.
-        kdBoxes_.resize(kd->nodes().size());
+    // A build's replay draws only the planes or boxes made so far (paintEvent), not the
+    // answer; nor does any trace while a held build's exercise asks for them.
+    const bool whole = !session_.showingBuild() && !session_.holdsBuild();
+    if (whole) {
+        // The kd-tree's split planes, each across its node's cell.
         lp.setPen(QPen(ink.gridLine, px(1)));
-        // A build's replay draws only the planes chosen so far (paintEvent), not the answer;
-        // nor does any trace while a held build's exercise asks for them.
-        const bool planes = !session_.showingBuild() && !session_.holdsBuild();
-        kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<2>& box) {
-            kdBoxes_[id] = box;
-            if (n.leaf()) return;
-            const Vec2 a = n.axis == 0 ? Vec2(n.split, box.lo.y) : Vec2(box.lo.x, n.split);
-            const Vec2 b = n.axis == 0 ? Vec2(n.split, box.hi.y) : Vec2(box.hi.x, n.split);
-            if (planes) lp.drawLine(toScreen(a), toScreen(b));
-        });
+        for (const OutlinePlane<2>& plane : outline_.planes) {
+            const auto [a, b] = plane.extent();
+            lp.drawLine(toScreen(Vec2(a.x, a.y)), toScreen(Vec2(b.x, b.y)));
+        }
+        // The BVH's boxes, overlapping as they are: deeper ones darker and drawn later, so a
+        // child's edge shows over its parent's where they meet.
+        if (outline_.overlapping && !outline_.nodes.empty()) {
+            std::vector<std::uint32_t> order(outline_.nodes.size());
+            for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+            std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return outline_.nodes[a].depth < outline_.nodes[b].depth;
+            });
+            const double deepest = std::max<std::uint32_t>(1, outline_.maxDepth);
+            lp.setBrush(Qt::NoBrush);
+            for (const std::uint32_t id : order) {
+                const OutlineNode<2>& n = outline_.nodes[id];
+                const int shade = int(200 - 110 * (n.depth / deepest));
+                lp.setPen(QPen(QColor(shade, shade, shade + 10), px(n.leaf ? 1.0 : 1.5)));
+                lp.drawRect(QRectF(toScreen(Vec2(n.box.lo.x, n.box.hi.y)),
+                                   toScreen(Vec2(n.box.hi.x, n.box.lo.y))));
+            }
+        }
     }
     lp.setPen(QPen(ink.primitive, px(2.0)));
     for (std::uint32_t p = 0; p < s->primitiveCount(); ++p) drawPrimitive(lp, p);

@@ -4,6 +4,8 @@
 // skips and the nearest hit so far.
 #include "session.h"
 
+#include "raystep/accel/outline.h"
+
 #include "raystep/base/i18n.h"
 
 #include <QPainter>
@@ -171,7 +173,9 @@ class View2D : public QWidget {
 
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
     /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
-    void buildLayer(const UniformGridT<Scene2DPrims>* grid, const KdTree<Scene2DPrims>* kd);
+    /// The cached lines: the grid's, the kd-tree's planes or the BVH's boxes (from the
+    /// structure's outline, made here), and the primitives.
+    void buildLayer(const Accelerator2D* accel);
     void drawPrimitive(QPainter& painter, std::uint32_t prim) const;
     /// A build's replay: where each split was chosen and each node's parent, once per log.
     void indexBuild();
@@ -183,7 +187,7 @@ class View2D : public QWidget {
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;
-    std::vector<BoxN<2>> kdBoxes_;                      // every kd node's box, made with the layer
+    StructureOutline<2> outline_;  // the shown structure's, made with the layer
     static constexpr std::size_t kAllSplitsUpTo = 256;  // as many lines as the candidates shown
     std::vector<std::size_t> chosenAt_;  // event indices of the SplitChosen events, in order
     std::vector<std::uint32_t> buildParent_;

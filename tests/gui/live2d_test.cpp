@@ -10,6 +10,7 @@
 
 #include "course/palette.h"
 
+#include "raystep/accel/outline.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -32,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace raystep::gui {
@@ -493,6 +495,65 @@ TEST(Live2D, TheHandlesSitOnTheRayALessonReplaysAndADragEditsThatRay) {
         EXPECT_EQ(replayedRay(s).origin, c.origin);
         EXPECT_EQ(replayedRay(s).dir, c.dir);
     }
+}
+
+// The 2D BVH (the live controls offer it), drawn from its outline as the kd-tree's cells are: at
+// a step of the example ray's walk the node being entered is filled, a node it skipped is not.
+TEST(View2DBvh, TheNodeBeingEnteredIsFilledASkippedOneIsNot) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    w.setLecturerMode(true);
+    w.openScene("lecture-kdtree", AccelKind::Bvh, /*quiet=*/true);
+    ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
+    QApplication::processEvents();
+    Session& s = w.session();
+    ASSERT_EQ(s.kind(), AccelKind::Bvh);
+    const StructureOutline<2> o = outline(*s.accel2D());
+    ASSERT_GT(o.nodes.size(), 3u);
+    View2D* view = w.view2D();
+    const auto screenBox = [&](std::uint32_t id) {
+        const BoxN<2>& b = o.nodes[id].box;
+        return QRectF(view->screenOf(Vec2(b.lo.x, b.hi.y)), view->screenOf(Vec2(b.hi.x, b.lo.y)))
+            .normalized();
+    };
+    // The first step entering a node after one was skipped whose box lies apart from it.
+    std::optional<std::uint32_t> current, skipped;
+    for (std::size_t c = 1; c <= s.size() && !current; ++c) {
+        s.setCursor(c);
+        const ReplayState& st = s.state();
+        if (!st.node || !std::holds_alternative<NodeEnter>(s.log().events()[c - 1])) continue;
+        for (const std::uint32_t k : st.nodesSkipped)
+            if (!screenBox(k).intersects(screenBox(st.node->node))) {
+                current = st.node->node;
+                skipped = k;
+                break;
+            }
+    }
+    ASSERT_TRUE(current && skipped) << "the example ray skips no box apart from one it enters";
+    QApplication::processEvents();
+    const QImage image = view->grab().toImage();
+    // The fill: the palette's current colour at alpha 110 over the view's background.
+    const PaletteColour& c = roleColour(PaletteRole::Current);
+    const double a = 110.0 / 255.0;
+    const QColor fill(int(std::lround(250 * (1 - a) + c.r * a)),
+                      int(std::lround(250 * (1 - a) + c.g * a)),
+                      int(std::lround(247 * (1 - a) + c.b * a)));
+    const auto filledShare = [&](QRectF r) {
+        r.adjust(4, 4, -4, -4);  // inside the box's edge lines
+        int filled = 0, all = 0;
+        for (int y = int(r.top()); y < int(r.bottom()); ++y)
+            for (int x = int(r.left()); x < int(r.right()); ++x) {
+                const QColor p = image.pixelColor(x, y);
+                ++all;
+                filled += std::abs(p.red() - fill.red()) + std::abs(p.green() - fill.green()) +
+                              std::abs(p.blue() - fill.blue()) <
+                          24;
+            }
+        return all ? double(filled) / all : 0.0;
+    };
+    EXPECT_GT(filledShare(screenBox(*current)), 0.6) << "node " << *current;
+    EXPECT_LT(filledShare(screenBox(*skipped)), 0.05) << "node " << *skipped;
 }
 
 // Another lesson is a new history, even on the same scene (lessons 10 and 11): an edit undone
