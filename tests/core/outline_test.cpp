@@ -3,6 +3,7 @@
 // on the way down), depths and parents by a recursion of the test's own, the grid's lines at
 // lo + i * cellSize, and the node ids NodeEnter names are the outline's.
 #include "raystep/accel/outline.h"
+#include "random_scene2d.h"
 #include "raystep/base/rng.h"
 #include "raystep/scene/scene_loader.h"
 
@@ -58,16 +59,7 @@ void expectBox(const BoxN<N>& got, const BoxN<N>& want, const std::string& what)
 }
 
 Scene2D randomScene2D(int count, std::uint64_t seed) {
-    Pcg32 rng(seed, 7);
-    Scene2D s;
-    for (int i = 0; i < count; ++i) {
-        const Vec2 p(rng.uniform() * 20, rng.uniform() * 10);
-        if (i % 3 == 0)
-            s.circles.push_back({p, 0.2 + rng.uniform()});
-        else
-            s.segments.push_back({p, p + Vec2(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2)});
-    }
-    return s;
+    return raystep::randomScene2D(count, seed, 7);
 }
 
 /// The BVH's nodes against the test's recursion: each box the union of the boxes of the

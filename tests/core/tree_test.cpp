@@ -2,6 +2,7 @@
 // written here, the split sweep against counting by hand, the 2D lecture scenes, the event log
 // (its size, its cap, its file) and replay.
 #include "meshes.h"
+#include "random_scene2d.h"
 #include "raystep/accel/accel.h"
 #include "raystep/base/rng.h"
 #include "raystep/base/simd.h"
@@ -494,15 +495,7 @@ TEST(Bvh, EveryPrimitiveInExactlyOneLeaf) {
 // 2D: the lecture's pictures run the same templates.
 
 Scene2D randomScene2D(int count, std::uint64_t seed) {
-    Pcg32 rng(seed, 3);
-    Scene2D s;
-    for (int i = 0; i < count; ++i) {
-        const Vec2 p(rng.uniform() * 20, rng.uniform() * 10);
-        if (i % 3 == 0)
-            s.circles.push_back({p, 0.2 + rng.uniform()});
-        else
-            s.segments.push_back({p, p + Vec2(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2)});
-    }
+    Scene2D s = raystep::randomScene2D(count, seed, 3);
     s.segments.push_back({Vec2(0, 0), Vec2(20, 0)});  // axis-parallel, on the box's face
     s.segments.push_back({Vec2(5, 2), Vec2(5, 8)});
     return s;
