@@ -203,7 +203,9 @@ TEST(Replay, ALongRayKeepsItsCheckpointsBoundedAndSeeksExactly) {
         } else {
             EXPECT_FALSE(got.nearestT.has_value());
         }
-        if (tests > 0) EXPECT_EQ(got.tests.back().prim, tests - 1);
+        if (tests > 0) {
+            EXPECT_EQ(got.tests.back().prim, tests - 1);
+        }
     }
 }
 
