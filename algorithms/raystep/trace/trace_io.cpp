@@ -419,8 +419,13 @@ void fillAdded(std::vector<Event>& events, const TraceInfo& info) {
         Event& e = events[i];
         if (const auto* h = std::get_if<RayHit>(&e); h && h->prim == kNoId && std::isinf(h->t)) {
             e = blockedBy(events, h->ray, 0, i);  // back to the ray's own start
-        } else if (auto* b = std::get_if<BuildNode>(&e); b && std::isnan(b->leafCost)) {
-            open[b->node] = i;
+        } else if (auto* b = std::get_if<BuildNode>(&e)) {
+            // A node opened again (a hand-made trace) is the one its outcome belongs to, with a
+            // leaf cost or not: so reading a trace this wrote changes nothing.
+            if (std::isnan(b->leafCost))
+                open[b->node] = i;
+            else
+                open.erase(b->node);
         } else if (auto* p = std::get_if<PixelResult>(&e);
                    p && p->width == 0 && p->x < std::uint32_t(std::max(info.width, 0)) &&
                    p->y < std::uint32_t(std::max(info.height, 0))) {
