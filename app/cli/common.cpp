@@ -26,12 +26,20 @@ int fail(const std::string& message) {
     return kExitBadInput;
 }
 
-std::optional<std::vector<double>> parseNumbers(const std::string& text, char separator) {
-    std::vector<double> out;
+std::vector<std::string> splitList(const std::string& text, char separator) {
+    std::vector<std::string> parts;
     std::size_t start = 0;
     for (;;) {
         const std::size_t end = text.find(separator, start);
-        const std::string part = text.substr(start, end == std::string::npos ? end : end - start);
+        parts.push_back(text.substr(start, end == std::string::npos ? end : end - start));
+        if (end == std::string::npos) return parts;
+        start = end + 1;
+    }
+}
+
+std::optional<std::vector<double>> parseNumbers(const std::string& text, char separator) {
+    std::vector<double> out;
+    for (const std::string& part : splitList(text, separator)) {
         double value = 0.0;
         const char* first = part.data();
         const char* last = part.data() + part.size();
@@ -40,9 +48,8 @@ std::optional<std::vector<double>> parseNumbers(const std::string& text, char se
         if (part.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
             return std::nullopt;
         out.push_back(value);
-        if (end == std::string::npos) return out;
-        start = end + 1;
     }
+    return out;
 }
 
 bool hasExtension(const std::string& path, const std::string& ext) {

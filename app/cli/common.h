@@ -24,6 +24,8 @@ int fail(const std::string& message);
 
 /// Splits "1,2,3" into finite numbers; nullopt if any part is not one (nan, inf, 1e999, "x", "").
 std::optional<std::vector<double>> parseNumbers(const std::string& text, char separator = ',');
+/// "a,b,c" as its parts, empty ones kept ("a,," is "a", "", ""; "" is one empty part).
+std::vector<std::string> splitList(const std::string& text, char separator = ',');
 
 /// True if `path` ends in `ext` (".png"), in any case.
 bool hasExtension(const std::string& path, const std::string& ext);

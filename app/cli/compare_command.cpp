@@ -33,18 +33,6 @@ std::optional<Scene> loadOrFail(const std::string& name, int& code) {
     }
 }
 
-/// "a,b,c" as its parts ("" gives none).
-std::vector<std::string> commaList(const std::string& text) {
-    std::vector<std::string> parts;
-    std::size_t from = 0;
-    while (from <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', from), text.size());
-        parts.push_back(text.substr(from, comma - from));
-        from = comma + 1;
-    }
-    return parts;
-}
-
 /// One row to build and trace: a structure and, for a tree, its split method.
 struct Row {
     AccelKind kind;
@@ -54,7 +42,7 @@ struct Row {
 /// The rows --accel and --split ask for, or the one-line problem.
 std::variant<std::vector<Row>, std::string> rowsAsked(const CompareArgs& a) {
     std::vector<AccelKind> kinds;
-    for (const std::string& name : commaList(a.accel.accel)) {
+    for (const std::string& name : splitList(a.accel.accel)) {
         const auto kind = parseAccelKind(name);
         if (!kind)
             return "--accel " + a.accel.accel + ": expected a comma list of " + kindList() + " (" +
@@ -64,7 +52,7 @@ std::variant<std::vector<Row>, std::string> rowsAsked(const CompareArgs& a) {
         kinds.push_back(*kind);
     }
     std::vector<SplitMethod> splits;
-    for (const std::string& name : commaList(a.accel.split)) {
+    for (const std::string& name : splitList(a.accel.split)) {
         const auto split = parseSplitMethod(name);
         if (!split)
             return "--split " + a.accel.split +

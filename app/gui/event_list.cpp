@@ -89,6 +89,10 @@ QVariant EventListModel::data(const QModelIndex& index, int role) const {
 
 void EventFilter::setText(const QString& text) {
     text_ = text.trimmed().toStdString();
+    // The kinds whose name in the interface language holds the text: once, not once a row.
+    const QString t = QString::fromStdString(text_);
+    for (std::size_t k = 0; k < labelMatches_.size(); ++k)
+        labelMatches_[k] = eventKindLabel(k).contains(t, Qt::CaseInsensitive);
     invalidateFilter();
 }
 
@@ -99,7 +103,7 @@ bool EventFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
     // and the line as this list shows it (in the app's language).
     const QString text = QString::fromStdString(text_);
     return eventMatchesFilter(shown[row], s_.log().dims(), text_) ||
-           eventKindLabel(shown[row].index()).contains(text, Qt::CaseInsensitive) ||
+           labelMatches_[shown[row].index()] ||
            sourceModel()
                ->index(row, 0)
                .data()

@@ -8,6 +8,9 @@
 #include <QSortFilterProxyModel>
 #include <QWidget>
 
+#include <array>
+#include <variant>
+
 class QLineEdit;
 class QListView;
 
@@ -45,6 +48,7 @@ class EventFilter : public QSortFilterProxyModel {
   private:
     Session& s_;
     std::string text_;
+    std::array<bool, std::variant_size_v<Event>> labelMatches_{};  // by kind, for text_
 };
 
 class EventList : public QWidget {

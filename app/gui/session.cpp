@@ -165,6 +165,12 @@ void Session::setLimit(const LogRef& log, std::optional<std::size_t> limit) {
     const std::optional<std::size_t> before = this->limit();
     // A limit at or past the log's end hides nothing: nothing is held.
     if (!log || (limit && *limit >= log->events().size())) limit.reset();
+    // Whether the held trace is a build, once per hold (the 2D view asks at every layer).
+    if (!limit || log != limitLog_)
+        limitIsBuild_ =
+            limit && std::any_of(log->events().begin(), log->events().end(), [](const Event& e) {
+                return std::holds_alternative<BuildNode>(e);
+            });
     limitLog_ = limit ? log : nullptr;
     limit_ = limit;
     if (this->limit() == before) return;
@@ -177,13 +183,6 @@ void Session::setHideAhead(bool on) {
     if (on == hideAhead_) return;
     hideAhead_ = on;
     emit shownChanged();
-}
-
-bool Session::holdsBuild() const {
-    if (!limit_ || !limitLog_) return false;
-    for (const Event& e : limitLog_->events())
-        if (std::holds_alternative<BuildNode>(e)) return true;
-    return false;
 }
 
 std::optional<std::size_t> Session::limit() const {

@@ -129,7 +129,7 @@ class Session : public QObject {
     bool held() const { return limit_.has_value(); }
     /// Whether the held trace is a build: its answers are the tree's planes, which no view
     /// draws whole while it holds.
-    bool holdsBuild() const;
+    bool holdsBuild() const { return limit_ && limitIsBuild_; }
     /// The limit on the log replayed now, if it has one that hides events (0 for a trace other
     /// than the held one).
     std::optional<std::size_t> limit() const;
@@ -176,6 +176,7 @@ class Session : public QObject {
     std::size_t cursor_ = 0;
     LogRef limitLog_;  // the log the limit belongs to (a lesson's trace)
     std::optional<std::size_t> limit_;
+    bool limitIsBuild_ = false;  // limitLog_ records a build
     bool hideAhead_ = false;
 };
 
