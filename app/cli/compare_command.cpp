@@ -33,50 +33,6 @@ std::optional<Scene> loadOrFail(const std::string& name, int& code) {
     }
 }
 
-/// One row to build and trace: a structure and, for a tree, its split method.
-struct Row {
-    AccelKind kind;
-    std::optional<SplitMethod> split;
-};
-
-/// The rows --accel and --split ask for, or the one-line problem.
-std::variant<std::vector<Row>, std::string> rowsAsked(const CompareArgs& a) {
-    std::vector<AccelKind> kinds;
-    for (const std::string& name : splitList(a.accel.accel)) {
-        const auto kind = parseAccelKind(name);
-        if (!kind)
-            return "--accel " + a.accel.accel + ": expected a comma list of " + kindList() + " (" +
-                   name + ")";
-        if (std::find(kinds.begin(), kinds.end(), *kind) != kinds.end())
-            return "--accel " + a.accel.accel + ": " + name + " twice";
-        kinds.push_back(*kind);
-    }
-    std::vector<SplitMethod> splits;
-    for (const std::string& name : splitList(a.accel.split)) {
-        const auto split = parseSplitMethod(name);
-        if (!split)
-            return "--split " + a.accel.split +
-                   ": expected a comma list of midpoint, median or sah";
-        if (std::find(splits.begin(), splits.end(), *split) == splits.end())
-            splits.push_back(*split);
-    }
-    // One tree and no --split: its split methods against each other (the slides' comparison).
-    const bool splitGiven = a.command && a.command->count("--split") > 0;
-    if (kinds.size() == 1 && hasSplit(kinds[0]) && !splitGiven) {
-        const auto all = structureInfo(kinds[0]).splits;
-        splits.assign(all.begin(), all.end());
-    }
-    std::vector<Row> rows;
-    for (const AccelKind kind : kinds) {
-        if (!hasSplit(kind)) {
-            rows.push_back({kind, std::nullopt});
-            continue;
-        }
-        for (const SplitMethod split : splits) rows.push_back({kind, split});
-    }
-    return rows;
-}
-
 }  // namespace
 
 void addCompareCommand(CLI::App& app, CompareArgs& a) {
@@ -111,9 +67,12 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
 
 int runCompare(const CompareArgs& a) {
     setCurrentInput(a.scene);
-    const auto asked = rowsAsked(a);
+    // The split methods asked for, or none: a single tree then shows all of its own.
+    const bool splitGiven = a.command && a.command->count("--split") > 0;
+    const auto asked = parseStructureChoices(
+        a.accel.accel, splitGiven ? std::optional<std::string_view>(a.accel.split) : std::nullopt);
     if (const auto* problem = std::get_if<std::string>(&asked)) return fail(*problem);
-    const auto& rows = std::get<std::vector<Row>>(asked);
+    const auto& rows = std::get<std::vector<StructureChoice>>(asked);
     // Every other option checked once, as render checks it (the first kind stands for all).
     AccelArgs first = a.accel;
     first.accel = std::string(accelKindName(rows.front().kind));
@@ -134,7 +93,7 @@ int runCompare(const CompareArgs& a) {
     opt.threads = threadCount(a.threads);
 
     nlohmann::ordered_json results = nlohmann::ordered_json::array();
-    for (const Row& asked : rows) {
+    for (const StructureChoice& asked : rows) {
         AccelChoice c = base;
         c.kind = asked.kind;
         if (asked.split) c.options.setSplit(*asked.split);
@@ -154,8 +113,8 @@ int runCompare(const CompareArgs& a) {
         row["split"] = asked.split ? nlohmann::ordered_json(name(*asked.split)) : nullptr;
         const nlohmann::ordered_json built = statsJson(b);  // kept: items() refers to it
         for (const auto& [key, value] : built.items()) row[key] = value;
-        // A grid and brute force have no SAH cost of their own.
-        if (c.kind == AccelKind::Grid || c.kind == AccelKind::BruteForce) row["sah_cost"] = nullptr;
+        // Only a tree has a SAH cost of its own.
+        if (!hasSplit(c.kind)) row["sah_cost"] = nullptr;
         for (int k = 0; k < kRayKindCount; ++k)
             row["rays"][std::string(kRayKindNames[k])] = n.rays[k];
         row["rays"]["total"] = n.totalRays();

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <variant>
+#include <vector>
 
 namespace raystep {
 namespace {
@@ -157,6 +160,42 @@ TEST(StructureInfo, AnOptionSetReachesTheBuild) {
     o.set(AccelOption::Split, static_cast<int>(SplitMethod::Median));
     EXPECT_EQ(o.split(AccelKind::Bvh), SplitMethod::Median);
     EXPECT_EQ(summarize(buildAccelerator(s, AccelKind::Bvh, {}, o)).description, "bvh median");
+}
+
+TEST(StructureChoices, ListsInTheOrderGivenEachTreeOncePerSplit) {
+    using R = std::vector<StructureChoice>;
+    const auto three = parseStructureChoices("grid,kdtree,bvh", std::nullopt);
+    ASSERT_TRUE(std::holds_alternative<R>(three));
+    EXPECT_EQ(std::get<R>(three), (R{{AccelKind::Grid, std::nullopt},
+                                     {AccelKind::KdTree, SplitMethod::Sah},
+                                     {AccelKind::Bvh, SplitMethod::Sah}}));
+    // One tree alone: the slides' comparison of its split methods.
+    const auto kd = parseStructureChoices("kdtree", std::nullopt);
+    ASSERT_TRUE(std::holds_alternative<R>(kd));
+    EXPECT_EQ(std::get<R>(kd).size(), 3u);
+    EXPECT_EQ(std::get<R>(kd)[1], (StructureChoice{AccelKind::KdTree, SplitMethod::Median}));
+    const auto two = parseStructureChoices(" bvh , bruteforce", "midpoint,median,midpoint");
+    ASSERT_TRUE(std::holds_alternative<R>(two));
+    EXPECT_EQ(std::get<R>(two), (R{{AccelKind::Bvh, SplitMethod::Midpoint},
+                                   {AccelKind::Bvh, SplitMethod::Median},
+                                   {AccelKind::BruteForce, std::nullopt}}));
+    EXPECT_EQ(choiceName(std::get<R>(two)[1]), "bvh median");
+    EXPECT_EQ(choiceName(std::get<R>(two)[2]), "bruteforce");
+}
+
+TEST(StructureChoices, RefusesAnUnknownNameATwiceAndAnEmptyWord) {
+    const auto msg = [](auto r) {
+        return std::holds_alternative<std::string>(r) ? std::get<std::string>(r) : std::string();
+    };
+    EXPECT_EQ(msg(parseStructureChoices("grid,octree", std::nullopt)),
+              "--accel grid,octree: expected a comma list of bruteforce, grid, kdtree or bvh "
+              "(octree)");
+    EXPECT_EQ(msg(parseStructureChoices("grid,grid", std::nullopt)),
+              "--accel grid,grid: grid twice");
+    EXPECT_NE(msg(parseStructureChoices("grid,", std::nullopt)).find("(an empty name)"),
+              std::string::npos);
+    EXPECT_EQ(msg(parseStructureChoices("kdtree", "sah,best", "accel", "split")),
+              "split sah,best: expected a comma list of midpoint, median or sah (best)");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "raystep/accel/kdtree_build.h"
 #include "raystep/base/format.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
@@ -215,6 +216,74 @@ std::string kindList(bool (*keep)(AccelKind)) {
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (i) out += i + 1 == names.size() ? " or " : ", ";
         out += names[i];
+    }
+    return out;
+}
+
+std::string choiceName(const StructureChoice& c) {
+    std::string s(accelKindName(c.kind));
+    if (c.split) s += " " + std::string(name(*c.split));
+    return s;
+}
+
+namespace {
+/// The words of a comma list, spaces around them dropped; an empty word stays (it is refused).
+std::vector<std::string_view> words(std::string_view text) {
+    std::vector<std::string_view> out;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = text.find(',', start);
+        std::string_view w = text.substr(start, comma == text.npos ? text.npos : comma - start);
+        while (!w.empty() && w.front() == ' ') w.remove_prefix(1);
+        while (!w.empty() && w.back() == ' ') w.remove_suffix(1);
+        out.push_back(w);
+        if (comma == text.npos) return out;
+        start = comma + 1;
+    }
+}
+}  // namespace
+
+std::variant<std::vector<StructureChoice>, std::string> parseStructureChoices(
+    std::string_view kindText, std::optional<std::string_view> splitText, std::string_view accelKey,
+    std::string_view splitKey) {
+    const auto problem = [](std::string_view key, std::string_view text, std::string_view why) {
+        return std::string(key) + " " + std::string(text) + ": " + std::string(why);
+    };
+    std::vector<AccelKind> kinds;
+    for (const std::string_view w : words(kindText)) {
+        const auto kind = parseAccelKind(w);
+        if (!kind)
+            return problem(accelKey, kindText,
+                           "expected a comma list of " + kindList() + " (" +
+                               (w.empty() ? std::string("an empty name") : std::string(w)) + ")");
+        if (std::find(kinds.begin(), kinds.end(), *kind) != kinds.end())
+            return problem(accelKey, kindText, std::string(w) + " twice");
+        kinds.push_back(*kind);
+    }
+    std::vector<SplitMethod> splits;
+    if (splitText) {
+        for (const std::string_view w : words(*splitText)) {
+            const auto split = parseSplitMethod(w);
+            if (!split)
+                return problem(splitKey, *splitText,
+                               "expected a comma list of midpoint, median or sah (" +
+                                   (w.empty() ? std::string("an empty name") : std::string(w)) +
+                                   ")");
+            if (std::find(splits.begin(), splits.end(), *split) == splits.end())
+                splits.push_back(*split);
+        }
+    } else if (kinds.size() == 1 && hasSplit(kinds[0])) {
+        const auto all = structureInfo(kinds[0]).splits;
+        splits.assign(all.begin(), all.end());
+    } else {
+        splits = {SplitMethod::Sah};
+    }
+    std::vector<StructureChoice> out;
+    for (const AccelKind kind : kinds) {
+        if (!hasSplit(kind)) {
+            out.push_back({kind, std::nullopt});
+            continue;
+        }
+        for (const SplitMethod split : splits) out.push_back({kind, split});
     }
     return out;
 }

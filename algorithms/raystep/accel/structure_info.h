@@ -14,6 +14,8 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
+#include <vector>
 
 namespace raystep {
 
@@ -96,6 +98,24 @@ bool readsOption(AccelKind kind, AccelOption option, SplitMethod split);
 /// The names of the structures that pass `keep` (all by default), for messages:
 /// "bruteforce, grid, kdtree or bvh".
 std::string kindList(bool (*keep)(AccelKind) = nullptr);
+/// One structure to build: a kind and, for a tree, its split method (a grid has none).
+struct StructureChoice {
+    AccelKind kind = AccelKind::Grid;
+    std::optional<SplitMethod> split;
+    bool operator==(const StructureChoice&) const = default;
+};
+/// "grid", "kdtree SAH": the choice as render --stats and the compare rows name it.
+std::string choiceName(const StructureChoice& c);
+/// The structures a comma list of kinds ("grid,kdtree,bvh") and of split methods ("sah" or
+/// "midpoint,median") ask for, in the list's order: each tree once per split method; a single
+/// tree without `splits` gives its split methods against each other (the slides' comparison),
+/// several kinds without `splits` take the SAH. The problem in one line (naming `accelKey` or
+/// `splitKey`, the value and the word refused) when a name is unknown, a kind given twice or a
+/// list empty.
+std::variant<std::vector<StructureChoice>, std::string> parseStructureChoices(
+    std::string_view kinds, std::optional<std::string_view> splits,
+    std::string_view accelKey = "--accel", std::string_view splitKey = "--split");
+
 /// The CLI's spelling of an option: "--c-isect".
 std::string cliFlag(AccelOption option);
 /// Why `value` is refused for `option` ("must be from 1 to 60"), or nullopt when it is accepted.
