@@ -16,99 +16,177 @@
 
 namespace raystep::gui {
 
-namespace {
-constexpr SplitMethod kSplits[3] = {SplitMethod::Midpoint, SplitMethod::Median, SplitMethod::Sah};
+std::vector<StructureChoice> defaultComparison(AccelKind shown) {
+    if (hasSplit(shown))
+        return std::get<std::vector<StructureChoice>>(
+            parseStructureChoices(accelKindName(shown), std::nullopt));
+    // The slides' hierarchy section: one way to subdivide the space against the other.
+    return std::get<std::vector<StructureChoice>>(
+        parseStructureChoices("grid,kdtree,bvh", std::nullopt));
 }
 
-CompareWindow::Prepared CompareWindow::prepare(const SceneRef& scene, AccelKind kind,
+QString choiceLabel(const StructureChoice& c) {
+    if (!c.split) return structureName(c.kind);
+    return CompareWindow::tr("%1, %2").arg(structureName(c.kind), splitName(*c.split));
+}
+
+CompareWindow::Prepared CompareWindow::prepare(const SceneRef& scene,
+                                               const std::vector<StructureChoice>& choices,
                                                const ProgressFn& progress) {
     Prepared p;
-    for (int i = 0; i < 3; ++i) {
-        AccelOptions o;
-        o.kdtree.split = o.bvh.split = kSplits[i];
-        if (progress) o.setProgress([&progress, i](double f) { return progress((i + f) / 3.0); });
-        p[i] = Session::rebuild(scene, kind, o);
+    const double n = static_cast<double>(choices.size());
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        AccelOptions o = scene->options;  // the options shown (a lesson's costs, a live grid)
+        if (choices[i].split) o.setSplit(*choices[i].split);
+        if (progress) o.setProgress([&progress, i, n](double f) { return progress((i + f) / n); });
+        p.push_back(Session::rebuild(scene, choices[i].kind, o));
     }
     return p;
 }
 
+StructureChoice CompareWindow::choice(int i) const {
+    const Session& s = *sessions_[i];
+    return {s.kind(), s.options().split(s.kind())};
+}
+
 CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : QWidget(parent) {
-    setWindowTitle(tr("raystep - compare midpoint, median and SAH"));
-    const AccelKind kind = prepared[0]->kind;
-    // kSplits' names, as the columns and the table say them.
-    const QStringList splitNames = {tr("midpoint"), tr("median"), tr("SAH")};
+    const int n = static_cast<int>(prepared.size());
     auto* views = new QHBoxLayout;
     int longest = 0;
-    for (int i = 0; i < 3; ++i) {
-        sessions_[i] = std::make_unique<Session>();
-        sessions_[i]->adopt(std::move(prepared[i]));
-        if (sessions_[i]->is2D())
-            sessions_[i]->traceExampleRay();
+    QStringList names, legend, legendTexts;
+    for (int i = 0; i < n; ++i) {
+        auto session = std::make_unique<Session>();
+        session->adopt(std::move(prepared[i]));
+        if (session->is2D())
+            session->traceExampleRay();
         else
-            sessions_[i]->tracePixel(pixel.x, pixel.y, pixel.width, pixel.height);
-        longest = std::max(longest, static_cast<int>(sessions_[i]->size()));
+            session->tracePixel(pixel.x, pixel.y, pixel.width, pixel.height);
+        longest = std::max(longest, static_cast<int>(session->size()));
+        sessions_.push_back(std::move(session));
+        names << choiceLabel(choice(i));
         auto* column = new QVBoxLayout;
-        auto* title =
-            new QLabel(QStringLiteral("<b>%1 %2</b>").arg(structureName(kind), splitNames[i]));
-        column->addWidget(title);
-        // One caption and one legend for the three views (the same in each), in the first.
-        if (sessions_[i]->is2D()) {
-            auto* v = new View2D(*sessions_[i]);
+        column->addWidget(
+            new QLabel(QStringLiteral("<b>%1</b>").arg(names.back().toHtmlEscaped())));
+        progress_.push_back(new QLabel);
+        column->addWidget(progress_.back());
+        // The titles say what each view is; a 2D legend would shrink one picture of the set,
+        // so the 2D views share one under them, the 3D views' ray legend is in the first.
+        Session& s = *sessions_.back();
+        QWidget* view = nullptr;
+        if (s.is2D()) {
+            auto* v = new View2D(s);
             v->setLanguage(interfaceLanguage());
-            v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
-            views_[i] = v;
+            v->setOverlays(/*caption=*/false, /*legend=*/false);
+            for (const auto& [colour, text] : v->legendRows(/*build=*/false))
+                if (!legendTexts.contains(text)) {
+                    legendTexts << text;
+                    legend << QStringLiteral("<span style='color:%1'>&#9632;</span>&nbsp;%2")
+                                  .arg(colour.name(), text.toHtmlEscaped());
+                }
+            view = v;
         } else {
-            auto* v = new VtkView(*sessions_[i]);
+            auto* v = new VtkView(s);
             v->setLanguage(interfaceLanguage());
             v->setOverlays(/*caption=*/false, /*legend=*/i == 0);
-            views_[i] = v;
+            v->setButtonsShown(false);
+            view = v;
         }
-        views_[i]->setMinimumSize(300, 220);
-        column->addWidget(views_[i], 1);
+        view->setMinimumSize(260, 200);
+        views_.push_back(view);
+        column->addWidget(view, 1);
         views->addLayout(column, 1);
     }
+    // The 3D views look the same way: whichever is turned, the others follow.
+    for (QWidget* w : views_)
+        if (auto* v = qobject_cast<VtkView*>(w))
+            connect(v, &VtkView::cameraMoved, this, [this, v] {
+                if (syncing_) return;
+                syncing_ = true;
+                for (QWidget* other : views_)
+                    if (auto* o = qobject_cast<VtkView*>(other); o && o != v)
+                        o->setCamera(v->currentCamera());
+                syncing_ = false;
+            });
+    if (auto* first = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.front())) {
+        // The first view frames the set (the rest follow it), from the eye or beside it.
+        syncing_ = true;
+        for (QWidget* other : views_)
+            if (auto* o = qobject_cast<VtkView*>(other); o && o != first)
+                o->setCamera(first->currentCamera());
+        syncing_ = false;
+    }
+    setWindowTitle(tr("raystep - compare %1").arg(names.join(QStringLiteral(" | "))));
     slider_ = new QSlider(Qt::Horizontal);
     slider_->setRange(0, longest);
     connect(slider_, &QSlider::valueChanged, this, [this](int v) { setStep(v); });
 
-    // The statistics of the three trees, and of the example ray through each.
-    const QStringList rows = {
-        tr("build ms"),   tr("nodes"),    tr("leaves"),     tr("max depth"),
-        tr("references"), tr("SAH cost"), tr("ray: tests"), tr("ray: nodes visited"),
-        tr("ray: events")};
-    table_ = new QTableWidget(rows.size(), 3);
+    // The statistics of each structure (a grid's nodes and leaves are its cells), and of the
+    // same ray through each.
+    QStringList rows;
+    rows << tr("build ms") << tr("nodes or cells") << tr("leaves or cells") << tr("max depth")
+         << tr("references") << tr("SAH cost") << tr("ray: primitive tests")
+         << tr("ray: nodes or cells visited") << tr("ray: mailbox skips") << tr("ray: events");
+    Q_ASSERT(rows.size() == RowCount);
+    table_ = new QTableWidget(rows.size(), n);
     table_->setVerticalHeaderLabels(rows);
-    table_->setHorizontalHeaderLabels(splitNames);
+    table_->setHorizontalHeaderLabels(names);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    for (int i = 0; i < 3; ++i) {
-        const BuildSummary b = sessions_[i]->summary();
-        std::size_t tests = 0, visits = 0;
-        for (const Event& e : sessions_[i]->log().events()) {
+    for (int i = 0; i < n; ++i) {
+        const Session& s = *sessions_[i];
+        const BuildSummary b = s.summary();
+        std::size_t tests = 0, visits = 0, skips = 0;
+        for (const Event& e : s.log().events()) {
             tests += std::holds_alternative<PrimitiveTest>(e);
-            visits += std::holds_alternative<NodeEnter>(e);
+            visits += std::holds_alternative<NodeEnter>(e) || std::holds_alternative<DdaCell>(e);
+            skips += std::holds_alternative<MailboxSkip>(e);
         }
+        // Only a tree has a SAH cost and a depth of its own (brute force's would be C_isect N).
+        const bool tree = hasSplit(s.kind());
+        const QString none = QStringLiteral("-");
         const QStringList values = {numberText(b.stats.buildMs, 'f', 2),
                                     QString::number(b.stats.nodes),
                                     QString::number(b.stats.leaves),
-                                    QString::number(b.stats.maxDepth),
+                                    tree ? QString::number(b.stats.maxDepth) : none,
                                     QString::number(b.stats.references),
-                                    numberText(b.stats.sahCost, 'g', 5),
+                                    tree ? numberText(b.stats.sahCost, 'g', 5) : none,
                                     QString::number(tests),
                                     QString::number(visits),
-                                    QString::number(sessions_[i]->size())};
-        for (int r = 0; r < values.size(); ++r)
-            table_->setItem(r, i, new QTableWidgetItem(values[r]));
+                                    QString::number(skips),
+                                    QString::number(s.size())};
+        for (int r = 0; r < values.size(); ++r) {
+            auto* item = new QTableWidgetItem(values[r]);
+            item->setTextAlignment(Qt::AlignCenter);
+            table_->setItem(r, i, item);
+        }
     }
     table_->resizeRowsToContents();
     table_->setMinimumHeight(table_->horizontalHeader()->height() +
                              table_->rowHeight(0) * table_->rowCount() + 6);
     auto* layout = new QVBoxLayout(this);
-    if (!sessions_[0]->is2D())
+    if (!sessions_.empty() && !sessions_[0]->is2D())
         layout->addWidget(new QLabel(
-            tr("Rasterized by VTK: the same pixel's rays in each tree (drag to rotate a view)")));
+            tr("Rasterized by VTK: the same pixel's rays in each structure (drag to rotate a "
+               "view)")));
     layout->addLayout(views, 1);
+    if (!legend.isEmpty()) {
+        auto* key = new QLabel(legend.join(QStringLiteral(" &nbsp; ")));
+        key->setObjectName("compareLegend");
+        key->setWordWrap(true);
+        layout->addWidget(key);
+    }
     auto* stepRow = new QHBoxLayout;
+    if (auto* first = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.front())) {
+        // One pair of camera buttons for every view (each view's own would not fit four wide).
+        auto* eye = new QPushButton(tr("View from the eye"));
+        auto* beside = new QPushButton(tr("Beside the eye"));
+        eye->setObjectName("compareFromEye");
+        beside->setObjectName("compareBesideEye");
+        connect(eye, &QPushButton::clicked, first, &VtkView::viewFromEye);
+        connect(beside, &QPushButton::clicked, first, &VtkView::frameBesideEye);
+        stepRow->addWidget(eye);
+        stepRow->addWidget(beside);
+    }
     stepRow->addWidget(new QLabel(tr("step (the same ray in each)")));
     stepRow->addWidget(slider_, 1);
     layout->addLayout(stepRow);
@@ -138,8 +216,17 @@ void CompareWindow::closeEvent(QCloseEvent* e) {
     QWidget::closeEvent(e);
 }
 
+QString CompareWindow::progressText(int i) const {
+    const Session& s = *sessions_[i];
+    if (s.cursor() >= s.size()) return tr("all %1 events: the ray is done").arg(s.size());
+    return tr("event %1 of %2").arg(s.cursor()).arg(s.size());
+}
+
 void CompareWindow::setStep(int n) {
-    for (auto& s : sessions_) s->setCursor(static_cast<std::size_t>(std::max(n, 0)));
+    for (std::size_t i = 0; i < sessions_.size(); ++i) {
+        sessions_[i]->setCursor(static_cast<std::size_t>(std::max(n, 0)));
+        progress_[i]->setText(progressText(static_cast<int>(i)));
+    }
 }
 
 }  // namespace raystep::gui

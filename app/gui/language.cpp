@@ -74,4 +74,16 @@ QString structureName(AccelKind kind) {
     return QString::fromStdString(structureLabel(kind, gLanguage));
 }
 
+QString splitName(SplitMethod split) {
+    switch (split) {
+        case SplitMethod::Midpoint:
+            return QString::fromStdString(tr(gLanguage, "midpoint"));
+        case SplitMethod::Median:
+            return QString::fromStdString(tr(gLanguage, "median"));
+        case SplitMethod::Sah:
+            break;
+    }
+    return QString::fromStdString(tr(gLanguage, "SAH"));
+}
+
 }  // namespace raystep::gui

@@ -39,5 +39,7 @@ QString numberText(double v, char format = 'g', int precision = 6);
 std::string sceneDescription(const std::string& english);
 /// A structure's name to put in a sentence ("grid", "kd-tree"), in the interface's language.
 QString structureName(AccelKind kind);
+/// A split method's name ("midpoint", "median", "SAH"), in the interface's language.
+QString splitName(SplitMethod split);
 
 }  // namespace raystep::gui

@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
     const QCommandLineOption langOpt("lang", "Interface language: en or it.", "en|it", "en");
     const QCommandLineOption compareOpt(
         "compare",
-        "Also open compare mode (midpoint, median, SAH) on the scene; "
-        "--screenshot then saves that window.");
+        "Also open compare mode on the scene: the structures --accel lists (grid,kdtree,bvh: "
+        "trees by SAH), or a tree's split methods (midpoint, median, SAH), or for one grid the "
+        "slides' grid, kd-tree and BVH; --screenshot then saves that window.");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
     parser.addOptions({lessonOpt, sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt,
@@ -69,10 +70,21 @@ int main(int argc, char** argv) {
     const auto language = raystep::parseLanguage(lang.toStdString());
     if (!language) return fail("--lang " + lang + ": expected en or it");
     raystep::gui::setInterfaceLanguage(*language);
-    const auto kind = raystep::parseAccelKind(parser.value(accelOpt).toStdString());
+    // With --compare, --accel may list several structures; the first is the one opened.
+    std::vector<raystep::StructureChoice> compared;
+    const std::string accelText = parser.value(accelOpt).toStdString();
+    if (parser.isSet(compareOpt) && accelText.find(',') != std::string::npos) {
+        const auto parsed = raystep::parseStructureChoices(accelText, std::nullopt);
+        if (const auto* problem = std::get_if<std::string>(&parsed))
+            return fail(QString::fromStdString(*problem));
+        compared = std::get<std::vector<raystep::StructureChoice>>(parsed);
+    }
+    const auto kind = compared.empty() ? raystep::parseAccelKind(accelText) : compared.front().kind;
     if (!kind)
-        return fail("--accel " + parser.value(accelOpt) + ": expected " +
-                    QString::fromStdString(raystep::kindList()));
+        return fail(
+            "--accel " + parser.value(accelOpt) + ": expected " +
+            QString::fromStdString(raystep::kindList()) +
+            (parser.isSet(compareOpt) ? " (or, with --compare, a comma list of them)" : ""));
     const QString replay = parser.value(replayOpt);
     if (replay != "ray" && replay != "build")
         return fail("--replay " + replay + ": expected ray or build");
@@ -149,7 +161,12 @@ int main(int argc, char** argv) {
             }
             window.session().setCursor(*step);
         }
-        if (parser.isSet(compareOpt)) window.openCompare();
+        if (parser.isSet(compareOpt)) {
+            if (compared.empty())
+                window.openCompare();
+            else
+                window.openCompare(compared);
+        }
         window.whenIdle([&] {
             if (parser.isSet(compareOpt)) {
                 if (!window.compareWindow()) {

@@ -2,6 +2,7 @@
 #include "main_window.h"
 #include "file_dialogs.h"
 
+#include "compare_chooser.h"
 #include "compare_window.h"
 #include "event_list.h"
 #include "image_view.h"
@@ -328,8 +329,8 @@ void MainWindow::createActions() {
         lesson_->setShowErrata(on);
     });
 
-    a.compare = action(tr("&Compare midpoint, median and SAH..."), QKeySequence(Qt::Key_C),
-                       [this] { openCompare(); });
+    a.compare =
+        action(tr("&Compare structures..."), QKeySequence(Qt::Key_C), [this] { chooseCompare(); });
     a.renderAgain = action(tr("Render the &image again"), {}, [this] { renderImage(); });
     a.heatmap = new QAction(tr("&Heat map of primitive tests"), this);
     a.heatmap->setCheckable(true);
@@ -799,13 +800,31 @@ QString MainWindow::progressPath() const {
 }
 
 void MainWindow::openCompare() {
+    openCompare(defaultComparison(session_.kind()));
+}
+
+void MainWindow::chooseCompare() {
     if (!session_.hasScene()) {
         statusBar()->showMessage(tr("No scene is open: nothing to compare."));
         return;
     }
+    if (refusedWhileHeld(tr("compare structures on the ray"))) return;
+    // Opened on what was compared last, else on the comparison made for the structure shown.
+    const auto last = CompareChooser::fromText(QSettings().value("compare/choice").toString());
+    CompareChooser chooser(last ? *last : defaultComparison(session_.kind()), this);
+    if (chooser.exec() != QDialog::Accepted) return;
+    QSettings().setValue("compare/choice", CompareChooser::toText(chooser.choices()));
+    openCompare(chooser.choices());
+}
+
+void MainWindow::openCompare(const std::vector<StructureChoice>& choices) {
+    if (!session_.hasScene()) {
+        statusBar()->showMessage(tr("No scene is open: nothing to compare."));
+        return;
+    }
+    if (choices.empty()) return;
     // Compare mode replays whole traces: not while an exercise holds the replay (quiz mode).
-    if (refusedWhileHeld(tr("compare the midpoint, median and SAH trees"))) return;
-    const AccelKind kind = session_.kind() == AccelKind::Bvh ? AccelKind::Bvh : AccelKind::KdTree;
+    if (refusedWhileHeld(tr("compare structures on the ray"))) return;
     // 3D: the pixel being replayed, in the image it is a pixel of (its event says: clicked on
     // the image, or a lesson's), else the image's centre.
     CompareWindow::Pixel pixel{kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight};
@@ -816,17 +835,19 @@ void MainWindow::openCompare() {
                 pixel.width = static_cast<int>(p->width),
                 pixel.height = static_cast<int>(p->height);
         }
-    // Three trees of a big mesh take seconds: built in the background, with Cancel.
+    QStringList names;
+    for (const StructureChoice& c : choices) names << choiceLabel(c);
+    // Several structures over a big mesh take seconds: built in the background, with Cancel.
     const std::uint64_t generation = generation_;
     runner_.start<CompareWindow::Prepared>(
-        TaskKind::Compare, tr("Building the midpoint, median and SAH trees..."),
-        [scene = session_.sceneRef(), kind](const ProgressFn& progress) {
-            return CompareWindow::prepare(scene, kind, progress);
+        TaskKind::Compare, tr("Building %1...").arg(names.join(QStringLiteral(", "))),
+        [scene = session_.sceneRef(), choices](const ProgressFn& progress) {
+            return CompareWindow::prepare(scene, choices, progress);
         },
         [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
-            // An exercise may have come to hold the replay while the trees were built.
-            if (refusedWhileHeld(tr("compare the midpoint, median and SAH trees"))) return;
+            // An exercise may have come to hold the replay while the structures were built.
+            if (refusedWhileHeld(tr("compare structures on the ray"))) return;
             if (outcome.cancelled) {
                 statusBar()->showMessage(tr("Compare cancelled"));
                 return;

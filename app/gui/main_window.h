@@ -109,8 +109,13 @@ class MainWindow : public QMainWindow {
     void replayBuild();
     /// Renders the image of the 3D scene in the background (what the image view shows).
     void renderImage();
-    /// Opens compare mode (midpoint, median, SAH) once its three trees are built.
+    /// Opens compare mode on `choices` (each a structure, and a split for a tree) once they are
+    /// built: the same ray through each, side by side.
+    void openCompare(const std::vector<StructureChoice>& choices);
+    /// The same on the comparison made for the structure shown (defaultComparison).
     void openCompare();
+    /// View > Compare... (C): asks which structures (CompareChooser), then opens them.
+    void chooseCompare();
     /// The compare window last opened, while it is open.
     CompareWindow* compareWindow() const;
 

@@ -27,17 +27,6 @@
 namespace raystep::gui {
 
 namespace {
-QString splitName(SplitMethod split) {
-    switch (split) {
-        case SplitMethod::Midpoint:
-            return MainWindow::tr("midpoint");
-        case SplitMethod::Median:
-            return MainWindow::tr("median");
-        case SplitMethod::Sah:
-            break;
-    }
-    return MainWindow::tr("SAH");
-}
 /// Past this many primitives brute force is asked about first and its pixel traces run in the
 /// background: a pixel's three rays then test 600,000 primitives or more (most of a second on
 /// a student's laptop), and its image takes minutes to hours.

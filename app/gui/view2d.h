@@ -61,6 +61,9 @@ class View2D : public QWidget {
         legendShown_ = legend;
         update();
     }
+    /// The legend's rows: each role's colour and name, for a build's replay or a ray's (compare
+    /// mode shows them once, under its views).
+    std::vector<std::pair<QColor, QString>> legendRows(bool build) const;
     /// The cost chart at the replay's cursor (a build's replay with candidates), else nullopt.
     std::optional<CostChart> costChart() const;
     /// Where the scene point `p` is drawn (tests line the chart up with the node).
@@ -147,8 +150,6 @@ class View2D : public QWidget {
     QString captionText() const;
     /// The colour roles of the picture (the palette's), where fit() put them.
     void drawLegend(QPainter& g, bool build) const;
-    /// The legend's rows: each role's colour and name, for a build's replay or a ray's.
-    std::vector<std::pair<QColor, QString>> legendRows(bool build) const;
     /// The scene-to-widget mapping for the current size: the kept view (fitted on a new scene,
     /// then zoomed and panned), with room for the legend and the cost chart.
     void fit() const;

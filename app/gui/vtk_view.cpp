@@ -182,6 +182,22 @@ Camera VtkView::currentCamera() const {
 
 VtkView::~VtkView() = default;
 
+void VtkView::setCamera(const Camera& c) {
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    cam->SetPosition(c.eye.x, c.eye.y, c.eye.z);
+    cam->SetFocalPoint(c.lookAt.x, c.lookAt.y, c.lookAt.z);
+    cam->SetViewUp(c.up.x, c.up.y, c.up.z);
+    cam->SetViewAngle(c.fovDeg);
+    renderer_->ResetCameraClippingRange();
+    framing_ = Framing::User;  // a resize keeps it (it is another view's)
+    dirty_ = true;
+    update();
+}
+
+void VtkView::setButtonsShown(bool shown) {
+    for (QToolButton* b : {idsButton_, besideButton_, eyeButton_}) b->setVisible(shown);
+}
+
 void VtkView::rebuildScene() {
     renderer_->RemoveAllViewProps();
     sceneProps_.props.clear();

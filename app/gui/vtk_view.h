@@ -55,6 +55,10 @@ class VtkView : public QWidget {
     /// (x, y) of a width() x height() image is the ray under widget point (x + 0.5, y + 0.5).
     Camera currentCamera() const;
     bool showingPrimitiveIds() const { return showIds_; }
+    /// Puts the camera where `c` says (compare mode's views all look as the one turned last).
+    void setCamera(const Camera& c);
+    /// Whether the view's own buttons are shown (compare mode has one row of them for all).
+    void setButtonsShown(bool shown);
 
   public slots:
     /// Back to the scene's own camera: the view from the eye.

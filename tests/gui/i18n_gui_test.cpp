@@ -3,6 +3,7 @@
 // the Italian one must differ from its English twin, unless its words are the same in both
 // languages (a short list below). The inspector and the event list are compared the same way at
 // every step of a 2D walk, a 3D pixel's ray tree and a kd-tree's construction.
+#include "compare_chooser.h"
 #include "compare_window.h"
 #include "event_list.h"
 #include "inspector.h"
@@ -184,6 +185,14 @@ TEST(ItalianInterface, TheCompareWindowAndTheBuildReplayAreItalian) {
         EXPECT_NE(w.compareWindow(), nullptr);
         if (w.compareWindow())
             for (Shown& s : textsOf(w.compareWindow())) texts.push_back(std::move(s));
+        // The slides' grid, kd-tree and BVH side by side, and the chooser that asks for them.
+        w.openCompare(std::get<std::vector<StructureChoice>>(
+            parseStructureChoices("grid,kdtree,bvh", std::nullopt)));
+        EXPECT_TRUE(w.waitUntilIdle());
+        if (w.compareWindow())
+            for (Shown& s : textsOf(w.compareWindow())) texts.push_back(std::move(s));
+        CompareChooser chooser(defaultComparison(AccelKind::Grid));
+        for (Shown& s : textsOf(&chooser)) texts.push_back(std::move(s));
         return texts;
     });
     expectItalian(en, it);
