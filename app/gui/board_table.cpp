@@ -311,8 +311,12 @@ void BoardTable::refresh() {
     export_->setEnabled(!b.header.empty());
     const int row = currentRow();
     if (row >= 0) {
-        view_->selectRow(row);
-        view_->scrollTo(model_->index(row, 0));
+        // Not selectRow: it reads the keyboard's modifiers, so with Ctrl held (Ctrl+Shift+L, a
+        // Ctrl+key step) it toggled the row off, and with Shift extended the selection.
+        const QModelIndex at = model_->index(row, 0);
+        view_->selectionModel()->setCurrentIndex(
+            at, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        view_->scrollTo(at);
     } else {
         view_->clearSelection();
     }

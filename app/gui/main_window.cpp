@@ -197,6 +197,7 @@ void MainWindow::createDocks() {
     // replay (a lesson opened, a mode changed), and with its scene (showScene).
     connect(&session_, &Session::limitChanged, this, [this] {
         if (compare_ && session_.held()) compare_->close();
+        if (chooser_ && session_.held()) chooser_->reject();
     });
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
     connect(lessons_, &LessonController::lessonSceneRequested, this,
@@ -329,8 +330,11 @@ void MainWindow::createActions() {
         lesson_->setShowErrata(on);
     });
 
+    // C at once (a tree's splits, or the slides' grid, kd-tree and BVH); Shift+C asks which.
     a.compare =
-        action(tr("&Compare structures..."), QKeySequence(Qt::Key_C), [this] { chooseCompare(); });
+        action(tr("&Compare on this ray"), QKeySequence(Qt::Key_C), [this] { openCompare(); });
+    a.chooseCompare = action(tr("Compare &structures..."), QKeySequence(Qt::SHIFT | Qt::Key_C),
+                             [this] { chooseCompare(); });
     a.renderAgain = action(tr("Render the &image again"), {}, [this] { renderImage(); });
     a.heatmap = new QAction(tr("&Heat map of primitive tests"), this);
     a.heatmap->setCheckable(true);
@@ -381,7 +385,7 @@ void MainWindow::createMenus() {
     lessons->addSeparator();
     lessons->addAction(a.showErrata);
     QMenu* view = menus_.view = menuBar()->addMenu(tr("&View"));
-    view->addActions({a.compare, a.renderAgain, a.heatmap, a.resetCamera});
+    view->addActions({a.compare, a.chooseCompare, a.renderAgain, a.heatmap, a.resetCamera});
     view->addAction(rayTraceView_);
     addLayoutActions(view);
     menus_.help = menuBar()->addMenu(tr("&Help"));
@@ -809,12 +813,25 @@ void MainWindow::chooseCompare() {
         return;
     }
     if (refusedWhileHeld(tr("compare structures on the ray"))) return;
-    // Opened on what was compared last, else on the comparison made for the structure shown.
+    if (chooser_) {
+        chooser_->raise();
+        return;
+    }
+    // Opened on what was compared last, else on the comparison made for the structure shown;
+    // not modal by exec() (no nested event loop: architecture.md), window-modal by open().
     const auto last = CompareChooser::fromText(QSettings().value("compare/choice").toString());
-    CompareChooser chooser(last ? *last : defaultComparison(session_.kind()), this);
-    if (chooser.exec() != QDialog::Accepted) return;
-    QSettings().setValue("compare/choice", CompareChooser::toText(chooser.choices()));
-    openCompare(chooser.choices());
+    auto* chooser = new CompareChooser(last ? *last : defaultComparison(session_.kind()), this);
+    chooser->setAttribute(Qt::WA_DeleteOnClose);
+    connect(chooser, &QDialog::accepted, this, [this, chooser] {
+        QSettings().setValue("compare/choice", CompareChooser::toText(chooser->choices()));
+        openCompare(chooser->choices());
+    });
+    chooser_ = chooser;
+    chooser->open();
+}
+
+CompareChooser* MainWindow::compareChooser() const {
+    return chooser_.data();
 }
 
 void MainWindow::openCompare(const std::vector<StructureChoice>& choices) {

@@ -37,6 +37,7 @@ namespace raystep::gui {
 QString savePng(const QImage& image, const QString& path);
 
 class BoardTable;
+class CompareChooser;
 class CompareWindow;
 class LiveControls;
 struct FrameBox;
@@ -114,8 +115,10 @@ class MainWindow : public QMainWindow {
     void openCompare(const std::vector<StructureChoice>& choices);
     /// The same on the comparison made for the structure shown (defaultComparison).
     void openCompare();
-    /// View > Compare... (C): asks which structures (CompareChooser), then opens them.
+    /// View > Compare structures... (Shift+C): asks which (CompareChooser), then opens them.
     void chooseCompare();
+    /// The chooser chooseCompare opened, while it is open.
+    CompareChooser* compareChooser() const;
     /// The compare window last opened, while it is open.
     CompareWindow* compareWindow() const;
 
@@ -285,6 +288,7 @@ class MainWindow : public QMainWindow {
     std::optional<bool> lastOpenOk_;
     QString lastOpenError_;
     QPointer<CompareWindow> compare_;
+    QPointer<CompareChooser> chooser_;
     bool geometryRestored_ = false;
     bool stateRestored_ = false;
     bool layoutSettled_ = false;
@@ -305,7 +309,7 @@ class MainWindow : public QMainWindow {
         QAction *stepForward, *stepBack, *play, *nextOfKind, *replayBuild, *exampleRay, *first,
             *last;
         QAction *openLessonFile, *quizMode, *presentMode, *lecturer, *backToLesson, *showErrata;
-        QAction *compare, *renderAgain, *heatmap, *resetCamera;
+        QAction *compare, *chooseCompare, *renderAgain, *heatmap, *resetCamera;
     } actions_{};
     /// The menu bar's menus, made by createMenus (Edit and Help are filled by the live parts).
     struct Menus {

@@ -176,6 +176,31 @@ TEST(BoardDock, TheSlidesExampleRowsAreTheCliDdaTable) {
     EXPECT_TRUE(std::holds_alternative<DdaCell>(s.log().events()[s.cursor() - 1]));
 }
 
+// The board follows the cursor with exactly one row selected whatever keys are held: with Ctrl
+// down (left so by Ctrl+Shift+L, or a Ctrl+key step) selectRow toggled the row off.
+TEST(BoardDock, TheCurrentRowStaysSelectedWithAModifierHeld) {
+    MainWindow w;
+    w.resize(1400, 860);
+    w.show();
+    ASSERT_TRUE(openScene(w, "lecture-grid", AccelKind::Grid));
+    Session& s = w.session();
+    const std::pair<Qt::Key, Qt::KeyboardModifier> keys[] = {{Qt::Key_Control, Qt::ControlModifier},
+                                                             {Qt::Key_Shift, Qt::ShiftModifier}};
+    for (const auto& [held, modifier] : keys) {
+        QTest::keyPress(&w, held, modifier);
+        for (int n = 1; n <= 4; ++n) {
+            std::size_t at = 0;
+            for (int i = 0; i < n; ++i)
+                at = s.replay().nextOfKind(i ? at + 1 : 0, variantIndex<DdaCell>());
+            s.setCursor(at + 1);
+            const QModelIndexList rows = w.boardTable()->view()->selectionModel()->selectedRows();
+            ASSERT_EQ(rows.size(), 1) << n;
+            EXPECT_EQ(rows[0].row(), n - 1);
+        }
+        QTest::keyRelease(&w, held);
+    }
+}
+
 TEST(BoardDock, TheThreeDimensionalWalkHasItsZColumnAsTheCliPrintsIt) {
     MainWindow w;
     w.resize(1400, 860);

@@ -16,7 +16,9 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QRadioButton>
+#include <QStatusBar>
 #include <QTableWidget>
+#include <QTest>
 
 #include <sys/wait.h>
 
@@ -116,6 +118,42 @@ TEST(CompareAny, TheChooserGivesATreesSplitsOrAnySetAndRemembersIt) {
     CompareChooser b(defaultComparison(AccelKind::Grid));
     EXPECT_TRUE(b.structuresMode()->isChecked());
     EXPECT_EQ(b.choices(), choices("grid,kdtree,bvh"));
+}
+
+TEST(CompareAny, ShiftCAsksWhichAndCComparesAtOnce) {
+    MainWindow w;
+    w.resize(1366, 740);
+    w.show();
+    w.activateWindow();  // a window's shortcuts reach the active window only
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    ASSERT_TRUE(open(w, "lecture-kdtree", AccelKind::KdTree));
+    // C: the structure shown's own comparison, a kd-tree's three splits.
+    QTest::keyClick(&w, Qt::Key_C);
+    ASSERT_TRUE(w.waitUntilIdle());
+    ASSERT_NE(w.compareWindow(), nullptr) << w.statusBar()->currentMessage().toStdString();
+    EXPECT_EQ(w.compareWindow()->count(), 3);
+    EXPECT_EQ(w.compareWindow()->choice(2), (StructureChoice{AccelKind::KdTree, SplitMethod::Sah}));
+    w.compareWindow()->close();
+    // Shift+C: the chooser, not modal to the event loop; the slides' comparison ticked, then OK.
+    QTest::keyClick(&w, Qt::Key_C, Qt::ShiftModifier);
+    CompareChooser* chooser = w.compareChooser();
+    ASSERT_NE(chooser, nullptr);
+    EXPECT_TRUE(chooser->isVisible());
+    QTest::mouseClick(chooser->structuresMode(), Qt::LeftButton);
+    ASSERT_TRUE(chooser->structuresMode()->isChecked());
+    EXPECT_EQ(chooser->choices(), choices("grid,kdtree,bvh"));
+    QTest::mouseClick(chooser->buttons()->button(QDialogButtonBox::Ok), Qt::LeftButton);
+    ASSERT_TRUE(w.waitUntilIdle());
+    ASSERT_TRUE(waitFor([&] { return w.compareWindow() != nullptr; }));
+    EXPECT_EQ(w.compareWindow()->count(), 3);
+    EXPECT_EQ(w.compareWindow()->choice(0).kind, AccelKind::Grid);
+    EXPECT_EQ(w.compareWindow()->choice(2).kind, AccelKind::Bvh);
+    w.compareWindow()->close();
+    // The next chooser opens on what was chosen.
+    QTest::keyClick(&w, Qt::Key_C, Qt::ShiftModifier);
+    ASSERT_NE(w.compareChooser(), nullptr);
+    EXPECT_EQ(w.compareChooser()->choices(), choices("grid,kdtree,bvh"));
+    w.compareChooser()->reject();
 }
 
 TEST(CompareAny, The3DViewsTurnTogether) {
