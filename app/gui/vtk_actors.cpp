@@ -609,7 +609,6 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
         kVoxel(structureColour(StructureRole::Voxel)),
         kCurrent(structureColour(StructureRole::CurrentVoxel)),
         kNode(structureColour(StructureRole::KdNode)),
-        kPlane(structureColour(StructureRole::SplitPlane)),
         kTested(structureColour(StructureRole::TestedPrimitive));
     const StructureOutline<3>* outline = session.outline3D();
     if (const OutlineGrid<3>* grid = outline && outline->grid ? &*outline->grid : nullptr) {
