@@ -195,6 +195,31 @@ TEST(StructureViews, TheThreeDBvhIsDrawnAtARaysStepAsTheTwoDViewDrawsIt) {
     EXPECT_EQ(currentFaces, 2);  // its two faces across x (the four others not looked for)
 }
 
+TEST(StructureViews, TheThreeDBvhBuildShowsTheNodeBeingSplitAsTheKdTreesDoes) {
+    for (const AccelKind kind : {AccelKind::Bvh, AccelKind::KdTree}) {
+        Session s;
+        AccelOptions o = oneSpherePerLeaf();
+        o.kdtree.split = SplitMethod::Midpoint;
+        o.kdtree.leafSize = 1;
+        s.adopt(Session::prepare(twoSpheres(), kind, o));
+        s.recordBuild();
+        ASSERT_TRUE(s.showingBuild());
+        // Right after the first event, the root's BuildNode: the node being split is the root,
+        // [-3, 3] x [-1, 1] x [-1, 1] for both (the spheres' bounds), in the current colour.
+        s.setCursor(1);
+        ASSERT_TRUE(s.state().buildNode.has_value());
+        PropSet trace, eye;
+        traceProps(s, 4.0, trace, eye);
+        const Drawn d = drawn(trace);
+        for (const Edge& e : boxEdges(Vec3(-3, -1, -1), Vec3(3, 1, 1))) {
+            bool violet = false;
+            for (auto [it, end] = d.lines.equal_range(e); it != end; ++it)
+                violet |= it->second.colour == rgbOf(StructureRole::KdNode);
+            EXPECT_TRUE(violet) << structureLabel(kind);
+        }
+    }
+}
+
 TEST(StructureViews, TheSessionMakesTheOutlineOncePerStructure) {
     Session s;
     s.adopt(Session::prepare(twoSpheres(), AccelKind::Bvh, oneSpherePerLeaf()));
