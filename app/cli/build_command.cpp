@@ -75,7 +75,6 @@ int runBuild(const BuildArgs& a) {
         buildStructure(any, choice.kind, choice.kernels, choice.options, record);
     summary = built.in2D ? summarize(*built.in2D) : summarize(*built.in3D);
     bar.finish();
-    if (choice.kind != AccelKind::Grid) summary.description = describeAccel(choice);
     if (!a.events.empty()) {
         TraceInfo info;
         info.what = "build";
@@ -103,7 +102,7 @@ int runBuild(const BuildArgs& a) {
     std::printf("  references    %llu (%.2f per primitive)\n",
                 static_cast<unsigned long long>(s.references), s.references / n);
     std::printf("  SAH cost      %.4g\n  build         %.1f ms\n", s.sahCost, s.buildMs);
-    if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+    if (hasSplit(choice.kind)) {  // a tree: why each leaf was made
         std::printf("  leaves made:");
         for (std::size_t i = 0; i < kLeafReasonNames.size(); ++i)
             if (s.leafReasons[i])

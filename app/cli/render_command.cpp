@@ -4,6 +4,7 @@
 #include "common.h"
 #include "progress.h"
 
+#include "raystep/accel/outline.h"
 #include "raystep/render/image.h"
 #include "raystep/render/tracer.h"
 #include "raystep/scene/model_import.h"
@@ -167,14 +168,17 @@ int runRender(const RenderArgs& a) {
         j["ray_offset"] = a.rayOffset;
         j["triangle_method"] = a.accel.triangleMethod;
         j["sphere_method"] = a.accel.sphereMethod;
-        if (const auto* grid = std::get_if<UniformGrid>(&*accel)) {
-            const auto& res = grid->spec().res;
-            j["grid"] = {{"cells", {res.x, res.y, res.z}},
-                         {"references", grid->references()},
-                         {"empty_cells", grid->emptyCells()},
-                         {"mailbox", a.accel.mailbox}};
-        }
-        if (choice.kind == AccelKind::KdTree || choice.kind == AccelKind::Bvh) {
+        // A grid's cells from its outline (asked of a grid only: a tree's lists every node).
+        if (readsOption(choice.kind, AccelOption::GridRes))
+            if (const auto grid = outline(*accel).grid) {
+                const BuildSummary b = summarize(*accel);
+                const auto& res = grid->spec.res;
+                j["grid"] = {{"cells", {res.x, res.y, res.z}},
+                             {"references", b.stats.references},
+                             {"empty_cells", b.stats.emptyLeaves},
+                             {"mailbox", a.accel.mailbox}};
+            }
+        if (hasSplit(choice.kind)) {
             const BuildSummary b = summarize(*accel);
             j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
                          {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},

@@ -130,7 +130,7 @@ QString Live2D::save(const QString& path) const {
     Scene2D out = *s;
     // The grid drawn now, if a live control set its resolution.
     const AccelOptions o = session_.options();
-    if (session_.kind() == AccelKind::Grid && o.grid.res)
+    if (readsOption(session_.kind(), AccelOption::GridRes) && o.grid.res)
         out.gridRes = IVecN<2>((*o.grid.res)[0], (*o.grid.res)[1]);
     try {
         saveScene2D(out, path.toStdString());

@@ -44,14 +44,12 @@ QSpinBox* intBox(const char* name, AccelOption option) {
     return b;
 }
 
-/// The resolution of the grid the session shows, if it shows one.
+/// The resolution of the grid the session shows, if it shows one (its outline's).
 std::optional<std::array<int, 3>> builtResolution(const Session& s) {
-    if (const Accelerator2D* a = s.accel2D())
-        if (const auto* g = std::get_if<UniformGridT<Scene2DPrims>>(a))
-            return std::array<int, 3>{g->spec().res[0], g->spec().res[1], 1};
-    if (const Accelerator* a = s.accel3D())
-        if (const auto* g = std::get_if<UniformGrid>(a))
-            return std::array<int, 3>{g->spec().res[0], g->spec().res[1], g->spec().res[2]};
+    if (const StructureOutline<2>* o = s.outline2D(); o && o->grid)
+        return std::array<int, 3>{o->grid->spec.res[0], o->grid->spec.res[1], 1};
+    if (const StructureOutline<3>* o = s.outline3D(); o && o->grid)
+        return std::array<int, 3>{o->grid->spec.res[0], o->grid->spec.res[1], o->grid->spec.res[2]};
     return std::nullopt;
 }
 }  // namespace
@@ -264,25 +262,26 @@ void LiveControls::updateStatistics() {
     const BuildSummary summary = session_.summary();
     const TreeStats& t = summary.stats;
     QStringList lines;
-    switch (session_.kind()) {
-        case AccelKind::Grid:
-            lines << tr("Grid %1: %2 cells, %3 empty, %4 listings")
-                         .arg(QString::fromStdString(summary.description.substr(5)))
-                         .arg(t.nodes)
-                         .arg(t.emptyLeaves)
-                         .arg(t.references);
-            break;
-        case AccelKind::KdTree:
-        case AccelKind::Bvh:
-            lines << tr("%1 nodes, %2 leaves, depth %3; SAH cost %4")
-                         .arg(t.nodes)
-                         .arg(t.leaves)
-                         .arg(t.maxDepth)
-                         .arg(numberText(t.sahCost));
-            break;
-        case AccelKind::BruteForce:
-            lines << tr("Brute force: every primitive for every ray (%1)").arg(t.references);
-            break;
+    // What the structure is, as its row and its outline say: cells (a grid), every primitive
+    // (brute force) or a tree's nodes; a ray's counts the same way.
+    const std::optional<std::array<int, 3>> cells3 = builtResolution(session_);
+    const bool everyPrimitive = testsEveryPrimitive(session_.kind());
+    if (cells3) {
+        QStringList res;
+        for (int a = 0; a < (session_.is2D() ? 2 : 3); ++a) res << QString::number((*cells3)[a]);
+        lines << tr("Grid %1: %2 cells, %3 empty, %4 listings")
+                     .arg(res.join('x'))
+                     .arg(t.nodes)
+                     .arg(t.emptyLeaves)
+                     .arg(t.references);
+    } else if (everyPrimitive) {
+        lines << tr("Brute force: every primitive for every ray (%1)").arg(t.references);
+    } else {
+        lines << tr("%1 nodes, %2 leaves, depth %3; SAH cost %4")
+                     .arg(t.nodes)
+                     .arg(t.leaves)
+                     .arg(t.maxDepth)
+                     .arg(numberText(t.sahCost));
     }
     if (session_.hiding()) {
         // The rest waits with the replay: a count up to an exercise's position (or the cursor,
@@ -292,12 +291,12 @@ void LiveControls::updateStatistics() {
                                    : tr("Traced: counts wait for the question's answer"));
     } else if (built > 0)
         lines << tr("Build replayed: %1 nodes made, %2 leaves").arg(built).arg(leaves);
-    else if (session_.kind() == AccelKind::Grid)
+    else if (cells3)
         lines << tr("Traced: %1 tests, %2 cells visited, %3 mailbox skips")
                      .arg(tests)
                      .arg(cells)
                      .arg(skips);
-    else if (session_.kind() == AccelKind::BruteForce)
+    else if (everyPrimitive)
         lines << tr("Traced: %1 tests").arg(tests);
     else
         lines << tr("Traced: %1 tests, %2 nodes visited, %3 mailbox skips")

@@ -55,7 +55,7 @@ void MainWindow::createBoard() {
 
 void MainWindow::applyLive(AccelKind kind, const AccelOptions& options) {
     const Scene2D* s2 = session_.scene2D();
-    if (s2 && s2->gridRes && kind == AccelKind::Grid && !options.grid.res) {
+    if (s2 && s2->gridRes && readsOption(kind, AccelOption::GridRes) && !options.grid.res) {
         // Lambda's grid asked for: the scene's own grid would win over it (buildAccelerator2D),
         // so the scene is shown without it.
         Scene2D copy = *s2;

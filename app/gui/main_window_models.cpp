@@ -108,7 +108,7 @@ AccelOptions MainWindow::openOptions() const {
 
 void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
     const Scene* scene = session_.scene3D();
-    if (kind != AccelKind::BruteForce || !scene || session_.kind() == AccelKind::BruteForce ||
+    if (!testsEveryPrimitive(kind) || !scene || testsEveryPrimitive(session_.kind()) ||
         scene->primitiveCount() <= kBruteForceAsk)
         return buildChosenStructure(kind, split);
     // Asked first, without a nested event loop: the answer builds it, or keeps what is there.
@@ -141,7 +141,7 @@ void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
 
 bool MainWindow::slowPixelTraces() const {
     const Scene* scene = session_.scene3D();
-    return scene && session_.kind() == AccelKind::BruteForce &&
+    return scene && testsEveryPrimitive(session_.kind()) &&
            scene->primitiveCount() > kBruteForceAsk;
 }
 

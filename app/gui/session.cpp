@@ -14,6 +14,9 @@ void buildIn(LoadedScene& l, const AccelOptions& options) {
     AnyStructure built = buildStructure(l.scene, l.kind, {}, options);
     l.accel2D = std::move(built.in2D);
     l.accel3D = std::move(built.in3D);
+    // Here, on the worker that built it: a view never walks the structure itself.
+    if (l.accel2D) l.outline2D = outline(*l.accel2D);
+    if (l.accel3D) l.outline3D = outline(*l.accel3D);
     // The progress callback belonged to this build only.
     l.options.setProgress(nullptr);
 }
@@ -43,6 +46,16 @@ SceneRef Session::rebuild(const SceneRef& from, AccelKind kind, const AccelOptio
 }
 
 SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& options) {
+    auto l = std::make_shared<LoadedScene>();
+    l->name = scene.name;
+    l->scene = std::move(scene);
+    l->kind = kind;
+    l->options = options;
+    buildIn(*l, options);
+    return l;
+}
+
+SceneRef Session::prepare(Scene scene, AccelKind kind, const AccelOptions& options) {
     auto l = std::make_shared<LoadedScene>();
     l->name = scene.name;
     l->scene = std::move(scene);

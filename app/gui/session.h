@@ -2,6 +2,7 @@
 // What the app shows: a scene (3D or one of the lecture's 2D pictures), its structure, a recorded
 // log and the replay cursor over it. The views draw from it; they own no algorithm.
 #include "raystep/accel/accel.h"
+#include "raystep/accel/outline.h"
 #include "raystep/render/tracer.h"
 #include "raystep/scene/scene.h"
 #include "raystep/scene/scene2d.h"
@@ -29,6 +30,9 @@ struct LoadedScene {
     std::variant<Scene, Scene2D> scene;
     std::optional<Accelerator> accel3D;
     std::optional<Accelerator2D> accel2D;
+    // The structure's outline, made with it (once per structure: the views draw from it).
+    std::optional<StructureOutline<3>> outline3D;
+    std::optional<StructureOutline<2>> outline2D;
     std::string name;
     AccelKind kind = AccelKind::Grid;
     AccelOptions options;
@@ -55,6 +59,8 @@ class Session : public QObject {
     static SceneRef rebuild(const SceneRef& from, AccelKind kind, const AccelOptions& options);
     /// The same for a 2D scene made in code (benchmarks, tests).
     static SceneRef prepare(Scene2D scene, AccelKind kind, const AccelOptions& options = {});
+    /// The same for a 3D scene made in code (tests).
+    static SceneRef prepare(Scene scene, AccelKind kind, const AccelOptions& options = {});
     /// Records the construction of the scene's structure (kd-tree or BVH; 2D or 3D); any thread.
     /// Throws BuildCancelled when `progress` says stop.
     static LogRef recordBuild(const SceneRef& scene, const ProgressFn& progress = {});
@@ -109,6 +115,14 @@ class Session : public QObject {
     }
     const Accelerator* accel3D() const {
         return scene_ && scene_->accel3D ? &*scene_->accel3D : nullptr;
+    }
+    /// The shown structure's outline (2D or 3D), made once when it was built: the same object
+    /// for as long as the structure is shown, a new one with each new structure.
+    const StructureOutline<2>* outline2D() const {
+        return scene_ && scene_->outline2D ? &*scene_->outline2D : nullptr;
+    }
+    const StructureOutline<3>* outline3D() const {
+        return scene_ && scene_->outline3D ? &*scene_->outline3D : nullptr;
     }
     AccelKind kind() const { return scene_ ? scene_->kind : AccelKind::Grid; }
     AccelOptions options() const { return scene_ ? scene_->options : AccelOptions{}; }

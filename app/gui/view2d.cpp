@@ -290,12 +290,10 @@ void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) co
     // Labels no taller than about 40% of a cell (a large zoom on a small screen made them wider
     // than the cells they name and pushed them far from their ticks), nor smaller than the
     // caption's font.
-    const Accelerator2D* accel = session_.accel2D();
-    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    const OutlineGrid<2>* grid = shownGrid();
     g.save();
     if (grid) {
-        const double cell =
-            std::min(grid->spec().cellSize(0), grid->spec().cellSize(1)) * scale_ * 0.4;
+        const double cell = std::min(grid->spec.cellSize(0), grid->spec.cellSize(1)) * scale_ * 0.4;
         const double now = QFontMetricsF(g.font()).height();
         const double least = QFontMetricsF(presentation().captionFont()).height();
         if (now > cell && now > least) {
@@ -313,7 +311,7 @@ void View2D::drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) co
 }
 
 void View2D::drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
-                            const UniformGridT<Scene2DPrims>* grid) const {
+                            const OutlineGrid<2>* grid) const {
     const QFontMetricsF fm(g.font());
     // The ray's direction and its normal on screen, in pixels (y grows downwards).
     const QPointF from = toScreen(o), ahead = toScreen(o + d) - from;
@@ -325,7 +323,7 @@ void View2D::drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
     labels.keepOff(QRectF(from - QPointF(px(8), px(8)), QSizeF(px(16), px(16))));
     // Off the grid's cell numbers too: the row under it and the column left of it.
     if (grid) {
-        const auto& spec = grid->spec();
+        const auto& spec = grid->spec;
         const QPointF lo = toScreen(Vec2(spec.lo.x, spec.lo.y)),
                       hi = toScreen(Vec2(spec.hi.x, spec.hi.y));
         labels.keepOff(
@@ -412,27 +410,19 @@ Vec2 View2D::toWorld(QPointF p) const {
 }
 
 std::optional<std::array<int, 2>> View2D::cellAt(QPointF widgetPoint) const {
-    const Accelerator2D* accel = session_.accel2D();
-    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    const OutlineGrid<2>* grid = shownGrid();
     if (!grid || session_.showingBuild()) return std::nullopt;
     fit();
-    const Vec2 w = toWorld(widgetPoint);
-    const auto& spec = grid->spec();
-    std::array<int, 2> c{};
-    for (int a = 0; a < 2; ++a) {
-        const double f = std::floor((w[a] - spec.lo[a]) / spec.cellSize(a));
-        if (!(f >= 0 && f < spec.res[a])) return std::nullopt;
-        c[a] = static_cast<int>(f);
-    }
-    return c;
+    const auto c = grid->cellAt(toWorld(widgetPoint));
+    if (!c) return std::nullopt;
+    return std::array<int, 2>{(*c)[0], (*c)[1]};
 }
 
 QPointF View2D::cellCentre(int x, int y) const {
-    const Accelerator2D* accel = session_.accel2D();
-    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    const OutlineGrid<2>* grid = shownGrid();
     if (!grid) return {};
     fit();
-    const auto& spec = grid->spec();
+    const auto& spec = grid->spec;
     return toScreen(
         Vec2(spec.lo[0] + (x + 0.5) * spec.cellSize(0), spec.lo[1] + (y + 0.5) * spec.cellSize(1)));
 }
@@ -485,26 +475,26 @@ void View2D::paintEvent(QPaintEvent*) {
     const ReplayState& st = session_.state();
 
     // The structure's cells: the grid, or the tree's boxes.
-    const Accelerator2D* accel = session_.accel2D();
-    const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr;
+    const StructureOutline<2>* outline = session_.outline2D();
+    const OutlineGrid<2>* grid = shownGrid();
     const auto cellRect = [&](const std::array<std::int32_t, 3>& c) {
-        const auto& spec = grid->spec();
+        const auto& spec = grid->spec;
         const Vec2 lo(spec.lo.x + c[0] * spec.cellSize(0), spec.lo.y + c[1] * spec.cellSize(1));
         const Vec2 hi(lo.x + spec.cellSize(0), lo.y + spec.cellSize(1));
         return QRectF(toScreen(Vec2(lo.x, hi.y)), toScreen(Vec2(hi.x, lo.y)));
     };
-    if (layerDirty_ || layerSize_ != size()) buildLayer(accel);
+    if (layerDirty_ || layerSize_ != size()) buildLayer();
     // What moves with the cursor goes under the cached lines: visited and current cells, the
     // tree node being entered.
     if (grid) {
         for (const auto& c : st.visitedCells) g.fillRect(cellRect(c), ink.visited);
         if (st.ddaCell) g.fillRect(cellRect(st.ddaCell->cell), ink.current);
-    } else if (!outline_.nodes.empty() && !session_.showingBuild()) {
+    } else if (outline && !outline->nodes.empty() && !session_.showingBuild()) {
         // A tree's walk, from its outline (any tree: the kd-tree's cells, the BVH's boxes): the
         // nodes it skipped dashed in grey, the ones it entered outlined in the visited colour,
         // the one being entered filled.
         const auto boxRect = [&](std::uint32_t id) -> std::optional<QRectF> {
-            const BoxN<2>* b = outline_.nodeBox(id);
+            const BoxN<2>* b = outline->nodeBox(id);
             if (!b) return std::nullopt;
             return QRectF(toScreen(Vec2(b->lo.x, b->hi.y)), toScreen(Vec2(b->hi.x, b->lo.y)));
         };
@@ -710,9 +700,15 @@ void View2D::drawPrimitive(QPainter& painter, std::uint32_t p) const {
     }
 }
 
-void View2D::buildLayer(const Accelerator2D* accel) {
-    outline_ = accel ? outline(*accel) : StructureOutline<2>{};
-    const OutlineGrid<2>* grid = outline_.grid ? &*outline_.grid : nullptr;
+const OutlineGrid<2>* View2D::shownGrid() const {
+    const StructureOutline<2>* o = session_.outline2D();
+    return o && o->grid ? &*o->grid : nullptr;
+}
+
+void View2D::buildLayer() {
+    static const StructureOutline<2> kNone;
+    const StructureOutline<2>& shown = session_.outline2D() ? *session_.outline2D() : kNone;
+    const OutlineGrid<2>* grid = shownGrid();
     const Scene2D* s = session_.scene2D();
     layer_ = QPixmap(size());
     layer_.fill(Qt::transparent);
@@ -753,22 +749,22 @@ void View2D::buildLayer(const Accelerator2D* accel) {
     if (whole) {
         // The kd-tree's split planes, each across its node's cell.
         lp.setPen(QPen(ink.gridLine, px(1)));
-        for (const OutlinePlane<2>& plane : outline_.planes) {
+        for (const OutlinePlane<2>& plane : shown.planes) {
             const auto [a, b] = plane.extent();
             lp.drawLine(toScreen(Vec2(a.x, a.y)), toScreen(Vec2(b.x, b.y)));
         }
         // The BVH's boxes, overlapping as they are: deeper ones darker and drawn later, so a
         // child's edge shows over its parent's where they meet.
-        if (outline_.overlapping && !outline_.nodes.empty()) {
-            std::vector<std::uint32_t> order(outline_.nodes.size());
+        if (shown.overlapping && !shown.nodes.empty()) {
+            std::vector<std::uint32_t> order(shown.nodes.size());
             for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
             std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-                return outline_.nodes[a].depth < outline_.nodes[b].depth;
+                return shown.nodes[a].depth < shown.nodes[b].depth;
             });
-            const double deepest = std::max<std::uint32_t>(1, outline_.maxDepth);
+            const double deepest = std::max<std::uint32_t>(1, shown.maxDepth);
             lp.setBrush(Qt::NoBrush);
             for (const std::uint32_t id : order) {
-                const OutlineNode<2>& n = outline_.nodes[id];
+                const OutlineNode<2>& n = shown.nodes[id];
                 const int shade = int(200 - 110 * (n.depth / deepest));
                 lp.setPen(QPen(QColor(shade, shade, shade + 10), px(n.leaf ? 1.0 : 1.5)));
                 lp.drawRect(QRectF(toScreen(Vec2(n.box.lo.x, n.box.hi.y)),

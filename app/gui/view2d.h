@@ -145,7 +145,7 @@ class View2D : public QWidget {
     /// kept apart and inside the view.
     void drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const;
     void drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
-                        const UniformGridT<Scene2DPrims>* grid) const;
+                        const OutlineGrid<2>* grid) const;
     /// The caption over the picture: the scene's name and its structure.
     QString captionText() const;
     /// The colour roles of the picture (the palette's), where fit() put them.
@@ -175,8 +175,10 @@ class View2D : public QWidget {
     /// The structure's lines and the primitives in their neutral colour, drawn once per size and
     /// scene (thousands of segments and tree nodes would otherwise cost most of every frame).
     /// The cached lines: the grid's, the kd-tree's planes or the BVH's boxes (from the
-    /// structure's outline, made here), and the primitives.
-    void buildLayer(const Accelerator2D* accel);
+    /// session's outline of the structure), and the primitives.
+    void buildLayer();
+    /// The shown structure's grid (its outline's), if it is one.
+    const OutlineGrid<2>* shownGrid() const;
     void drawPrimitive(QPainter& painter, std::uint32_t prim) const;
     /// A build's replay: where each split was chosen and each node's parent, once per log.
     void indexBuild();
@@ -188,7 +190,6 @@ class View2D : public QWidget {
     QPixmap layer_;
     QSize layerSize_;
     bool layerDirty_ = true;
-    StructureOutline<2> outline_;  // the shown structure's, made with the layer
     static constexpr std::size_t kAllSplitsUpTo = 256;  // as many lines as the candidates shown
     std::vector<std::size_t> chosenAt_;  // event indices of the SplitChosen events, in order
     std::vector<std::uint32_t> buildParent_;

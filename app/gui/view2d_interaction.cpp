@@ -178,9 +178,8 @@ Vec2 View2D::snapPoint(Vec2 p) const {
     // Corners and centres of the grid's cells: a ray from a centre through a corner passes the
     // vertex exactly (the DDA's tie), as the lecture's grids have cells of exact binary sizes.
     Vec2 lo(0.0), half(0.5);
-    const Accelerator2D* accel = session_.accel2D();
-    if (const auto* grid = accel ? std::get_if<UniformGridT<Scene2DPrims>>(accel) : nullptr) {
-        const auto& spec = grid->spec();
+    if (const OutlineGrid<2>* grid = shownGrid()) {
+        const auto& spec = grid->spec;
         lo = Vec2(spec.lo.x, spec.lo.y);
         half = 0.5 * Vec2(spec.cellSize(0), spec.cellSize(1));
     }

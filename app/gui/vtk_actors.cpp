@@ -138,6 +138,16 @@ class Faces {
         for (int axis = 0; axis < 3; ++axis)
             for (const double at : {lo[axis], hi[axis]}) quad(planeCorners(lo, hi, axis, at));
     }
+    /// The same six faces wound with their fronts outwards (planeCorners' turn about +axis),
+    /// for an actor that culls fronts: only the far walls are drawn, behind what is inside.
+    void boxOutwards(const Vec3& lo, const Vec3& hi) {
+        for (int axis = 0; axis < 3; ++axis) {
+            auto low = planeCorners(lo, hi, axis, lo[axis]);
+            std::swap(low[1], low[3]);
+            quad(low);
+            quad(planeCorners(lo, hi, axis, hi[axis]));
+        }
+    }
     static std::array<Vec3, 4> planeCorners(const Vec3& lo, const Vec3& hi, int axis, double at) {
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
         std::array<Vec3, 4> c;
@@ -294,6 +304,43 @@ void eyeProps(const Scene& s, const EventLog& log, double radius, double linePx,
         out.props.push_back(pixels.actor(structureColour(StructureRole::HitPoint), 1));
 }
 
+/// A tree's walk at the cursor, as the 2D view draws it: every node the ray has entered (by
+/// depth: deeper boxes brighter, the root dimmest), the current one in the current node's colour
+/// and filled (its far walls), each entered node's split plane (the current one's brighter), the
+/// skipped nodes in dim grey (thinner, in their own actor).
+void treeWalkProps(const StructureOutline<3>& o, const ReplayState& st, Segments& edges,
+                   Segments& skipped, Faces& planes, Faces& currentPlane, Faces& currentNode) {
+    const std::uint32_t at = st.node ? st.node->node : kNoId;
+    const PaletteColour& box =
+        structureColour(o.overlapping ? StructureRole::BvhBox : StructureRole::SplitPlane);
+    const double deepest = std::max<std::uint32_t>(1, o.maxDepth);
+    const auto shade = [](const PaletteColour& c, double k) {
+        const auto f = [k](unsigned char v) { return static_cast<unsigned char>(v * k); };
+        return Rgb(f(c.r), f(c.g), f(c.b));
+    };
+    std::vector<bool> drawn(o.nodes.size(), false);
+    for (const std::uint32_t id : st.nodesEntered) {
+        if (id >= o.nodes.size() || drawn[id]) continue;
+        drawn[id] = true;
+        const OutlineNode<3>& n = o.nodes[id];
+        if (id == at) {
+            edges.box(n.box.lo, n.box.hi, Rgb(structureColour(StructureRole::KdNode)));
+            currentNode.boxOutwards(n.box.lo, n.box.hi);
+        } else {
+            edges.box(n.box.lo, n.box.hi, shade(box, 0.65 + 0.35 * n.depth / deepest));
+        }
+        if (!n.plane || *n.plane >= o.planes.size()) continue;
+        const OutlinePlane<3>& p = o.planes[*n.plane];
+        const auto quad = Faces::planeCorners(p.box.lo, p.box.hi, p.axis, p.position);
+        (id == at ? currentPlane : planes).quad(quad);
+        edges.loop(quad, Rgb(structureColour(StructureRole::SplitPlane)));
+    }
+    for (const std::uint32_t id : st.nodesSkipped)
+        if (id < o.nodes.size() && !drawn[id])
+            skipped.box(o.nodes[id].box.lo, o.nodes[id].box.hi,
+                        shade(structureColour(StructureRole::BvhBox), 0.8));
+}
+
 }  // namespace
 
 PropSet sceneProps(vtkRenderer* r, const Scene& s) {
@@ -438,9 +485,8 @@ std::vector<Vec3> pointsThatMatter(const Session& session) {
                 p[axis] += sign * sp.radius;
                 points.push_back(p);
             }
-    if (const Accelerator* a = session.accel3D())
-        if (const auto* grid = std::get_if<UniformGrid>(a))
-            boxCorners(grid->spec().lo, grid->spec().hi);
+    if (const StructureOutline<3>* o = session.outline3D(); o && o->grid)
+        boxCorners(o->grid->spec.lo, o->grid->spec.hi);
     Bounds3 b;
     for (const Vec3& p : points) b.extend(p);
     // The whole recorded tree (framing stays put while the cursor moves).
@@ -554,56 +600,37 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
         ++spheres;
     }
 
-    // The structure: the grid's box and the current ray's voxels, the kd-tree's or BVH's nodes.
-    Segments edges;
-    Faces visited, current, planes, currentPlane;
+    // The structure, from its outline: the grid's box and the current ray's voxels, or the
+    // tree's nodes the ray has entered (the kd-tree's with their planes, the BVH's boxes
+    // overlapping as they are).
+    Segments edges, skippedEdges;
+    Faces visited, current, planes, currentPlane, currentNode;
     const Rgb kGrid(structureColour(StructureRole::GridBox)),
         kVoxel(structureColour(StructureRole::Voxel)),
         kCurrent(structureColour(StructureRole::CurrentVoxel)),
         kNode(structureColour(StructureRole::KdNode)),
-        kPlane(structureColour(StructureRole::SplitPlane)),
-        kBvh(structureColour(StructureRole::BvhBox)),
         kTested(structureColour(StructureRole::TestedPrimitive));
-    const Accelerator* accel = session.accel3D();
-    if (const auto* grid = accel ? std::get_if<UniformGrid>(accel) : nullptr) {
-        const auto& spec = grid->spec();
-        edges.box(spec.lo, spec.hi, kGrid);
-        const Vec3 cell(spec.cellSize(0), spec.cellSize(1), spec.cellSize(2));
+    const StructureOutline<3>* outline = session.outline3D();
+    if (const OutlineGrid<3>* grid = outline && outline->grid ? &*outline->grid : nullptr) {
+        edges.box(grid->spec.lo, grid->spec.hi, kGrid);
         const std::size_t n = st.visitedCells.size();
         for (std::size_t i = n > 4000 ? n - 4000 : 0; i < n; ++i) {
             const auto& c = st.visitedCells[i];
-            const Vec3 lo = spec.lo + Vec3(c[0], c[1], c[2]) * cell;
+            const IVecN<3> cell(c[0], c[1], c[2]);
+            if (glm::any(glm::lessThan(cell, IVecN<3>(0))) ||
+                glm::any(glm::greaterThanEqual(cell, grid->spec.res)))
+                continue;  // not one of its cells (a hand-made trace)
+            const BoxN<3> b = grid->cellBox(cell);
             if (i + 1 == n) {
-                current.box(lo, lo + cell);
-                edges.box(lo, lo + cell, kCurrent);
+                current.box(b.lo, b.hi);
+                edges.box(b.lo, b.hi, kCurrent);
             } else {
-                visited.box(lo, lo + cell);
-                edges.box(lo, lo + cell, kVoxel);
+                visited.box(b.lo, b.hi);
+                edges.box(b.lo, b.hi, kVoxel);
             }
         }
-    } else if (const auto* kd = accel ? std::get_if<KdTree3>(accel) : nullptr;
-               kd && !session.showingBuild() && !st.nodesEntered.empty()) {
-        // The nodes the ray entered with their split planes; the current one brighter.
-        const std::uint32_t at = st.node ? st.node->node : kNoId;
-        std::vector<bool> entered(kd->nodes().size(), false);
-        for (const std::uint32_t n : st.nodesEntered)
-            if (n < entered.size()) entered[n] = true;
-        kd->forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<3>& b) {
-            if (!entered[id]) return;
-            edges.box(b.lo, b.hi, id == at ? kNode : kPlane);
-            if (n.leaf()) return;
-            const auto quad = Faces::planeCorners(b.lo, b.hi, n.axis, n.split);
-            (id == at ? currentPlane : planes).quad(quad);
-            edges.loop(quad, kPlane);
-        });
-    } else if (const auto* bvh = accel ? std::get_if<Bvh3>(accel) : nullptr;
-               bvh && !session.showingBuild()) {
-        // Object subdivision: every box the ray has entered (they may overlap), the current one
-        // in the current node's colour.
-        for (const std::uint32_t n : st.nodesEntered)
-            if (n < bvh->nodes().size())
-                edges.box(bvh->nodes()[n].bounds.lo, bvh->nodes()[n].bounds.hi,
-                          st.node && n == st.node->node ? kNode : kBvh);
+    } else if (outline && !outline->nodes.empty() && !session.showingBuild()) {
+        treeWalkProps(*outline, st, edges, skippedEdges, planes, currentPlane, currentNode);
     }
     // A build's replay: the node being split, the candidate plane of the sweep, the choice (the
     // 2D view's roles, so both views agree).
@@ -648,6 +675,15 @@ void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& 
         trace.props.push_back(planes.actor(structureColour(StructureRole::SplitPlane), 0.15));
     if (!currentPlane.empty())
         trace.props.push_back(currentPlane.actor(structureColour(StructureRole::SplitPlane), 0.35));
+    if (!currentNode.empty()) {
+        // Its far walls only: the ray and the primitives inside it keep their colours.
+        auto fill = currentNode.actor(structureColour(StructureRole::KdNode), 0.15);
+        fill->GetProperty()->FrontfaceCullingOn();
+        trace.props.push_back(fill);
+    }
+    // Skipped nodes thinner than the rest: VTK has no dashed tubes.
+    if (!skippedEdges.empty())
+        trace.props.push_back(skippedEdges.tubes(std::max(1.5, 0.3 * linePx)));
     if (!edges.empty()) trace.props.push_back(edges.tubes(std::max(2.0, 0.6 * linePx)));
 }
 

@@ -90,6 +90,10 @@ inline bool hasSplit(AccelKind kind) {
 inline bool recordsBuild(AccelKind kind) {
     return structureInfo(kind).recordsBuild;
 }
+/// Brute force's "every ray against every primitive": it subdivides nothing.
+inline bool testsEveryPrimitive(AccelKind kind) {
+    return structureInfo(kind).subdivides == Subdivides::Nothing;
+}
 /// Whether `kind`'s build reads `option` (whatever the split method).
 bool readsOption(AccelKind kind, AccelOption option);
 /// The same for the split method in use: the SAH's costs are read by the SAH only.
