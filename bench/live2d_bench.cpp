@@ -53,12 +53,17 @@ void BM_DragRay_LectureGrid(benchmark::State& state) {
 void BM_DragRay_LectureKdTree(benchmark::State& state) {
     dragFrames(state, "lecture-kdtree", AccelKind::KdTree, false);
 }
+// Lesson 10's BVH: overlapping boxes by depth, drawn from the outline made with each build.
+void BM_DragRay_LectureBvh(benchmark::State& state) {
+    dragFrames(state, "lecture-kdtree", AccelKind::Bvh, false);
+}
 // Lesson 11: the kd-tree's build replayed while the scene changes (the build recorded again).
 void BM_DragRay_LectureKdTreeBuildShown(benchmark::State& state) {
     dragFrames(state, "lecture-kdtree", AccelKind::KdTree, true);
 }
 BENCHMARK(BM_DragRay_LectureGrid)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DragRay_LectureKdTree)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DragRay_LectureBvh)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DragRay_LectureKdTreeBuildShown)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
