@@ -355,6 +355,19 @@ std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     return names;
 }
 
+/// The nodes the ray enters from the exercise's position to its end, each once.
+std::vector<int> nodesEntered(const Exercise& ex, const EventLog& log) {
+    std::vector<int> ids;
+    const auto at = resolvePosition(ex.at, log);
+    const auto end = ex.until ? resolvePosition(*ex.until, log) : log.events().size();
+    if (!at || !end) return ids;
+    for (std::size_t i = *at; i < *end && i < log.events().size(); ++i)
+        if (const auto* ne = std::get_if<NodeEnter>(&log.events()[i]))
+            if (std::find(ids.begin(), ids.end(), int(ne->node)) == ids.end())
+                ids.push_back(int(ne->node));
+    return ids;
+}
+
 }  // namespace
 
 AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
@@ -422,6 +435,20 @@ AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::stri
             f.resolution = static_cast<int>(a.numbers.at(0));
             f.describe = formatAnswer(ex, a) + " cells per axis";
             break;
+        case ExerciseKind::Overlap: {
+            // Every right pair is an answer: each one written gives the exercise away.
+            const std::vector<int> ids = nodesEntered(ex, log);
+            for (std::size_t j = 0; j < ids.size(); ++j)
+                for (std::size_t i = 0; i < ids.size(); ++i) {
+                    if (i == j) continue;
+                    Answer pair;
+                    pair.numbers = {double(ids[i]), double(ids[j])};
+                    if (checkAnswer(ex, log, pair, Language::En, lessonFile).correct)
+                        f.nodePairs.push_back({ids[i], ids[j]});
+                }
+            f.describe = "nodes " + formatAnswer(ex, a);
+            break;
+        }
         default:
             break;
     }
@@ -445,21 +472,26 @@ std::optional<std::string> findAnswer(const AnswerForms& f, std::string_view tex
             }
         }
     }
-    // TestTree's order: the ids one after the other ("0 1 2 14", "0, 1, 2 and 14", "0 → 1").
-    if (!f.nodes.empty()) {
+    // TestTree's order: the ids one after the other ("0 1 2 14", "0, 1, 2 and 14", "0 → 1");
+    // an overlap's pair the same way ("3 and 4").
+    std::vector<std::vector<int>> runs;
+    if (!f.nodes.empty()) runs.push_back(f.nodes);
+    for (const auto& p : f.nodePairs) runs.push_back({p[0], p[1]});
+    if (!runs.empty()) {
         const std::vector<Token> tokens = numberTokens(text, false);
-        for (std::size_t k = 0; k + f.nodes.size() <= tokens.size(); ++k) {
-            bool run = true;
-            for (std::size_t j = 0; run && j < f.nodes.size(); ++j) {
-                const Token& t = tokens[k + j];
-                run = t.whole && static_cast<int>(t.value) == f.nodes[j];
-                if (run && j > 0)
-                    run = separatorOnly(
-                        text.substr(tokens[k + j - 1].end, t.begin - tokens[k + j - 1].end), ",;",
-                        {"and", "e", "then", "poi", "->", "\xe2\x86\x92"});
+        for (const std::vector<int>& ids : runs)
+            for (std::size_t k = 0; k + ids.size() <= tokens.size(); ++k) {
+                bool run = true;
+                for (std::size_t j = 0; run && j < ids.size(); ++j) {
+                    const Token& t = tokens[k + j];
+                    run = t.whole && static_cast<int>(t.value) == ids[j];
+                    if (run && j > 0)
+                        run = separatorOnly(
+                            text.substr(tokens[k + j - 1].end, t.begin - tokens[k + j - 1].end),
+                            ",;", {"and", "e", "then", "poi", "with", "con", "->", "\xe2\x86\x92"});
+                }
+                if (run) return excerpt(text, tokens[k].begin, tokens[k + ids.size() - 1].end);
             }
-            if (run) return excerpt(text, tokens[k].begin, tokens[k + f.nodes.size() - 1].end);
-        }
     }
     // A test's outcome: a sentence that names the primitive and says hit or miss.
     if (f.outcome)
