@@ -116,8 +116,8 @@ int key(const Lesson& l, Language lang) {
     const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
     nlohmann::ordered_json answers = nlohmann::ordered_json::object();
     for (const Exercise& ex : l.exercises)
-        answers[ex.id] = formatAnswer(
-            ex, referenceAnswer(ex, run.logs().of(ex.setup), l.file, &sweep), lang);
+        answers[ex.id] =
+            formatAnswer(ex, referenceAnswer(ex, run.logs().of(ex.setup), l.file, &sweep), lang);
     const nlohmann::ordered_json out = {{"lesson", l.id}, {"answers", answers}};
     std::printf("%s\n", out.dump(2).c_str());
     return 0;

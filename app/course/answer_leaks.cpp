@@ -355,16 +355,11 @@ std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     return names;
 }
 
-/// The nodes the ray enters from the exercise's position to its end, each once.
+/// The nodes an overlap exercise may name: every node of the tree.
 std::vector<int> nodesEntered(const Exercise& ex, const EventLog& log) {
+    (void)ex;  // an overlap is about every node of the tree
     std::vector<int> ids;
-    const auto at = resolvePosition(ex.at, log);
-    const auto end = ex.until ? resolvePosition(*ex.until, log) : log.events().size();
-    if (!at || !end) return ids;
-    for (std::size_t i = *at; i < *end && i < log.events().size(); ++i)
-        if (const auto* ne = std::get_if<NodeEnter>(&log.events()[i]))
-            if (std::find(ids.begin(), ids.end(), int(ne->node)) == ids.end())
-                ids.push_back(int(ne->node));
+    for (std::size_t id = 0; id < log.nodes().size(); ++id) ids.push_back(int(id));
     return ids;
 }
 

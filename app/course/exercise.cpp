@@ -172,15 +172,12 @@ double sweepMetric(const Exercise& ex, const GridSweepRow& r) {
     return 0.0;
 }
 
-/// The nodes an overlap exercise is about: those the ray enters in its range, each once, in the
-/// order entered, with the index of the event that first enters each.
+/// The nodes an overlap exercise is about: every node of the tree (the trace's node boxes),
+/// with no event of their own (the structure is drawn whole, whatever the replay's step).
 std::vector<std::pair<std::uint32_t, std::size_t>> enteredNodes(const Context& c) {
     std::vector<std::pair<std::uint32_t, std::size_t>> out;
-    const std::size_t end = rangeEnd(c);
-    for (std::size_t i = c.at; i < end; ++i)
-        if (const auto* ne = std::get_if<NodeEnter>(&c.log.events()[i]))
-            if (std::none_of(out.begin(), out.end(), [&](const auto& o) { return o.first == ne->node; }))
-                out.emplace_back(ne->node, i);
+    for (std::size_t id = 0; id < c.log.nodes().size(); ++id)
+        out.emplace_back(static_cast<std::uint32_t>(id), 0);
     return out;
 }
 
@@ -479,29 +476,26 @@ Reference reference(const Context& c, Language lang) {
             if (log.nodes().empty())
                 c.fail("an overlap exercise needs a tree: its trace has no node boxes");
             const auto entered = enteredNodes(c);
-            // Every pair that overlaps, in the order the ray comes to be in both.
+            // Every pair that overlaps, by the later node's id.
             std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
             for (std::size_t j = 1; j < entered.size(); ++j)
                 for (std::size_t i = 0; i < j; ++i)
-                    if (partlyOverlap(log, entered[i].first, entered[j].first)) {
+                    if (partlyOverlap(log, entered[i].first, entered[j].first))
                         pairs.emplace_back(entered[i].first, entered[j].first);
-                        if (!ref.source) ref.source = entered[j].second;
-                    }
             if (pairs.empty())
-                c.fail("no two boxes the ray enters in its range overlap (a space "
-                       "subdivision's cells never do)");
+                c.fail("no two boxes of the tree overlap (a space subdivision's cells never do)");
             a.numbers = {double(pairs[0].first), double(pairs[0].second)};
             std::string all;
             for (const auto& [p, q] : pairs)
                 all += (all.empty() ? "" : "; ") +
                        trf(lang, "%1 and %2", {std::to_string(p), std::to_string(q)});
-            why = trf(lang,
-                      "Node %1's box %2 and node %3's box %4 share space, and neither lies inside "
-                      "the other: a ray there must test both. The pairs of boxes the ray enters "
-                      "that overlap: %5.",
-                      {std::to_string(pairs[0].first), nodeBoxText(log, pairs[0].first, lang),
-                       std::to_string(pairs[0].second), nodeBoxText(log, pairs[0].second, lang),
-                       all});
+            why = trf(
+                lang,
+                "Node %1's box %2 and node %3's box %4 share space, and neither lies inside "
+                "the other: a ray there must test both. The pairs of the tree's boxes that "
+                "overlap: %5.",
+                {std::to_string(pairs[0].first), nodeBoxText(log, pairs[0].first, lang),
+                 std::to_string(pairs[0].second), nodeBoxText(log, pairs[0].second, lang), all});
             break;
         }
     }
@@ -516,7 +510,7 @@ std::string overlapSlip(const Context& c, const Answer& given, Language lang) {
     for (const double v : given.numbers)
         if (std::none_of(entered.begin(), entered.end(),
                          [&](const auto& e) { return double(e.first) == v; }))
-            return trf(lang, "The ray does not enter node %1 here.", {id(v)});
+            return trf(lang, "The tree has no node %1.", {id(v)});
     const auto a = static_cast<std::uint32_t>(given.numbers[0]),
                b = static_cast<std::uint32_t>(given.numbers[1]);
     const NodeRecord &p = c.log.nodes().at(a), &q = c.log.nodes().at(b);
@@ -631,11 +625,10 @@ std::string nextCellSlip(const Context& c, const Answer& given, std::size_t sour
                            "tMaxY)` is false and steps Y alone, into a cell the ray only touches "
                            "at a corner. The exact walk does not enter it.",
                            {cell});
-            return trf(
-                lang,
-                "%1 is a step along %2 alone: on a tie the ray leaves the cell through a "
-                "corner, and the exact walk steps along every tied axis at once.",
-                {cell, std::string(1, "XYZ"[a])});
+            return trf(lang,
+                       "%1 is a step along %2 alone: on a tie the ray leaves the cell through a "
+                       "corner, and the exact walk steps along every tied axis at once.",
+                       {cell, std::string(1, "XYZ"[a])});
         }
         if (tied == 1 && !(next->axes >> a & 1u)) {
             return trf(lang,
@@ -1044,7 +1037,7 @@ Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::strin
 std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& log,
                                             const std::string& lessonFile) {
     if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
-        ex.kind == ExerciseKind::SweepPick)
+        ex.kind == ExerciseKind::SweepPick || ex.kind == ExerciseKind::Overlap)
         return std::nullopt;
     return reference(contextOf(ex, log, lessonFile, nullptr), Language::En).source;
 }
@@ -1077,6 +1070,11 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
             advice = tr(lang,
                         "Work out the metric for every row of the sweep's table and compare "
                         "them all.");
+            break;
+        case ExerciseKind::Overlap:
+            advice = tr(lang,
+                        "Look at the boxes in the 2D view again: two that share space, neither "
+                        "inside the other (a child lies inside its parent).");
             break;
         default:
             if (!replayHeld) {
@@ -1120,11 +1118,6 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
                                 "The replay waits here until you answer: compare the costs "
                                 "of the candidates listed.");
                     break;
-                case ExerciseKind::Overlap:
-                    advice = tr(lang,
-                                "The replay waits here until you answer: look at the boxes in "
-                                "the 2D view, the deeper ones inside their parents.");
-                    break;
                 default:
                     break;
             }
@@ -1137,8 +1130,9 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
 }
 
 std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log) {
+    // An overlap's answer is in the structure, drawn whole at every step: nothing to hold.
     if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
-        ex.kind == ExerciseKind::SweepPick)
+        ex.kind == ExerciseKind::SweepPick || ex.kind == ExerciseKind::Overlap)
         return std::nullopt;
     return resolvePosition(ex.at, log);
 }
@@ -1163,7 +1157,7 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                         (answer.perItem == ref.perItem || answer.numbers.empty());
             break;
         case ExerciseKind::Overlap: {
-            // Any pair of entered boxes that overlap is right, in either order.
+            // Any pair of the tree's boxes that overlap is right, in either order.
             if (answer.numbers.size() != 2) break;
             const auto entered = enteredNodes(c);
             const auto in = [&](double v) {

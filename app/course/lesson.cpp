@@ -24,15 +24,15 @@ using Reader = detail::JsonReader<LessonError>;
 namespace {
 
 constexpr NameTable<ExerciseKind, 10> kExerciseKinds{{{ExerciseKind::NextCell, "next_cell"},
-                                                     {ExerciseKind::Value, "value"},
-                                                     {ExerciseKind::PickSplit, "pick_split"},
-                                                     {ExerciseKind::Count, "count"},
-                                                     {ExerciseKind::HitOrMiss, "hit_or_miss"},
-                                                     {ExerciseKind::Choice, "choice"},
-                                                     {ExerciseKind::Sequence, "sequence"},
-                                                     {ExerciseKind::SweepPick, "sweep_pick"},
-                                                     {ExerciseKind::Compute, "compute"},
-                                                     {ExerciseKind::Overlap, "overlap"}}};
+                                                      {ExerciseKind::Value, "value"},
+                                                      {ExerciseKind::PickSplit, "pick_split"},
+                                                      {ExerciseKind::Count, "count"},
+                                                      {ExerciseKind::HitOrMiss, "hit_or_miss"},
+                                                      {ExerciseKind::Choice, "choice"},
+                                                      {ExerciseKind::Sequence, "sequence"},
+                                                      {ExerciseKind::SweepPick, "sweep_pick"},
+                                                      {ExerciseKind::Compute, "compute"},
+                                                      {ExerciseKind::Overlap, "overlap"}}};
 constexpr NameTable<SweepMetric, 3> kSweepMetrics{{{SweepMetric::Cost, "cost"},
                                                    {SweepMetric::TestsPerRay, "tests_per_ray"},
                                                    {SweepMetric::CellsPerRay, "cells_per_ray"}}};
@@ -273,7 +273,8 @@ std::optional<LessonSetup> readOwnSetup(const Reader& r, const json& j, const st
 std::vector<StructureChoice> readCompare(const Reader& r, const json& j, const std::string& path) {
     r.requireObject(j, path);
     r.checkKeys(j, path, {"accel", "split"});
-    const std::string ap = JsonLineMap::child(path, "accel"), sp = JsonLineMap::child(path, "split");
+    const std::string ap = JsonLineMap::child(path, "accel"),
+                      sp = JsonLineMap::child(path, "split");
     if (!j.contains("accel")) r.fail(path, "\"accel\" is required: \"grid,kdtree,bvh\"");
     const std::string kinds = r.string(j["accel"], ap);
     std::optional<std::string> splits;
@@ -524,9 +525,9 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path,
                       const LessonSetup& lessonSetup) {
     r.requireObject(j, path);
     r.checkKeys(j, path,
-                {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind",
-                 "ray_depth", "until", "with_t", "tolerance", "choices", "answer", "of", "length",
-                 "metric", "given", "setup"});
+                {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind", "ray_depth",
+                 "until", "with_t", "tolerance", "choices", "answer", "of", "length", "metric",
+                 "given", "setup"});
     Exercise ex;
     ex.line = r.lines().lineOf(path);
     ex.setup = readOwnSetup(r, j, path, lessonSetup);
@@ -560,8 +561,7 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path,
     onlyFor("count", ExerciseKind::Count);
     onlyFor("ray_kind", ExerciseKind::Count);
     onlyFor("ray_depth", ExerciseKind::Count);
-    if (ex.kind != ExerciseKind::Sequence && ex.kind != ExerciseKind::Overlap)
-        onlyFor("until", ExerciseKind::Count);
+    if (ex.kind != ExerciseKind::Sequence) onlyFor("until", ExerciseKind::Count);
     ifPresent(j, path, "until",
               [&](const json& v, const std::string& p) { ex.until = readPosition(r, v, p); });
     onlyFor("with_t", ExerciseKind::HitOrMiss);

@@ -110,7 +110,7 @@ enum class ExerciseKind {
     Sequence,   // the cells the DDA visits, or the nodes TestTree enters, in order
     SweepPick,  // the sweep's resolution of the lowest metric
     Compute,    // a hand computation from data the prompt gives
-    Overlap,    // two boxes the ray enters that share space, neither inside the other (a BVH)
+    Overlap,    // two boxes of the tree that share space, neither inside the other (a BVH)
 };
 std::string_view exerciseKindName(ExerciseKind k);
 

@@ -111,6 +111,9 @@ class MainWindow : public QMainWindow {
     void renderImage();
     /// Opens compare mode (midpoint, median, SAH) once its three trees are built.
     void openCompare();
+    /// The same ray through each structure of `choices`, side by side (the compare window's
+    /// part of issue 28; a lesson step's "Compare these structures on this ray" calls it).
+    void openCompare(const std::vector<StructureChoice>& choices);
     /// The compare window last opened, while it is open.
     CompareWindow* compareWindow() const;
 
