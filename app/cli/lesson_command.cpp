@@ -83,15 +83,26 @@ int show(Lesson l, Language lang) {
     std::printf("# %d. %s\n\n%s\n", l.number, l.title.in(lang).c_str(), l.text.in(lang).c_str());
     printErrata(l.errata, lang);
     for (std::size_t i = 0; i < l.steps.size(); ++i) {
-        std::printf("\n## %s %zu (%s)\n\n%s\n", tr(lang, "Step").c_str(), i + 1,
-                    describePosition(l.steps[i].at, lang).c_str(),
-                    l.steps[i].text.in(lang).c_str());
+        const LessonStep& s = l.steps[i];
+        // A step of its own structure names it, as the app switches to it.
+        const std::string on = s.setup ? ", " + trf(lang, "on the %1", {s.setup->name()}) : "";
+        std::printf("\n## %s %zu (%s%s)\n\n%s\n", tr(lang, "Step").c_str(), i + 1,
+                    describePosition(s.at, lang).c_str(), on.c_str(), s.text.in(lang).c_str());
+        if (!s.compare.empty()) {
+            std::string names;
+            for (const StructureChoice& c : s.compare)
+                names += (names.empty() ? "" : ", ") + choiceName(c);
+            std::printf("\n[%s: %s]\n", tr(lang, "Compare these structures on this ray").c_str(),
+                        names.c_str());
+        }
         if (!l.steps[i].note.en.empty()) std::printf("\n> %s\n", l.steps[i].note.in(lang).c_str());
         printErrata(l.steps[i].errata, lang);
     }
     for (const Exercise& ex : l.exercises) {
-        std::printf("\n## %s %s (%s)\n\n%s\n", tr(lang, "Exercise").c_str(), ex.id.c_str(),
-                    std::string(exerciseKindName(ex.kind)).c_str(), ex.prompt.in(lang).c_str());
+        const std::string on = ex.setup ? ", " + trf(lang, "on the %1", {ex.setup->name()}) : "";
+        std::printf("\n## %s %s (%s%s)\n\n%s\n", tr(lang, "Exercise").c_str(), ex.id.c_str(),
+                    std::string(exerciseKindName(ex.kind)).c_str(), on.c_str(),
+                    ex.prompt.in(lang).c_str());
         for (std::size_t i = 0; i < ex.choices.size(); ++i)
             std::printf("%s%c) %s\n", i ? "" : "\n", static_cast<char>('a' + i),
                         ex.choices[i].text.in(lang).c_str());
@@ -105,7 +116,8 @@ int key(const Lesson& l, Language lang) {
     const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
     nlohmann::ordered_json answers = nlohmann::ordered_json::object();
     for (const Exercise& ex : l.exercises)
-        answers[ex.id] = formatAnswer(ex, referenceAnswer(ex, *run.log, l.file, &sweep), lang);
+        answers[ex.id] =
+            formatAnswer(ex, referenceAnswer(ex, run.logs().of(ex.setup), l.file, &sweep), lang);
     const nlohmann::ordered_json out = {{"lesson", l.id}, {"answers", answers}};
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
@@ -136,7 +148,7 @@ int check(const Lesson& l, const LessonArgs& a, Language lang) {
     const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(l, run);
     if (folder || !a.format.empty()) {
         if (a.json) return fail("--json grades one answers file; a class table is --format");
-        const ClassTable table = classTable(l, *run.log, sheets, &sweep);
+        const ClassTable table = classTable(l, run.logs(), sheets, &sweep);
         const std::string out =
             a.format == "csv" ? classTableCsv(table) : classTableMarkdown(l, table, lang);
         std::fwrite(out.data(), 1, out.size(), stdout);
@@ -145,7 +157,7 @@ int check(const Lesson& l, const LessonArgs& a, Language lang) {
     const std::string& answersPath = a.answers;
     const bool json = a.json;
     const AnswerSheet& sheet = sheets.front().second;
-    const Grade g = gradeAnswers(l, *run.log, sheet, lang, answersPath, &sweep, run.scene.get());
+    const Grade g = gradeAnswers(l, run.logs(), sheet, lang, answersPath, &sweep, run.scene.get());
     if (json) {
         nlohmann::ordered_json items = nlohmann::ordered_json::array();
         for (const auto& i : g.items)

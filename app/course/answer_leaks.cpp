@@ -355,6 +355,14 @@ std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     return names;
 }
 
+/// The nodes an overlap exercise may name: every node of the tree.
+std::vector<int> nodesEntered(const Exercise& ex, const EventLog& log) {
+    (void)ex;  // an overlap is about every node of the tree
+    std::vector<int> ids;
+    for (std::size_t id = 0; id < log.nodes().size(); ++id) ids.push_back(int(id));
+    return ids;
+}
+
 }  // namespace
 
 AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
@@ -422,6 +430,20 @@ AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::stri
             f.resolution = static_cast<int>(a.numbers.at(0));
             f.describe = formatAnswer(ex, a) + " cells per axis";
             break;
+        case ExerciseKind::Overlap: {
+            // Every right pair is an answer: each one written gives the exercise away.
+            const std::vector<int> ids = nodesEntered(ex, log);
+            for (std::size_t j = 0; j < ids.size(); ++j)
+                for (std::size_t i = 0; i < ids.size(); ++i) {
+                    if (i == j) continue;
+                    Answer pair;
+                    pair.numbers = {double(ids[i]), double(ids[j])};
+                    if (checkAnswer(ex, log, pair, Language::En, lessonFile).correct)
+                        f.nodePairs.push_back({ids[i], ids[j]});
+                }
+            f.describe = "nodes " + formatAnswer(ex, a);
+            break;
+        }
         default:
             break;
     }
@@ -445,21 +467,26 @@ std::optional<std::string> findAnswer(const AnswerForms& f, std::string_view tex
             }
         }
     }
-    // TestTree's order: the ids one after the other ("0 1 2 14", "0, 1, 2 and 14", "0 → 1").
-    if (!f.nodes.empty()) {
+    // TestTree's order: the ids one after the other ("0 1 2 14", "0, 1, 2 and 14", "0 → 1");
+    // an overlap's pair the same way ("3 and 4").
+    std::vector<std::vector<int>> runs;
+    if (!f.nodes.empty()) runs.push_back(f.nodes);
+    for (const auto& p : f.nodePairs) runs.push_back({p[0], p[1]});
+    if (!runs.empty()) {
         const std::vector<Token> tokens = numberTokens(text, false);
-        for (std::size_t k = 0; k + f.nodes.size() <= tokens.size(); ++k) {
-            bool run = true;
-            for (std::size_t j = 0; run && j < f.nodes.size(); ++j) {
-                const Token& t = tokens[k + j];
-                run = t.whole && static_cast<int>(t.value) == f.nodes[j];
-                if (run && j > 0)
-                    run = separatorOnly(
-                        text.substr(tokens[k + j - 1].end, t.begin - tokens[k + j - 1].end), ",;",
-                        {"and", "e", "then", "poi", "->", "\xe2\x86\x92"});
+        for (const std::vector<int>& ids : runs)
+            for (std::size_t k = 0; k + ids.size() <= tokens.size(); ++k) {
+                bool run = true;
+                for (std::size_t j = 0; run && j < ids.size(); ++j) {
+                    const Token& t = tokens[k + j];
+                    run = t.whole && static_cast<int>(t.value) == ids[j];
+                    if (run && j > 0)
+                        run = separatorOnly(
+                            text.substr(tokens[k + j - 1].end, t.begin - tokens[k + j - 1].end),
+                            ",;", {"and", "e", "then", "poi", "with", "con", "->", "\xe2\x86\x92"});
+                }
+                if (run) return excerpt(text, tokens[k].begin, tokens[k + ids.size() - 1].end);
             }
-            if (run) return excerpt(text, tokens[k].begin, tokens[k + f.nodes.size() - 1].end);
-        }
     }
     // A test's outcome: a sentence that names the primitive and says hit or miss.
     if (f.outcome)

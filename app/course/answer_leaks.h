@@ -26,7 +26,8 @@ struct AnswerForms {
     double tolerance = 0.01;      // the exercise's: a number the grader takes is the answer
     std::vector<std::array<int, 3>> cells;  // next_cell: one; a sequence: its cells in order
     int dims = 2;
-    std::vector<int> nodes;  // a sequence of the nodes TestTree enters, in order
+    std::vector<int> nodes;                     // a sequence of the nodes TestTree enters, in order
+    std::vector<std::array<int, 2>> nodePairs;  // overlap: every right pair
     struct Outcome {
         std::uint32_t prim = 0;
         bool hit = false;

@@ -172,6 +172,44 @@ double sweepMetric(const Exercise& ex, const GridSweepRow& r) {
     return 0.0;
 }
 
+/// The nodes an overlap exercise is about: every node of the tree (the trace's node boxes),
+/// with no event of their own (the structure is drawn whole, whatever the replay's step).
+std::vector<std::pair<std::uint32_t, std::size_t>> enteredNodes(const Context& c) {
+    std::vector<std::pair<std::uint32_t, std::size_t>> out;
+    for (std::size_t id = 0; id < c.log.nodes().size(); ++id)
+        out.emplace_back(static_cast<std::uint32_t>(id), 0);
+    return out;
+}
+
+/// Whether the boxes of nodes `a` and `b` (the trace's node boxes) share space, neither inside
+/// the other: what a space subdivision's cells never do, and a BVH's may.
+bool partlyOverlap(const EventLog& log, std::uint32_t a, std::uint32_t b) {
+    if (a == b || a >= log.nodes().size() || b >= log.nodes().size()) return false;
+    const NodeRecord &p = log.nodes()[a], &q = log.nodes()[b];
+    bool share = true, pInQ = true, qInP = true;
+    for (int k = 0; k < log.dims(); ++k) {
+        // A positive length on every axis: boxes that only touch share no space.
+        share = share && std::max(p.lo[k], q.lo[k]) < std::min(p.hi[k], q.hi[k]);
+        pInQ = pInQ && q.lo[k] <= p.lo[k] && p.hi[k] <= q.hi[k];
+        qInP = qInP && p.lo[k] <= q.lo[k] && q.hi[k] <= p.hi[k];
+    }
+    return share && !pInQ && !qInP;
+}
+
+/// A node's box as the feedback writes it: "(0.8, 3.5)–(2.6, 6.5)".
+std::string nodeBoxText(const EventLog& log, std::uint32_t node, Language lang) {
+    const NodeRecord& r = log.nodes().at(node);
+    const auto corner = [&](const std::array<double, 3>& v) {
+        std::string s = "(";
+        for (int k = 0; k < log.dims(); ++k) {
+            if (k) s += lang == Language::It ? "; " : ", ";
+            s += formatNumber(v[k], lang);
+        }
+        return s + ")";
+    };
+    return corner(r.lo) + "\u2013" + corner(r.hi);
+}
+
 Reference reference(const Context& c, Language lang) {
     Reference ref;
     Answer& a = ref.answer;
@@ -434,8 +472,60 @@ Reference reference(const Context& c, Language lang) {
             why = computeWorking(c.ex, lang);
             break;
         }
+        case ExerciseKind::Overlap: {
+            if (log.nodes().empty())
+                c.fail("an overlap exercise needs a tree: its trace has no node boxes");
+            const auto entered = enteredNodes(c);
+            // Every pair that overlaps, by the later node's id.
+            std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+            for (std::size_t j = 1; j < entered.size(); ++j)
+                for (std::size_t i = 0; i < j; ++i)
+                    if (partlyOverlap(log, entered[i].first, entered[j].first))
+                        pairs.emplace_back(entered[i].first, entered[j].first);
+            if (pairs.empty())
+                c.fail("no two boxes of the tree overlap (a space subdivision's cells never do)");
+            a.numbers = {double(pairs[0].first), double(pairs[0].second)};
+            std::string all;
+            for (const auto& [p, q] : pairs)
+                all += (all.empty() ? "" : "; ") +
+                       trf(lang, "%1 and %2", {std::to_string(p), std::to_string(q)});
+            why = trf(
+                lang,
+                "Node %1's box %2 and node %3's box %4 share space, and neither lies inside "
+                "the other: a ray there must test both. The pairs of the tree's boxes that "
+                "overlap: %5.",
+                {std::to_string(pairs[0].first), nodeBoxText(log, pairs[0].first, lang),
+                 std::to_string(pairs[0].second), nodeBoxText(log, pairs[0].second, lang), all});
+            break;
+        }
     }
     return ref;
+}
+
+/// Why two nodes given for an overlap are not a right pair.
+std::string overlapSlip(const Context& c, const Answer& given, Language lang) {
+    if (given.numbers.size() != 2) return "";
+    const auto entered = enteredNodes(c);
+    const auto id = [](double v) { return std::to_string(static_cast<long long>(v)); };
+    for (const double v : given.numbers)
+        if (std::none_of(entered.begin(), entered.end(),
+                         [&](const auto& e) { return double(e.first) == v; }))
+            return trf(lang, "The tree has no node %1.", {id(v)});
+    const auto a = static_cast<std::uint32_t>(given.numbers[0]),
+               b = static_cast<std::uint32_t>(given.numbers[1]);
+    const NodeRecord &p = c.log.nodes().at(a), &q = c.log.nodes().at(b);
+    bool pInQ = true, qInP = true;
+    for (int k = 0; k < c.log.dims(); ++k) {
+        pInQ = pInQ && q.lo[k] <= p.lo[k] && p.hi[k] <= q.hi[k];
+        qInP = qInP && p.lo[k] <= q.lo[k] && q.hi[k] <= p.hi[k];
+    }
+    if (pInQ || qInP)
+        return trf(lang,
+                   "Node %1's box lies inside node %2's (a child inside its parent): that is "
+                   "the hierarchy, not two boxes overlapping.",
+                   {id(pInQ ? a : b), id(pInQ ? b : a)});
+    return trf(lang, "Node %1's box %2 and node %3's box %4 share no space.",
+               {id(a), nodeBoxText(c.log, a, lang), id(b), nodeBoxText(c.log, b, lang)});
 }
 
 /// The near and far roots of ray `ray` against primitive `prim` when it is a circle or a sphere
@@ -535,11 +625,10 @@ std::string nextCellSlip(const Context& c, const Answer& given, std::size_t sour
                            "tMaxY)` is false and steps Y alone, into a cell the ray only touches "
                            "at a corner. The exact walk does not enter it.",
                            {cell});
-            return trf(
-                lang,
-                "%1 is a step along %2 alone: on a tie the ray leaves the cell through a "
-                "corner, and the exact walk steps along every tied axis at once.",
-                {cell, std::string(1, "XYZ"[a])});
+            return trf(lang,
+                       "%1 is a step along %2 alone: on a tie the ray leaves the cell through a "
+                       "corner, and the exact walk steps along every tied axis at once.",
+                       {cell, std::string(1, "XYZ"[a])});
         }
         if (tied == 1 && !(next->axes >> a & 1u)) {
             return trf(lang,
@@ -863,6 +952,19 @@ std::optional<Answer> parseAnswer(const Exercise& ex, std::string_view text, std
             a.numbers.push_back(static_cast<double>(*v));
             return a;
         }
+        case ExerciseKind::Overlap: {
+            const std::string s = lower(text);
+            for (const auto p : splitAny(s, " ,;\t")) {
+                if (p == "and" || p == "e") continue;  // "3 and 4", "3 e 4"
+                const auto v = parseWhole(p);
+                if (!v || *v < 0) return bad(tr(lang, "expected two node ids, as 3 4"));
+                a.numbers.push_back(static_cast<double>(*v));
+            }
+            if (a.numbers.size() != 2) return bad(tr(lang, "expected two node ids, as 3 4"));
+            if (a.numbers[0] == a.numbers[1])
+                return bad(tr(lang, "two different nodes: a box always overlaps itself"));
+            return a;
+        }
     }
     return bad("unknown exercise kind");
 }
@@ -900,6 +1002,8 @@ std::string formatAnswer(const Exercise& ex, const Answer& a, Language lang) {
         }
         case ExerciseKind::Choice:
             return a.numbers.empty() ? "" : letter(static_cast<int>(a.numbers[0]));
+        case ExerciseKind::Overlap:
+            return a.numbers.size() != 2 ? "" : whole(a.numbers[0]) + " " + whole(a.numbers[1]);
         case ExerciseKind::Sequence: {
             std::string s;
             const std::size_t per = static_cast<std::size_t>(std::max(a.perItem, 1));
@@ -933,7 +1037,7 @@ Answer referenceAnswer(const Exercise& ex, const EventLog& log, const std::strin
 std::optional<std::size_t> answerEventIndex(const Exercise& ex, const EventLog& log,
                                             const std::string& lessonFile) {
     if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
-        ex.kind == ExerciseKind::SweepPick)
+        ex.kind == ExerciseKind::SweepPick || ex.kind == ExerciseKind::Overlap)
         return std::nullopt;
     return reference(contextOf(ex, log, lessonFile, nullptr), Language::En).source;
 }
@@ -942,6 +1046,7 @@ std::string answerPlaceholder(const Exercise& ex, int dims, Language lang) {
     if (ex.kind == ExerciseKind::NextCell)
         return dims == 3 ? tr(lang, "X,Y,Z (the voxel's indices)")
                          : tr(lang, "X,Y (or click the cell in the 2D view)");
+    if (ex.kind == ExerciseKind::Overlap) return tr(lang, "two node ids, e.g. 3 4");
     if (ex.kind != ExerciseKind::Sequence) return "";
     if (ex.ofNodes) return tr(lang, "node ids in order, e.g. 0 1 4");
     return dims == 3 ? tr(lang, "voxels in order, e.g. 0,0,0; 1,0,0")
@@ -965,6 +1070,11 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
             advice = tr(lang,
                         "Work out the metric for every row of the sweep's table and compare "
                         "them all.");
+            break;
+        case ExerciseKind::Overlap:
+            advice = tr(lang,
+                        "Look at the boxes in the 2D view again: two that share space, neither "
+                        "inside the other (a child lies inside its parent).");
             break;
         default:
             if (!replayHeld) {
@@ -1020,8 +1130,9 @@ std::string retryAdvice(const Exercise& ex, bool replayHeld, bool hintLeft, Lang
 }
 
 std::optional<std::size_t> quizLimit(const Exercise& ex, const EventLog& log) {
+    // An overlap's answer is in the structure, drawn whole at every step: nothing to hold.
     if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Compute ||
-        ex.kind == ExerciseKind::SweepPick)
+        ex.kind == ExerciseKind::SweepPick || ex.kind == ExerciseKind::Overlap)
         return std::nullopt;
     return resolvePosition(ex.at, log);
 }
@@ -1045,6 +1156,19 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
             v.correct = answer.numbers == ref.numbers &&
                         (answer.perItem == ref.perItem || answer.numbers.empty());
             break;
+        case ExerciseKind::Overlap: {
+            // Any pair of the tree's boxes that overlap is right, in either order.
+            if (answer.numbers.size() != 2) break;
+            const auto entered = enteredNodes(c);
+            const auto in = [&](double v) {
+                return std::any_of(entered.begin(), entered.end(),
+                                   [&](const auto& e) { return double(e.first) == v; });
+            };
+            v.correct = in(answer.numbers[0]) && in(answer.numbers[1]) &&
+                        partlyOverlap(log, static_cast<std::uint32_t>(answer.numbers[0]),
+                                      static_cast<std::uint32_t>(answer.numbers[1]));
+            break;
+        }
         case ExerciseKind::Value:
         case ExerciseKind::Compute:
             v.correct = answer.numbers.size() == 1 &&
@@ -1101,6 +1225,9 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                 break;
             case ExerciseKind::Sequence:
                 v.slip = sequenceSlip(c, answer, ref, lang);
+                break;
+            case ExerciseKind::Overlap:
+                v.slip = overlapSlip(c, answer, lang);
                 break;
             case ExerciseKind::Choice: {
                 if (given < 0 || given >= static_cast<double>(ex.choices.size())) break;

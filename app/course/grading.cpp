@@ -23,18 +23,21 @@ using Reader = detail::JsonReader<LessonError>;
 
 void validateLesson(const Lesson& lesson) {
     const LessonRun run = runLesson(lesson);
+    const LessonLogs logs = run.logs();
     if (run.log->events().empty())
         throw LessonError(lesson.file, 0, "trace", "the trace recorded no events");
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& s = lesson.steps[i];
         const std::string key = "steps[" + std::to_string(i) + "]";
-        if (!resolvePosition(s.at, *run.log))
+        const EventLog& log = logs.of(s.setup);  // the step's structure's trace
+        if (!resolvePosition(s.at, log))
             throw LessonError(lesson.file, s.line, key,
-                              "its position (" + describePosition(s.at) + ") is not in the trace");
+                              "its position (" + describePosition(s.at) + ") is not in the " +
+                                  (s.setup ? s.setup->name() + " " : std::string()) + "trace");
         // A filter that shows nothing leaves the student an empty event list.
-        const auto& events = run.log->events();
+        const auto& events = log.events();
         if (!s.filter.empty() && std::none_of(events.begin(), events.end(), [&](const Event& e) {
-                return eventMatchesFilter(e, run.log->dims(), s.filter);
+                return eventMatchesFilter(e, log.dims(), s.filter);
             }))
             throw LessonError(lesson.file, s.line, key + ".filter",
                               "the filter '" + printable(s.filter) +
@@ -42,7 +45,8 @@ void validateLesson(const Lesson& lesson) {
                                   "dda_cell, primitive_test, ray_begin, ...)");
     }
     const std::vector<GridSweepRow> sweep = sweepRowsIfNeeded(lesson, run);
-    for (const Exercise& ex : lesson.exercises) referenceAnswer(ex, *run.log, lesson.file, &sweep);
+    for (const Exercise& ex : lesson.exercises)
+        referenceAnswer(ex, logs.of(ex.setup), lesson.file, &sweep);
     checkComputePrompts(lesson);
     Lesson noted = lesson;  // the steps' notes can be made from this lesson's run
     addStepNotes(noted, *run.scene, run.accel2D ? &*run.accel2D : nullptr);
@@ -53,7 +57,7 @@ void validateLesson(const Lesson& lesson) {
                               std::string(lessonViewName(v)) + " does not fit a " +
                                   (is2D ? "2D" : "3D") + " scene");
     // Last, so a lesson that fails only here has passed every other check.
-    checkNoAnswerGivenAway(noted, *run.log, run.scene.get(), &sweep);
+    checkNoAnswerGivenAway(noted, logs, run.scene.get(), &sweep);
 }
 
 std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run) {
@@ -101,7 +105,7 @@ void addErrata(std::vector<Shown>& out, const std::string& at, const std::vector
 }
 }  // namespace
 
-void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log, const LessonScene* scene,
+void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const LessonScene* scene,
                             const std::vector<GridSweepRow>* sweep) {
     const bool swept = sweep && !sweep->empty();
     // The explanation of each exercise, shown once it is answered (or after three tries): a
@@ -109,6 +113,7 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log, const Les
     std::vector<LocalText> explanations(lesson.exercises.size());
     for (std::size_t j = 0; j < lesson.exercises.size(); ++j) {
         const Exercise& ex = lesson.exercises[j];
+        const EventLog& log = logs.of(ex.setup);
         if (ex.kind == ExerciseKind::SweepPick && !swept) continue;
         if (!resolvePosition(ex.at, log)) continue;  // validateLesson names it
         explanations[j].en =
@@ -118,6 +123,8 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log, const Les
     }
     for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
         const Exercise& ex = lesson.exercises[i];
+        const EventLog& log = logs.of(ex.setup);
+        const std::string exKey = lesson.setupOf(ex.setup).key();
         const std::string key = "exercises[" + std::to_string(i) + "]";
         const auto at = resolvePosition(ex.at, log);
         if (!at) continue;  // validateLesson names it
@@ -135,8 +142,11 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log, const Les
         const auto limit = quizLimit(ex, log);
         for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
             const LessonStep& s = lesson.steps[k];
+            // A step of another structure is shown whatever this exercise holds: its position
+            // is in another trace.
+            const bool sameTrace = lesson.setupOf(s.setup).key() == exKey;
             const auto stepAt = resolvePosition(s.at, log);
-            if (limit && (!stepAt || *stepAt > *limit)) continue;
+            if (sameTrace && limit && (!stepAt || *stepAt > *limit)) continue;
             const std::string sk = "steps[" + std::to_string(k) + "]";
             shown.push_back({sk + ".text", s.text});
             if (!s.note.en.empty()) shown.push_back({sk + ".note", s.note});
@@ -254,7 +264,7 @@ AnswerSheet loadAnswerSheetFile(const std::string& path) {
     return loadAnswerSheet(readLessonFile(path, "answers file"), path);
 }
 
-Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
+Grade gradeAnswers(const Lesson& lesson, const LessonLogs& logs, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile,
                    const std::vector<GridSweepRow>* sweep,
                    const std::variant<Scene, Scene2D>* scene) {
@@ -279,8 +289,8 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
             item.given = it->second;
             given = parseAnswer(ex, it->second, &why, lang);
         }
-        const Verdict v =
-            checkAnswer(ex, log, given.value_or(Answer{}), lang, lesson.file, sweep, scene);
+        const Verdict v = checkAnswer(ex, logs.of(ex.setup), given.value_or(Answer{}), lang,
+                                      lesson.file, sweep, scene);
         item.correct = given.has_value() && v.correct;
         item.expected = v.expected;
         item.feedback = item.answered && !given ? why + ". " + v.feedback : v.feedback;
@@ -290,7 +300,7 @@ Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet&
     return g;
 }
 
-ClassTable classTable(const Lesson& lesson, const EventLog& log,
+ClassTable classTable(const Lesson& lesson, const LessonLogs& logs,
                       const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
                       const std::vector<GridSweepRow>* sweep) {
     ClassTable table;
@@ -308,7 +318,7 @@ ClassTable classTable(const Lesson& lesson, const EventLog& log,
     }
     std::size_t seen = 0;
     for (const auto& [file, sheet] : sheets) {
-        const Grade g = gradeAnswers(lesson, log, sheet, Language::En, file, sweep);
+        const Grade g = gradeAnswers(lesson, logs, sheet, Language::En, file, sweep);
         for (std::size_t i = 0; i < g.items.size(); ++i) {
             const Grade::Item& item = g.items[i];
             ClassTable::Row& row = table.rows[i];

@@ -33,7 +33,10 @@ std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRu
 /// prompt, hints and options, and the explanations of the exercises before it. Throws LessonError
 /// naming the exercise and where its answer shows. Whole answers 0 and 1 are exempt: they are in
 /// every formula. `scene` names a tested primitive's kind; `sweep`, a sweep_pick's rows.
-void checkNoAnswerGivenAway(const Lesson& lesson, const EventLog& log,
+/// Each exercise is checked in its own structure's trace (`logs`); a step of another structure
+/// than the exercise's is read whatever the exercise's position (their positions are in two
+/// traces), so its text is checked too.
+void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs,
                             const LessonScene* scene = nullptr,
                             const std::vector<GridSweepRow>* sweep = nullptr);
 
@@ -63,7 +66,8 @@ struct Grade {
     std::vector<Item> items;
     int score = 0;
 };
-Grade gradeAnswers(const Lesson& lesson, const EventLog& log, const AnswerSheet& sheet,
+/// Each exercise against its own structure's trace in `logs`.
+Grade gradeAnswers(const Lesson& lesson, const LessonLogs& logs, const AnswerSheet& sheet,
                    Language lang, const std::string& sheetFile,
                    const std::vector<GridSweepRow>* sweep = nullptr,
                    const std::variant<Scene, Scene2D>* scene = nullptr);
@@ -83,7 +87,7 @@ struct ClassTable {
 };
 /// Grades every sheet (`sheets`: file name and sheet) against the lesson; throws the first
 /// sheet's LessonError (naming its file, line and key).
-ClassTable classTable(const Lesson& lesson, const EventLog& log,
+ClassTable classTable(const Lesson& lesson, const LessonLogs& logs,
                       const std::vector<std::pair<std::string, AnswerSheet>>& sheets,
                       const std::vector<GridSweepRow>* sweep = nullptr);
 /// The table as Markdown (a heading line, then the table) or as CSV (RFC 4180 quoting).

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace raystep {
 
@@ -22,15 +23,16 @@ using Reader = detail::JsonReader<LessonError>;
 
 namespace {
 
-constexpr NameTable<ExerciseKind, 9> kExerciseKinds{{{ExerciseKind::NextCell, "next_cell"},
-                                                     {ExerciseKind::Value, "value"},
-                                                     {ExerciseKind::PickSplit, "pick_split"},
-                                                     {ExerciseKind::Count, "count"},
-                                                     {ExerciseKind::HitOrMiss, "hit_or_miss"},
-                                                     {ExerciseKind::Choice, "choice"},
-                                                     {ExerciseKind::Sequence, "sequence"},
-                                                     {ExerciseKind::SweepPick, "sweep_pick"},
-                                                     {ExerciseKind::Compute, "compute"}}};
+constexpr NameTable<ExerciseKind, 10> kExerciseKinds{{{ExerciseKind::NextCell, "next_cell"},
+                                                      {ExerciseKind::Value, "value"},
+                                                      {ExerciseKind::PickSplit, "pick_split"},
+                                                      {ExerciseKind::Count, "count"},
+                                                      {ExerciseKind::HitOrMiss, "hit_or_miss"},
+                                                      {ExerciseKind::Choice, "choice"},
+                                                      {ExerciseKind::Sequence, "sequence"},
+                                                      {ExerciseKind::SweepPick, "sweep_pick"},
+                                                      {ExerciseKind::Compute, "compute"},
+                                                      {ExerciseKind::Overlap, "overlap"}}};
 constexpr NameTable<SweepMetric, 3> kSweepMetrics{{{SweepMetric::Cost, "cost"},
                                                    {SweepMetric::TestsPerRay, "tests_per_ray"},
                                                    {SweepMetric::CellsPerRay, "cells_per_ray"}}};
@@ -187,7 +189,8 @@ ReplayPosition readPosition(const Reader& r, const json& j, const std::string& p
     return at;
 }
 
-void readSetup(const Reader& r, const json& j, const std::string& path, Lesson& l) {
+/// "setup": its keys over `l` (the lesson's setup, or a copy of it for a step or an exercise).
+void readSetup(const Reader& r, const json& j, const std::string& path, LessonSetup& l) {
     r.requireObject(j, path);
     // The keys: "accel" and every option of the structures' table (structure_info.h).
     std::string allowed = "accel";
@@ -252,6 +255,36 @@ void readSetup(const Reader& r, const json& j, const std::string& path, Lesson& 
     if (o.kdtree.build == KdBuild::Fast && j.contains("bin_above"))
         r.fail(JsonLineMap::child(path, "bin_above"),
                "the fast build (kd_build) bins every node already");
+}
+
+/// A step's or an exercise's own "setup": the lesson's with these keys over it.
+std::optional<LessonSetup> readOwnSetup(const Reader& r, const json& j, const std::string& path,
+                                        const LessonSetup& lesson) {
+    std::optional<LessonSetup> own;
+    ifPresent(j, path, "setup", [&](const json& v, const std::string& p) {
+        LessonSetup s = lesson;
+        readSetup(r, v, p, s);
+        own = std::move(s);
+    });
+    return own;
+}
+
+/// "compare": {"accel": "grid,kdtree,bvh", "split": "sah"}, read as the CLI's compare reads them.
+std::vector<StructureChoice> readCompare(const Reader& r, const json& j, const std::string& path) {
+    r.requireObject(j, path);
+    r.checkKeys(j, path, {"accel", "split"});
+    const std::string ap = JsonLineMap::child(path, "accel"),
+                      sp = JsonLineMap::child(path, "split");
+    if (!j.contains("accel")) r.fail(path, "\"accel\" is required: \"grid,kdtree,bvh\"");
+    const std::string kinds = r.string(j["accel"], ap);
+    std::optional<std::string> splits;
+    ifPresent(j, path, "split",
+              [&](const json& v, const std::string& p) { splits = r.string(v, p); });
+    auto parsed = parseStructureChoices(kinds, splits, "accel", "split");
+    if (auto* why = std::get_if<std::string>(&parsed))
+        // The message names the key it refuses; the line is that key's.
+        r.fail(splits && why->find("split") != std::string::npos ? sp : ap, *why);
+    return std::get<std::vector<StructureChoice>>(std::move(parsed));
 }
 
 std::array<int, 2> readPair(const Reader& r, const json& j, const std::string& path, int lo,
@@ -488,14 +521,16 @@ std::vector<std::string> computeQuantities(const ComputeGiven& g) {
     return {};
 }
 
-Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
+Exercise readExercise(const Reader& r, const json& j, const std::string& path,
+                      const LessonSetup& lessonSetup) {
     r.requireObject(j, path);
-    r.checkKeys(
-        j, path,
-        {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind", "ray_depth",
-         "until", "with_t", "tolerance", "choices", "answer", "of", "length", "metric", "given"});
+    r.checkKeys(j, path,
+                {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind", "ray_depth",
+                 "until", "with_t", "tolerance", "choices", "answer", "of", "length", "metric",
+                 "given", "setup"});
     Exercise ex;
     ex.line = r.lines().lineOf(path);
+    ex.setup = readOwnSetup(r, j, path, lessonSetup);
     for (const char* key : {"id", "type", "prompt"})
         if (!j.contains(key)) r.fail(path, std::string("\"") + key + "\" is required");
     ex.id = r.string(j["id"], JsonLineMap::child(path, "id"));
@@ -506,7 +541,7 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
     if (!kind)
         r.fail(typePath,
                "expected next_cell, value, pick_split, count, hit_or_miss, choice, sequence, "
-               "sweep_pick or compute");
+               "sweep_pick, compute or overlap");
     ex.kind = *kind;
     ex.prompt = readText(r, j["prompt"], JsonLineMap::child(path, "prompt"));
     ifPresent(j, path, "hint",
@@ -627,11 +662,16 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path) {
     return ex;
 }
 
-LessonStep readStep(const Reader& r, const json& j, const std::string& path) {
+LessonStep readStep(const Reader& r, const json& j, const std::string& path,
+                    const LessonSetup& lessonSetup) {
     r.requireObject(j, path);
-    r.checkKeys(j, path, {"text", "at", "filter", "camera", "textbook_dda", "errata"});
+    r.checkKeys(j, path,
+                {"text", "at", "filter", "camera", "textbook_dda", "errata", "setup", "compare"});
     LessonStep s;
     s.line = r.lines().lineOf(path);
+    s.setup = readOwnSetup(r, j, path, lessonSetup);
+    ifPresent(j, path, "compare",
+              [&](const json& v, const std::string& p) { s.compare = readCompare(r, v, p); });
     if (!j.contains("text")) r.fail(path, "a step needs its \"text\"");
     s.text = readText(r, j["text"], JsonLineMap::child(path, "text"));
     ifPresent(j, path, "at",
@@ -686,6 +726,40 @@ std::string_view lessonViewName(LessonView v) {
     return nameOf(kViews, v);
 }
 
+std::string LessonSetup::key() const {
+    std::string k(accelKindName(accel));
+    const std::optional<SplitMethod> split = options.split(accel);
+    for (const OptionInfo& info : accelOptions()) {
+        if (!readsOption(accel, info.option, split.value_or(SplitMethod::Midpoint))) continue;
+        if (info.option == AccelOption::GridRes) {
+            if (!options.grid.res) k += " res=auto";
+            if (options.grid.res)
+                for (const int n : *options.grid.res) k += " " + std::to_string(n);
+            continue;
+        }
+        char v[32];  // every digit: two setups differ if any option does
+        std::snprintf(v, sizeof v, "%.17g", options.value(accel, info.option));
+        k += " " + std::string(info.key) + "=" + v;
+    }
+    return k;
+}
+
+std::string LessonSetup::name() const {
+    return choiceName({accel, options.split(accel)});
+}
+
+std::vector<LessonSetup> Lesson::setups() const {
+    std::vector<LessonSetup> out{setup()};
+    const auto add = [&](const std::optional<LessonSetup>& s) {
+        if (s && std::none_of(out.begin(), out.end(),
+                              [&](const LessonSetup& o) { return o.key() == s->key(); }))
+            out.push_back(*s);
+    };
+    for (const LessonStep& s : steps) add(s.setup);
+    for (const Exercise& e : exercises) add(e.setup);
+    return out;
+}
+
 const Exercise* Lesson::exercise(std::string_view exerciseId) const {
     for (const Exercise& e : exercises)
         if (e.id == exerciseId) return &e;
@@ -720,8 +794,11 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
               [&](const json& v, const std::string& p) { l.errata = readErrata(r, v, p); });
     l.scene = r.string(root["scene"], "scene");
     if (l.scene.empty()) r.fail("scene", "must name a built-in scene or a scene file");
+    LessonSetup setup;
     ifPresent(root, "", "setup",
-              [&](const json& v, const std::string& p) { readSetup(r, v, p, l); });
+              [&](const json& v, const std::string& p) { readSetup(r, v, p, setup); });
+    l.accel = setup.accel;
+    l.options = setup.options;
     readTrace(r, root["trace"], "trace", l.trace);
     ifPresent(root, "", "views", [&](const json& v, const std::string& p) {
         if (!v.is_array() || v.empty())
@@ -754,13 +831,13 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     ifPresent(root, "", "steps", [&](const json& v, const std::string& p) {
         if (!v.is_array()) r.fail(p, "expected an array of steps");
         for (std::size_t i = 0; i < v.size(); ++i)
-            l.steps.push_back(readStep(r, v[i], JsonLineMap::element(p, i)));
+            l.steps.push_back(readStep(r, v[i], JsonLineMap::element(p, i), setup));
     });
     ifPresent(root, "", "exercises", [&](const json& v, const std::string& p) {
         if (!v.is_array()) r.fail(p, "expected an array of exercises");
         for (std::size_t i = 0; i < v.size(); ++i) {
             const std::string ep = JsonLineMap::element(p, i);
-            Exercise ex = readExercise(r, v[i], ep);
+            Exercise ex = readExercise(r, v[i], ep, setup);
             if (l.exercise(ex.id)) r.fail(JsonLineMap::child(ep, "id"), "exercise id used twice");
             l.exercises.push_back(std::move(ex));
         }
@@ -771,10 +848,11 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         l.views = twoDTrace ? std::vector<LessonView>{LessonView::View2D}
                             : std::vector<LessonView>{LessonView::View3D, LessonView::Image};
     for (Exercise& ex : l.exercises) {
-        // A node's SAH cost is the lesson's: its setup's costs, as the kd-tree build uses them.
-        ex.given.cTrav = l.options.kdtree.cTrav;
-        ex.given.cIsect = l.options.kdtree.cIsect;
-        ex.given.emptyBonus = l.options.kdtree.emptyBonus;
+        // A node's SAH cost is the exercise's structure's: its costs, as the kd-tree build uses.
+        const AccelOptions o = l.setupOf(ex.setup).options;
+        ex.given.cTrav = o.kdtree.cTrav;
+        ex.given.cIsect = o.kdtree.cIsect;
+        ex.given.emptyBonus = o.kdtree.emptyBonus;
     }
     for (std::size_t i = 0; i < l.exercises.size(); ++i)
         if (l.exercises[i].kind == ExerciseKind::SweepPick && !l.sweep)
@@ -782,6 +860,16 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
                    "a sweep_pick exercise needs the lesson's \"sweep\"");
     if (l.trace.kind == LessonTrace::Kind::Build && !recordsBuild(l.accel))
         r.fail("trace", "a build can be recorded for " + kindList(recordsBuild) + " (setup.accel)");
+    // The trace is recorded through every structure named: a build needs one that records it.
+    const auto ownBuild = [&](const std::optional<LessonSetup>& own, const std::string& at) {
+        if (l.trace.kind == LessonTrace::Kind::Build && own && !recordsBuild(own->accel))
+            r.fail(JsonLineMap::child(JsonLineMap::child(at, "setup"), "accel"),
+                   "the lesson records a build, which " + kindList(recordsBuild) + " have");
+    };
+    for (std::size_t i = 0; i < l.steps.size(); ++i)
+        ownBuild(l.steps[i].setup, JsonLineMap::element("steps", i));
+    for (std::size_t i = 0; i < l.exercises.size(); ++i)
+        ownBuild(l.exercises[i].setup, JsonLineMap::element("exercises", i));
     return l;
 }
 

@@ -62,8 +62,24 @@ struct LessonCamera {
     double azimuth = 0.0, elevation = 0.0, zoom = 1.0;
 };
 
+/// The structure a lesson, a step or an exercise is about: its kind and its build options (the
+/// keys of `setup`, docs/lesson-format.md).
+struct LessonSetup {
+    AccelKind accel = AccelKind::BruteForce;
+    AccelOptions options;
+    /// Two setups with the same key build the same structure: the kind and every option its
+    /// build reads, so a step and an exercise naming the same BVH share one trace.
+    std::string key() const;
+    /// "bvh SAH", "grid": as render --stats and compare name it.
+    std::string name() const;
+};
+
 struct LessonStep {
     LocalText text;
+    // Its own structure (the lesson's setup with the step's keys over it), else the lesson's.
+    std::optional<LessonSetup> setup;
+    // "compare": the structures the step offers to compare on its ray (empty: no button).
+    std::vector<StructureChoice> compare;
     ReplayPosition at;
     std::string filter;  // what the event list shows (its filter text), empty = everything
     std::optional<LessonCamera> camera;
@@ -94,6 +110,7 @@ enum class ExerciseKind {
     Sequence,   // the cells the DDA visits, or the nodes TestTree enters, in order
     SweepPick,  // the sweep's resolution of the lowest metric
     Compute,    // a hand computation from data the prompt gives
+    Overlap,    // two boxes of the tree that share space, neither inside the other (a BVH)
 };
 std::string_view exerciseKindName(ExerciseKind k);
 
@@ -171,6 +188,8 @@ struct Exercise {
     SweepMetric metric = SweepMetric::Cost;  // SweepPick
     ComputeGiven given;                      // Compute
     std::string computeQuantity;             // Compute: "t0", "tMax.x", "sahCost", ...
+    // Its own structure: the answer is read from the lesson's trace through it (the same ray).
+    std::optional<LessonSetup> setup;
     int line = 0;
 };
 
@@ -191,6 +210,14 @@ struct Lesson {
     bool builtin = false;         // embedded in raystep (its scene is a built-in name)
 
     const Exercise* exercise(std::string_view exerciseId) const;
+    /// The lesson's own structure (`setup`).
+    LessonSetup setup() const { return {accel, options}; }
+    /// The structure a step or an exercise is about: its own setup, else the lesson's.
+    LessonSetup setupOf(const std::optional<LessonSetup>& own) const {
+        return own ? *own : setup();
+    }
+    /// Every structure the lesson's steps and exercises are about, the lesson's first, each once.
+    std::vector<LessonSetup> setups() const;
 };
 
 /// Parses lesson text; errors name `fileName`, the line and the key.

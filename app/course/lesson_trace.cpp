@@ -5,12 +5,14 @@
 #include "feedback_text.h"
 
 #include "raystep/accel/dda_textbook.h"
+#include "raystep/accel/outline.h"
 #include "raystep/trace/event_text.h"
 
 #include "raystep/render/tracer.h"
 #include "raystep/scene/resources.h"
 #include "raystep/scene/scene_loader.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace raystep {
@@ -24,7 +26,35 @@ std::string lessonScenePath(const Lesson& lesson) {
     return (std::filesystem::path(lesson.file).parent_path() / p).string();
 }
 
+LessonLogs LessonRun::logs() const {
+    LessonLogs l(*log);
+    for (const LessonStructureRun& o : others) l.bySetup[o.setup.key()] = o.log.get();
+    return l;
+}
+
 std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
+                                            const std::variant<Scene, Scene2D>& scene,
+                                            const Accelerator* accel3D,
+                                            const Accelerator2D* accel2D) {
+    return recordLessonTrace(lesson, lesson.setup(), scene, accel3D, accel2D);
+}
+
+namespace {
+/// The node boxes of a tree (outline.h) into `log`, 2D boxes at z = 0.
+template <int N>
+void recordNodeBoxes(const StructureOutline<N>& o, EventLog& log) {
+    for (std::size_t id = 0; id < o.nodes.size(); ++id) {
+        std::array<double, 3> lo{0.0, 0.0, 0.0}, hi{0.0, 0.0, 0.0};
+        for (int a = 0; a < N; ++a) {
+            lo[a] = o.nodes[id].box.lo[a];
+            hi[a] = o.nodes[id].box.hi[a];
+        }
+        log.node(static_cast<std::uint32_t>(id), lo, hi);
+    }
+}
+}  // namespace
+
+std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSetup& setup,
                                             const std::variant<Scene, Scene2D>& scene,
                                             const Accelerator* accel3D,
                                             const Accelerator2D* accel2D) {
@@ -37,7 +67,7 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
     };
     switch (t.kind) {
         case LessonTrace::Kind::Build:
-            buildStructure(scene, lesson.accel, {}, lesson.options, log.get());
+            buildStructure(scene, setup.accel, {}, setup.options, log.get());
             break;
         case LessonTrace::Kind::ExampleRay:
         case LessonTrace::Kind::Ray2D: {
@@ -52,6 +82,15 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
             if (!s3) fail("a pixel needs a 3D scene; " + printable(lesson.scene) + " is 2D");
             tracePixelEvents(*s3, *accel3D, t.x, t.y, t.width, t.height, *log);
             break;
+    }
+    // An overlap exercise's answer is two of these boxes: the trace carries them (a build has
+    // its own already).
+    const bool overlap =
+        std::any_of(lesson.exercises.begin(), lesson.exercises.end(),
+                    [](const Exercise& e) { return e.kind == ExerciseKind::Overlap; });
+    if (overlap && t.kind != LessonTrace::Kind::Build) {
+        if (accel2D) recordNodeBoxes(outline(*accel2D), *log);
+        if (accel3D) recordNodeBoxes(outline(*accel3D), *log);
     }
     return log;
 }
@@ -69,6 +108,16 @@ LessonRun runLesson(const Lesson& lesson) {
     run.accel3D = std::move(built.in3D);
     run.log = recordLessonTrace(lesson, *run.scene, run.accel3D ? &*run.accel3D : nullptr,
                                 run.accel2D ? &*run.accel2D : nullptr);
+    const std::vector<LessonSetup> setups = lesson.setups();
+    for (std::size_t i = 1; i < setups.size(); ++i) {
+        LessonStructureRun& o = run.others.emplace_back();
+        o.setup = setups[i];
+        AnyStructure b = buildStructure(*run.scene, o.setup.accel, {}, o.setup.options);
+        o.accel2D = std::move(b.in2D);
+        o.accel3D = std::move(b.in3D);
+        o.log = recordLessonTrace(lesson, o.setup, *run.scene, o.accel3D ? &*o.accel3D : nullptr,
+                                  o.accel2D ? &*o.accel2D : nullptr);
+    }
     return run;
 }
 
@@ -122,7 +171,8 @@ void addStepNotes(Lesson& lesson, const std::variant<Scene, Scene2D>& scene,
         LessonStep& step = lesson.steps[i];
         if (!step.textbookDda) continue;
         const auto* s2 = std::get_if<Scene2D>(&scene);
-        const auto* grid = accel2D ? std::get_if<UniformGridT<Scene2DPrims>>(accel2D) : nullptr;
+        // The grid's spec from its outline (app/ asks no structure its type).
+        const auto grid = accel2D ? outline(*accel2D).grid : std::nullopt;
         const LessonTrace& t = lesson.trace;
         const bool hasRay = t.kind == LessonTrace::Kind::Ray2D ||
                             (t.kind == LessonTrace::Kind::ExampleRay && s2 && s2->exampleRay);
@@ -130,8 +180,8 @@ void addStepNotes(Lesson& lesson, const std::variant<Scene, Scene2D>& scene,
             throw LessonError(lesson.file, step.line,
                               "steps[" + std::to_string(i) + "].textbook_dda",
                               "needs a 2D scene, a grid (setup.accel) and a 2D ray (trace)");
-        step.note = textbookNote(grid->spec(),
-                                 t.kind == LessonTrace::Kind::Ray2D ? t.ray : *s2->exampleRay);
+        step.note =
+            textbookNote(grid->spec, t.kind == LessonTrace::Kind::Ray2D ? t.ray : *s2->exampleRay);
     }
 }
 

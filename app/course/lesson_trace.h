@@ -9,6 +9,7 @@
 #include "raystep/trace/events.h"
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,19 +17,52 @@
 
 namespace raystep {
 
-/// A lesson made ready: its scene, the structure and the recorded trace.
+/// The traces a lesson's steps and exercises are read from: the lesson's trace through its own
+/// structure, and the same trace (the same ray, pixel or build) through each other structure a
+/// step or an exercise sets up, by LessonSetup::key().
+struct LessonLogs {
+    /// One trace for every step and exercise (a lesson of one structure, or a test's log).
+    LessonLogs(const EventLog& own) : own(&own) {}  // NOLINT: implicit on purpose
+    const EventLog* own;
+    std::map<std::string, const EventLog*> bySetup;
+    /// The trace through `setup` (a step's or an exercise's own); the lesson's for none.
+    const EventLog& of(const std::optional<LessonSetup>& setup) const {
+        if (setup)
+            if (const auto it = bySetup.find(setup->key()); it != bySetup.end()) return *it->second;
+        return *own;
+    }
+};
+
+/// One structure built over the lesson's scene, and the lesson's trace through it.
+struct LessonStructureRun {
+    LessonSetup setup;
+    std::optional<Accelerator> accel3D;
+    std::optional<Accelerator2D> accel2D;
+    std::unique_ptr<EventLog> log;
+};
+
+/// A lesson made ready: its scene, the structure and the recorded trace; and the same trace
+/// through every other structure its steps and exercises set up.
 struct LessonRun {
     std::unique_ptr<std::variant<Scene, Scene2D>> scene;
     std::optional<Accelerator> accel3D;
     std::optional<Accelerator2D> accel2D;
     std::unique_ptr<EventLog> log;
+    std::vector<LessonStructureRun> others;  // Lesson::setups() after the lesson's own
+    LessonLogs logs() const;
 };
 /// The lesson's scene, as a path the app and loadAnyScene accept.
 std::string lessonScenePath(const Lesson& lesson);
 /// Loads the scene, builds the structure and records the trace.
 LessonRun runLesson(const Lesson& lesson);
-/// Records the lesson's trace with a scene and structure already made.
+/// Records the lesson's trace with a scene and structure already made (the lesson's own).
 std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson,
+                                            const std::variant<Scene, Scene2D>& scene,
+                                            const Accelerator* accel3D,
+                                            const Accelerator2D* accel2D);
+/// The same through the structure `setup` (built over `scene` with it). A lesson with an
+/// overlap exercise also records the tree's node boxes (EventLog::nodes), whose answer they are.
+std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSetup& setup,
                                             const std::variant<Scene, Scene2D>& scene,
                                             const Accelerator* accel3D,
                                             const Accelerator2D* accel2D);

@@ -25,6 +25,8 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace raystep::gui {
 
 LessonController::Opened LessonController::prepare(const Lesson& lesson,
@@ -47,6 +49,19 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
                           o.scene->accel2D ? &*o.scene->accel2D : nullptr);
     o.lesson = lesson;
     addStepNotes(o.lesson, o.scene->scene, o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+    // Every other structure a step or an exercise names, built here in the background over the
+    // same scene (as the structure chooser rebuilds), with the lesson's trace through it.
+    const std::vector<LessonSetup> setups = lesson.setups();
+    for (std::size_t i = 1; i < setups.size(); ++i) {
+        AccelOptions so = setups[i].options;
+        so.setProgress(progress);
+        Structure st;
+        st.scene = Session::rebuild(o.scene, setups[i].accel, so);
+        st.trace = recordLessonTrace(lesson, setups[i], st.scene->scene,
+                                     st.scene->accel3D ? &*st.scene->accel3D : nullptr,
+                                     st.scene->accel2D ? &*st.scene->accel2D : nullptr);
+        o.others[setups[i].key()] = std::move(st);
+    }
     return o;
 }
 
@@ -92,10 +107,14 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
     connect(lesson_, &LessonPanel::exerciseShown, this, [this](int i) {
         // While exploring the exercise waits: only "Back to the lesson" returns to its trace.
         if (lesson_->exploring()) return;
-        showLessonTrace();
-        const auto at = resolvePosition(lesson_->lesson().exercises[i].at, session_.log());
+        // An exercise on its own structure shows it: its answer is read from that trace.
+        const Exercise& ex = lesson_->lesson().exercises[std::size_t(i)];
+        showLessonTrace(ex.setup);
+        updateQuizLimit();
+        const auto at = resolvePosition(ex.at, session_.log());
         if (at) session_.setCursor(*at);
     });
+    connect(lesson_, &LessonPanel::compareRequested, this, &LessonController::compareRequested);
     connect(lesson_, &LessonPanel::quizChanged, this, [this] { updateQuizLimit(); });
     connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
     connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
@@ -110,12 +129,17 @@ void LessonController::replaceLesson() {
     session_.setHideAhead(false);
 }
 
-void LessonController::show(const Lesson& lesson, const LogRef& trace) {
+void LessonController::show(const Lesson& lesson, const LogRef& trace,
+                            std::map<std::string, Structure> others) {
     // The panel records answers into this lesson's progress (std::map entries do not move) and
     // grades them against its own share of the trace.
     replacing_ = false;
     lessonScene_ = session_.sceneRef();
-    lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id]);
+    others_ = std::move(others);
+    currentKey_ = lesson.setup().key();
+    std::map<std::string, LogRef> logs;
+    for (const auto& [key, st] : others_) logs[key] = st.trace;
+    lesson_->showLesson(lesson, trace, &studentProgress_.lessons[lesson.id], std::move(logs));
     if (trace)
         if (const auto kind = lessonEventKind(lesson, *trace)) emit jumpKindSuggested(*kind);
     applyStep(lesson_->step());
@@ -140,14 +164,12 @@ std::optional<std::size_t> LessonController::lessonEventKind(const Lesson& lesso
 
 void LessonController::backToLesson() {
     if (!lesson_->hasLesson()) return;
-    // The structure chooser built another structure: the lesson's comes back first.
-    if (lessonScene_ && session_.sceneRef() != lessonScene_)
-        emit lessonSceneRequested(lessonScene_);
-    showLessonTrace();
-    // Where the student was in the lesson: the open exercise's position, else the step's.
+    // Where the student was in the lesson: the open exercise's position, else the step's; each
+    // on its own structure (the structure chooser's pick goes).
     if (lesson_->exerciseOpen()) {
-        const auto at =
-            resolvePosition(lesson_->lesson().exercises[lesson_->exercise()].at, session_.log());
+        const Exercise& ex = lesson_->lesson().exercises[lesson_->exercise()];
+        showLessonTrace(ex.setup);
+        const auto at = resolvePosition(ex.at, session_.log());
         if (at) session_.setCursor(*at);
         updateQuizLimit();
         if (!lesson_->lesson().steps.empty())
@@ -159,7 +181,10 @@ void LessonController::backToLesson() {
 }
 
 void LessonController::updateQuizLimit() {
-    const LogRef& log = lesson_->lessonLog();
+    // The hold is on the structure shown: its exercises' positions are in its trace.
+    const LogRef& log = lesson_->hasLesson() && others_.count(currentKey_)
+                            ? others_.at(currentKey_).trace
+                            : lesson_->lessonLog();
     // Presenting: a question to the room lists and counts nothing past the cursor.
     session_.setHideAhead(lesson_->asksTheRoom());
     if (!lesson_->hasLesson() || !log) {
@@ -170,9 +195,11 @@ void LessonController::updateQuizLimit() {
     // after it holds its answer (course/exercise.h; none for the kinds whose answer is not in
     // the trace). Otherwise a step, or the list, shows a later exercise's answer first.
     std::optional<std::size_t> limit;
-    for (const int i : lesson_->heldExercises())
-        if (const auto at = quizLimit(lesson_->lesson().exercises[std::size_t(i)], *log))
-            limit = limit ? std::min(*limit, *at) : *at;
+    for (const int i : lesson_->heldExercises()) {
+        const Exercise& ex = lesson_->lesson().exercises[std::size_t(i)];
+        if (lesson_->lesson().setupOf(ex.setup).key() != currentKey_) continue;
+        if (const auto at = quizLimit(ex, *log)) limit = limit ? std::min(*limit, *at) : *at;
+    }
     session_.setLimit(log, limit);
 }
 
@@ -181,8 +208,10 @@ void LessonController::applyStep(int index) {
         session_.setCursor(session_.size());
         return;
     }
-    showLessonTrace();
     const LessonStep& step = lesson_->lesson().steps[index];
+    // A step on its own structure shows it; one without goes back to the lesson's.
+    showLessonTrace(step.setup);
+    updateQuizLimit();
     if (const auto at = resolvePosition(step.at, session_.log())) session_.setCursor(*at);
     events_->setFilter(QString::fromStdString(step.filter));
     if (step.camera)
@@ -193,10 +222,49 @@ void LessonController::applyStep(int index) {
     saveProgress();
 }
 
-void LessonController::showLessonTrace() {
+std::string LessonController::shownKey() const {
+    const Lesson& l = lesson_->lesson();
+    if (lesson_->exerciseOpen() && !l.exercises.empty())
+        return l.setupOf(l.exercises[std::size_t(lesson_->exercise())].setup).key();
+    if (!l.steps.empty()) return l.setupOf(l.steps[std::size_t(lesson_->step())].setup).key();
+    return l.setup().key();
+}
+
+SceneRef LessonController::sceneOf(const std::string& key) const {
+    const auto it = others_.find(key);
+    return it != others_.end() ? it->second.scene : lessonScene_;
+}
+
+bool LessonController::showsLessonScene() const {
+    if (session_.sceneRef() == lessonScene_) return true;
+    return std::any_of(others_.begin(), others_.end(),
+                       [&](const auto& o) { return o.second.scene == session_.sceneRef(); });
+}
+
+void LessonController::showLessonTrace(const std::optional<LessonSetup>& setup) {
     if (!lesson_->hasLesson() || !lesson_->lessonLog()) return;
-    if (session_.logRef() == lesson_->lessonLog()) return;
-    session_.showLog(lesson_->lessonLog(), logKind(lesson_->lesson()));
+    currentKey_ = lesson_->lesson().setupOf(setup).key();
+    // The structure first (as the structure chooser switches it; built when the lesson opened),
+    // then its trace: the view draws the trace over the structure it was recorded through.
+    const SceneRef scene = sceneOf(currentKey_);
+    if (scene && session_.sceneRef() != scene) emit lessonSceneRequested(scene);
+    const LogRef& log = lesson_->logOf(setup);
+    if (session_.logRef() == log) return;
+    session_.showLog(log, logKind(lesson_->lesson()));
+}
+
+void LessonController::showLessonTrace() {
+    if (!lesson_->hasLesson()) return;
+    const Lesson& l = lesson_->lesson();
+    const auto it = std::find_if(l.steps.begin(), l.steps.end(), [&](const LessonStep& s) {
+        return l.setupOf(s.setup).key() == currentKey_;
+    });
+    const auto ex = std::find_if(l.exercises.begin(), l.exercises.end(), [&](const Exercise& e) {
+        return l.setupOf(e.setup).key() == currentKey_;
+    });
+    showLessonTrace(it != l.steps.end()       ? it->setup
+                    : ex != l.exercises.end() ? ex->setup
+                                              : std::nullopt);
 }
 
 void LessonController::saveProgress() {
@@ -358,12 +426,12 @@ void LessonController::showReplayText() {
 QString LessonController::replayDescription() const {
     if (!lesson_->hasLesson()) return {};
     // The structure chooser's pick, or a live edit: the lesson's trace is about another scene.
-    if (lessonScene_ && session_.sceneRef() != lessonScene_)
+    if (lessonScene_ && !showsLessonScene())
         return (session_.kind() != lessonScene_->kind
                     ? tr("the lesson's scene with another structure (%1)")
                     : tr("the lesson's scene, changed live (%1)"))
             .arg(structureName(session_.kind()));
-    if (session_.logRef() == lesson_->lessonLog()) return {};
+    if (lesson_->isLessonLog(session_.logRef())) return {};
     switch (session_.logKind()) {
         case LogKind::Pixel:
             for (auto it = session_.log().events().rbegin(); it != session_.log().events().rend();

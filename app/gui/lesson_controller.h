@@ -12,7 +12,10 @@
 
 #include <QObject>
 
+#include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 class QLabel;
 class QMainWindow;
@@ -28,10 +31,17 @@ class LessonController : public QObject {
     Q_OBJECT
   public:
     /// What a worker makes of a lesson: its scene with the structure built, and its trace.
+    /// One more structure a step or an exercise sets up: built over the lesson's scene, with
+    /// the lesson's trace through it.
+    struct Structure {
+        SceneRef scene;
+        LogRef trace;
+    };
     struct Opened {
         SceneRef scene;
         LogRef trace;
         Lesson lesson;  // the lesson with its steps' computed notes (addStepNotes)
+        std::map<std::string, Structure> others;  // by LessonSetup::key()
     };
     /// Loads the lesson's scene, builds its structure and records its trace; any thread.
     static Opened prepare(const Lesson& lesson, const ProgressFn& progress);
@@ -47,7 +57,8 @@ class LessonController : public QObject {
     /// and its notes about the replay end here, not on the new lesson's scene and trace.
     void replaceLesson();
     /// Shows a lesson whose trace the session now replays, at the step the progress was at.
-    void show(const Lesson& lesson, const LogRef& trace);
+    void show(const Lesson& lesson, const LogRef& trace,
+              std::map<std::string, Structure> others = {});
     /// The text beside a scene opened by hand: its name, description and how to replay it.
     void showSceneIntro();
     void setLanguage(Language lang);
@@ -78,13 +89,24 @@ class LessonController : public QObject {
     /// Back to the lesson after its structure was changed: the window shows its own scene and
     /// structure again (the lesson's trace is about them).
     void lessonSceneRequested(SceneRef scene);
+    /// A step's "Compare these structures on this ray".
+    void compareRequested(const std::vector<StructureChoice>& choices);
 
   private:
     void applyStep(int index);
     /// Quiz mode: the session's limit from the open exercise (course/lesson_trace.h's position).
     void updateQuizLimit();
-    /// A lesson's steps and exercises are positions in its trace: replay it again if needed.
+    /// A lesson's steps and exercises are positions in its trace: replay it again if needed,
+    /// through the structure `setup` names (a step's or an exercise's own, else the lesson's):
+    /// the window shows that structure's scene first.
+    void showLessonTrace(const std::optional<LessonSetup>& setup);
     void showLessonTrace();
+    /// The structure the shown step or open exercise is about (its LessonSetup::key).
+    std::string shownKey() const;
+    /// The scene of the lesson's structure `key` (the lesson's own when it has no other).
+    SceneRef sceneOf(const std::string& key) const;
+    /// Whether the window shows one of the lesson's structures (its own or a step's).
+    bool showsLessonScene() const;
     void saveProgress();
     /// The student is told, in a dialog, that the progress file could not be read and where it
     /// was kept (or that it could not be moved, and is left alone).
@@ -109,7 +131,9 @@ class LessonController : public QObject {
     EventList* events_;
     VtkView* view3D_;
     QMenu* lessonsMenu_ = nullptr;
-    SceneRef lessonScene_;    // the lesson's scene and structure, as its trace was recorded
+    SceneRef lessonScene_;  // the lesson's scene and structure, as its trace was recorded
+    std::map<std::string, Structure> others_;  // the other structures its steps set up
+    std::string currentKey_;                   // the structure the lesson shows now
     bool replacing_ = false;  // between replaceLesson and show: the old lesson says nothing
     Language lang_ = Language::En;
     Progress studentProgress_;

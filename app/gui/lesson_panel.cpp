@@ -293,6 +293,14 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     sweepButton_ = new QPushButton(tr("Run the sweep"));
     connect(sweepButton_, &QPushButton::clicked, this, &LessonPanel::sweepRequested);
     layout->addWidget(sweepButton_);
+    // A step's structures side by side on its ray (the step's "compare" list).
+    compareButton_ = new QPushButton(tr("Compare these structures on this ray"));
+    compareButton_->setObjectName("compareStructures");
+    connect(compareButton_, &QPushButton::clicked, this, [this] {
+        if (hasLesson_ && !lesson_.steps.empty())
+            emit compareRequested(lesson_.steps[std::size_t(step_)].compare);
+    });
+    layout->addWidget(compareButton_);
     sweepTable_ = new QTableWidget;
     sweepTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     sweepTable_->verticalHeader()->hide();
@@ -314,6 +322,7 @@ void LessonPanel::syncPicker() {
 void LessonPanel::showText(const QString& markdown) {
     hasLesson_ = false;
     log_ = nullptr;
+    others_.clear();
     exploring_ = exerciseOpen_ = false;
     heldNote_.clear();
     stepAnchor_ = -1;
@@ -326,9 +335,24 @@ void LessonPanel::showText(const QString& markdown) {
     emit quizChanged();
 }
 
-void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress) {
+const LogRef& LessonPanel::logOf(const std::optional<LessonSetup>& setup) const {
+    if (setup)
+        if (const auto it = others_.find(setup->key()); it != others_.end()) return it->second;
+    return log_;
+}
+
+bool LessonPanel::isLessonLog(const LogRef& log) const {
+    if (!log) return false;
+    if (log == log_) return true;
+    return std::any_of(others_.begin(), others_.end(),
+                       [&](const auto& o) { return o.second == log; });
+}
+
+void LessonPanel::showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress,
+                             std::map<std::string, LogRef> others) {
     lesson_ = lesson;
     log_ = std::move(log);
+    others_ = std::move(others);
     hasLesson_ = true;
     // A new lesson starts on its own trace: whatever the last one explored or was told ends.
     exploring_ = false;
@@ -449,18 +473,29 @@ std::vector<int> LessonPanel::heldExercises() const {
 }
 
 std::optional<std::pair<int, std::size_t>> LessonPanel::heldBy() const {
+    if (auto own = heldBy(lesson_.setup().key())) return own;
+    for (const auto& [key, log] : others_)
+        if (auto held = heldBy(key)) return held;
+    return std::nullopt;
+}
+
+std::optional<std::pair<int, std::size_t>> LessonPanel::heldBy(const std::string& setupKey) const {
     std::optional<std::pair<int, std::size_t>> held;
     if (!log_) return held;
-    for (const int i : heldExercises())
-        if (const auto at = quizLimit(lesson_.exercises[std::size_t(i)], *log_))
+    for (const int i : heldExercises()) {
+        const Exercise& ex = lesson_.exercises[std::size_t(i)];
+        if (lesson_.setupOf(ex.setup).key() != setupKey) continue;
+        if (const auto at = quizLimit(ex, *logOf(ex.setup)))
             if (!held || *at < held->second) held = std::pair(i, *at);
+    }
     return held;
 }
 
 bool LessonPanel::asksTheRoom() const {
     return hasLesson_ && mode_ == LessonMode::Presenting && exerciseOpen_ && !revealed_ &&
            !lesson_.exercises.empty() && !solved(exercise_) && log_ &&
-           quizLimit(lesson_.exercises[exercise_], *log_).has_value();
+           quizLimit(lesson_.exercises[exercise_], *logOf(lesson_.exercises[exercise_].setup))
+               .has_value();
 }
 
 std::optional<int> LessonPanel::quizExercise() const {
@@ -508,8 +543,9 @@ void LessonPanel::refreshText() {
         // A step past an unsolved exercise's position tells what comes after it: its text, its
         // computed note and its notes on the slides wait with the replay (a step may name the
         // next cell or the count the exercise asks for).
-        const auto held = heldBy();
-        const auto stepAt = log_ ? resolvePosition(step.at, *log_) : std::nullopt;
+        // Only the exercises of the step's own structure hold it: theirs is the same trace.
+        const auto held = heldBy(lesson_.setupOf(step.setup).key());
+        const auto stepAt = log_ ? resolvePosition(step.at, *logOf(step.setup)) : std::nullopt;
         const bool waits = held && stepAt && *stepAt > held->second;
         const QString text =
             waits ? tr("This step comes after exercise %1: answer it, or put it away, to read it.")
@@ -584,6 +620,8 @@ void LessonPanel::updateWidgets() {
     prevStep_->setEnabled(steps && step_ > 0);
     nextStep_->setEnabled(steps && step_ + 1 < static_cast<int>(lesson_.steps.size()));
     sweepButton_->setVisible(hasLesson_ && lesson_.sweep.has_value());
+    compareButton_->setVisible(steps && !lesson_.steps[std::size_t(step_)].compare.empty());
+    compareButton_->setEnabled(!exploring_);
     sweepTable_->setVisible(hasLesson_ && lesson_.sweep.has_value() && !sweepRows_.empty());
     exerciseBox_->setVisible(exercises);
     if (exercises) {
@@ -662,7 +700,7 @@ void LessonPanel::refreshExercise() {
     clearButton_->hide();
     if (split && log_ && !waits) {
         // The candidates without their cost: computing it is the exercise.
-        for (const SplitCandidate& c : splitCandidates(ex, *log_))
+        for (const SplitCandidate& c : splitCandidates(ex, *logOf(ex.setup)))
             candidates_->addItem(
                 QStringLiteral("%1 = %2   (NL %3, NR %4, P(L|C) %5, P(R|C) %6)")
                     .arg(QChar("xyz"[c.axis]))
@@ -704,6 +742,9 @@ void LessonPanel::refreshExercise() {
         case ExerciseKind::Sequence:
             answer_->setPlaceholderText(q(answerPlaceholder(ex, log_ ? log_->dims() : 2, lang_)));
             clearButton_->setVisible(!ex.ofNodes);
+            break;
+        case ExerciseKind::Overlap:
+            answer_->setPlaceholderText(q(answerPlaceholder(ex, log_ ? log_->dims() : 2, lang_)));
             break;
         case ExerciseKind::Compute: {
             answer_->setPlaceholderText(tr("your result, a number (e.g. -2.5 or 0,75)"));
@@ -836,7 +877,7 @@ void LessonPanel::check() {
     }
     Verdict v;
     try {
-        v = checkAnswer(ex, *log_, *answer, lang_, lesson_.file, sweepRows());
+        v = checkAnswer(ex, *logOf(ex.setup), *answer, lang_, lesson_.file, sweepRows());
     } catch (const LessonError& e) {
         // A lesson whose trace lacks what the exercise asks about: say so, grade nothing.
         feedback_->setProperty("correct", false);
@@ -936,8 +977,9 @@ const std::vector<GridSweepRow>* LessonPanel::sweepRows() const {
 
 bool LessonPanel::replayHeldBeforeAnswer() const {
     if (!log_ || mode_ != LessonMode::Quiz) return false;
-    const auto held = heldBy();
-    const auto answerAt = answerEventIndex(lesson_.exercises[exercise_], *log_, lesson_.file);
+    const Exercise& ex = lesson_.exercises[exercise_];
+    const auto held = heldBy(lesson_.setupOf(ex.setup).key());
+    const auto answerAt = answerEventIndex(ex, *logOf(ex.setup), lesson_.file);
     return held && answerAt && *answerAt >= held->second;
 }
 
@@ -954,7 +996,7 @@ void LessonPanel::revealAnswer() {
     }
     Verdict v;
     try {
-        v = checkAnswer(ex, *log_, Answer{}, lang_, lesson_.file, sweepRows());
+        v = checkAnswer(ex, *logOf(ex.setup), Answer{}, lang_, lesson_.file, sweepRows());
     } catch (const LessonError& e) {
         feedback_->setStyleSheet(QStringLiteral("color: #b36b00"));
         feedback_->setText(q(e.what()));

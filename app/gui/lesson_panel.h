@@ -14,6 +14,7 @@
 #include <QTextCursor>
 #include <QWidget>
 
+#include <map>
 #include <optional>
 #include <set>
 #include <utility>
@@ -50,9 +51,17 @@ class LessonPanel : public QWidget {
     /// answer against it whatever the replay shows meanwhile (a clicked pixel, a build). The
     /// panel records answers into `progress` (the window's, which it saves on `answered`); null
     /// keeps them in the panel only.
-    void showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress);
+    /// `others`: the same trace through each other structure a step or an exercise sets up, by
+    /// LessonSetup::key(); each exercise is checked against its own structure's.
+    void showLesson(const Lesson& lesson, LogRef log, LessonProgress* progress,
+                    std::map<std::string, LogRef> others = {});
     /// The lesson's trace (null when no lesson is open).
     const LogRef& lessonLog() const { return log_; }
+    /// The trace a step or an exercise of the lesson is about: its own structure's, else the
+    /// lesson's.
+    const LogRef& logOf(const std::optional<LessonSetup>& setup) const;
+    /// Whether `log` is one of the open lesson's traces (any of its structures).
+    bool isLessonLog(const LogRef& log) const;
     /// The replay shows something else than the lesson's trace (`what`, e.g. "pixel (3, 4)"):
     /// the student explores. Say so, offer the one way back, and disable the steps and the
     /// exercises (they are about the lesson's own trace). An empty `what` ends it. `hidden`:
@@ -96,6 +105,11 @@ class LessonPanel : public QWidget {
     /// (quiz mode only). The replay stops at the earliest of their positions.
     std::vector<int> heldExercises() const;
     /// The held exercise whose position comes first, and that position (the replay's limit).
+    /// Among the exercises of the structure `setupKey` (LessonSetup::key): a position is only
+    /// comparable with another in the same trace.
+    std::optional<std::pair<int, std::size_t>> heldBy(const std::string& setupKey) const;
+    /// The same over the lesson's own structure, else the first structure with a held exercise
+    /// (a message names it).
     std::optional<std::pair<int, std::size_t>> heldBy() const;
     /// Presenting mode: the shown exercise is a question to the room (open, unsolved, its answer
     /// in the trace and not revealed): nothing past the cursor is listed or counted meanwhile.
@@ -129,6 +143,8 @@ class LessonPanel : public QWidget {
     /// An answer was checked and recorded in the progress: the main window saves it.
     void answered(const QString& exerciseId, bool correct, const QString& answer);
     void sweepRequested();
+    /// The step's "Compare these structures on this ray" (its "compare" list).
+    void compareRequested(const std::vector<StructureChoice>& choices);
     /// The cells of a sequence answer so far (the 2D view numbers them); empty when none.
     void sequenceChanged(const QList<QPoint>& cells);
     /// The student started or stopped exploring (the window's Back to the lesson follows).
@@ -164,6 +180,7 @@ class LessonPanel : public QWidget {
     Language lang_ = Language::En;
     Lesson lesson_;
     LogRef log_;
+    std::map<std::string, LogRef> others_;  // by LessonSetup::key(): the other structures' traces
     bool hasLesson_ = false;
     LessonMode mode_ = LessonMode::Quiz;
     bool exploring_ = false;
@@ -218,6 +235,7 @@ class LessonPanel : public QWidget {
     QPushButton* revealButton_ = nullptr;
     QLabel* feedback_ = nullptr;
     QPushButton* sweepButton_ = nullptr;
+    QPushButton* compareButton_ = nullptr;  // a step's "compare" list
     QTableWidget* sweepTable_ = nullptr;
 };
 

@@ -202,6 +202,8 @@ void MainWindow::createDocks() {
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
     connect(lessons_, &LessonController::lessonSceneRequested, this,
             [this](SceneRef scene) { showScene(std::move(scene), !imageView_->isHidden()); });
+    connect(lessons_, &LessonController::compareRequested, this,
+            [this](const std::vector<StructureChoice>& choices) { openCompare(choices); });
 }
 
 void MainWindow::createStatusBar() {
@@ -702,7 +704,7 @@ void MainWindow::openLesson(const QString& idOrPath, bool quiet) {
             // live controls beside a 2D one.
             boardDock_->setVisible(session_.is2D() || shows(LessonView::Board));
             liveDock_->setVisible(session_.is2D());
-            lessons_->show(o.lesson, o.trace);
+            lessons_->show(o.lesson, o.trace, std::move(o.others));
             // The pixel the lesson traces, marked on the image in the lesson's own image size.
             if (lesson.trace.kind == LessonTrace::Kind::Pixel)
                 imageView_->setLessonPixel(

@@ -1,6 +1,5 @@
 // Fails, naming file:line, when code under the given folder (app/) branches on a structure's kind
-// or type (branch_check.h). The places in files named after --pending (another branch cleans
-// them, not yet merged) are listed without failing.
+// or type (branch_check.h).
 #include "branch_check.h"
 
 #include <algorithm>
@@ -14,20 +13,12 @@
 namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::cerr << "usage: check_app_branches ROOT FOLDER [--pending FILE...]\n";
+    if (argc < 3) {
+        std::cerr << "usage: check_app_branches ROOT FOLDER...\n";
         return 2;
     }
     const fs::path root = argv[1];
-    std::vector<std::string> folders, pending;
-    bool inPending = false;
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--pending")
-            inPending = true;
-        else
-            (inPending ? pending : folders).push_back(a);
-    }
+    const std::vector<std::string> folders(argv + 2, argv + argc);
     std::vector<fs::path> files;
     for (const std::string& folder : folders)
         for (const auto& e : fs::recursive_directory_iterator(root / folder))
@@ -35,21 +26,17 @@ int main(int argc, char** argv) {
                 (e.path().extension() == ".h" || e.path().extension() == ".cpp"))
                 files.push_back(e.path());
     std::sort(files.begin(), files.end());
-    int failures = 0, waiting = 0;
+    int failures = 0;
     for (const fs::path& file : files) {
         std::ifstream in(file, std::ios::binary);
         std::stringstream text;
         text << in.rdbuf();
         const std::string name = fs::relative(file, root).generic_string();
-        const bool isPending = std::find(pending.begin(), pending.end(), name) != pending.end();
         for (const auto& b : raystep::checks::findBranches(text.str())) {
-            (isPending ? std::cout : std::cerr)
-                << name << ":" << b.line << ": " << (isPending ? "pending: " : "") << b.what << ": "
-                << b.text << "\n";
-            (isPending ? waiting : failures) += 1;
+            std::cerr << name << ":" << b.line << ": " << b.what << ": " << b.text << "\n";
+            ++failures;
         }
     }
-    if (waiting) std::cout << waiting << " place(s) in files another branch cleans (--pending)\n";
     if (failures) {
         std::cerr << failures
                   << " place(s) branch on a structure's kind or type: read its row in the "

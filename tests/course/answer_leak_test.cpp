@@ -40,7 +40,7 @@ std::string giveaway(const std::string& json) {
     const Lesson l = loadLessonText(json, "leak.json");
     const LessonRun run = runLesson(l);
     try {
-        checkNoAnswerGivenAway(l, *run.log, run.scene.get());
+        checkNoAnswerGivenAway(l, run.logs(), run.scene.get());
     } catch (const LessonError& e) {
         EXPECT_EQ(e.file(), "leak.json");
         return e.what();

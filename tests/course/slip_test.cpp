@@ -133,7 +133,8 @@ TEST(Slips, TheSlidesTieAnswerAndOneAxisOfATie) {
                     "la deviazione conservativa delle slide"));
     EXPECT_TRUE(has(slipFor("13", "tie-cell", "1,0"), "(1, 0) is a step along X alone"));
     // Not a tie: a step along the axis whose tMax is not the least (tMaxX = 3.25 < tMaxY = 4).
-    EXPECT_TRUE(has(slipFor("6", "next-cell", "2,2"), "(2, 2) is a step along Y, but in (2, 1) tMaxY = 4 is not the smallest"));
+    EXPECT_TRUE(has(slipFor("6", "next-cell", "2,2"),
+                    "(2, 2) is a step along Y, but in (2, 1) tMaxY = 4 is not the smallest"));
 }
 
 /// The explanation of exercise `id` of lesson `lesson` for the answer `typed`.
@@ -201,9 +202,10 @@ TEST(RetryAdvice, NeverStepTheReplayWhileHeldNorForAnAnswerOutsideTheTrace) {
                                  (hint ? " hint" : ""));
                     const std::string en = retryAdvice(ex, held, hint, Language::En);
                     const std::string it = retryAdvice(ex, held, hint, Language::It);
-                    const bool inTrace = ex.kind != ExerciseKind::Compute &&
-                                         ex.kind != ExerciseKind::Choice &&
-                                         ex.kind != ExerciseKind::SweepPick;
+                    // An overlap's answer is the structure's boxes, drawn at every step.
+                    const bool inTrace =
+                        ex.kind != ExerciseKind::Compute && ex.kind != ExerciseKind::Choice &&
+                        ex.kind != ExerciseKind::SweepPick && ex.kind != ExerciseKind::Overlap;
                     // Step the replay only when it can be stepped and the answer is in it.
                     EXPECT_EQ(has(en, "Step the replay"), inTrace && !held) << en;
                     EXPECT_EQ(has(it, "Fai avanzare la riproduzione"), inTrace && !held) << it;

@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     raystep::fuzz::expectOwnErrorOnly<raystep::LessonError>("loadAnswerSheet + gradeAnswers", [&] {
         const raystep::AnswerSheet sheet = raystep::loadAnswerSheet(text, "fuzz-answers.json");
         if (const Recorded* r = builtinLessonRun(sheet.lesson))
-            (void)raystep::gradeAnswers(r->lesson, *r->run.log, sheet, raystep::Language::En,
+            (void)raystep::gradeAnswers(r->lesson, r->run.logs(), sheet, raystep::Language::En,
                                         "fuzz-answers.json");
     });
     return 0;
