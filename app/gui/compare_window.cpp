@@ -49,6 +49,12 @@ StructureChoice CompareWindow::choice(int i) const {
     return {s.kind(), s.options().split(s.kind())};
 }
 
+std::vector<StructureChoice> CompareWindow::choices() const {
+    std::vector<StructureChoice> out;
+    for (int i = 0; i < count(); ++i) out.push_back(choice(i));
+    return out;
+}
+
 CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : QWidget(parent) {
     const int n = static_cast<int>(prepared.size());
     auto* views = new QHBoxLayout;
@@ -107,12 +113,13 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
                         o->setCamera(v->currentCamera());
                 syncing_ = false;
             });
-    if (auto* first = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.front())) {
-        // The first view frames the set (the rest follow it), from the eye or beside it.
+    if (auto* lead = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.back())) {
+        // The last view frames the set (the rest follow it): a grid's view would frame its
+        // whole box, and the rays would be drawn small in every view.
         syncing_ = true;
         for (QWidget* other : views_)
-            if (auto* o = qobject_cast<VtkView*>(other); o && o != first)
-                o->setCamera(first->currentCamera());
+            if (auto* o = qobject_cast<VtkView*>(other); o && o != lead)
+                o->setCamera(lead->currentCamera());
         syncing_ = false;
     }
     setWindowTitle(tr("raystep - compare %1").arg(names.join(QStringLiteral(" | "))));
@@ -176,14 +183,14 @@ CompareWindow::CompareWindow(Prepared prepared, Pixel pixel, QWidget* parent) : 
         layout->addWidget(key);
     }
     auto* stepRow = new QHBoxLayout;
-    if (auto* first = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.front())) {
+    if (auto* lead = views_.empty() ? nullptr : qobject_cast<VtkView*>(views_.back())) {
         // One pair of camera buttons for every view (each view's own would not fit four wide).
         auto* eye = new QPushButton(tr("View from the eye"));
         auto* beside = new QPushButton(tr("Beside the eye"));
         eye->setObjectName("compareFromEye");
         beside->setObjectName("compareBesideEye");
-        connect(eye, &QPushButton::clicked, first, &VtkView::viewFromEye);
-        connect(beside, &QPushButton::clicked, first, &VtkView::frameBesideEye);
+        connect(eye, &QPushButton::clicked, lead, &VtkView::viewFromEye);
+        connect(beside, &QPushButton::clicked, lead, &VtkView::frameBesideEye);
         stepRow->addWidget(eye);
         stepRow->addWidget(beside);
     }

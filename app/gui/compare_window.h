@@ -44,6 +44,8 @@ class CompareWindow : public QWidget {
     Session& session(int i) { return *sessions_[i]; }
     /// What column i compares (its kind and, for a tree, its split).
     StructureChoice choice(int i) const;
+    /// Every column's, in order.
+    std::vector<StructureChoice> choices() const;
     QTableWidget* table() const { return table_; }
     /// The table's rows, by what they count (tests use them to find a row).
     enum Row {

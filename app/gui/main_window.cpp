@@ -196,7 +196,7 @@ void MainWindow::createDocks() {
     // The compare window replays whole traces: it closes when an exercise comes to hold the
     // replay (a lesson opened, a mode changed), and with its scene (showScene).
     connect(&session_, &Session::limitChanged, this, [this] {
-        if (compare_ && session_.held()) compare_->close();
+        if (compare_ && (session_.held() || heldAmong(compare_->choices()))) compare_->close();
         if (chooser_ && session_.held()) chooser_->reject();
     });
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
@@ -809,6 +809,31 @@ void MainWindow::openCompare() {
     openCompare(defaultComparison(session_.kind()));
 }
 
+std::optional<std::pair<int, StructureChoice>> MainWindow::heldAmong(
+    const std::vector<StructureChoice>& choices) const {
+    // Each column replays its whole trace and counts it: not one that an unsolved exercise of
+    // the lesson asks about (lesson 10 asks each structure's tests), whichever is shown now.
+    for (const StructureChoice& c : choices) {
+        LessonSetup setup{c.kind, session_.options()};
+        if (c.split) setup.options.setSplit(*c.split);
+        if (const auto held = lesson_->heldBy(setup.key())) return std::pair(held->first, c);
+    }
+    return std::nullopt;
+}
+
+bool MainWindow::refusedWhileAnyHeld(const std::vector<StructureChoice>& choices) {
+    if (refusedWhileHeld(tr("compare structures on the ray"))) return true;
+    const auto held = heldAmong(choices);
+    if (!held) return false;
+    const QString why = tr("Exercise %1 asks about the %2: answer it first, or put it away, to "
+                           "compare structures on the ray.")
+                            .arg(held->first + 1)
+                            .arg(choiceLabel(held->second));
+    lesson_->showHeldNote(why);
+    statusBar()->showMessage(why, 10000);
+    return true;
+}
+
 void MainWindow::chooseCompare() {
     if (!session_.hasScene()) {
         statusBar()->showMessage(tr("No scene is open: nothing to compare."));
@@ -842,8 +867,8 @@ void MainWindow::openCompare(const std::vector<StructureChoice>& choices) {
         return;
     }
     if (choices.empty()) return;
-    // Compare mode replays whole traces: not while an exercise holds the replay (quiz mode).
-    if (refusedWhileHeld(tr("compare structures on the ray"))) return;
+    // Compare mode replays whole traces: not while an exercise holds them (quiz mode).
+    if (refusedWhileAnyHeld(choices)) return;
     // 3D: the pixel being replayed, in the image it is a pixel of (its event says: clicked on
     // the image, or a lesson's), else the image's centre.
     CompareWindow::Pixel pixel{kImageWidth / 2, kImageHeight / 2, kImageWidth, kImageHeight};
@@ -863,10 +888,11 @@ void MainWindow::openCompare(const std::vector<StructureChoice>& choices) {
         [scene = session_.sceneRef(), choices](const ProgressFn& progress) {
             return CompareWindow::prepare(scene, choices, progress);
         },
-        [this, generation, pixel](CompareWindow::Prepared&& prepared, const TaskOutcome& outcome) {
+        [this, generation, pixel, choices](CompareWindow::Prepared&& prepared,
+                                           const TaskOutcome& outcome) {
             if (outcome.superseded || generation != generation_) return;
             // An exercise may have come to hold the replay while the structures were built.
-            if (refusedWhileHeld(tr("compare structures on the ray"))) return;
+            if (refusedWhileAnyHeld(choices)) return;
             if (outcome.cancelled) {
                 statusBar()->showMessage(tr("Compare cancelled"));
                 return;

@@ -277,6 +277,11 @@ class MainWindow : public QMainWindow {
     /// and the lesson panel and the status bar say why (`toWhat`: "replay the build"). True if
     /// refused.
     bool refusedWhileHeld(const QString& toWhat);
+    /// The same for a comparison: also while an unsolved exercise asks about one of `choices`.
+    bool refusedWhileAnyHeld(const std::vector<StructureChoice>& choices);
+    /// The first unsolved exercise (quiz mode) that asks about one of `choices`, and which.
+    std::optional<std::pair<int, StructureChoice>> heldAmong(
+        const std::vector<StructureChoice>& choices) const;
     void finishOpen(bool ok, const QString& error);
     /// A warning that does not block the event loop (no nested loop: the window goes on).
     void warn(const QString& title, const QString& text);

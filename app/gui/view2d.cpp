@@ -82,7 +82,7 @@ static QString roleName(PaletteRole r) {
         case PaletteRole::Tested:
             return View2D::tr("tested primitive");
         case PaletteRole::Skipped:
-            return View2D::tr("skipped (mailbox)");
+            return View2D::tr("skipped: a primitive (mailbox) or a node");
         case PaletteRole::Hit:
             return View2D::tr("nearest hit");
         case PaletteRole::Candidate:

@@ -1,6 +1,7 @@
 // A lesson step or exercise on its own structure (docs/lesson-format.md, "setup" on a step or an
 // exercise): the window switches to that structure and its trace of the lesson's ray, holds it
 // as the lesson's, and a step without a setup returns to the lesson's structure.
+#include "compare_window.h"
 #include "gui_testing.h"
 #include "lesson_panel.h"
 #include "main_window.h"
@@ -15,6 +16,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -150,6 +152,67 @@ TEST(LessonStructure, AnExerciseOnTheBvhHoldsTheBvhsTrace) {
     EXPECT_EQ(w.session().logRef(), p->lessonLog());
     EXPECT_TRUE(w.session().held());
     EXPECT_EQ(w.session().end(), 0u);
+}
+
+// Lesson 10 reopened where it was left, on a BVH exercise: going back to a step on the lesson's own
+// kd-tree shows the lesson's trace, not "exploring the example ray" (the i18n test found it).
+TEST(LessonStructure, ReopenedOnAStepOfAnotherStructureTheFirstStepIsTheLessons) {
+    clearProgress();
+    for (int run = 0; run < 2; ++run) {
+        SCOPED_TRACE(run ? "reopened on a BVH exercise" : "opened afresh");
+        MainWindow w;
+        w.setLessonMode(LessonMode::Presenting);
+        ASSERT_TRUE(openLesson(w, "hierarchies"));  // not shown: as the i18n test walks it
+        w.tasks().cancel(TaskKind::Render);
+        LessonPanel* p = w.lessonPanel();
+        for (const int step : {0, 9, 0, 7, 1}) {
+            p->goToStep(step);
+            QApplication::processEvents();
+            EXPECT_TRUE(p->replayNote().isEmpty())
+                << "step " << step + 1 << ": " << p->replayNote().toStdString();
+            EXPECT_TRUE(p->isLessonLog(w.session().logRef())) << "step " << step + 1;
+            EXPECT_EQ(w.session().kind(), step >= 6 ? AccelKind::Bvh : AccelKind::KdTree);
+        }
+        for (int step = 0; step < 10; ++step) p->goToStep(step);
+        for (int e = 0; e < 10; ++e) p->selectExercise(e);  // the last, tests-bvh, on the BVH
+        QApplication::processEvents();
+    }
+}
+
+// Quiz mode: the compare window would replay and count the BVH's whole trace, which the BVH's
+// unsolved exercise asks about, even while the kd-tree is shown: refused until it is answered.
+TEST(LessonStructure, CompareWaitsForAnExerciseOnAStructureItShows) {
+    Opened o;
+    MainWindow& w = o.w;
+    LessonPanel* p = w.lessonPanel();
+    p->closeExercise();  // the kd-tree's exercise put away: the kd-tree's trace is free
+    p->goToStep(2);
+    QApplication::processEvents();
+    ASSERT_EQ(w.session().kind(), AccelKind::KdTree);
+    ASSERT_FALSE(w.session().held());
+    QPushButton* compare = p->findChild<QPushButton*>("compareStructures");
+    ASSERT_NE(compare, nullptr);
+    QTest::mouseClick(compare, Qt::LeftButton);
+    EXPECT_TRUE(w.waitUntilIdle());
+    EXPECT_EQ(w.compareWindow(), nullptr);
+    EXPECT_TRUE(w.statusBar()->currentMessage().startsWith(
+        "Exercise 2 asks about the BVH, SAH: answer it first"))
+        << w.statusBar()->currentMessage().toStdString();
+    // The BVH's exercise answered (one test), the comparison opens.
+    p->selectExercise(1);
+    QApplication::processEvents();
+    auto* answer = p->findChild<QLineEdit*>("answer");
+    ASSERT_NE(answer, nullptr);
+    answer->setText("1");
+    QTest::mouseClick(buttonNamed(p, QStringLiteral("Check")), Qt::LeftButton);
+    QApplication::processEvents();
+    p->goToStep(2);
+    QApplication::processEvents();
+    QTest::mouseClick(compare, Qt::LeftButton);
+    EXPECT_TRUE(w.waitUntilIdle());
+    ASSERT_TRUE(waitFor([&] { return w.compareWindow() != nullptr; }));
+    EXPECT_EQ(w.compareWindow()->count(), 2);
+    w.compareWindow()->close();
 }
 
 }  // namespace
