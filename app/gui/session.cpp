@@ -45,7 +45,10 @@ SceneRef Session::rebuild(const SceneRef& from, AccelKind kind, const AccelOptio
     return l;
 }
 
-SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& options) {
+namespace {
+/// A scene made in code (2D or 3D) with its structure built.
+template <typename AnyScene>
+SceneRef prepared(AnyScene scene, AccelKind kind, const AccelOptions& options) {
     auto l = std::make_shared<LoadedScene>();
     l->name = scene.name;
     l->scene = std::move(scene);
@@ -54,15 +57,14 @@ SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& opt
     buildIn(*l, options);
     return l;
 }
+}  // namespace
+
+SceneRef Session::prepare(Scene2D scene, AccelKind kind, const AccelOptions& options) {
+    return prepared(std::move(scene), kind, options);
+}
 
 SceneRef Session::prepare(Scene scene, AccelKind kind, const AccelOptions& options) {
-    auto l = std::make_shared<LoadedScene>();
-    l->name = scene.name;
-    l->scene = std::move(scene);
-    l->kind = kind;
-    l->options = options;
-    buildIn(*l, options);
-    return l;
+    return prepared(std::move(scene), kind, options);
 }
 
 LogRef Session::recordBuild(const SceneRef& scene, const ProgressFn& progress) {
