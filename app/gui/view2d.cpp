@@ -76,7 +76,7 @@ static QString rayLegendLabel(Language lang) {
 static QString roleName(PaletteRole r) {
     switch (r) {
         case PaletteRole::Visited:
-            return View2D::tr("visited cell");
+            return View2D::tr("visited cell or node");
         case PaletteRole::Current:
             return View2D::tr("current cell or node");
         case PaletteRole::Tested:
