@@ -76,13 +76,13 @@ static QString rayLegendLabel(Language lang) {
 static QString roleName(PaletteRole r) {
     switch (r) {
         case PaletteRole::Visited:
-            return View2D::tr("visited cell or node");
+            return View2D::tr("visited");
         case PaletteRole::Current:
             return View2D::tr("current cell or node");
         case PaletteRole::Tested:
             return View2D::tr("tested primitive");
         case PaletteRole::Skipped:
-            return View2D::tr("skipped: a primitive (mailbox) or a node");
+            return View2D::tr("skipped");
         case PaletteRole::Hit:
             return View2D::tr("nearest hit");
         case PaletteRole::Candidate:
