@@ -174,7 +174,7 @@ double sweepMetric(const Exercise& ex, const GridSweepRow& r) {
 
 /// The nodes an overlap exercise is about: every node of the tree (the trace's node boxes),
 /// with no event of their own (the structure is drawn whole, whatever the replay's step).
-std::vector<std::pair<std::uint32_t, std::size_t>> enteredNodes(const Context& c) {
+std::vector<std::pair<std::uint32_t, std::size_t>> treeNodes(const Context& c) {
     std::vector<std::pair<std::uint32_t, std::size_t>> out;
     for (std::size_t id = 0; id < c.log.nodes().size(); ++id)
         out.emplace_back(static_cast<std::uint32_t>(id), 0);
@@ -475,7 +475,7 @@ Reference reference(const Context& c, Language lang) {
         case ExerciseKind::Overlap: {
             if (log.nodes().empty())
                 c.fail("an overlap exercise needs a tree: its trace has no node boxes");
-            const auto entered = enteredNodes(c);
+            const auto entered = treeNodes(c);
             // Every pair that overlaps, by the later node's id.
             std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
             for (std::size_t j = 1; j < entered.size(); ++j)
@@ -492,8 +492,8 @@ Reference reference(const Context& c, Language lang) {
             why = trf(
                 lang,
                 "Node %1's box %2 and node %3's box %4 share space, and neither lies inside "
-                "the other: a ray there must test both. The pairs of the tree's boxes that "
-                "overlap: %5.",
+                "the other: a ray through the shared space must enter both. The pairs of the "
+                "tree's boxes that overlap: %5.",
                 {std::to_string(pairs[0].first), nodeBoxText(log, pairs[0].first, lang),
                  std::to_string(pairs[0].second), nodeBoxText(log, pairs[0].second, lang), all});
             break;
@@ -505,7 +505,7 @@ Reference reference(const Context& c, Language lang) {
 /// Why two nodes given for an overlap are not a right pair.
 std::string overlapSlip(const Context& c, const Answer& given, Language lang) {
     if (given.numbers.size() != 2) return "";
-    const auto entered = enteredNodes(c);
+    const auto entered = treeNodes(c);
     const auto id = [](double v) { return std::to_string(static_cast<long long>(v)); };
     for (const double v : given.numbers)
         if (std::none_of(entered.begin(), entered.end(),
@@ -1159,7 +1159,7 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
         case ExerciseKind::Overlap: {
             // Any pair of the tree's boxes that overlap is right, in either order.
             if (answer.numbers.size() != 2) break;
-            const auto entered = enteredNodes(c);
+            const auto entered = treeNodes(c);
             const auto in = [&](double v) {
                 return std::any_of(entered.begin(), entered.end(),
                                    [&](const auto& e) { return double(e.first) == v; });
