@@ -1,9 +1,9 @@
 // Answer sheets: loadAnswerSheet on the input; a sheet that loads and names a built-in lesson is
 // then graded against that lesson's trace (parseAnswer reads every answer as typed text).
-#include "fuzz_support.h"
 #include "course/grading.h"
 #include "course/lesson.h"
 #include "course/lesson_trace.h"
+#include "fuzz_support.h"
 
 #include <map>
 
