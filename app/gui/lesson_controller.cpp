@@ -222,14 +222,6 @@ void LessonController::applyStep(int index) {
     saveProgress();
 }
 
-std::string LessonController::shownKey() const {
-    const Lesson& l = lesson_->lesson();
-    if (lesson_->exerciseOpen() && !l.exercises.empty())
-        return l.setupOf(l.exercises[std::size_t(lesson_->exercise())].setup).key();
-    if (!l.steps.empty()) return l.setupOf(l.steps[std::size_t(lesson_->step())].setup).key();
-    return l.setup().key();
-}
-
 SceneRef LessonController::sceneOf(const std::string& key) const {
     const auto it = others_.find(key);
     return it != others_.end() ? it->second.scene : lessonScene_;
@@ -251,20 +243,6 @@ void LessonController::showLessonTrace(const std::optional<LessonSetup>& setup) 
     const LogRef& log = lesson_->logOf(setup);
     if (session_.logRef() == log) return;
     session_.showLog(log, logKind(lesson_->lesson()));
-}
-
-void LessonController::showLessonTrace() {
-    if (!lesson_->hasLesson()) return;
-    const Lesson& l = lesson_->lesson();
-    const auto it = std::find_if(l.steps.begin(), l.steps.end(), [&](const LessonStep& s) {
-        return l.setupOf(s.setup).key() == currentKey_;
-    });
-    const auto ex = std::find_if(l.exercises.begin(), l.exercises.end(), [&](const Exercise& e) {
-        return l.setupOf(e.setup).key() == currentKey_;
-    });
-    showLessonTrace(it != l.steps.end()       ? it->setup
-                    : ex != l.exercises.end() ? ex->setup
-                                              : std::nullopt);
 }
 
 void LessonController::saveProgress() {

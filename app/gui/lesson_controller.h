@@ -100,9 +100,6 @@ class LessonController : public QObject {
     /// through the structure `setup` names (a step's or an exercise's own, else the lesson's):
     /// the window shows that structure's scene first.
     void showLessonTrace(const std::optional<LessonSetup>& setup);
-    void showLessonTrace();
-    /// The structure the shown step or open exercise is about (its LessonSetup::key).
-    std::string shownKey() const;
     /// The scene of the lesson's structure `key` (the lesson's own when it has no other).
     SceneRef sceneOf(const std::string& key) const;
     /// Whether the window shows one of the lesson's structures (its own or a step's).
