@@ -54,12 +54,12 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
         ->transform(wholeNumber(1, kMaxImageSide))
         ->capture_default_str();
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (default: the scene's)")
-        ->transform(wholeNumber(0, 64));
+        ->transform(wholeNumber(0, kMaxBounces));
     cmd->add_option("--spp", a.spp, "Samples per pixel (default: the scene's)")
-        ->transform(wholeNumber(1, 4096));
+        ->transform(wholeNumber(1, kMaxSpp));
     cmd->add_option("--diffuse-samples", a.diffuseSamples,
                     "Diffuse bounce rays at the first diffuse hit (default: the scene's)")
-        ->transform(wholeNumber(0, 1024));
+        ->transform(wholeNumber(0, kMaxDiffuseSamples));
     cmd->add_option("--threads", a.threads, "Threads (default: all cores)")
         ->transform(wholeNumber(1, 1024));
     cmd->add_flag("--json", a.json, "Print the table as JSON");

@@ -33,11 +33,11 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     cmd->add_option("--height", a.height, "Image height in pixels")
         ->transform(wholeNumber(1, kMaxImageSide));
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (0 = primary rays only)")
-        ->transform(wholeNumber(0, 64));
-    cmd->add_option("--spp", a.spp, "Jittered samples per pixel")->transform(wholeNumber(1, 4096));
+        ->transform(wholeNumber(0, kMaxBounces));
+    cmd->add_option("--spp", a.spp, "Jittered samples per pixel")->transform(wholeNumber(1, kMaxSpp));
     cmd->add_option("--diffuse-samples", a.diffuseSamples,
                     "Random diffuse bounce rays at the first diffuse hit (0 = none)")
-        ->transform(wholeNumber(0, 1024));
+        ->transform(wholeNumber(0, kMaxDiffuseSamples));
     addAccelOptions(cmd, a.accel);
     a.accelOption = cmd->get_option("--accel");
     cmd->add_option("--ray-offset", a.rayOffset,
@@ -113,7 +113,7 @@ int runRender(const RenderArgs& a) {
     opt.seed = a.seed;
     opt.trace.rayOffset = *offset;
 
-    // Every cap allows a render of years (8192^2 pixels x 4096 samples x 1024 diffuse rays): its
+    // Every cap (kMaxImageSide, kMaxSpp, kMaxDiffuseSamples) allows a render of years: its
     // size said before it starts, in rays and in time at a brisk pace. Ctrl+C stops it.
     const double rays = double(opt.width) * opt.height * opt.spp * (1.0 + opt.trace.diffuseSamples);
     if (rays > 1e11) {

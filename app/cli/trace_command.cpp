@@ -37,10 +37,10 @@ void addTraceCommand(CLI::App& app, TraceArgs& a) {
     cmd->add_option("--height", a.height, "Image height in pixels")
         ->transform(wholeNumber(1, kMaxImageSide));
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays")
-        ->transform(wholeNumber(0, 64));
-    cmd->add_option("--spp", a.spp, "Samples per pixel")->transform(wholeNumber(1, 4096));
+        ->transform(wholeNumber(0, kMaxBounces));
+    cmd->add_option("--spp", a.spp, "Samples per pixel")->transform(wholeNumber(1, kMaxSpp));
     cmd->add_option("--diffuse-samples", a.diffuseSamples, "Diffuse bounce rays")
-        ->transform(wholeNumber(0, 1024));
+        ->transform(wholeNumber(0, kMaxDiffuseSamples));
     cmd->add_option("--seed", a.seed, "Seed of the random numbers")
         ->transform(wholeNumber(0, UINT64_MAX))
         ->capture_default_str();

@@ -520,11 +520,11 @@ void MainWindow::createRenderSettings() {
         connect(b, &QSpinBox::valueChanged, this, [this] { scheduleRender(); });
         return b;
     };
-    bouncesBox_ = box(tr("&Bounces"), "renderBounces", 0, 64,
+    bouncesBox_ = box(tr("&Bounces"), "renderBounces", 0, kMaxBounces,
                       tr("Depth of secondary rays (reflection, refraction, diffuse)"));
-    diffuseBox_ = box(tr("&Diffuse samples"), "renderDiffuseSamples", 0, 1024,
+    diffuseBox_ = box(tr("&Diffuse samples"), "renderDiffuseSamples", 0, kMaxDiffuseSamples,
                       tr("Diffuse bounce rays at the first diffuse hit: colour bleeding"));
-    sppBox_ = box(tr("&Samples per pixel"), "renderSpp", 1, 4096,
+    sppBox_ = box(tr("&Samples per pixel"), "renderSpp", 1, kMaxSpp,
                   tr("Jittered samples per pixel: the last pass of the progressive render"));
     addToolBar(Qt::TopToolBarArea, renderBar_);
     // A 2D scene has no image to render: its settings would only take the lecturer's room.

@@ -60,8 +60,13 @@ struct RenderSettings {
     int diffuseSamples = 0;
 };
 
-/// Limits on the image size (documented in docs/scene-format.md).
+/// The render limits, written only here: the scene file, the CLI's options and their help, and
+/// the app's render controls all read them (documented in docs/scene-format.md). Each allows a
+/// render of years; they only keep a typo from overflowing a counter.
 constexpr int kMaxImageSide = 8192;
+constexpr int kMaxBounces = 64;
+constexpr int kMaxSpp = 4096;
+constexpr int kMaxDiffuseSamples = 1024;
 
 /// Intersection with one primitive of the scene.
 struct Hit {

@@ -83,11 +83,11 @@ void readRender(const Reader& r, const json& j, const std::string& path, RenderS
         s.height = r.integer(v, p, 1, kMaxImageSide);
     });
     ifPresent(j, path, "bounces",
-              [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, 64); });
+              [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, kMaxBounces); });
     ifPresent(j, path, "spp",
-              [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, 4096); });
+              [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, kMaxSpp); });
     ifPresent(j, path, "diffuse_samples", [&](const json& v, const std::string& p) {
-        s.diffuseSamples = r.integer(v, p, 0, 1024);
+        s.diffuseSamples = r.integer(v, p, 0, kMaxDiffuseSamples);
     });
 }
 
