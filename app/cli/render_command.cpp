@@ -34,7 +34,8 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
         ->transform(wholeNumber(1, kMaxImageSide));
     cmd->add_option("--bounces", a.bounces, "Depth of secondary rays (0 = primary rays only)")
         ->transform(wholeNumber(0, kMaxBounces));
-    cmd->add_option("--spp", a.spp, "Jittered samples per pixel")->transform(wholeNumber(1, kMaxSpp));
+    cmd->add_option("--spp", a.spp, "Jittered samples per pixel")
+        ->transform(wholeNumber(1, kMaxSpp));
     cmd->add_option("--diffuse-samples", a.diffuseSamples,
                     "Random diffuse bounce rays at the first diffuse hit (0 = none)")
         ->transform(wholeNumber(0, kMaxDiffuseSamples));

@@ -1,10 +1,10 @@
 #pragma once
 // The scene model: only what the lecture needs (pinhole camera, point lights, spheres,
 // triangles, Phong materials with reflection, transparency and a checker texture).
-#include "raystep/scene/camera.h"
-#include "raystep/geometry/kernels.h"
 #include "raystep/base/math.h"
 #include "raystep/base/ray.h"
+#include "raystep/geometry/kernels.h"
+#include "raystep/scene/camera.h"
 
 #include <cstdint>
 #include <string>

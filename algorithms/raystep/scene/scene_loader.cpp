@@ -82,8 +82,9 @@ void readRender(const Reader& r, const json& j, const std::string& path, RenderS
     ifPresent(j, path, "height", [&](const json& v, const std::string& p) {
         s.height = r.integer(v, p, 1, kMaxImageSide);
     });
-    ifPresent(j, path, "bounces",
-              [&](const json& v, const std::string& p) { s.bounces = r.integer(v, p, 0, kMaxBounces); });
+    ifPresent(j, path, "bounces", [&](const json& v, const std::string& p) {
+        s.bounces = r.integer(v, p, 0, kMaxBounces);
+    });
     ifPresent(j, path, "spp",
               [&](const json& v, const std::string& p) { s.spp = r.integer(v, p, 1, kMaxSpp); });
     ifPresent(j, path, "diffuse_samples", [&](const json& v, const std::string& p) {
