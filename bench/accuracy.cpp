@@ -9,7 +9,7 @@
 #include "raystep/base/rng.h"
 #include "raystep/geometry/kernels.h"
 #include "raystep/render/image.h"
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>

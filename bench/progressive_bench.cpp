@@ -1,7 +1,7 @@
 // "Ray trace this view" on a big mesh: after a camera move, how soon the first (coarse) picture
 // and the full 640x480 image at 1 spp are there, on the Stanford bunny (69,666 triangles) with the
 // SAH kd-tree and the SAH BVH. Run: build/bench/raystep_bench_progressive (docs/performance.md).
-#include "raystep/render/progressive.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>
@@ -62,8 +62,10 @@ Camera movedCamera(const Scene& s, int step) {
     return c;
 }
 
-ProgressiveOptions options(const Scene& s, int step, int threads) {
-    ProgressiveOptions o;
+RenderOptions options(const Scene& s, int step, int threads) {
+    RenderOptions o;
+    o.firstBlock = 8;  // the app's passes
+    o.refine = true;
     o.camera = movedCamera(s, step);
     o.width = 640;
     o.height = 480;
@@ -104,14 +106,10 @@ void plainRender(benchmark::State& state, AccelKind kind) {
     const Prepared& p = prepared(kind);
     int step = 0;
     for (auto _ : state) {
-        const ProgressiveOptions o = options(p.scene, ++step, int(state.range(0)));
-        RenderOptions r;
-        r.width = o.width;
-        r.height = o.height;
-        r.trace = o.trace;
-        r.threads = o.threads;
-        r.camera = o.camera;
-        const RenderResult img = render(p.scene, p.accel, r);
+        RenderOptions o = options(p.scene, ++step, int(state.range(0)));
+        o.firstBlock = 1;  // one pass
+        o.refine = false;
+        const RenderResult img = render(p.scene, p.accel, o);
         benchmark::DoNotOptimize(img.image.pixels.data());
     }
 }

@@ -1,5 +1,5 @@
 // Whole renders: the figures of docs/performance.md. Run: build/bench/raystep_bench_render
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>

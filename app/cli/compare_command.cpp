@@ -5,7 +5,7 @@
 #include "progress.h"
 #include "tree_report.h"
 
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 

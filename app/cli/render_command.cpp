@@ -6,7 +6,7 @@
 
 #include "raystep/accel/outline.h"
 #include "raystep/render/image.h"
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/model_import.h"
 #include "raystep/scene/scene_loader.h"
 

@@ -20,7 +20,7 @@
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
-#include "raystep/render/progressive.h"
+#include "raystep/render/render.h"
 #include "raystep/render/tracer.h"
 #include "raystep/scene/scene_loader.h"
 #include "raystep/trace/trace_io.h"
@@ -625,7 +625,9 @@ void MainWindow::renderImage() {
         TaskKind::Render, tr("Rendering %1...").arg(QString::fromStdString(session_.name())),
         [ref = session_.sceneRef(), f, box](const ProgressFn& progress) {
             const Scene& s = std::get<Scene>(ref->scene);
-            ProgressiveOptions o;
+            RenderOptions o;
+            o.firstBlock = 8;  // a coarse picture at once, then the samples doubling
+            o.refine = true;
             o.camera = f.camera;
             o.width = f.width;
             o.height = f.height;

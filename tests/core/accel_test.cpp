@@ -3,7 +3,7 @@
 #include "raystep/accel/accel.h"
 #include "meshes.h"
 #include "raystep/base/rng.h"
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>

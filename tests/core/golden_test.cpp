@@ -1,7 +1,7 @@
 // Small golden images: regressions in the whole pipeline show as pixel differences.
 // The references are renders reviewed by eye when they were made (tests/data/golden/README.md);
 // RAYSTEP_UPDATE_GOLDEN=1 rewrites them after an intended change.
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
-// The progressive render: coarse blocks first, then every pixel, then more samples; its last pass
-// is render()'s image of the same camera, and it stops when asked.
-#include "raystep/render/progressive.h"
+// The render loop: progressive passes (coarse blocks first, then every pixel, then more samples)
+// and the one pass of render() both end on the image of each pixel traced on its own, and stop
+// when asked.
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -19,19 +20,33 @@ Camera turnedCamera(const Scene& s) {
     return c;
 }
 
-/// The independent reference: render() of a copy of the scene whose own camera is `camera`.
-RenderResult referenceRender(Scene s, const Camera& camera, const ProgressiveOptions& o,
+/// The app's passes: 8x8 blocks first, then the samples doubling.
+RenderOptions progressive() {
+    RenderOptions o;
+    o.firstBlock = 8;
+    o.refine = true;
+    return o;
+}
+
+/// The independent reference: each pixel of a copy of the scene whose own camera is `camera`,
+/// traced alone by Tracer::renderPixel, in no loop of the render's.
+RenderResult referenceRender(Scene s, const Camera& camera, const RenderOptions& o,
                              AccelKind kind) {
     s.camera = camera;
     const Accelerator accel = buildAccelerator(s, kind);
-    RenderOptions r;
-    r.width = o.width;
-    r.height = o.height;
-    r.spp = o.spp;
-    r.trace = o.trace;
-    r.seed = o.seed;
-    r.threads = 1;
-    return render(s, accel, r);
+    RenderOptions r = o;
+    r.camera.reset();
+    const Tracer tracer(s, accel, r.trace);
+    RenderResult out;
+    out.image = Image(r.width, r.height);
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x) {
+            RayCounters pixel;
+            out.image.at(x, y) = tracer.renderPixel(x, y, r, pixel);
+            out.costPerPixel.push_back(pixel.traversal.primitiveTests);
+            out.counters += pixel;
+        }
+    return out;
 }
 
 void expectSameImage(const Image& a, const Image& b) {
@@ -53,12 +68,45 @@ TEST(Progressive, PlanHalvesTheBlocksThenDoublesTheSamples) {
         EXPECT_EQ(plan[i].samples, want[i].second) << i;
     }
     EXPECT_EQ(progressivePlan(1, 1).size(), 1u);
+    // Without refining: the coarse passes, then every pixel with all its samples at once.
+    const auto once = progressivePlan(1, 6, false);
+    ASSERT_EQ(once.size(), 1u);
+    EXPECT_EQ(once[0].block, 1);
+    EXPECT_EQ(once[0].samples, 6);
+    const auto coarse = progressivePlan(4, 3, false);
+    ASSERT_EQ(coarse.size(), 3u);
+    EXPECT_EQ(coarse[1].block, 2);
+    EXPECT_EQ(coarse[2].block, 1);
+    EXPECT_EQ(coarse[2].samples, 3);
+}
+
+TEST(Render, OnePassAndPassesGiveEveryPixelAsTracedAlone) {
+    // render() in its default one pass, and in the app's passes, against each pixel on its own.
+    const Scene scene = loadBuiltinScene("cornell");
+    const Accelerator accel = buildAccelerator(scene, AccelKind::Grid);
+    for (const bool passes : {false, true}) {
+        RenderOptions o = passes ? progressive() : RenderOptions{};
+        o.width = 37;
+        o.height = 29;
+        o.spp = 3;
+        o.trace.bounces = 2;
+        o.trace.diffuseSamples = 2;
+        o.threads = 2;
+        const RenderResult r = render(scene, accel, o);
+        const RenderResult ref = referenceRender(scene, scene.camera, o, AccelKind::Grid);
+        SCOPED_TRACE(passes ? "passes" : "one pass");
+        EXPECT_FALSE(r.cancelled);
+        expectSameImage(r.image, ref.image);
+        EXPECT_EQ(r.costPerPixel, ref.costPerPixel);
+        EXPECT_EQ(r.counters.totalRays(), ref.counters.totalRays());
+        EXPECT_EQ(r.counters.traversal.primitiveTests, ref.counters.traversal.primitiveTests);
+    }
 }
 
 TEST(Progressive, LastPassIsRenderOfTheSameCameraOneSample) {
     const Scene scene = loadBuiltinScene("whitted");
     const Accelerator accel = buildAccelerator(scene, AccelKind::KdTree);
-    ProgressiveOptions o;
+    RenderOptions o = progressive();
     o.camera = turnedCamera(scene);
     o.width = 101;  // not a multiple of any block: the edges' blocks are cut
     o.height = 67;
@@ -68,7 +116,7 @@ TEST(Progressive, LastPassIsRenderOfTheSameCameraOneSample) {
     ProgressiveRender p(scene, accel, o);
     ASSERT_TRUE(p.run());
     EXPECT_EQ(p.passesDone(), 4u);
-    const RenderResult ref = referenceRender(scene, o.camera, o, AccelKind::KdTree);
+    const RenderResult ref = referenceRender(scene, *o.camera, o, AccelKind::KdTree);
     expectSameImage(p.image(), ref.image);
     EXPECT_EQ(p.costPerPixel(), ref.costPerPixel);
     // Each pixel traced once over the four passes: as many primary rays as pixels.
@@ -79,7 +127,7 @@ TEST(Progressive, LastPassIsRenderWithSamplesAndDiffuseBounces) {
     // Cornell: jittered samples and random diffuse directions, both from each pixel's stream.
     const Scene scene = loadBuiltinScene("cornell");
     const Accelerator accel = buildAccelerator(scene, AccelKind::Bvh);
-    ProgressiveOptions o;
+    RenderOptions o = progressive();
     o.camera = turnedCamera(scene);
     o.width = 45;
     o.height = 38;
@@ -90,7 +138,7 @@ TEST(Progressive, LastPassIsRenderWithSamplesAndDiffuseBounces) {
     ProgressiveRender p(scene, accel, o);
     ASSERT_TRUE(p.run());
     EXPECT_EQ(p.lastPass()->samples, 5);
-    const RenderResult ref = referenceRender(scene, o.camera, o, AccelKind::Bvh);
+    const RenderResult ref = referenceRender(scene, *o.camera, o, AccelKind::Bvh);
     expectSameImage(p.image(), ref.image);
     EXPECT_EQ(p.costPerPixel(), ref.costPerPixel);
     EXPECT_EQ(p.counters()[RayKind::Primary], std::uint64_t(o.width) * o.height * o.spp);
@@ -107,12 +155,12 @@ TEST(Progressive, LastPassIsRenderWithSamplesAndDiffuseBounces) {
 TEST(Progressive, CoarsePassesFillEachBlockWithItsTracedPixel) {
     const Scene scene = loadBuiltinScene("whitted");
     const Accelerator accel = buildAccelerator(scene, AccelKind::Bvh);
-    ProgressiveOptions o;
+    RenderOptions o = progressive();
     o.camera = turnedCamera(scene);
     o.width = 70;
     o.height = 45;
     o.threads = 2;
-    const RenderResult ref = referenceRender(scene, o.camera, o, AccelKind::Bvh);
+    const RenderResult ref = referenceRender(scene, *o.camera, o, AccelKind::Bvh);
     ProgressiveRender p(scene, accel, o);
     std::uint64_t primaryBefore = 0, pixelsBefore = 0;
     for (const int block : {8, 4, 2}) {
@@ -136,7 +184,7 @@ TEST(Progressive, CoarsePassesFillEachBlockWithItsTracedPixel) {
 TEST(Progressive, CancelStopsThePassAndKeepsThePreviousPicture) {
     const Scene scene = loadBuiltinScene("whitted");
     const Accelerator accel = buildAccelerator(scene, AccelKind::Bvh);
-    ProgressiveOptions o;
+    RenderOptions o = progressive();
     o.camera = scene.camera;
     o.width = 160;
     o.height = 120;
@@ -162,7 +210,7 @@ TEST(Progressive, CancelStopsThePassAndKeepsThePreviousPicture) {
 TEST(Progressive, RefusesBadOptions) {
     const Scene scene = loadBuiltinScene("whitted");
     const Accelerator accel = buildAccelerator(scene, AccelKind::Bvh);
-    ProgressiveOptions o;
+    RenderOptions o = progressive();
     o.camera = scene.camera;
     o.width = 0;
     EXPECT_THROW(ProgressiveRender(scene, accel, o), std::invalid_argument);
@@ -173,7 +221,7 @@ TEST(Progressive, RefusesBadOptions) {
     o.firstBlock = 6;
     EXPECT_THROW(ProgressiveRender(scene, accel, o), std::invalid_argument);
     o.firstBlock = 8;
-    o.camera.lookAt = o.camera.eye;
+    o.camera->lookAt = o.camera->eye;
     EXPECT_THROW(ProgressiveRender(scene, accel, o), std::invalid_argument);
 }
 

@@ -1,6 +1,6 @@
 // The tracer on scenes small enough to shade by hand: each expected colour is worked out in the
 // comment beside it from the lecture's formulas, not from the code under test.
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include "expect_color.h"

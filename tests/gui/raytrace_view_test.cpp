@@ -6,7 +6,7 @@
 #include "vtk_view.h"
 
 #include "raystep/render/image.h"
-#include "raystep/render/tracer.h"
+#include "raystep/render/render.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <gtest/gtest.h>

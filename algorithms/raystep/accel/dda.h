@@ -10,6 +10,8 @@
 // magnitude: crossing times that overflow to inf, are subnormal or round to 0 in double are
 // bounded with an absolute term for underflow and decided in rationals when the bounds overlap.
 // Only non-finite input is refused.
+#include "raystep/base/math.h"
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -20,11 +22,6 @@
 #include <utility>
 
 namespace raystep {
-
-template <int N>
-using IVecN = glm::vec<N, int, glm::defaultp>;
-template <int N, typename T>
-using VecN = glm::vec<N, T, glm::defaultp>;
 
 /// A regular grid over [lo, hi] with res[i] cells along axis i; boundary k of axis i lies at
 /// lo + k (hi - lo) / res, for k = 0 .. res.

@@ -12,6 +12,11 @@
 namespace raystep {
 
 using Vec3 = glm::dvec3;
+// The 2D and 3D templates' vectors (a 2D lesson's grid and the 3D scene's share one DDA).
+template <int N>
+using IVecN = glm::vec<N, int, glm::defaultp>;
+template <int N, typename T>
+using VecN = glm::vec<N, T, glm::defaultp>;
 using Color = glm::dvec3;  // linear RGB radiance
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();

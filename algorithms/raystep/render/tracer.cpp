@@ -1,14 +1,8 @@
 #include "raystep/render/tracer.h"
 
-#include "raystep/base/timer.h"
 #include "raystep/render/shading.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
-#include <atomic>
-#include <mutex>
+#include <cmath>
 
 namespace raystep {
 
@@ -158,24 +152,38 @@ Color Tracer::renderPixel(int x, int y, const RenderOptions& options, RayCounter
 }
 
 template <typename Rec>
-Color Tracer::pixel(int x, int y, const RenderOptions& options, RayCounters& counters,
-                    Rec& rec) const {
-    const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
-    Pcg32 rng(options.seed, pixelIndex);
+void Tracer::samples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
+                     Color& sum, RayCounters& counters, Rec& rec) const {
     const Camera& cam = options.camera ? *options.camera : scene_.camera;
-    if (options.spp == 1)
-        return trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
+    if (options.spp == 1) {
+        sum += trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
                      RayKind::Primary, 0, kNoId, false, rng, counters, rec);
+        return;
+    }
     // Jittered sampling: the pixel is cut into a near-square grid of strata, one sample in each.
     const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.spp))));
     const int rows = (options.spp + cols - 1) / cols;
-    Color sum(0.0);
-    for (int s = 0; s < options.spp; ++s) {
+    for (int s = from; s < to; ++s) {
         const double jx = ((s % cols) + rng.uniform()) / cols;
         const double jy = ((s / cols) + rng.uniform()) / rows;
         sum += trace(cam.generateRay(x + jx, y + jy, options.width, options.height),
                      RayKind::Primary, 0, kNoId, false, rng, counters, rec);
     }
+}
+
+void Tracer::addSamples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
+                        Color& sum, RayCounters& counters) const {
+    NullRecorder rec;
+    samples(x, y, from, to, options, rng, sum, counters, rec);
+}
+
+template <typename Rec>
+Color Tracer::pixel(int x, int y, const RenderOptions& options, RayCounters& counters,
+                    Rec& rec) const {
+    const auto pixelIndex = static_cast<std::uint64_t>(y) * options.width + x;
+    Pcg32 rng(options.seed, pixelIndex);
+    Color sum(0.0);
+    samples(x, y, 0, options.spp, options, rng, sum, counters, rec);
     return sum / static_cast<double>(options.spp);
 }
 
@@ -202,71 +210,6 @@ Color tracePixelEvents(const Scene& scene, const Accelerator& accel, const Camer
     const Tracer tracer(scene, accel, opt.trace);
     RayCounters counters;
     return tracer.renderPixel(x, y, opt, counters, log);
-}
-
-RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
-                    const ProgressFn& progress) {
-    RenderResult result;
-    {
-        // Stopped at the block's end, before `result` is returned (and perhaps moved).
-        ScopedTimer timer(result.renderMs);
-        result.image = Image(options.width, options.height);
-        result.costPerPixel.assign(result.image.pixels.size(), 0);
-        const Tracer tracer(scene, accel, options.trace);
-
-        constexpr int kTile = 16;
-        const int tilesX = (options.width + kTile - 1) / kTile;
-        const int tilesY = (options.height + kTile - 1) / kTile;
-        const int tileCount = tilesX * tilesY;
-
-        std::atomic<bool> cancelled{false};
-        std::atomic<int> tilesDone{0};
-        std::mutex totalsMutex;
-        std::mutex progressMutex;
-
-        const auto renderTile = [&](int tile) {
-            const int x0 = (tile % tilesX) * kTile;
-            const int y0 = (tile / tilesX) * kTile;
-            const int x1 = std::min(x0 + kTile, options.width);
-            const int y1 = std::min(y0 + kTile, options.height);
-            RayCounters tileCounters;
-            for (int y = y0; y < y1; ++y) {
-                for (int x = x0; x < x1; ++x) {
-                    RayCounters pixel;
-                    result.image.at(x, y) = tracer.renderPixel(x, y, options, pixel);
-                    result.costPerPixel[static_cast<std::size_t>(y) * options.width + x] =
-                        pixel.traversal.primitiveTests;
-                    tileCounters += pixel;
-                }
-            }
-            {
-                const std::lock_guard lock(totalsMutex);
-                result.counters += tileCounters;
-            }
-            const int done = ++tilesDone;
-            // Progress is reported by whichever worker is free to; the others do not wait.
-            if (progress && progressMutex.try_lock()) {
-                if (!progress(static_cast<double>(done) / tileCount)) cancelled = true;
-                progressMutex.unlock();
-            }
-        };
-
-        const int threads =
-            options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-        tbb::task_arena arena(threads);
-        arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1),
-                              [&](const tbb::blocked_range<int>& r) {
-                                  for (int tile = r.begin(); tile != r.end(); ++tile) {
-                                      if (cancelled) return;
-                                      renderTile(tile);
-                                  }
-                              });
-        });
-        result.cancelled = cancelled;
-        if (progress && !result.cancelled) progress(1.0);
-    }
-    return result;
 }
 
 }  // namespace raystep

@@ -18,6 +18,7 @@ struct TraceSettings {
     RayOffsetMethod rayOffset = RayOffsetMethod::Robust;  // where secondary rays start
 };
 
+/// What an image is made with, in one pass (render()) or progressively (ProgressiveRender).
 struct RenderOptions {
     int width = 640;
     int height = 480;
@@ -26,6 +27,10 @@ struct RenderOptions {
     int threads = 0;  // 0 = all cores
     std::uint64_t seed = 1;
     std::optional<Camera> camera;  // another camera than the scene's (the 3D view's)
+    // Progressive passes (render.h): the first pass's block side (a power of two; 1 = no coarse
+    // passes), and whether the samples then double 1, 2, 4 ... spp (else all spp in one pass).
+    int firstBlock = 1;
+    bool refine = false;
 };
 
 /// Everything one pixel (or one ray tree) cost.
@@ -55,6 +60,11 @@ class Tracer {
     /// Radiance arriving along `ray` (a ray of `kind` at bounce `depth`).
     Color trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng, RayCounters& counters) const;
 
+    /// Adds samples [from, to) of pixel (x, y) to `sum`, drawn in order from `rng` (the pixel's
+    /// own stream): the centre for 1 spp, else one jittered sample in each stratum of a
+    /// near-square grid. Every render, in one pass or in many, samples a pixel through this.
+    void addSamples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
+                    Color& sum, RayCounters& counters) const;
     /// Radiance of pixel (x, y) averaged over `spp` samples, with that pixel's own random stream.
     Color renderPixel(int x, int y, const RenderOptions& options, RayCounters& counters) const;
     /// The same pixel with its whole ray tree recorded into `log`: every ray, DDA step, node,
@@ -63,6 +73,9 @@ class Tracer {
                       EventLog& log) const;
 
   private:
+    template <typename Rec>
+    void samples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
+                 Color& sum, RayCounters& counters, Rec& rec) const;
     template <typename Rec>
     Color pixel(int x, int y, const RenderOptions& options, RayCounters& counters, Rec& rec) const;
     template <typename Rec>
@@ -77,16 +90,6 @@ class Tracer {
     TraceSettings settings_;
 };
 
-struct RenderResult {
-    Image image;
-    std::vector<std::uint64_t> costPerPixel;  // primitive tests per pixel (the heat map)
-    RayCounters counters;
-    double renderMs = 0.0;
-    bool cancelled = false;
-};
-
-/// Renders the whole image in tiles on `options.threads` threads. The image and the counters are
-/// the same for any thread count: each pixel has its own random stream.
 /// Records pixel (x, y) of a width x height image of the scene as its settings say (bounces,
 /// diffuse samples; one sample through the pixel's centre): the app's click, the course's pixels.
 Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int y, int width,
@@ -95,9 +98,6 @@ Color tracePixelEvents(const Scene& scene, const Accelerator& accel, int x, int 
 Color tracePixelEvents(const Scene& scene, const Accelerator& accel, const Camera& camera,
                        const TraceSettings& settings, int x, int y, int width, int height,
                        EventLog& log);
-
-RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
-                    const ProgressFn& progress = {});
 
 /// Origin of a secondary ray leaving the surface point `sp` (unit normal n, either side) in
 /// direction w: past the point's error box (robust) or a fixed 1e-4 along the normal (epsilon).

@@ -2,7 +2,7 @@
 
 #include "raystep/base/json_reader.h"
 #include "raystep/geometry/kernels.h"
-#include "raystep/render/image.h"
+#include "raystep/base/file_write.h"
 #include "raystep/scene/model_checks.h"
 #include "raystep/scene/resources.h"
 

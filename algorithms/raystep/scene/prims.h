@@ -3,7 +3,7 @@
 // bounds and a ray test. The 3D scene and the lecture's 2D scenes (segments and circles) both
 // provide one, so the kd-tree and the BVH run the same code on both (DESIGN.md: dimension is a
 // template parameter, never a copy).
-#include "raystep/accel/dda.h"
+#include "raystep/base/math.h"
 #include "raystep/geometry/intersect.h"
 #include "raystep/scene/scene.h"
 

@@ -1,9 +1,8 @@
 #pragma once
 // The lecture's 2D pictures as scenes: segments and circles in a plane, and the example ray drawn
 // on the slides. The grid, the DDA and the kd-tree run on them with the same templates as in 3D.
-#include "raystep/accel/dda.h"
-#include "raystep/geometry/kernels.h"
 #include "raystep/base/math.h"
+#include "raystep/geometry/kernels.h"
 #include "raystep/scene/prims.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
 #include "raystep/scene/scene2d_io.h"
 
-#include "raystep/render/image.h"
+#include "raystep/base/file_write.h"
 #include "raystep/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>

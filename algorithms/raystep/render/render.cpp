@@ -1,4 +1,4 @@
-#include "raystep/render/progressive.h"
+#include "raystep/render/render.h"
 
 #include "raystep/base/timer.h"
 
@@ -6,18 +6,24 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace raystep {
 
-std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp) {
+std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp, bool refine) {
     std::vector<ProgressivePass> plan;
-    for (int b = std::max(firstBlock, 1); b >= 1; b /= 2) plan.push_back({b, 1});
-    for (int s = 2; s < 2 * spp; s *= 2) plan.push_back({1, std::min(s, spp)});
+    for (int b = std::max(firstBlock, 1); b >= 2; b /= 2) plan.push_back({b, 1});
+    if (!refine) {
+        plan.push_back({1, spp});
+        return plan;
+    }
+    for (int s = 1; s < 2 * spp; s *= 2) plan.push_back({1, std::min(s, spp)});
     return plan;
 }
 
@@ -28,7 +34,7 @@ int threadsOf(int wanted) {
 }  // namespace
 
 ProgressiveRender::ProgressiveRender(const Scene& scene, const Accelerator& accel,
-                                     ProgressiveOptions options)
+                                     RenderOptions options)
     : scene_(scene),
       accel_(accel),
       options_(options),
@@ -47,42 +53,36 @@ ProgressiveRender::ProgressiveRender(const Scene& scene, const Accelerator& acce
         throw std::invalid_argument(
             "progressive render: the first block must be a power of two, got " +
             std::to_string(options_.firstBlock));
-    if (!cameraUsable(options_.camera))
+    if (!options_.camera) options_.camera = scene.camera;
+    if (!cameraUsable(*options_.camera))
         throw std::invalid_argument("progressive render: the camera has no view direction");
-    plan_ = progressivePlan(options_.firstBlock, options_.spp);
+    plan_ = progressivePlan(options_.firstBlock, options_.spp, options_.refine);
+    onePass_ = plan_.size() == 1;
     const std::size_t n = static_cast<std::size_t>(options_.width) * options_.height;
-    rng_.reserve(n);
-    // The stream Tracer::renderPixel gives the pixel: the same image whatever the passes.
-    for (std::uint64_t i = 0; i < n; ++i) rng_.emplace_back(options_.seed, i);
-    sum_.assign(n, Color(0.0));
-    tests_.assign(n, 0);
+    if (!onePass_) {
+        rng_.reserve(n);
+        // The stream Tracer::renderPixel gives the pixel: the same image whatever the passes.
+        for (std::uint64_t i = 0; i < n; ++i) rng_.emplace_back(options_.seed, i);
+        sum_.assign(n, Color(0.0));
+        tests_.assign(n, 0);
+    }
     image_ = Image(options_.width, options_.height);
     cost_.assign(n, 0);
 }
 
 void ProgressiveRender::sample(int x, int y, int from, int to, RayCounters& counters) {
     const std::size_t i = static_cast<std::size_t>(y) * options_.width + x;
-    Pcg32& rng = rng_[i];
-    const Camera& cam = options_.camera;
-    const int spp = options_.spp;
     RayCounters pixel;
-    // Tracer::renderPixel's sampling, sample by sample: the centre for 1 spp, else one jittered
-    // sample in each stratum of a near-square grid, drawn from the pixel's stream in order.
-    if (spp == 1) {
-        sum_[i] += tracer_.trace(cam.generateRay(x + 0.5, y + 0.5, options_.width, options_.height),
-                                 RayKind::Primary, 0, rng, pixel);
+    if (onePass_) {
+        Pcg32 rng(options_.seed, i);
+        Color sum(0.0);
+        tracer_.addSamples(x, y, from, to, options_, rng, sum, pixel);
+        image_.pixels[i] = sum / static_cast<double>(to);
+        cost_[i] = pixel.traversal.primitiveTests;
     } else {
-        const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))));
-        const int rows = (spp + cols - 1) / cols;
-        for (int s = from; s < to; ++s) {
-            const double jx = ((s % cols) + rng.uniform()) / cols;
-            const double jy = ((s / cols) + rng.uniform()) / rows;
-            sum_[i] +=
-                tracer_.trace(cam.generateRay(x + jx, y + jy, options_.width, options_.height),
-                              RayKind::Primary, 0, rng, pixel);
-        }
+        tracer_.addSamples(x, y, from, to, options_, rng_[i], sum_[i], pixel);
+        tests_[i] += pixel.traversal.primitiveTests;
     }
-    tests_[i] += pixel.traversal.primitiveTests;
     counters += pixel;
 }
 
@@ -107,6 +107,12 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
     std::atomic<bool> stop{false};
     std::atomic<int> rowsDone{0};
     std::mutex totalsMutex, progressMutex;
+    // Under progressMutex: threads on other rows see other fractions, the user sees them grow.
+    double reported = 0.0;
+    const auto report = [&](double f) {
+        reported = std::max(reported, f);
+        return progress(reported);
+    };
     double ms = 0.0;
     {
         const ScopedTimer timer(ms);
@@ -124,7 +130,7 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
                                           if (stop) return;
                                           if (traced(x, y)) sample(x, y, from, to, rowCounters);
                                           if (progress && progressMutex.try_lock()) {
-                                              if (!progress((rowsDone + double(x) / w) / rows))
+                                              if (!report((rowsDone + double(x) / w) / rows))
                                                   stop = true;
                                               progressMutex.unlock();
                                           }
@@ -137,7 +143,7 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
                                       // Reported by whichever worker is free to; the others do not
                                       // wait.
                                       if (progress && progressMutex.try_lock()) {
-                                          if (!progress(static_cast<double>(done) / rows))
+                                          if (!report(static_cast<double>(done) / rows))
                                               stop = true;
                                           progressMutex.unlock();
                                       }
@@ -149,19 +155,21 @@ bool ProgressiveRender::nextPass(const ProgressFn& progress) {
             return false;
         }
         samplesDone_ = to;
-        // The complete picture: each pixel shows its block's traced pixel, averaged.
+        // The complete picture: each pixel shows its block's traced pixel, averaged (one pass
+        // wrote its pixels as it went).
         const double n = static_cast<double>(samplesDone_);
-        arena.execute([&] {
-            tbb::parallel_for(0, h, [&](int y) {
-                const int cy = y / b * b;
-                for (int x = 0; x < w; ++x) {
-                    const std::size_t c = static_cast<std::size_t>(cy) * w + x / b * b;
-                    const std::size_t i = static_cast<std::size_t>(y) * w + x;
-                    image_.pixels[i] = sum_[c] / n;
-                    cost_[i] = tests_[c];
-                }
+        if (!onePass_)
+            arena.execute([&] {
+                tbb::parallel_for(0, h, [&](int y) {
+                    const int cy = y / b * b;
+                    for (int x = 0; x < w; ++x) {
+                        const std::size_t c = static_cast<std::size_t>(cy) * w + x / b * b;
+                        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                        image_.pixels[i] = sum_[c] / n;
+                        cost_[i] = tests_[c];
+                    }
+                });
             });
-        });
     }
     passMs_.push_back(ms);
     ++next_;
@@ -172,6 +180,30 @@ bool ProgressiveRender::run(const ProgressFn& progress) {
     while (!done())
         if (!nextPass(progress)) return false;
     return !cancelled_;
+}
+
+RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                    const ProgressFn& progress) {
+    ProgressiveRender r(scene, accel, options);
+    const double passes = static_cast<double>(r.plan().size());
+    while (!r.done()) {
+        const double before = static_cast<double>(r.passesDone());
+        ProgressFn pass;  // none asked: none looked at between pixels
+        if (progress) pass = [&](double x) { return progress((before + x) / passes); };
+        if (!r.nextPass(pass)) break;
+    }
+    if (progress && !r.cancelled()) progress(1.0);
+    return std::move(r).result();
+}
+
+RenderResult ProgressiveRender::result() && {
+    RenderResult out;
+    out.image = std::move(image_);
+    out.costPerPixel = std::move(cost_);
+    out.counters = counters_;
+    for (const double ms : passMs_) out.renderMs += ms;
+    out.cancelled = cancelled_;
+    return out;
 }
 
 }  // namespace raystep

@@ -1,8 +1,9 @@
 #pragma once
-// A progressive render of any camera at any size: a coarse picture at once (one ray per 8x8
+// The one render loop. render() makes the whole image in one pass of every sample (the CLI);
+// ProgressiveRender makes it in passes (the app): a coarse picture at once (one ray per 8x8
 // block, then 4x4, 2x2 and every pixel, each pass tracing only the new pixels), then more samples
-// per pixel up to the wanted spp while nothing moves. Its last pass is the same image as render()
-// of the same camera and settings, pixel for pixel: each pixel keeps its own random stream.
+// per pixel up to the wanted spp while nothing moves. Both end on the same image, pixel for pixel:
+// each pixel keeps its own random stream, sampled by Tracer::addSamples.
 #include "raystep/render/tracer.h"
 #include "raystep/scene/camera.h"
 
@@ -11,15 +12,12 @@
 
 namespace raystep {
 
-struct ProgressiveOptions {
-    Camera camera;  // any camera: the scene's, or the 3D view's
-    int width = 640;
-    int height = 480;
-    int spp = 1;  // samples per pixel of the last pass (as RenderOptions::spp)
-    TraceSettings trace;
-    int threads = 0;  // 0 = all cores
-    std::uint64_t seed = 1;
-    int firstBlock = 8;  // side of the first pass's blocks (a power of two, 1 = no coarse pass)
+struct RenderResult {
+    Image image;
+    std::vector<std::uint64_t> costPerPixel;  // primitive tests per pixel (the heat map)
+    RayCounters counters;
+    double renderMs = 0.0;
+    bool cancelled = false;
 };
 
 /// What a pass made: blocks of `block` x `block` pixels share the ray of their top-left pixel
@@ -29,15 +27,17 @@ struct ProgressivePass {
     int samples = 1;
 };
 
-/// The passes a render makes, in order: the coarse blocks halving down to 1 (one sample each),
-/// then the samples per pixel doubling up to `spp`.
-std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp);
+/// The passes a render makes, in order: the coarse blocks halving down to 2 (one sample each),
+/// then every pixel: its samples doubling 1, 2, 4 ... up to `spp` when `refine`, else all `spp`
+/// at once. firstBlock 1 without refine: one pass, the whole-image render.
+std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp, bool refine = true);
 
 class ProgressiveRender {
   public:
     /// `scene` and `accel` must outlive the render. The options are checked: width and height in
-    /// 1..kMaxImageSide, spp >= 1, firstBlock a power of two (std::invalid_argument otherwise).
-    ProgressiveRender(const Scene& scene, const Accelerator& accel, ProgressiveOptions options);
+    /// 1..kMaxImageSide, spp >= 1, firstBlock a power of two, a camera with a view direction
+    /// (std::invalid_argument otherwise). No camera in the options: the scene's.
+    ProgressiveRender(const Scene& scene, const Accelerator& accel, RenderOptions options);
 
     /// Runs the next pass on all the options' threads. Returns false, with the image left as the
     /// previous pass made it, when `progress` asks to stop (then the render is over: done()).
@@ -58,9 +58,11 @@ class ProgressiveRender {
     const std::vector<std::uint64_t>& costPerPixel() const { return cost_; }
     /// Everything traced so far.
     const RayCounters& counters() const { return counters_; }
-    const ProgressiveOptions& options() const { return options_; }
+    const RenderOptions& options() const { return options_; }
     /// Milliseconds each pass took, in order.
     const std::vector<double>& passMs() const { return passMs_; }
+    /// The image, the heat map and the counters moved out, with the passes' time added up.
+    RenderResult result() &&;
 
   private:
     /// Adds pixel (x, y)'s samples [from, to) to its sum (the sampling of Tracer::renderPixel).
@@ -68,11 +70,13 @@ class ProgressiveRender {
 
     const Scene& scene_;
     const Accelerator& accel_;
-    ProgressiveOptions options_;
+    RenderOptions options_;  // its camera set (the scene's when none was given)
     Tracer tracer_;
     std::vector<ProgressivePass> plan_;
     std::size_t next_ = 0;
     bool cancelled_ = false;
+    // One pass writes each pixel once; only passes after passes keep these between them.
+    bool onePass_ = false;
     std::vector<Pcg32> rng_;            // each pixel's random stream, kept between its passes
     std::vector<Color> sum_;            // each pixel's sum of samples so far
     std::vector<std::uint64_t> tests_;  // each pixel's primitive tests so far
@@ -83,5 +87,10 @@ class ProgressiveRender {
     std::vector<double> passMs_;
     int threads_;  // TBB stays out of this header: Qt's `emit` macro breaks its headers
 };
+
+/// The whole image in the passes `options` plans (one, by default) on `options.threads` threads.
+/// The image and the counters are the same for any thread count and any passes.
+RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+                    const ProgressFn& progress = {});
 
 }  // namespace raystep
