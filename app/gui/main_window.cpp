@@ -21,36 +21,22 @@
 
 #include "course/lesson_trace.h"
 
-#include "raystep/base/file_error.h"
-#include "raystep/trace/trace_io.h"
 
 #include <QAction>
 #include <QActionGroup>
-#include <QApplication>
-#include <QBuffer>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QElapsedTimer>
-#include <QFileDialog>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScreen>
 #include <QSettings>
-#include <QSignalBlocker>
-#include <QSpinBox>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTimer>
-#include <QToolBar>
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cstring>
-#include <exception>
-#include <mutex>
 
 namespace raystep::gui {
 
@@ -464,102 +450,6 @@ const Progress& MainWindow::studentProgress() const {
 
 QString MainWindow::progressPath() const {
     return lessons_->progressPath();
-}
-
-void MainWindow::whenIdle(std::function<void()> f) {
-    if (!runner_.busy()) {
-        QTimer::singleShot(0, this, std::move(f));
-        return;
-    }
-    auto once = std::make_shared<QMetaObject::Connection>();
-    *once = connect(&runner_, &TaskRunner::idle, this, [once, f = std::move(f)] {
-        QObject::disconnect(*once);
-        f();
-    });
-}
-
-bool MainWindow::waitUntilIdle(int timeoutMs) {
-    QElapsedTimer clock;
-    clock.start();
-    // A render scheduled (a move, a resize) counts as work: it starts once events settle.
-    const auto busy = [this] { return runner_.busy() || image_->pending(); };
-    for (;;) {
-        while (busy() && clock.elapsed() < timeoutMs)
-            QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
-        QApplication::processEvents();
-        if (!busy()) return true;
-        if (clock.elapsed() >= timeoutMs) return false;
-    }
-}
-
-QString MainWindow::inspectorText() const {
-    return inspector_->toPlainText();
-}
-
-void MainWindow::stepForward() {
-    timeline_->stepForward();
-}
-void MainWindow::stepBack() {
-    timeline_->stepBack();
-}
-void MainWindow::jumpToNextOfKind() {
-    timeline_->jumpToNextOfKind();
-}
-void MainWindow::togglePlay() {
-    timeline_->togglePlay();
-}
-
-void MainWindow::openFileDialog() {
-    // Models too: the scene is made around them (model_import.h). Not the lesson's structure
-    // (brute force in lesson 1 would take minutes on a big mesh): the chooser's, else a kd-tree.
-    const QString path = openFileName(
-        this, tr("Open scene"),
-        tr("Scenes and models (*.json *.obj *.ply *.stl *.gltf *.glb)") + ";;" +
-            tr("Scenes (*.json)") + ";;" + tr("Models (*.obj *.ply *.stl *.gltf *.glb)"));
-    if (!path.isEmpty()) openScene(path, openKind(), false, openOptions());
-}
-
-QString savePng(const QImage& image, const QString& path) {
-    QByteArray png;
-    QBuffer buffer(&png);
-    buffer.open(QIODevice::WriteOnly);
-    if (!image.save(&buffer, "PNG")) return path + ": cannot encode the image as PNG";
-    try {
-        writeFileAtomic(path.toStdString(), png.toStdString());
-    } catch (const std::exception& e) {
-        return QString::fromStdString(printable(e.what(), 4096));
-    }
-    return {};
-}
-
-void MainWindow::exportScreenshot(QWidget* w, const QString& what) {
-    // A hidden view would be saved as its placeholder ("The 3D view shows 3D scenes").
-    if (!w->isVisible()) {
-        statusBar()->showMessage(
-            tr("The %1 is not shown with this scene: there is nothing of it to export").arg(what));
-        return;
-    }
-    const QString path =
-        saveFileName(this, tr("Screenshot of the %1").arg(what), tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    if (const QString problem = savePng(w->grab().toImage(), path); !problem.isEmpty())
-        QMessageBox::warning(this, tr("Cannot save"), problem);
-}
-
-void MainWindow::exportTrace() {
-    // The file holds the whole trace, past where an exercise holds the replay.
-    if (refusedWhileHeld(tr("export the trace"))) return;
-    const QString path = saveFileName(this, tr("Export trace"), tr("Trace files (*.json)"));
-    if (path.isEmpty()) return;
-    TraceInfo info;
-    info.scene = session_.name();
-    info.accel = std::string(accelKindName(session_.kind()));
-    info.what = session_.is2D() ? "ray" : "pixel";
-    try {
-        writeFileAtomic(path.toStdString(), traceToJson(session_.log(), info));
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot save"), QString::fromUtf8(e.what()));
-    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -4,12 +4,63 @@
 
 #include "board_docks.h"
 #include "compare_launcher.h"
+#include "inspector.h"
 #include "live_edit.h"
 #include "presenter_controls.h"
 #include "scene_opener.h"
+#include "timeline.h"
 #include "window_layout.h"
 
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QTimer>
+
 namespace raystep::gui {
+
+// Background work, for tests and scripts (task_runner.h; a scheduled render counts).
+void MainWindow::whenIdle(std::function<void()> f) {
+    if (!runner_.busy()) {
+        QTimer::singleShot(0, this, std::move(f));
+        return;
+    }
+    auto once = std::make_shared<QMetaObject::Connection>();
+    *once = connect(&runner_, &TaskRunner::idle, this, [once, f = std::move(f)] {
+        QObject::disconnect(*once);
+        f();
+    });
+}
+
+bool MainWindow::waitUntilIdle(int timeoutMs) {
+    QElapsedTimer clock;
+    clock.start();
+    // A render scheduled (a move, a resize) counts as work: it starts once events settle.
+    const auto busy = [this] { return runner_.busy() || image_->pending(); };
+    for (;;) {
+        while (busy() && clock.elapsed() < timeoutMs)
+            QApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents, 20);
+        QApplication::processEvents();
+        if (!busy()) return true;
+        if (clock.elapsed() >= timeoutMs) return false;
+    }
+}
+
+// The views' own, for the tests and scripts that drive the window.
+QString MainWindow::inspectorText() const {
+    return inspector_->toPlainText();
+}
+
+void MainWindow::stepForward() {
+    timeline_->stepForward();
+}
+void MainWindow::stepBack() {
+    timeline_->stepBack();
+}
+void MainWindow::jumpToNextOfKind() {
+    timeline_->jumpToNextOfKind();
+}
+void MainWindow::togglePlay() {
+    timeline_->togglePlay();
+}
 
 // What is opened and shown (scene_opener.h).
 void MainWindow::openScene(const QString& nameOrPath, AccelKind kind, bool quiet,
