@@ -21,7 +21,6 @@
 
 #include "course/lesson_trace.h"
 
-
 #include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -45,7 +44,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createViews();
     createTimeline();
     createDocks();
-    // The parts, each owning one job, made in the order their widgets take their places.
+    // The parts, each owning one job; made in this order, their tool bars, docks and status bar
+    // widgets take the places they had.
     opener_ = new SceneOpener(*this, session_, runner_, lesson_, imageView_,
                               [this] { return lessons_->language(); });
     const std::uint64_t& generation = opener_->generation();
