@@ -1,13 +1,14 @@
 // The window's structure chooser (brute force, grid, kd-tree, BVH; midpoint, median or SAH
 // splits) and the status bar's structure: the structure a scene or model uses is always shown and
 // chosen here, never inherited silently from a lesson. File > Save scene as writes the scene made
-// around an opened model.
+// around an opened model. The live controls build through here too.
 #include "file_dialogs.h"
 #include "main_window.h"
 
+#include "image_render.h"
 #include "image_view.h"
 #include "language.h"
-#include "lesson_panel.h"
+#include "scene_opener.h"
 
 #include "raystep/base/file_error.h"
 #include "raystep/render/image.h"
@@ -25,16 +26,6 @@
 #include <filesystem>
 
 namespace raystep::gui {
-
-namespace {
-/// Past this many primitives brute force is asked about first and its pixel traces run in the
-/// background: a pixel's three rays then test 600,000 primitives or more (most of a second on
-/// a student's laptop), and its image takes minutes to hours.
-constexpr std::size_t kBruteForceAsk = 200'000;
-/// The events a pixel's trace keeps there: a million triangles by brute force recorded 3 million
-/// tests, whose replay and views took 10 GB and froze the window for 40 s.
-constexpr std::size_t kSlowPixelEventCap = 50'000;
-}  // namespace
 
 void MainWindow::createStructureControls() {
     auto* bar = addToolBar(tr("Structure"));
@@ -139,63 +130,6 @@ void MainWindow::changeStructure(AccelKind kind, SplitMethod split) {
     box->open();
 }
 
-bool MainWindow::slowPixelTraces() const {
-    const Scene* scene = session_.scene3D();
-    return scene && testsEveryPrimitive(session_.kind()) &&
-           scene->primitiveCount() > kBruteForceAsk;
-}
-
-void MainWindow::tracePixelHereOrInBackground(int x, int y, int w, int h,
-                                              const std::optional<Camera>& camera,
-                                              const TraceSettings& settings) {
-    if (!slowPixelTraces()) {
-        if (camera)
-            session_.tracePixel(x, y, w, h, *camera, settings);
-        else
-            session_.tracePixel(x, y, w, h);
-        return;
-    }
-    const std::uint64_t generation = generation_;
-    const std::size_t n = session_.scene3D()->primitiveCount();
-    runner_.start<LogRef>(
-        TaskKind::Pixel,
-        tr("Tracing pixel (%1, %2) by brute force, %3 primitives...").arg(x).arg(y).arg(n),
-        [ref = session_.sceneRef(), x, y, w, h, camera, settings](const ProgressFn&) {
-            auto log = std::make_shared<EventLog>(kSlowPixelEventCap);
-            const Scene& s = std::get<Scene>(ref->scene);
-            if (camera)
-                tracePixelEvents(s, *ref->accel3D, *camera, settings, x, y, w, h, *log);
-            else
-                tracePixelEvents(s, *ref->accel3D, x, y, w, h, *log);
-            return LogRef(std::move(log));
-        },
-        [this, generation, x, y, clicked = camera.has_value()](LogRef&& log,
-                                                               const TaskOutcome& outcome) {
-            // A newer pixel, or another scene: this trace is of no use now.
-            if (outcome.superseded || generation != generation_ || !outcome.ok() || !log) return;
-            // Nor does it take the place of a lesson's trace: unasked (the scene's first pixel)
-            // or while an exercise holds the replay.
-            const bool lessonShown =
-                lesson_->lessonLog() && session_.logRef() == lesson_->lessonLog();
-            if (lessonShown && (!clicked || session_.held())) return;
-            session_.showLog(log, LogKind::Pixel);
-            // A click replays its pixel to the end, as a click does; the first pixel from 0.
-            if (clicked) session_.setCursor(session_.size());
-            statusBar()->showMessage(
-                log->truncated()
-                    ? tr("Pixel (%1, %2): the first %3 events recorded, %4 more left out "
-                         "(brute force tests every primitive)")
-                          .arg(x)
-                          .arg(y)
-                          .arg(log->events().size())
-                          .arg(log->dropped())
-                    : tr("Pixel (%1, %2): %3 events recorded")
-                          .arg(x)
-                          .arg(y)
-                          .arg(log->events().size()));
-        });
-}
-
 void MainWindow::buildChosenStructure(AccelKind kind, SplitMethod split) {
     chosenStructure_ = {kind, split};
     splitBox_->setEnabled(hasSplit(kind));
@@ -214,7 +148,7 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
         showLiveBuild([&] { return Session::rebuild(session_.sceneRef(), kind, options); });
         return;
     }
-    const std::uint64_t generation = generation_;
+    const std::uint64_t generation = opener_->generation();
     const bool render = !imageView_->isHidden();
     const SplitMethod split = options.split(kind).value_or(options.kdtree.split);
     const QString what = hasSplit(kind)
@@ -230,7 +164,7 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
         [this, generation, render](SceneRef&& scene, const TaskOutcome& outcome) {
             if (outcome.superseded) return;
             // Another scene was opened meanwhile: this structure was for the old one.
-            if (generation != generation_) {
+            if (generation != opener_->generation()) {
                 emit structureChanged(false, tr("another scene was opened"));
                 return;
             }
@@ -241,10 +175,23 @@ void MainWindow::applyStructure(AccelKind kind, const AccelOptions& options) {
                 emit structureChanged(false, why);
                 return;
             }
-            showScene(std::move(scene), render);
+            opener_->showScene(std::move(scene), render);
             statusBar()->showMessage(structureStatus());
             emit structureChanged(true, {});
         });
+}
+
+void MainWindow::applyLive(AccelKind kind, const AccelOptions& options) {
+    const Scene2D* s2 = session_.scene2D();
+    if (s2 && s2->gridRes && readsOption(kind, AccelOption::GridRes) && !options.grid.res) {
+        // Lambda's grid asked for: the scene's own grid would win over it (buildAccelerator2D),
+        // so the scene is shown without it.
+        Scene2D copy = *s2;
+        copy.gridRes.reset();
+        showLiveBuild([&] { return Session::prepare(std::move(copy), kind, options); });
+        return;
+    }
+    applyStructure(kind, options);
 }
 
 void MainWindow::showLiveBuild(const std::function<SceneRef()>& build) {

@@ -1,31 +1,20 @@
+// The recorded trace as the 3D view draws it at the session's cursor: rays as tubes, hits, the
+// eye with its image plane and traced pixels, the structure's boxes, voxels and planes; and the
+// points a lecture frames. The scene itself is drawn by vtk_scene_actors.cpp.
 #include "vtk_actors.h"
 #include "presentation.h"
+#include "vtk_draw.h"
 
-#include "course/palette.h"
-
-#include <vtkActor.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
-#include <vtkLight.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkSphereSource.h>
-#include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <optional>
 
 namespace raystep::gui {
+
+using namespace vtkdraw;
 
 void PropSet::addTo(vtkRenderer* r) const {
     for (const auto& p : props) r->AddViewProp(p);
@@ -37,198 +26,6 @@ void PropSet::removeFrom(vtkRenderer* r) {
 }
 
 namespace {
-
-/// A palette colour (course/palette.h, the one table) as VTK's cell colour.
-struct Rgb {
-    unsigned char c[3];
-    explicit Rgb(const PaletteColour& p) : c{p.r, p.g, p.b} {}
-    Rgb(unsigned char r, unsigned char g, unsigned char b) : c{r, g, b} {}
-    operator const unsigned char*() const { return c; }
-};
-
-double maxComponent(const Color& c) {
-    return std::max({c.x, c.y, c.z});
-}
-
-vtkSmartPointer<vtkActor> actorOf(vtkPolyData* poly, bool scalars) {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(poly);
-    mapper->SetScalarVisibility(scalars);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    return actor;
-}
-
-/// Coloured segments, drawn as wide lines in flat colour: lines of one pixel vanish on a
-/// projector, and unlit lines keep the palette's colour exactly (what the legend names).
-class Segments {
-  public:
-    Segments() { colours_->SetNumberOfComponents(3); }
-    void add(const Vec3& a, const Vec3& b, const unsigned char* colour) {
-        if (!(glm::length(b - a) > 0) || !std::isfinite(glm::length(b - a))) return;
-        const vtkIdType ids[2] = {points_->InsertNextPoint(a.x, a.y, a.z),
-                                  points_->InsertNextPoint(b.x, b.y, b.z)};
-        lines_->InsertNextCell(2, ids);
-        colours_->InsertNextTypedTuple(colour);
-    }
-    void box(const Vec3& lo, const Vec3& hi, const unsigned char* colour) {
-        const auto corner = [&](int k) {
-            return Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-        };
-        static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
-                                         {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-        for (const auto& e : edges) add(corner(e[0]), corner(e[1]), colour);
-    }
-    void loop(const std::array<Vec3, 4>& c, const unsigned char* colour) {
-        for (int k = 0; k < 4; ++k) add(c[k], c[(k + 1) % 4], colour);
-    }
-    /// A circle of radius r about `centre` in the plane spanned by unit vectors u, v.
-    void circle(const Vec3& centre, double r, const Vec3& u, const Vec3& v,
-                const unsigned char* colour) {
-        constexpr int n = 48;
-        for (int k = 0; k < n; ++k) {
-            const double a0 = 2 * std::numbers::pi * k / n, a1 = 2 * std::numbers::pi * (k + 1) / n;
-            add(centre + r * (std::cos(a0) * u + std::sin(a0) * v),
-                centre + r * (std::cos(a1) * u + std::sin(a1) * v), colour);
-        }
-    }
-    bool empty() const { return lines_->GetNumberOfCells() == 0; }
-    /// Lines `pixels` wide whatever the zoom, shaded as tubes by VTK.
-    vtkSmartPointer<vtkActor> tubes(double pixels) const {
-        vtkNew<vtkPolyData> poly;
-        poly->SetPoints(points_);
-        poly->SetLines(lines_);
-        poly->GetCellData()->SetScalars(colours_);
-        auto actor = actorOf(poly, true);
-        actor->GetProperty()->SetLineWidth(pixels);
-        actor->GetProperty()->SetRenderLinesAsTubes(true);
-        actor->GetProperty()->LightingOff();
-        return actor;
-    }
-
-    /// The same lines as a dark outline `pixels` wide, drawn flat under the tubes: a ray keeps
-    /// its edge over a floor of its own colour (the red and yellow checker). Flat lines lie at
-    /// the tube's axis, behind its near surface: the tube is drawn over its outline.
-    vtkSmartPointer<vtkActor> outline(double pixels) const {
-        vtkNew<vtkPolyData> poly;
-        poly->SetPoints(points_);
-        poly->SetLines(lines_);
-        auto actor = actorOf(poly, false);
-        actor->GetProperty()->SetColor(0.08, 0.08, 0.1);
-        actor->GetProperty()->SetLineWidth(pixels);
-        actor->GetProperty()->LightingOff();
-        return actor;
-    }
-
-  private:
-    vtkNew<vtkPoints> points_;
-    vtkNew<vtkCellArray> lines_;
-    vtkNew<vtkUnsignedCharArray> colours_;
-};
-
-/// Translucent faces (voxels, planes, the image plane) of one colour and opacity.
-class Faces {
-  public:
-    void quad(const std::array<Vec3, 4>& c) {
-        vtkIdType ids[4];
-        for (int k = 0; k < 4; ++k) ids[k] = points_->InsertNextPoint(c[k].x, c[k].y, c[k].z);
-        polys_->InsertNextCell(4, ids);
-    }
-    void box(const Vec3& lo, const Vec3& hi) {
-        for (int axis = 0; axis < 3; ++axis)
-            for (const double at : {lo[axis], hi[axis]}) quad(planeCorners(lo, hi, axis, at));
-    }
-    /// The same six faces wound with their fronts outwards (planeCorners' turn about +axis),
-    /// for an actor that culls fronts: only the far walls are drawn, behind what is inside.
-    void boxOutwards(const Vec3& lo, const Vec3& hi) {
-        for (int axis = 0; axis < 3; ++axis) {
-            auto low = planeCorners(lo, hi, axis, lo[axis]);
-            std::swap(low[1], low[3]);
-            quad(low);
-            quad(planeCorners(lo, hi, axis, hi[axis]));
-        }
-    }
-    static std::array<Vec3, 4> planeCorners(const Vec3& lo, const Vec3& hi, int axis, double at) {
-        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-        std::array<Vec3, 4> c;
-        for (int k = 0; k < 4; ++k) {
-            c[k][axis] = at;
-            c[k][u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-            c[k][v] = (k >= 2) ? hi[v] : lo[v];
-        }
-        return c;
-    }
-    bool empty() const { return polys_->GetNumberOfCells() == 0; }
-    vtkSmartPointer<vtkActor> actor(const PaletteColour& colour, double opacity) const {
-        vtkNew<vtkPolyData> poly;
-        poly->SetPoints(points_);
-        poly->SetPolys(polys_);
-        auto a = actorOf(poly, false);
-        a->GetProperty()->SetColor(colour.r / 255.0, colour.g / 255.0, colour.b / 255.0);
-        a->GetProperty()->SetOpacity(opacity);
-        a->GetProperty()->LightingOff();
-        return a;
-    }
-
-  private:
-    vtkNew<vtkPoints> points_;
-    vtkNew<vtkCellArray> polys_;
-};
-
-vtkSmartPointer<vtkActor> sphereActor(const Vec3& centre, double radius, int resolution) {
-    vtkNew<vtkSphereSource> src;
-    src->SetCenter(centre.x, centre.y, centre.z);
-    src->SetRadius(radius);
-    src->SetThetaResolution(2 * resolution);
-    src->SetPhiResolution(resolution);
-    src->Update();
-    return actorOf(src->GetOutput(), false);
-}
-
-/// What a rasterizer can honestly say of a material: its colour and Phong highlight; glass as
-/// translucent, a mirror as a bright metal (the reflections themselves need the ray tracer).
-void applyMaterial(vtkProperty* p, const Material& m) {
-    Color base = glm::clamp(m.kd, 0.0, 1.0);
-    double specular = std::clamp(maxComponent(m.ks), 0.0, 1.0), power = std::max(m.n, 5.0);
-    if (!isBlack(m.transparency)) {
-        // A pale blue-white: clear glass on a dark background, never a black ball.
-        base = 0.2 * base + 0.7 * glm::clamp(m.transparency, 0.0, 1.0) * Color(0.85, 0.93, 1.0);
-        p->SetOpacity(0.4);
-        specular = 1.0;
-        power = std::max(power, 80.0);
-    } else if (!isBlack(m.reflect)) {
-        base = 0.3 * base + 0.6 * glm::clamp(m.reflect, 0.0, 1.0);
-        specular = 1.0;
-        power = std::max(power, 100.0);
-    }
-    p->SetColor(base.x, base.y, base.z);
-    p->SetAmbient(0.3);
-    p->SetDiffuse(0.8);
-    p->SetSpecular(specular);
-    p->SetSpecularPower(power);
-    p->SetSpecularColor(1, 1, 1);
-}
-
-/// The material's 3D checker as a 2x2 texture: texel (a, b) holds kd when a + b is even.
-vtkSmartPointer<vtkTexture> checkerTexture(const Material& m) {
-    vtkNew<vtkImageData> image;
-    image->SetDimensions(2, 2, 1);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    for (int y = 0; y < 2; ++y)
-        for (int x = 0; x < 2; ++x) {
-            const Color c = glm::clamp((x + y) & 1 ? m.checker.color : m.kd, 0.0, 1.0) * 255.0;
-            auto* px = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
-            px[0] = static_cast<unsigned char>(c.x);
-            px[1] = static_cast<unsigned char>(c.y);
-            px[2] = static_cast<unsigned char>(c.z);
-        }
-    auto t = vtkSmartPointer<vtkTexture>::New();
-    t->SetInputData(image);
-    t->InterpolateOff();
-    t->RepeatOn();
-    t->EdgeClampOff();
-    return t;
-}
 
 /// The ray an event ends at a point, and its t: a hit, or what blocks a shadow ray.
 std::optional<std::pair<std::uint32_t, double>> endPoint(const Event& e) {
@@ -343,131 +140,6 @@ void treeWalkProps(const StructureOutline<3>& o, const ReplayState& st, Segments
 
 }  // namespace
 
-PropSet sceneProps(vtkRenderer* r, const Scene& s) {
-    PropSet out;
-    for (const Sphere& sp : s.spheres) {
-        auto actor = sphereActor(sp.center, sp.radius, 32);
-        applyMaterial(actor->GetProperty(), s.materials[sp.material]);
-        out.props.push_back(actor);
-    }
-    // Triangles by material: each group one actor with its material (and its checker texture).
-    // A wall (a triangle across much of the scene: a floor, a Cornell box's side) is lit on the
-    // side its light is on, seen from either side: from beside the eye the view often looks at
-    // a box from outside, where a one-sided wall is black (the green wall of lessons 4 and 9).
-    // Two copies, one wound each way, each culled from behind, both with the normal toward the
-    // light (VTK turns a normal seen from behind around).
-    Bounds3 sceneBox;
-    for (const Triangle& t : s.triangles) {
-        sceneBox.extend(t.a);
-        sceneBox.extend(t.b);
-        sceneBox.extend(t.c);
-    }
-    for (const Sphere& sp : s.spheres) {
-        sceneBox.extend(sp.center - Vec3(sp.radius));
-        sceneBox.extend(sp.center + Vec3(sp.radius));
-    }
-    const double wallSize = 0.35 * glm::length(sceneBox.diagonal());
-    const std::optional<Vec3> light =
-        s.lights.empty() ? std::nullopt : std::optional<Vec3>(s.lights.front().position);
-    const auto isWall = [&](const Triangle& t) {
-        Bounds3 b;
-        b.extend(t.a);
-        b.extend(t.b);
-        b.extend(t.c);
-        return light && glm::length(b.diagonal()) >= wallSize;
-    };
-    enum class Side { Both, LitFront, LitBack };  // a plain triangle, a wall's two copies
-    std::map<std::uint32_t, std::vector<const Triangle*>> groups;
-    for (const Triangle& t : s.triangles) groups[t.material].push_back(&t);
-    for (const auto& [id, tris] : groups) {
-        const Material& m = s.materials[id];
-        for (const Side side : {Side::Both, Side::LitFront, Side::LitBack}) {
-            vtkNew<vtkPoints> points;
-            vtkNew<vtkCellArray> cells;
-            vtkNew<vtkFloatArray> tcoords;
-            tcoords->SetNumberOfComponents(2);
-            vtkNew<vtkFloatArray> normals;
-            normals->SetNumberOfComponents(3);
-            for (const Triangle* t : tris) {
-                if ((side == Side::Both) == isWall(*t)) continue;
-                // The checker's cubes cut a plane into squares: texture coordinates along the
-                // two axes the plane spans, shifted by one square where the third axis's cube
-                // is odd.
-                const Vec3 face = glm::cross(t->b - t->a, t->c - t->a);
-                const Vec3 n = glm::abs(face);
-                const int k = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
-                const int i = (k + 1) % 3, j = (k + 2) % 3;
-                const double size = m.checker.size > 0 ? m.checker.size : 1.0;
-                const Vec3 centroid = (t->a + t->b + t->c) / 3.0;
-                const auto odd = static_cast<long long>(std::floor(centroid[k] / size + 1e-7)) & 1;
-                // A wall's normal toward the light; its front (counter-clockwise) that side for
-                // the first copy, the other for the second.
-                Vec3 toLight = glm::normalize(face);
-                const bool facesLight = light && glm::dot(toLight, *light - centroid) >= 0;
-                if (!facesLight) toLight = -toLight;
-                const bool reverse = side != Side::Both && (facesLight != (side == Side::LitFront));
-                vtkIdType ids[3];
-                for (int v = 0; v < 3; ++v) {
-                    const int at = reverse ? 2 - v : v;
-                    const Vec3& p = at == 0 ? t->a : (at == 1 ? t->b : t->c);
-                    ids[v] = points->InsertNextPoint(p.x, p.y, p.z);
-                    const float uv[2] = {float((p[i] / size + 1e-7 + double(odd)) / 2),
-                                         float((p[j] / size + 1e-7) / 2)};
-                    tcoords->InsertNextTypedTuple(uv);
-                    const float nv[3] = {float(toLight.x), float(toLight.y), float(toLight.z)};
-                    normals->InsertNextTypedTuple(nv);
-                }
-                cells->InsertNextCell(3, ids);
-            }
-            if (cells->GetNumberOfCells() == 0) continue;
-            vtkNew<vtkPolyData> mesh;
-            mesh->SetPoints(points);
-            mesh->SetPolys(cells);
-            auto actor = actorOf(mesh, false);
-            applyMaterial(actor->GetProperty(), m);
-            if (side != Side::Both) {
-                mesh->GetPointData()->SetNormals(normals);
-                actor->GetProperty()->BackfaceCullingOn();
-            }
-            if (m.checker.enabled) {
-                mesh->GetPointData()->SetTCoords(tcoords);
-                actor->SetTexture(checkerTexture(m));
-                actor->GetProperty()->SetColor(1, 1, 1);  // the texture carries both colours
-            }
-            out.props.push_back(actor);
-        }
-    }
-    // The scene's own point lights, where they are (a headlight would light what the ray tracer
-    // leaves dark, and wash the Cornell box's coloured walls out).
-    r->RemoveAllLights();
-    r->AutomaticLightCreationOff();
-    const Camera& cam = s.camera;
-    const double glyph = 0.015 * glm::length(cam.lookAt - cam.eye);
-    for (const PointLight& l : s.lights) {
-        vtkNew<vtkLight> light;
-        light->SetLightTypeToSceneLight();
-        light->SetPositional(true);
-        light->SetConeAngle(180);  // a point light, not a spot
-        light->SetPosition(l.position.x, l.position.y, l.position.z);
-        light->SetFocalPoint(cam.lookAt.x, cam.lookAt.y, cam.lookAt.z);
-        const double m = maxComponent(l.intensity);
-        const Color c = m > 0 ? l.intensity / m : Color(1.0);
-        light->SetColor(c.x, c.y, c.z);
-        light->SetIntensity(std::clamp(m, 0.4, 1.0));
-        r->AddLight(light);
-        auto bulb = sphereActor(l.position, glyph, 12);
-        bulb->GetProperty()->LightingOff();
-        bulb->GetProperty()->SetColor(1.0, 0.97, 0.75);
-        out.props.push_back(bulb);
-    }
-    if (s.lights.empty()) {
-        vtkNew<vtkLight> head;
-        head->SetLightTypeToHeadlight();
-        r->AddLight(head);
-    }
-    return out;
-}
-
 std::vector<Vec3> pointsThatMatter(const Session& session) {
     std::vector<Vec3> points;
     const Scene* s = session.scene3D();
@@ -540,14 +212,6 @@ Bounds3 boundsThatMatter(const Session& session) {
     Bounds3 b;
     for (const Vec3& p : pointsThatMatter(session)) b.extend(p);
     return b;
-}
-
-std::vector<Vec3> primitiveCentres(const Scene& s) {
-    std::vector<Vec3> c;
-    c.reserve(s.primitiveCount());
-    for (const Sphere& sp : s.spheres) c.push_back(sp.center);
-    for (const Triangle& t : s.triangles) c.push_back((t.a + t.b + t.c) / 3.0);
-    return c;
 }
 
 void traceProps(const Session& session, double linePx, PropSet& trace, PropSet& eye) {

@@ -1,7 +1,6 @@
-// The 2D view's live editing: ray handles, scene editing, undo and redo, 2D scene files, and the
-// view's zoom, pan and fit. The tool bar sits over the 2D view and is shown with it.
+// The 2D view's live editing (live_edit.h): its actions, their menus, the tool bar over the view.
+#include "live_edit.h"
 #include "file_dialogs.h"
-#include "main_window.h"
 
 #include "live2d.h"
 #include "view2d.h"
@@ -9,6 +8,7 @@
 #include <QAction>
 #include <QEvent>
 #include <QFileInfo>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSplitter>
@@ -37,20 +37,21 @@ class FollowVisibility : public QObject {
 };
 }  // namespace
 
-void MainWindow::createLiveLab() {
-    live2d_ = new Live2D(
-        session_, [this](SceneRef scene) { showLive(std::move(scene)); }, this);
+LiveEdit::LiveEdit(QMainWindow& window, Session& session, View2D* view2D,
+                   std::function<void(SceneRef)> showLive)
+    : QObject(&window), window_(window), session_(session), view2D_(view2D) {
+    live2d_ = new Live2D(session_, std::move(showLive), &window_);
     view2D_->setLive(live2d_);
     connect(live2d_, &Live2D::problem, this, [this](const QString& why) {
-        statusBar()->showMessage(tr("The edit was not applied: %1").arg(why));
+        window_.statusBar()->showMessage(tr("The edit was not applied: %1").arg(why));
     });
     QUndoStack* undo = live2d_->undoStack();
-    QAction* undoAction = undo->createUndoAction(this, tr("&Undo"));
+    QAction* undoAction = undo->createUndoAction(&window_, tr("&Undo"));
     undoAction->setObjectName("live2dUndoAction");
     undoAction->setShortcuts(QKeySequence::Undo);
     // The tool bar's button keeps one short label (the menu says what would be undone).
     undoAction->setIconText(tr("Undo"));
-    QAction* redoAction = undo->createRedoAction(this, tr("&Redo"));
+    QAction* redoAction = undo->createRedoAction(&window_, tr("&Redo"));
     redoAction->setObjectName("live2dRedoAction");
     redoAction->setIconText(tr("Redo"));
     redoAction->setShortcuts(
@@ -58,7 +59,7 @@ void MainWindow::createLiveLab() {
 
     const auto action = [this](const QString& text, const QString& iconText, const char* name,
                                QKeySequence key, auto slot) {
-        auto* a = new QAction(text, this);
+        auto* a = new QAction(text, &window_);
         a->setIconText(iconText);
         a->setObjectName(QString::fromLatin1(name));
         if (!key.isEmpty()) a->setShortcut(key);
@@ -99,7 +100,7 @@ void MainWindow::createLiveLab() {
                    const auto prim = view2D_->selected();
                    if (!s || !prim || *prim >= s->primitiveCount()) return;
                    if (s->primitiveCount() == 1) {
-                       statusBar()->showMessage(
+                       window_.statusBar()->showMessage(
                            tr("The last primitive stays: a scene needs one circle or segment"));
                        return;
                    }
@@ -144,30 +145,55 @@ void MainWindow::createLiveLab() {
         for (QAction* a : editing) a->setEnabled(session_.is2D());
         // The gesture that gives a scene its example ray, said where the user looks.
         if (const Scene2D* s = session_.scene2D(); s && !s->exampleRay)
-            statusBar()->showMessage(
+            window_.statusBar()->showMessage(
                 tr("This 2D scene has no example ray: Shift+drag in the 2D view draws one, from "
                    "where the drag starts to where it ends"));
     };
     connect(&session_, &Session::sceneChanged, this, follow);
     follow();
 
-    menus_.edit->addActions({undoAction, redoAction});
-    menus_.edit->addSeparator();
-    menus_.edit->addActions({addCircle, addSegment, remove});
-    menus_.edit->addSeparator();
-    menus_.edit->addActions({snapCorners, snapAngle});
-    menus_.file->insertAction(actions_.exportTrace, save2D);
-    menus_.view->insertAction(actions_.compare, fit);
+    undo_ = undoAction;
+    redo_ = redoAction;
+    addCircle_ = addCircle;
+    addSegment_ = addSegment;
+    remove_ = remove;
+    snapCorners_ = snapCorners;
+    snapAngle_ = snapAngle;
+    fit_ = fit;
+    save2D_ = save2D;
+    placeToolBar();
+}
 
+void LiveEdit::newHistory() {
+    live2d_->undoStack()->clear();
+}
+
+void LiveEdit::addFileItems(QMenu* file) {
+    file->addAction(save2D_);
+}
+
+void LiveEdit::addEditItems(QMenu* edit) {
+    edit->addActions({undo_, redo_});
+    edit->addSeparator();
+    edit->addActions({addCircle_, addSegment_, remove_});
+    edit->addSeparator();
+    edit->addActions({snapCorners_, snapAngle_});
+}
+
+void LiveEdit::addViewItems(QMenu* view) {
+    view->addAction(fit_);
+}
+
+void LiveEdit::placeToolBar() {
     // The tool bar over the 2D view, in a box that takes the view's place in the splitter.
     auto* bar = new QToolBar(tr("2D editing"));
     bar->setObjectName("live2dBar");
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    bar->addActions({fit, addCircle, addSegment, remove});
+    bar->addActions({fit_, addCircle_, addSegment_, remove_});
     bar->addSeparator();
-    bar->addActions({snapCorners, snapAngle});
+    bar->addActions({snapCorners_, snapAngle_});
     bar->addSeparator();
-    bar->addActions({undoAction, redoAction});
+    bar->addActions({undo_, redo_});
     auto* splitter = qobject_cast<QSplitter*>(view2D_->parentWidget());
     auto* box = new QWidget;
     box->setObjectName("view2DBox");
@@ -184,15 +210,15 @@ void MainWindow::createLiveLab() {
     new FollowVisibility(view2D_, box);
 }
 
-void MainWindow::save2DSceneDialog() {
-    QString path = saveFileName(this, tr("Save 2D scene as"), tr("2D scenes (*.json)"));
+void LiveEdit::save2DSceneDialog() {
+    QString path = saveFileName(&window_, tr("Save 2D scene as"), tr("2D scenes (*.json)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
     if (const QString problem = live2d_->save(path); !problem.isEmpty())
-        QMessageBox::warning(this, tr("Cannot save"), problem);
+        QMessageBox::warning(&window_, tr("Cannot save"), problem);
     else {
-        statusBar()->showMessage(tr("Saved %1").arg(path));
-        setWindowTitle(tr("raystep - %1").arg(path));  // the scene shown is that file's now
+        window_.statusBar()->showMessage(tr("Saved %1").arg(path));
+        window_.setWindowTitle(tr("raystep - %1").arg(path));  // the scene shown is that file's now
     }
 }
 
