@@ -1,0 +1,23 @@
+// The one table of exercise kinds: a new kind is one more unit here (docs/architecture.md, "Add
+// an exercise kind").
+#include "course/exercises/kind_unit.h"
+
+#include <stdexcept>
+
+namespace raystep::exercises {
+
+const std::vector<const ExerciseKindUnit*>& kindUnits() {
+    // In the order of ExerciseKind: a key two kinds take is named after the first.
+    static const std::vector<const ExerciseKindUnit*> units{
+        &nextCellUnit(), &valueUnit(),    &pickSplitUnit(), &countUnit(),   &hitOrMissUnit(),
+        &choiceUnit(),   &sequenceUnit(), &sweepPickUnit(), &computeUnit(), &overlapUnit()};
+    return units;
+}
+
+const ExerciseKindUnit& unitOf(ExerciseKind kind) {
+    for (const ExerciseKindUnit* u : kindUnits())
+        if (u->kind() == kind) return *u;
+    throw std::logic_error("no unit for exercise kind " + std::to_string(static_cast<int>(kind)));
+}
+
+}  // namespace raystep::exercises
