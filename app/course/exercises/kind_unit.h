@@ -173,17 +173,5 @@ const std::vector<const ExerciseKindUnit*>& kindUnits();
 /// The unit of `kind` (every ExerciseKind has one: the course tests check it).
 const ExerciseKindUnit& unitOf(ExerciseKind kind);
 
-// The units (one file each, app/course/exercises/<kind>.cpp).
-const ExerciseKindUnit& nextCellUnit();
-const ExerciseKindUnit& valueUnit();
-const ExerciseKindUnit& pickSplitUnit();
-const ExerciseKindUnit& countUnit();
-const ExerciseKindUnit& hitOrMissUnit();
-const ExerciseKindUnit& choiceUnit();
-const ExerciseKindUnit& sequenceUnit();
-const ExerciseKindUnit& sweepPickUnit();
-const ExerciseKindUnit& computeUnit();
-const ExerciseKindUnit& overlapUnit();
-
 }  // namespace exercises
 }  // namespace raystep

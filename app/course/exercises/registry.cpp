@@ -6,6 +6,18 @@
 
 namespace raystep::exercises {
 
+// The units, one file each (app/course/exercises/<kind>.cpp).
+const ExerciseKindUnit& nextCellUnit();
+const ExerciseKindUnit& valueUnit();
+const ExerciseKindUnit& pickSplitUnit();
+const ExerciseKindUnit& countUnit();
+const ExerciseKindUnit& hitOrMissUnit();
+const ExerciseKindUnit& choiceUnit();
+const ExerciseKindUnit& sequenceUnit();
+const ExerciseKindUnit& sweepPickUnit();
+const ExerciseKindUnit& computeUnit();
+const ExerciseKindUnit& overlapUnit();
+
 const std::vector<const ExerciseKindUnit*>& kindUnits() {
     // In the order of ExerciseKind: a key two kinds take is named after the first.
     static const std::vector<const ExerciseKindUnit*> units{
