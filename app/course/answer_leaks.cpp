@@ -2,6 +2,7 @@
 // either decimal mark, cells in brackets or not, sentences), not searched for one spelling.
 #include "course/answer_leaks.h"
 
+#include "course/exercises/kind_unit.h"
 #include "course/lesson_trace.h"
 
 #include "raystep/base/i18n.h"
@@ -331,6 +332,10 @@ std::optional<std::size_t> namesPrimitive(const std::vector<std::pair<std::strin
     return std::nullopt;
 }
 
+}  // namespace
+
+namespace exercises {
+
 /// The name a 3D primitive goes by when its material is its own ("the mirror", "lo specchio"):
 /// the material's name, and the Italian of the built-in scenes' materials.
 std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
@@ -355,98 +360,14 @@ std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     return names;
 }
 
-/// The nodes an overlap exercise may name: every node of the tree.
-std::vector<int> nodesEntered(const Exercise& ex, const EventLog& log) {
-    (void)ex;  // an overlap is about every node of the tree
-    std::vector<int> ids;
-    for (std::size_t id = 0; id < log.nodes().size(); ++id) ids.push_back(int(id));
-    return ids;
-}
-
-}  // namespace
+}  // namespace exercises
 
 AnswerForms answerForms(const Exercise& ex, const EventLog& log, const std::string& lessonFile,
                         const LessonScene* scene, const std::vector<GridSweepRow>* sweep) {
     AnswerForms f;
     f.tolerance = ex.tolerance;
     f.dims = log.dims();
-    if (ex.kind == ExerciseKind::Choice || ex.kind == ExerciseKind::Count) return f;
-    const Answer a = referenceAnswer(ex, log, lessonFile, sweep);
-    const auto addNumber = [&](double v) {
-        // Whole 0 and 1 are in every formula.
-        if (!(v == std::floor(v) && std::abs(v) <= 1.0)) f.numbers.push_back(v);
-    };
-    switch (ex.kind) {
-        case ExerciseKind::Value:
-        case ExerciseKind::Compute:
-            addNumber(a.numbers.at(0));
-            f.describe = formatNumber(a.numbers[0]);
-            break;
-        case ExerciseKind::NextCell:
-        case ExerciseKind::Sequence:
-            if (ex.kind == ExerciseKind::Sequence && ex.ofNodes) {
-                for (const double n : a.numbers) f.nodes.push_back(static_cast<int>(n));
-            } else {
-                const int per = ex.kind == ExerciseKind::NextCell
-                                    ? static_cast<int>(a.numbers.size())
-                                    : std::max(a.perItem, 1);
-                f.dims = per;
-                for (std::size_t k = 0; k + per <= a.numbers.size(); k += per) {
-                    std::array<int, 3> c{0, 0, 0};
-                    for (int i = 0; i < per; ++i) c[i] = static_cast<int>(a.numbers[k + i]);
-                    f.cells.push_back(c);
-                }
-            }
-            f.describe = formatAnswer(ex, a);
-            break;
-        case ExerciseKind::HitOrMiss: {
-            AnswerForms::Outcome o;
-            o.hit = a.hit.value_or(false);
-            if (const auto at = answerEventIndex(ex, log, lessonFile))
-                if (const auto* t = std::get_if<PrimitiveTest>(&log.events()[*at]))
-                    o.prim = t->prim;
-            if (const auto* s2 = scene ? std::get_if<Scene2D>(scene) : nullptr) {
-                o.circle = s2->isCircle(o.prim);
-                o.segment = !o.circle;
-                o.onlyOfItsKind = (o.circle ? s2->circles.size() : s2->segments.size()) == 1;
-            } else if (const auto* s3 = scene ? std::get_if<Scene>(scene) : nullptr) {
-                o.sphere = s3->isSphere(o.prim);
-                o.triangle = !o.sphere;
-                o.onlyOfItsKind = (o.sphere ? s3->spheres.size() : s3->triangles.size()) == 1;
-                o.names = uniqueNames(*s3, o.prim);
-            }
-            f.outcome = o;
-            if (o.hit && ex.withT && !a.numbers.empty()) addNumber(a.numbers[0]);
-            f.describe = std::string(o.hit ? "a hit" : "a miss") + " on primitive " +
-                         std::to_string(o.prim) +
-                         (f.numbers.empty() ? "" : " at t = " + formatNumber(f.numbers[0]));
-            break;
-        }
-        case ExerciseKind::PickSplit:
-            f.plane = AnswerForms::Plane{static_cast<int>(a.numbers.at(0)), a.numbers.at(1)};
-            f.describe = formatAnswer(ex, a);
-            break;
-        case ExerciseKind::SweepPick:
-            f.resolution = static_cast<int>(a.numbers.at(0));
-            f.describe = formatAnswer(ex, a) + " cells per axis";
-            break;
-        case ExerciseKind::Overlap: {
-            // Every right pair is an answer: each one written gives the exercise away.
-            const std::vector<int> ids = nodesEntered(ex, log);
-            for (std::size_t j = 0; j < ids.size(); ++j)
-                for (std::size_t i = 0; i < ids.size(); ++i) {
-                    if (i == j) continue;
-                    Answer pair;
-                    pair.numbers = {double(ids[i]), double(ids[j])};
-                    if (checkAnswer(ex, log, pair, Language::En, lessonFile).correct)
-                        f.nodePairs.push_back({ids[i], ids[j]});
-                }
-            f.describe = "nodes " + formatAnswer(ex, a);
-            break;
-        }
-        default:
-            break;
-    }
+    exercises::unitOf(ex.kind).answerForms({ex, log, lessonFile, scene, sweep}, f);
     return f;
 }
 

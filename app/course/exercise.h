@@ -62,6 +62,18 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
 /// other kinds.
 std::string answerPlaceholder(const Exercise& ex, int dims, Language lang);
 
+/// The answer input an exercise wants, Qt-free: the app may choose its widget from it. Number:
+/// a text box that takes one number; SplitPicker: the split's candidates listed; Options: one
+/// button an option; SweepRows: the sweep's resolutions listed.
+struct AnswerInput {
+    enum class Widget { Text, Number, SplitPicker, Options, SweepRows };
+    /// What a click on a cell of the 2D view does to the answer (where there is a 2D view).
+    enum class ViewClick { None, Fills, Appends };
+    Widget widget = Widget::Text;
+    ViewClick click = ViewClick::None;
+};
+AnswerInput answerInput(const Exercise& ex);
+
 /// What a wrong answer's feedback advises for the next try, in `lang`: the panel shows it after
 /// "Not right yet (try k of 3)." when no slip is named. By the exercise's kind; `replayHeld`: quiz
 /// mode holds the replay at the exercise's position (it is open and not yet answered right);

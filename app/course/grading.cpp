@@ -5,6 +5,7 @@
 #include "course/answer_leaks.h"
 #include "course/compute.h"
 #include "course/exercise.h"
+#include "course/exercises/kind_unit.h"
 #include "course/lesson_trace.h"
 
 #include "raystep/base/json_reader.h"
@@ -63,7 +64,7 @@ void validateLesson(const Lesson& lesson) {
 std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRun& run) {
     const bool needed =
         std::any_of(lesson.exercises.begin(), lesson.exercises.end(),
-                    [](const Exercise& e) { return e.kind == ExerciseKind::SweepPick; });
+                    [](const Exercise& e) { return exercises::unitOf(e.kind).needsSweep(); });
     if (!needed || !lesson.sweep) return {};
     return runGridSweep(*run.scene, *lesson.sweep);
 }
@@ -71,9 +72,10 @@ std::vector<GridSweepRow> sweepRowsIfNeeded(const Lesson& lesson, const LessonRu
 void checkComputePrompts(const Lesson& lesson) {
     for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
         const Exercise& ex = lesson.exercises[i];
-        if (ex.kind != ExerciseKind::Compute) continue;
+        const std::vector<double>* given = exercises::unitOf(ex.kind).givenNumbers(ex);
+        if (!given) continue;
         for (const Language lang : {Language::En, Language::It}) {
-            const auto missing = numbersNotInText(ex.given.numbers, ex.prompt.in(lang), lang);
+            const auto missing = numbersNotInText(*given, ex.prompt.in(lang), lang);
             if (!missing.empty())
                 throw LessonError(lesson.file, ex.line,
                                   "exercises[" + std::to_string(i) + "].prompt." +
@@ -114,7 +116,7 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
     for (std::size_t j = 0; j < lesson.exercises.size(); ++j) {
         const Exercise& ex = lesson.exercises[j];
         const EventLog& log = logs.of(ex.setup);
-        if (ex.kind == ExerciseKind::SweepPick && !swept) continue;
+        if (exercises::unitOf(ex.kind).needsSweep() && !swept) continue;
         if (!resolvePosition(ex.at, log)) continue;  // validateLesson names it
         explanations[j].en =
             checkAnswer(ex, log, Answer{}, Language::En, lesson.file, sweep, scene).feedback;
@@ -132,7 +134,7 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
             throw LessonError(lesson.file, ex.line, key + ".at",
                               "the answer's event comes before the exercise's position, so it is "
                               "on screen while the exercise is open");
-        if (ex.kind == ExerciseKind::SweepPick && !swept) continue;
+        if (exercises::unitOf(ex.kind).needsSweep() && !swept) continue;
         const AnswerForms forms = answerForms(ex, log, lesson.file, scene, sweep);
         // Where a student reads before answering: the lesson's text and errata, the steps the
         // replay may show while the exercise holds it (all of them for an exercise that does not
@@ -155,8 +157,9 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
         for (std::size_t j = 0; j < lesson.exercises.size(); ++j) {
             const Exercise& other = lesson.exercises[j];
             const std::string ok = "exercises[" + std::to_string(j) + "]";
-            const TextRole role =
-                other.kind == ExerciseKind::Compute ? TextRole::GivenData : TextRole::Exercise;
+            const TextRole role = exercises::unitOf(other.kind).givenNumbers(other)
+                                      ? TextRole::GivenData
+                                      : TextRole::Exercise;
             shown.push_back({ok + ".prompt", other.prompt, j == i, role});
             for (std::size_t k = 0; k < other.hints.size(); ++k)
                 shown.push_back(
@@ -170,10 +173,11 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
                 shown.push_back({ok + "'s explanation", explanations[j]});
         }
         // A compute exercise's own data may equal its answer; the prompt must state them.
+        const std::vector<double>* given = exercises::unitOf(ex.kind).givenNumbers(ex);
         const bool givenEqualsAnswer =
-            ex.kind == ExerciseKind::Compute &&
-            std::any_of(ex.given.numbers.begin(), ex.given.numbers.end(),
-                        [&](double g) { return !forms.numbers.empty() && g == forms.numbers[0]; });
+            given && std::any_of(given->begin(), given->end(), [&](double g) {
+                return !forms.numbers.empty() && g == forms.numbers[0];
+            });
         for (const Shown& s : shown) {
             if (givenEqualsAnswer && s.ownPrompt) continue;
             for (const Language lang : {Language::En, Language::It}) {

@@ -3,6 +3,7 @@
 #include "course/lesson.h"
 
 #include "course/embedded_lessons.h"
+#include "course/exercises/kind_unit.h"
 #include "course/palette.h"
 
 #include "raystep/base/format.h"
@@ -23,16 +24,6 @@ using Reader = detail::JsonReader<LessonError>;
 
 namespace {
 
-constexpr NameTable<ExerciseKind, 10> kExerciseKinds{{{ExerciseKind::NextCell, "next_cell"},
-                                                      {ExerciseKind::Value, "value"},
-                                                      {ExerciseKind::PickSplit, "pick_split"},
-                                                      {ExerciseKind::Count, "count"},
-                                                      {ExerciseKind::HitOrMiss, "hit_or_miss"},
-                                                      {ExerciseKind::Choice, "choice"},
-                                                      {ExerciseKind::Sequence, "sequence"},
-                                                      {ExerciseKind::SweepPick, "sweep_pick"},
-                                                      {ExerciseKind::Compute, "compute"},
-                                                      {ExerciseKind::Overlap, "overlap"}}};
 constexpr NameTable<SweepMetric, 3> kSweepMetrics{{{SweepMetric::Cost, "cost"},
                                                    {SweepMetric::TestsPerRay, "tests_per_ray"},
                                                    {SweepMetric::CellsPerRay, "cells_per_ray"}}};
@@ -57,6 +48,11 @@ constexpr NameTable<LessonView, 4> kViews{{{LessonView::View2D, "2d"},
                                            {LessonView::View3D, "3d"},
                                            {LessonView::Image, "image"},
                                            {LessonView::Board, "board"}}};
+
+}  // namespace
+
+// What a kind's unit reads its keys with too (course/exercises/kind_unit.h).
+namespace lesson_reading {
 
 std::optional<std::size_t> eventKindNamed(std::string_view name) {
     for (std::size_t i = 0; i < kEventNames.size(); ++i)
@@ -99,8 +95,7 @@ std::string readOneText(const Reader& r, const json& v, const std::string& p, La
 
 /// TEXT: {"en": ..., "it": ...}; with `plainAllowed`, also one string for both languages (a
 /// slide's line, quoted as written).
-LocalText readText(const Reader& r, const json& j, const std::string& path,
-                   bool plainAllowed = false) {
+LocalText readText(const Reader& r, const json& j, const std::string& path, bool plainAllowed) {
     if (plainAllowed && (j.is_string() || j.is_array())) {
         LocalText t;
         t.en = readOneText(r, j, path, Language::En);
@@ -118,41 +113,6 @@ LocalText readText(const Reader& r, const json& j, const std::string& path,
     });
     if (t.en.empty()) r.fail(JsonLineMap::child(path, "en"), "must not be empty");
     return t;
-}
-
-/// "hint": one TEXT, or an array of TEXTs shown one at a time.
-std::vector<LocalText> readHints(const Reader& r, const json& j, const std::string& path) {
-    std::vector<LocalText> hints;
-    if (j.is_array()) {
-        if (j.empty()) r.fail(path, "expected a hint {\"en\": ..., \"it\": ...} or a list of them");
-        for (std::size_t i = 0; i < j.size(); ++i)
-            hints.push_back(readText(r, j[i], JsonLineMap::element(path, i)));
-    } else {
-        hints.push_back(readText(r, j, path));
-    }
-    return hints;
-}
-
-/// "errata": [{"slide": TEXT, "correct": TEXT, "why": TEXT}, ...].
-std::vector<Erratum> readErrata(const Reader& r, const json& j, const std::string& path) {
-    if (!j.is_array())
-        r.fail(path, "expected a list of {\"slide\": ..., \"correct\": ..., \"why\": ...}");
-    std::vector<Erratum> errata;
-    for (std::size_t i = 0; i < j.size(); ++i) {
-        const std::string p = JsonLineMap::element(path, i);
-        r.requireObject(j[i], p);
-        r.checkKeys(j[i], p, {"slide", "correct", "why"});
-        for (const char* key : {"slide", "correct", "why"})
-            if (!j[i].contains(key)) r.fail(p, std::string("\"") + key + "\" is required");
-        Erratum e;
-        e.line = r.lines().lineOf(p);
-        // The slide is quoted as written: its Italian original may stand for both languages.
-        e.slide = readText(r, j[i]["slide"], JsonLineMap::child(p, "slide"), true);
-        e.correct = readText(r, j[i]["correct"], JsonLineMap::child(p, "correct"), true);
-        e.why = readText(r, j[i]["why"], JsonLineMap::child(p, "why"));
-        errata.push_back(std::move(e));
-    }
-    return errata;
 }
 
 ReplayPosition readPosition(const Reader& r, const json& j, const std::string& path) {
@@ -187,6 +147,48 @@ ReplayPosition readPosition(const Reader& r, const json& j, const std::string& p
         at.nth = r.integer(v, p, 1, 100'000'000);
     });
     return at;
+}
+
+}  // namespace lesson_reading
+
+using lesson_reading::readPosition;
+using lesson_reading::readText;
+
+namespace {
+
+/// "hint": one TEXT, or an array of TEXTs shown one at a time.
+std::vector<LocalText> readHints(const Reader& r, const json& j, const std::string& path) {
+    std::vector<LocalText> hints;
+    if (j.is_array()) {
+        if (j.empty()) r.fail(path, "expected a hint {\"en\": ..., \"it\": ...} or a list of them");
+        for (std::size_t i = 0; i < j.size(); ++i)
+            hints.push_back(readText(r, j[i], JsonLineMap::element(path, i)));
+    } else {
+        hints.push_back(readText(r, j, path));
+    }
+    return hints;
+}
+
+/// "errata": [{"slide": TEXT, "correct": TEXT, "why": TEXT}, ...].
+std::vector<Erratum> readErrata(const Reader& r, const json& j, const std::string& path) {
+    if (!j.is_array())
+        r.fail(path, "expected a list of {\"slide\": ..., \"correct\": ..., \"why\": ...}");
+    std::vector<Erratum> errata;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const std::string p = JsonLineMap::element(path, i);
+        r.requireObject(j[i], p);
+        r.checkKeys(j[i], p, {"slide", "correct", "why"});
+        for (const char* key : {"slide", "correct", "why"})
+            if (!j[i].contains(key)) r.fail(p, std::string("\"") + key + "\" is required");
+        Erratum e;
+        e.line = r.lines().lineOf(p);
+        // The slide is quoted as written: its Italian original may stand for both languages.
+        e.slide = readText(r, j[i]["slide"], JsonLineMap::child(p, "slide"), true);
+        e.correct = readText(r, j[i]["correct"], JsonLineMap::child(p, "correct"), true);
+        e.why = readText(r, j[i]["why"], JsonLineMap::child(p, "why"));
+        errata.push_back(std::move(e));
+    }
+    return errata;
 }
 
 /// "setup": its keys over `l` (the lesson's setup, or a copy of it for a step or an exercise).
@@ -338,196 +340,32 @@ void readTrace(const Reader& r, const json& j, const std::string& path, LessonTr
                                                       std::to_string(t.height) + " image");
 }
 
-/// A vector of 2 or 3 numbers (`lengths` says which), appended to `numbers` as written.
-std::array<double, 3> readVector(const Reader& r, const json& j, const std::string& path,
-                                 int lengths, std::vector<double>& numbers, int* length = nullptr) {
-    const bool two = lengths & 2, three = lengths & 1;
-    if (!j.is_array() || !((two && j.size() == 2) || (three && j.size() == 3)))
-        r.fail(path, std::string("expected an array of ") +
-                         (two && three ? "2 or 3"
-                          : two        ? "2"
-                                       : "3") +
-                         " numbers, got " + Reader::typeName(j));
-    std::array<double, 3> v{0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i < j.size(); ++i) {
-        v[i] = r.number(j[i], JsonLineMap::element(path, i));
-        numbers.push_back(v[i]);
-    }
-    if (length) *length = static_cast<int>(j.size());
-    return v;
-}
-constexpr int kThree = 1, kTwoOrThree = 3;
-
-ComputeGiven readGiven(const Reader& r, const json& j, const std::string& path) {
-    using Shape = ComputeGiven::Shape;
-    r.requireObject(j, path);
-    r.checkKeys(j, path, {"ray", "sphere", "triangle", "plane", "box", "grid", "node", "nl", "nr"});
-    ComputeGiven g;
-    auto& nums = g.numbers;
-    const auto child = [&](const char* key) { return JsonLineMap::child(path, key); };
-    if (j.contains("node")) {
-        g.shape = Shape::Node;
-        for (const char* key : {"plane", "nl", "nr"})
-            if (!j.contains(key))
-                r.fail(path, std::string("a node's SAH cost needs \"") + key + "\"");
-        for (const char* key : {"ray", "sphere", "triangle", "box", "grid"})
-            if (j.contains(key)) r.fail(child(key), "a node's SAH cost takes no ray or shape");
-        const std::string np = child("node");
-        r.requireObject(j["node"], np);
-        r.checkKeys(j["node"], np, {"min", "max"});
-        if (!j["node"].contains("min") || !j["node"].contains("max"))
-            r.fail(np, "expected {\"min\": [..], \"max\": [..]}");
-        int n1 = 0, n2 = 0;
-        g.lo =
-            readVector(r, j["node"]["min"], JsonLineMap::child(np, "min"), kTwoOrThree, nums, &n1);
-        g.hi =
-            readVector(r, j["node"]["max"], JsonLineMap::child(np, "max"), kTwoOrThree, nums, &n2);
-        if (n1 != n2) r.fail(JsonLineMap::child(np, "max"), "min and max differ in length");
-        g.dims = n1;
-        for (int i = 0; i < g.dims; ++i)
-            if (!(g.hi[i] > g.lo[i])) r.fail(np, "max must be above min on every axis");
-        const std::string pp = child("plane");
-        r.requireObject(j["plane"], pp);
-        r.checkKeys(j["plane"], pp, {"axis", "at"});
-        if (!j["plane"].contains("axis") || !j["plane"].contains("at"))
-            r.fail(pp, "expected {\"axis\": \"x\", \"at\": P}");
-        const std::string ap = JsonLineMap::child(pp, "axis");
-        const std::string axis = r.string(j["plane"]["axis"], ap);
-        g.axis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
-        if (g.axis < 0 || g.axis >= g.dims)
-            r.fail(ap, g.dims == 2 ? "expected \"x\" or \"y\"" : "expected \"x\", \"y\" or \"z\"");
-        const std::string atp = JsonLineMap::child(pp, "at");
-        g.at = r.number(j["plane"]["at"], atp);
-        nums.push_back(g.at);
-        if (!(g.at > g.lo[g.axis] && g.at < g.hi[g.axis]))
-            r.fail(atp, "the plane must lie strictly inside the node");
-        g.nl = r.integer(j["nl"], child("nl"), 0, 1'000'000);
-        g.nr = r.integer(j["nr"], child("nr"), 0, 1'000'000);
-        nums.push_back(g.nl);
-        nums.push_back(g.nr);
-        return g;
-    }
-    for (const char* key : {"nl", "nr"})
-        if (j.contains(key)) r.fail(child(key), "only a node's SAH cost takes this key");
-    if (!j.contains("ray"))
-        r.fail(path, "the given data needs its \"ray\": {\"o\": .., \"d\": ..}");
-    int shapes = 0;
-    for (const char* key : {"sphere", "triangle", "plane", "box", "grid"})
-        shapes += j.contains(key);
-    if (shapes != 1)
-        r.fail(path,
-               "give the ray and exactly one of \"sphere\", \"triangle\", \"plane\", \"box\", "
-               "\"grid\" (or a \"node\" with its \"plane\", \"nl\", \"nr\")");
-    const bool grid = j.contains("grid");
-    const std::string rp = child("ray");
-    r.requireObject(j["ray"], rp);
-    r.checkKeys(j["ray"], rp, {"o", "d"});
-    if (!j["ray"].contains("o") || !j["ray"].contains("d"))
-        r.fail(rp, "expected {\"o\": [..], \"d\": [..]}");
-    int no = 0, nd = 0;
-    g.o = readVector(r, j["ray"]["o"], JsonLineMap::child(rp, "o"), grid ? kTwoOrThree : kThree,
-                     nums, &no);
-    g.d = readVector(r, j["ray"]["d"], JsonLineMap::child(rp, "d"), grid ? kTwoOrThree : kThree,
-                     nums, &nd);
-    if (no != nd) r.fail(JsonLineMap::child(rp, "d"), "o and d differ in length");
-    g.dims = no;
-    if (g.d[0] == 0.0 && g.d[1] == 0.0 && g.d[2] == 0.0)
-        r.fail(JsonLineMap::child(rp, "d"), "the direction must not be zero");
-    if (j.contains("sphere")) {
-        g.shape = Shape::Sphere;
-        const std::string sp = child("sphere");
-        r.requireObject(j["sphere"], sp);
-        r.checkKeys(j["sphere"], sp, {"c", "r"});
-        if (!j["sphere"].contains("c") || !j["sphere"].contains("r"))
-            r.fail(sp, "expected {\"c\": [x, y, z], \"r\": R}");
-        g.center = readVector(r, j["sphere"]["c"], JsonLineMap::child(sp, "c"), kThree, nums);
-        g.radius = r.positive(j["sphere"]["r"], JsonLineMap::child(sp, "r"));
-        nums.push_back(g.radius);
-    } else if (j.contains("triangle")) {
-        g.shape = Shape::Triangle;
-        const std::string tp = child("triangle");
-        if (!j["triangle"].is_array() || j["triangle"].size() != 3)
-            r.fail(tp, "expected three corners [[x, y, z], [x, y, z], [x, y, z]]");
-        for (std::size_t i = 0; i < 3; ++i)
-            g.tri[i] = readVector(r, j["triangle"][i], JsonLineMap::element(tp, i), kThree, nums);
-    } else if (j.contains("plane")) {
-        g.shape = Shape::Plane;
-        const std::string pp = child("plane");
-        r.requireObject(j["plane"], pp);
-        r.checkKeys(j["plane"], pp, {"n", "k"});
-        if (!j["plane"].contains("n") || !j["plane"].contains("k"))
-            r.fail(pp, "expected {\"n\": [x, y, z], \"k\": K} (the points p with p.n = k)");
-        g.normal = readVector(r, j["plane"]["n"], JsonLineMap::child(pp, "n"), kThree, nums);
-        g.k = r.number(j["plane"]["k"], JsonLineMap::child(pp, "k"));
-        nums.push_back(g.k);
-    } else if (j.contains("box")) {
-        g.shape = Shape::Box;
-        const std::string bp = child("box");
-        r.requireObject(j["box"], bp);
-        r.checkKeys(j["box"], bp, {"min", "max"});
-        if (!j["box"].contains("min") || !j["box"].contains("max"))
-            r.fail(bp, "expected {\"min\": [x, y, z], \"max\": [x, y, z]}");
-        g.lo = readVector(r, j["box"]["min"], JsonLineMap::child(bp, "min"), kThree, nums);
-        g.hi = readVector(r, j["box"]["max"], JsonLineMap::child(bp, "max"), kThree, nums);
-        for (int i = 0; i < 3; ++i)
-            if (!(g.hi[i] > g.lo[i])) r.fail(bp, "max must be above min on every axis");
-    } else {
-        g.shape = Shape::Grid;
-        const std::string gp = child("grid");
-        r.requireObject(j["grid"], gp);
-        r.checkKeys(j["grid"], gp, {"min", "cell", "res"});
-        if (!j["grid"].contains("min") || !j["grid"].contains("cell"))
-            r.fail(gp,
-                   "expected {\"min\": [..], \"cell\": [..]} (and \"res\": [..] cells per axis)");
-        const int lengths = g.dims == 2 ? 2 : kThree;
-        g.lo = readVector(r, j["grid"]["min"], JsonLineMap::child(gp, "min"), lengths, nums);
-        g.hi = readVector(r, j["grid"]["cell"], JsonLineMap::child(gp, "cell"), lengths, nums);
-        for (int i = 0; i < g.dims; ++i)
-            if (!(g.hi[i] > 0.0))
-                r.fail(JsonLineMap::child(gp, "cell"), "a cell's size must be greater than 0");
-        ifPresent(j["grid"], gp, "res", [&](const json& v, const std::string& p) {
-            if (!v.is_array() || static_cast<int>(v.size()) != g.dims)
-                r.fail(p, "expected " + std::to_string(g.dims) + " whole numbers (cells per axis)");
-            for (int i = 0; i < g.dims; ++i) {
-                g.res[i] = r.integer(v[i], JsonLineMap::element(p, i), 1, 1'000'000);
-                nums.push_back(g.res[i]);
-            }
-        });
-    }
-    return g;
-}
-
-/// The quantities a Compute exercise may ask of its shape.
-std::vector<std::string> computeQuantities(const ComputeGiven& g) {
-    using Shape = ComputeGiven::Shape;
-    switch (g.shape) {
-        case Shape::Sphere:
-            return {"a", "b", "c", "discriminant", "t0", "t1", "t"};
-        case Shape::Triangle:
-            return {"t", "u", "v", "n.dir"};
-        case Shape::Plane:
-            return {"n.dir", "t"};
-        case Shape::Box:
-            return {"t_enter", "t_exit"};
-        case Shape::Grid: {
-            std::vector<std::string> q;
-            for (const char* what : {"tMax.", "tDelta.", "cell."})
-                for (int i = 0; i < g.dims; ++i) q.push_back(what + std::string(1, "xyz"[i]));
-            return q;
-        }
-        case Shape::Node:
-            return {"pL", "pR", "sahCost"};
-    }
-    return {};
+/// Every kind's own keys, each once, with the first kind (in the registry's order) that takes it.
+const std::vector<std::pair<const char*, std::string_view>>& kindKeys() {
+    static const auto keys = [] {
+        std::vector<std::pair<const char*, std::string_view>> out;
+        for (const exercises::ExerciseKindUnit* u : exercises::kindUnits())
+            for (const char* key : u->keys())
+                if (std::none_of(out.begin(), out.end(),
+                                 [&](const auto& k) { return std::string_view(k.first) == key; }))
+                    out.emplace_back(key, u->name());
+        return out;
+    }();
+    return keys;
 }
 
 Exercise readExercise(const Reader& r, const json& j, const std::string& path,
                       const LessonSetup& lessonSetup) {
     r.requireObject(j, path);
-    r.checkKeys(j, path,
-                {"id", "type", "at", "prompt", "hint", "quantity", "count", "ray_kind", "ray_depth",
-                 "until", "with_t", "tolerance", "choices", "answer", "of", "length", "metric",
-                 "given", "setup"});
+    // The keys every exercise takes, then each kind's own.
+    std::vector<std::string> allowed{"id", "type", "at", "prompt", "hint", "tolerance", "setup"};
+    for (const auto& [key, owner] : kindKeys()) allowed.emplace_back(key);
+    for (const auto& [key, value] : j.items())
+        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+            std::string names;
+            for (const std::string& a : allowed) names += (names.empty() ? "" : ", ") + a;
+            r.fail(JsonLineMap::child(path, key), "unknown key (allowed here: " + names + ")");
+        }
     Exercise ex;
     ex.line = r.lines().lineOf(path);
     ex.setup = readOwnSetup(r, j, path, lessonSetup);
@@ -537,12 +375,19 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path,
     if (ex.id.empty() || ex.id.find_first_of(" \t\n\"") != std::string::npos)
         r.fail(JsonLineMap::child(path, "id"), "an exercise id is one word, e.g. \"next-cell\"");
     const std::string typePath = JsonLineMap::child(path, "type");
-    const auto kind = valueNamed(kExerciseKinds, r.string(j["type"], typePath));
-    if (!kind)
-        r.fail(typePath,
-               "expected next_cell, value, pick_split, count, hit_or_miss, choice, sequence, "
-               "sweep_pick, compute or overlap");
-    ex.kind = *kind;
+    const std::string type = r.string(j["type"], typePath);
+    const exercises::ExerciseKindUnit* kind = nullptr;
+    std::string kinds;
+    const auto& units = exercises::kindUnits();
+    for (std::size_t k = 0; k < units.size(); ++k) {
+        if (units[k]->name() == type) kind = units[k];
+        kinds += (k == 0                  ? ""
+                  : k + 1 == units.size() ? " or "
+                                          : ", ") +
+                 std::string(units[k]->name());
+    }
+    if (!kind) r.fail(typePath, "expected " + kinds);
+    ex.kind = kind->kind();
     ex.prompt = readText(r, j["prompt"], JsonLineMap::child(path, "prompt"));
     ifPresent(j, path, "hint",
               [&](const json& v, const std::string& p) { ex.hints = readHints(r, v, p); });
@@ -552,113 +397,16 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path,
         ex.tolerance = r.positive(v, p);
         if (ex.tolerance >= 1.0) r.fail(p, "a tolerance of 100% or more accepts anything");
     });
-    const auto onlyFor = [&](const char* key, ExerciseKind k) {
-        if (j.contains(key) && ex.kind != k)
+    // A kind's own keys: a kind that does not take one names the first kind that does.
+    const exercises::ExerciseKindUnit& unit = exercises::unitOf(ex.kind);
+    for (const auto& [key, owner] : kindKeys()) {
+        const auto own = unit.keys();
+        const auto takes = [&](const char* k) { return std::string_view(k) == key; };
+        if (j.contains(key) && std::none_of(own.begin(), own.end(), takes))
             r.fail(JsonLineMap::child(path, key),
-                   "only " + std::string(exerciseKindName(k)) + " exercises take this key");
-    };
-    if (ex.kind != ExerciseKind::Compute) onlyFor("quantity", ExerciseKind::Value);
-    onlyFor("count", ExerciseKind::Count);
-    onlyFor("ray_kind", ExerciseKind::Count);
-    onlyFor("ray_depth", ExerciseKind::Count);
-    if (ex.kind != ExerciseKind::Sequence) onlyFor("until", ExerciseKind::Count);
-    ifPresent(j, path, "until",
-              [&](const json& v, const std::string& p) { ex.until = readPosition(r, v, p); });
-    onlyFor("with_t", ExerciseKind::HitOrMiss);
-    onlyFor("choices", ExerciseKind::Choice);
-    onlyFor("answer", ExerciseKind::Choice);
-    onlyFor("of", ExerciseKind::Sequence);
-    onlyFor("length", ExerciseKind::Sequence);
-    onlyFor("metric", ExerciseKind::SweepPick);
-    onlyFor("given", ExerciseKind::Compute);
-    if (ex.kind == ExerciseKind::Choice) {
-        for (const char* key : {"choices", "answer"})
-            if (!j.contains(key))
-                r.fail(path, std::string("a choice exercise needs \"") + key + "\"");
-        const std::string cp = JsonLineMap::child(path, "choices");
-        const json& cs = j["choices"];
-        if (!cs.is_array() || cs.size() < 2 || cs.size() > 6)
-            r.fail(cp, "expected 2 to 6 options [{\"text\": TEXT, \"why\": TEXT}, ...]");
-        for (std::size_t i = 0; i < cs.size(); ++i) {
-            const std::string op = JsonLineMap::element(cp, i);
-            r.requireObject(cs[i], op);
-            r.checkKeys(cs[i], op, {"text", "why"});
-            if (!cs[i].contains("text") || !cs[i].contains("why"))
-                r.fail(op, "an option needs its \"text\" and \"why\"");
-            ex.choices.push_back({readText(r, cs[i]["text"], JsonLineMap::child(op, "text")),
-                                  readText(r, cs[i]["why"], JsonLineMap::child(op, "why"))});
-        }
-        ex.answer = r.integer(j["answer"], JsonLineMap::child(path, "answer"), 0,
-                              static_cast<int>(cs.size()) - 1);
+                   "only " + std::string(owner) + " exercises take this key");
     }
-    if (ex.kind == ExerciseKind::Sequence) {
-        if (!j.contains("of")) r.fail(path, "a sequence exercise names what it orders: \"of\"");
-        const std::string op = JsonLineMap::child(path, "of");
-        const std::string of = r.string(j["of"], op);
-        if (of != "dda_cell" && of != "node_enter")
-            r.fail(op, "expected \"dda_cell\" (the cells in order) or \"node_enter\" (the nodes)");
-        ex.ofNodes = of == "node_enter";
-        ifPresent(j, path, "length", [&](const json& v, const std::string& p) {
-            ex.length = r.integer(v, p, 1, 10'000);
-        });
-    }
-    if (ex.kind == ExerciseKind::SweepPick)
-        ifPresent(j, path, "metric", [&](const json& v, const std::string& p) {
-            const auto m = valueNamed(kSweepMetrics, r.string(v, p));
-            if (!m) r.fail(p, "expected cost, tests_per_ray or cells_per_ray");
-            ex.metric = *m;
-        });
-    if (ex.kind == ExerciseKind::Compute) {
-        for (const char* key : {"given", "quantity"})
-            if (!j.contains(key))
-                r.fail(path, std::string("a compute exercise needs \"") + key + "\"");
-        ex.given = readGiven(r, j["given"], JsonLineMap::child(path, "given"));
-        const std::string qp = JsonLineMap::child(path, "quantity");
-        ex.computeQuantity = r.string(j["quantity"], qp);
-        const auto allowed = computeQuantities(ex.given);
-        if (std::find(allowed.begin(), allowed.end(), ex.computeQuantity) == allowed.end()) {
-            std::string names;
-            for (const auto& n : allowed) names += (names.empty() ? "" : ", ") + n;
-            r.fail(qp, "this shape's quantities are " + names);
-        }
-    }
-    if (ex.kind == ExerciseKind::Value) {
-        if (!j.contains("quantity")) r.fail(path, "a value exercise names its \"quantity\"");
-        const std::string p = JsonLineMap::child(path, "quantity");
-        const auto q = valueNamed(kQuantities, r.string(j["quantity"], p));
-        if (!q) {
-            std::string names;
-            for (const auto& [v, n] : kQuantities)
-                names += (names.empty() ? "" : ", ") + std::string(n);
-            r.fail(p, "unknown quantity (expected one of " + names + ")");
-        }
-        ex.quantity = *q;
-    }
-    if (ex.kind == ExerciseKind::Count) {
-        if (!j.contains("count")) r.fail(path, "a count exercise names the event it counts");
-        const std::string p = JsonLineMap::child(path, "count");
-        const auto k = eventKindNamed(r.string(j["count"], p));
-        if (!k) r.fail(p, "unknown event kind (expected one of " + eventKindList() + ")");
-        ex.countKind = *k;
-        ifPresent(j, path, "ray_kind", [&](const json& v, const std::string& rp) {
-            const std::string name = r.string(v, rp);
-            for (int i = 0; i < kRayKindCount; ++i)
-                if (kRayKindNames[i] == name) ex.rayKind = static_cast<RayKind>(i);
-            if (!ex.rayKind)
-                r.fail(rp, "expected primary, shadow, reflection, refraction or diffuse");
-            if (ex.countKind != variantIndex<RayBegin>())
-                r.fail(rp, "only a count of ray_begin events can name a ray kind");
-        });
-        ifPresent(j, path, "ray_depth", [&](const json& v, const std::string& rp) {
-            ex.rayDepth = r.integer(v, rp, 0, 64);
-            if (ex.countKind != variantIndex<RayBegin>())
-                r.fail(rp, "only a count of ray_begin events can name a ray depth");
-        });
-    }
-    ifPresent(j, path, "with_t", [&](const json& v, const std::string& p) {
-        if (!v.is_boolean()) r.fail(p, "expected true or false");
-        ex.withT = v.get<bool>();
-    });
+    unit.read(r, j, path, ex);
     return ex;
 }
 
@@ -711,7 +459,7 @@ std::string erratumHeading(Language lang) {
 }
 
 std::string_view exerciseKindName(ExerciseKind k) {
-    return nameOf(kExerciseKinds, k);
+    return exercises::unitOf(k).name();
 }
 std::optional<Quantity> parseQuantity(std::string_view name) {
     return valueNamed(kQuantities, name);
@@ -855,9 +603,10 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         ex.given.emptyBonus = o.kdtree.emptyBonus;
     }
     for (std::size_t i = 0; i < l.exercises.size(); ++i)
-        if (l.exercises[i].kind == ExerciseKind::SweepPick && !l.sweep)
+        if (exercises::unitOf(l.exercises[i].kind).needsSweep() && !l.sweep)
             r.fail(JsonLineMap::child(JsonLineMap::element("exercises", i), "type"),
-                   "a sweep_pick exercise needs the lesson's \"sweep\"");
+                   "a " + std::string(exerciseKindName(l.exercises[i].kind)) +
+                       " exercise needs the lesson's \"sweep\"");
     if (l.trace.kind == LessonTrace::Kind::Build && !recordsBuild(l.accel))
         r.fail("trace", "a build can be recorded for " + kindList(recordsBuild) + " (setup.accel)");
     // The trace is recorded through every structure named: a build needs one that records it.

@@ -112,6 +112,8 @@ enum class ExerciseKind {
     Compute,    // a hand computation from data the prompt gives
     Overlap,    // two boxes of the tree that share space, neither inside the other (a BVH)
 };
+/// How many kinds there are: a new kind goes last, and moves this.
+constexpr int kExerciseKindCount = static_cast<int>(ExerciseKind::Overlap) + 1;
 std::string_view exerciseKindName(ExerciseKind k);
 
 /// Quantities a Value exercise asks for; each is read from the next event of its kind at or after

@@ -4,6 +4,8 @@
 
 #include "feedback_text.h"
 
+#include "course/exercises/kind_unit.h"
+
 #include "raystep/accel/dda_textbook.h"
 #include "raystep/accel/outline.h"
 #include "raystep/trace/event_text.h"
@@ -87,7 +89,7 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSe
     // its own already).
     const bool overlap =
         std::any_of(lesson.exercises.begin(), lesson.exercises.end(),
-                    [](const Exercise& e) { return e.kind == ExerciseKind::Overlap; });
+                    [](const Exercise& e) { return exercises::unitOf(e.kind).needsNodeBoxes(); });
     if (overlap && t.kind != LessonTrace::Kind::Build) {
         if (accel2D) recordNodeBoxes(outline(*accel2D), *log);
         if (accel3D) recordNodeBoxes(outline(*accel3D), *log);
