@@ -137,7 +137,7 @@ class OptionButtons final : public AnswerInput {
         group_ = new QButtonGroup(this);
     }
     void prepare(const Exercise& ex, const AnswerContext& ctx, const TextBoxRule&) override {
-        // Hidden while its buttons are made, so they show with it (a button added to a shown
+        // Hidden while its buttons are made, then shown with them (a button added to a shown
         // widget shows only once the event loop runs).
         hide();
         if (ctx.waits) return;
@@ -149,6 +149,7 @@ class OptionButtons final : public AnswerInput {
             group_->addButton(b, static_cast<int>(k));
             layout()->addWidget(b);
         }
+        show();
     }
     QString text() const override {
         return group_->checkedId() < 0 ? QString() : QString::number(group_->checkedId() + 1);
@@ -185,6 +186,7 @@ class SweepPicker final : public AnswerInput {
         box_->clear();
         if (ctx.resolutions)
             for (int r : *ctx.resolutions) box_->addItem(tr("%1 cells per axis").arg(r), r);
+        show();
     }
     QString text() const override {
         return box_->currentIndex() < 0 ? QString() : QString::number(box_->currentData().toInt());

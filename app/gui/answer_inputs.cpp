@@ -75,11 +75,8 @@ AnswerInput* AnswerInputs::show(const Exercise& ex, const AnswerContext& ctx) {
     const AnswerInputRow& row = answerInputRow(ex.kind);
     for (const auto& [make, input] : made_)
         if (make == row.make) current_ = input;
-    // The others hidden first, the shown one kept shown (its focus stays) unless prepare hides it.
-    for (AnswerInput* input : inputs_)
-        if (input != current_) input->hide();
+    for (AnswerInput* input : inputs_) input->setVisible(input == current_);
     current_->prepare(ex, ctx, row.text);
-    current_->show();
     return current_;
 }
 
