@@ -1,7 +1,12 @@
 #pragma once
 // The lesson panel: the lesson's text, its steps (each puts the replay somewhere) and its
 // exercises, checked against the recorded trace by the lesson engine (course/exercise.h). The
-// main window opens lessons and moves the replay; the panel asks for it through signals.
+// main window opens lessons and moves the replay; the panel asks for it through signals. Its
+// parts: the text and its steps (lesson_text.h), the exercise box (exercise_box.h) with its answer
+// inputs (answer_inputs.h), the sweep's table (sweep_table.h); the panel holds the lesson's state,
+// what quiz mode holds, and grades (lesson_panel_answers.cpp).
+#include "answer_input.h"
+#include "lesson_mode.h"
 #include "session.h"
 
 #include "course/exercise.h"
@@ -33,11 +38,9 @@ class QTextBrowser;
 
 namespace raystep::gui {
 
-/// Who a lesson is run for. Quiz: a student answers; every unsolved exercise holds the replay at
-/// its position and the prompts after it. Presenting: a lecturer in front of the room; every
-/// step and view is free, the exercises are questions to the room, an answer is shown only when
-/// the lecturer reveals that one. Lecturer: preparing; every answer is shown.
-enum class LessonMode { Quiz, Presenting, Lecturer };
+class ExerciseBox;
+class LessonText;
+class SweepTable;
 
 class LessonPanel : public QWidget {
     Q_OBJECT
@@ -158,24 +161,17 @@ class LessonPanel : public QWidget {
   private:
     void refreshText();
     void refreshExercise();
-    /// Forgets a sequence answer's clicked cells (the 2D view draws them).
-    void clearSequence();
     void check();
     void hint();
+    /// What the shown exercise's answer input needs (its trace, the sweep, the language).
+    AnswerContext answerContext(const Exercise& ex, bool waits) const;
     /// Whether the shown exercise's answer lies past where the replay is held.
     bool replayHeldBeforeAnswer() const;
-    /// What the student answered, as text parseAnswer reads ("" when nothing is chosen yet).
-    QString typedAnswer() const;
     /// The sweep's rows for grading a sweep_pick, or null before the sweep has run.
     const std::vector<GridSweepRow>* sweepRows() const;
     /// Every part's enabled and shown state (the steps, the notes, the exercise box), derived
     /// from the panel's state alone; called after every change of it.
     void updateWidgets();
-    /// Scrolls the lesson text so the step's own text is in sight (its heading at the top when
-    /// the whole does not fit), not the notes under it.
-    void keepStepInView();
-    /// The lesson's or a step's slide errata, as marked boxes at the end of the text.
-    void appendErrata(QTextCursor& at, const std::vector<Erratum>& errata);
 
     Language lang_ = Language::En;
     Lesson lesson_;
@@ -186,7 +182,6 @@ class LessonPanel : public QWidget {
     bool exploring_ = false;
     std::optional<bool> exploringSaid_;  // what exploringChanged last said
     QString heldNote_;
-    int stepAnchor_ = -1;  // where the step's text starts in the lesson text
     bool exerciseOpen_ = false;
     std::set<int> putAway_;  // exercises the student chose to look past (Put away)
     bool showErrata_ = true;
@@ -200,9 +195,10 @@ class LessonPanel : public QWidget {
     LessonProgress* progress_ = nullptr;  // the window's, or ownProgress_
     LessonProgress ownProgress_;
     QString freeText_;
+    std::vector<GridSweepRow> sweepRows_;  // the sweep's table, once run (sweep_pick grades it)
 
     QComboBox* picker_ = nullptr;
-    QTextBrowser* text_ = nullptr;
+    LessonText* text_ = nullptr;
     QWidget* noteRow_ = nullptr;
     QLabel* note_ = nullptr;
     QLabel* heldLabel_ = nullptr;
@@ -210,33 +206,10 @@ class LessonPanel : public QWidget {
     QLabel* stepLabel_ = nullptr;
     QPushButton* prevStep_ = nullptr;
     QPushButton* nextStep_ = nullptr;
-    QGroupBox* exerciseBox_ = nullptr;
-    QWidget* exerciseHeader_ = nullptr;
-    QLabel* exerciseLabel_ = nullptr;
-    QPushButton* openButton_ = nullptr;
-    QLabel* exploreNote_ = nullptr;
-    QLabel* waitNote_ = nullptr;  // an exercise after a held one: what it waits for
-    QScrollArea* exerciseScroll_ = nullptr;
-    QWidget* exerciseBody_ = nullptr;
-    QWidget* buttonRow_ = nullptr;
-    QLabel* hints_ = nullptr;
-    QLabel* prompt_ = nullptr;
-    QString promptSource_, hintsSource_;  // their Markdown, as the lesson gives it
-    QLineEdit* answer_ = nullptr;
-    QComboBox* candidates_ = nullptr;
-    QWidget* choiceBox_ = nullptr;  // a choice exercise's radio buttons
-    QButtonGroup* choiceGroup_ = nullptr;
-    QPushButton* clearButton_ = nullptr;   // a sequence answer: start again
-    QComboBox* sweepPicker_ = nullptr;     // a sweep_pick exercise: the sweep's resolutions
-    QList<QPoint> sequence_;               // cells clicked for a sequence answer, in order
-    std::vector<GridSweepRow> sweepRows_;  // the sweep's table, once run (sweep_pick grades it)
-    QPushButton* checkButton_ = nullptr;
-    QPushButton* hintButton_ = nullptr;
-    QPushButton* revealButton_ = nullptr;
-    QLabel* feedback_ = nullptr;
+    ExerciseBox* box_ = nullptr;
     QPushButton* sweepButton_ = nullptr;
     QPushButton* compareButton_ = nullptr;  // a step's "compare" list
-    QTableWidget* sweepTable_ = nullptr;
+    SweepTable* sweepTable_ = nullptr;
 };
 
 }  // namespace raystep::gui

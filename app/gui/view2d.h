@@ -146,6 +146,23 @@ class View2D : public QWidget {
     void drawDdaMarks(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st) const;
     void drawDdaMarksIn(QPainter& g, Vec2 o, Vec2 d, const ReplayState& st,
                         const OutlineGrid<2>* grid) const;
+    /// The parts of a frame, in the order paintEvent draws them. Under the cached lines, what
+    /// moves with the cursor: the visited and current cells, or a tree walk's nodes entered,
+    /// skipped and being entered (view2d_structure.cpp).
+    void drawWalk(QPainter& g, const ReplayState& st) const;
+    /// A build being replayed: the planes chosen so far, the node being split, its candidate
+    /// planes, the choice.
+    void drawBuildReplay(QPainter& g, const ReplayState& st) const;
+    /// The cached layer, then the primitives the replay touched in their colour: tested, skipped
+    /// by the mailbox, the nearest hit (view2d_ray.cpp).
+    void drawTouched(QPainter& g, const ReplayState& st) const;
+    /// The ray, faint in full and solid as far as the replay has reached, with its DDA marks and
+    /// the nearest hit.
+    void drawRay(QPainter& g, const ReplayState& st) const;
+    /// A sequence answer's clicked cells, numbered in order (view2d_structure.cpp).
+    void drawSequence(QPainter& g) const;
+    /// Where grid cell `c` is drawn.
+    QRectF cellRect(const OutlineGrid<2>& grid, const std::array<std::int32_t, 3>& c) const;
     /// The caption over the picture: the scene's name and its structure.
     QString captionText() const;
     /// The colour roles of the picture (the palette's), where fit() put them.
