@@ -52,7 +52,7 @@ std::string answerPlaceholder(const Exercise& ex, int dims, Language lang) {
     return unitOf(ex.kind).placeholder(ex, dims, lang);
 }
 
-AnswerInput answerInput(const Exercise& ex) {
+AnswerInputSpec answerInput(const Exercise& ex) {
     return unitOf(ex.kind).input(ex);
 }
 

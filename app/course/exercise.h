@@ -57,22 +57,23 @@ Verdict checkAnswer(const Exercise& ex, const EventLog& log, const Answer& answe
                     const std::string& lessonFile, const std::vector<GridSweepRow>* sweep = nullptr,
                     const LessonScene* scene = nullptr);
 
-/// The answer box's placeholder for a cell or a sequence, in `lang`: the cell's indices for the
-/// trace's `dims` (X,Y or X,Y,Z), and the 2D view's click only where there is one. Empty for the
-/// other kinds.
+/// The answer box's placeholder, in `lang`, for the kinds typed in one: for a cell or a
+/// sequence the cell's indices for the trace's `dims` (X,Y or X,Y,Z), and the 2D view's click
+/// only where there is one. Empty for the kinds answered by choosing (split, choice, sweep).
 std::string answerPlaceholder(const Exercise& ex, int dims, Language lang);
 
-/// The answer input an exercise wants, Qt-free: the app may choose its widget from it. Number:
-/// a text box that takes one number; SplitPicker: the split's candidates listed; Options: one
-/// button an option; SweepRows: the sweep's resolutions listed.
-struct AnswerInput {
+/// The answer input an exercise wants, Qt-free: the app chooses its widget from it (one table,
+/// app/gui/answer_inputs.cpp). Text: a line typed; Number: a line where only a number can be
+/// typed (a letter cannot); SplitPicker: the split's candidates listed; Options: one button an
+/// option; SweepRows: the sweep's resolutions listed.
+struct AnswerInputSpec {
     enum class Widget { Text, Number, SplitPicker, Options, SweepRows };
     /// What a click on a cell of the 2D view does to the answer (where there is a 2D view).
     enum class ViewClick { None, Fills, Appends };
     Widget widget = Widget::Text;
     ViewClick click = ViewClick::None;
 };
-AnswerInput answerInput(const Exercise& ex);
+AnswerInputSpec answerInput(const Exercise& ex);
 
 /// What a wrong answer's feedback advises for the next try, in `lang`: the panel shows it after
 /// "Not right yet (try k of 3)." when no slip is named. By the exercise's kind; `replayHeld`: quiz

@@ -62,7 +62,7 @@ class TextBox final : public AnswerInput {
                 QStringLiteral("[-+]?[0-9]*([.,][0-9]*)?([eE][-+]?[0-9]*)?"));
             line_->setValidator(new QRegularExpressionValidator(number, line_));
         }
-        appendCells_ = rule.cells == CellClick::Append && !ex.ofNodes;
+        appendCells_ = rule.cells == CellClick::Append;
         answerCell_ = rule.cells == CellClick::Answer;
         clear_->setVisible(appendCells_);
     }

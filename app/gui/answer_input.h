@@ -26,7 +26,7 @@ struct AnswerContext {
     bool waits = false;  // the exercise waits for a held one: none of its options is shown
 };
 
-/// What the text box does for one exercise kind (ignored by the other inputs).
+/// What the text box does for one exercise (ignored by the other inputs).
 enum class CellClick {
     None,    // a click in the 2D view does nothing
     Answer,  // the clicked cell is the answer, checked at once

@@ -1,56 +1,50 @@
-// The table of answer inputs: for each exercise kind, the input that takes its answer and, for
-// the text box, its placeholder, whether only a number can be typed and what a cell clicked in
-// the 2D view does. The one place that says how a kind is answered.
+// The table of answer inputs: for each input the course asks for (answerInput: a text line, a
+// number box, the split's candidates, options, the sweep's rows), the widget that takes it. The
+// one place that says how an answer is entered; which kind wants which is the kind's own
+// (app/course/exercises/<kind>.cpp), so a new kind answered in an existing way adds nothing here.
 #include "answer_inputs.h"
 
 #include "course/exercise.h"
 
-#include <QObject>
-
 #include <algorithm>
-
 #include <stdexcept>
 
 namespace raystep::gui {
 
 namespace {
 
-// A cell or a sequence: the cell's indices for the trace's dimensions (the course's words).
-QString cellPlaceholder(const Exercise& ex, const AnswerContext& ctx) {
+// The course's words for the box, for the trace's dimensions and in the panel's language.
+QString coursePlaceholder(const Exercise& ex, const AnswerContext& ctx) {
     return QString::fromStdString(answerPlaceholder(ex, ctx.dims, ctx.lang));
 }
 
 const AnswerInputRow kRows[] = {
-    {ExerciseKind::NextCell, makeTextBox, {cellPlaceholder, false, CellClick::Answer}},
-    {ExerciseKind::Value, makeTextBox, {[](const Exercise&, const AnswerContext&) {
-         return QObject::tr("a number, e.g. 1.25");
-     }}},
-    {ExerciseKind::PickSplit, makeSplitPicker, {}},
-    {ExerciseKind::Count, makeTextBox, {[](const Exercise&, const AnswerContext&) {
-         return QObject::tr("a whole number");
-     }}},
-    {ExerciseKind::HitOrMiss, makeTextBox, {[](const Exercise& ex, const AnswerContext&) {
-         return ex.withT ? QObject::tr("hit T, or miss") : QObject::tr("hit or miss");
-     }}},
-    {ExerciseKind::Choice, makeOptionButtons, {}},
-    {ExerciseKind::Sequence, makeTextBox, {cellPlaceholder, false, CellClick::Append}},
-    {ExerciseKind::SweepPick, makeSweepPicker, {}},
-    {ExerciseKind::Compute,
-     makeTextBox,
-     {[](const Exercise&, const AnswerContext&) {
-          return QObject::tr("your result, a number (e.g. -2.5 or 0,75)");
-      },
-      true}},
-    {ExerciseKind::Overlap, makeTextBox, {cellPlaceholder}},
+    {AnswerInputSpec::Widget::Text, makeTextBox, false},
+    {AnswerInputSpec::Widget::Number, makeTextBox, true},
+    {AnswerInputSpec::Widget::SplitPicker, makeSplitPicker, false},
+    {AnswerInputSpec::Widget::Options, makeOptionButtons, false},
+    {AnswerInputSpec::Widget::SweepRows, makeSweepPicker, false},
 };
+
+CellClick cellClickOf(AnswerInputSpec::ViewClick click) {
+    switch (click) {
+        case AnswerInputSpec::ViewClick::Fills:
+            return CellClick::Answer;
+        case AnswerInputSpec::ViewClick::Appends:
+            return CellClick::Append;
+        case AnswerInputSpec::ViewClick::None:
+            break;
+    }
+    return CellClick::None;
+}
 
 }  // namespace
 
-const AnswerInputRow& answerInputRow(ExerciseKind kind) {
+const AnswerInputRow& answerInputRow(AnswerInputSpec::Widget widget) {
     for (const AnswerInputRow& row : kRows)
-        if (row.kind == kind) return row;
-    throw std::logic_error("answer_inputs.cpp: no answer input for exercise kind " +
-                           std::string(exerciseKindName(kind)));
+        if (row.widget == widget) return row;
+    throw std::logic_error("answer_inputs.cpp: no widget for answer input " +
+                           std::to_string(static_cast<int>(widget)));
 }
 
 AnswerInputs::AnswerInputs(QBoxLayout* layout) {
@@ -72,11 +66,18 @@ void AnswerInputs::clear() {
 
 AnswerInput* AnswerInputs::show(const Exercise& ex, const AnswerContext& ctx) {
     clear();
-    const AnswerInputRow& row = answerInputRow(ex.kind);
+    const AnswerInputSpec spec = answerInput(ex);
+    const AnswerInputRow& row = answerInputRow(spec.widget);
     for (const auto& [make, input] : made_)
         if (make == row.make) current_ = input;
     for (AnswerInput* input : inputs_) input->setVisible(input == current_);
-    current_->prepare(ex, ctx, row.text);
+    TextBoxRule rule;
+    if (row.make == makeTextBox) {
+        rule.placeholder = coursePlaceholder;
+        rule.number = row.number;
+        rule.cells = cellClickOf(spec.click);
+    }
+    current_->prepare(ex, ctx, rule);
     return current_;
 }
 

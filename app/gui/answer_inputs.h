@@ -1,8 +1,10 @@
 #pragma once
-// Which input answers which exercise kind: one table (answer_inputs.cpp), read by the exercise
-// box. A new exercise kind adds its row there; a new way of answering adds an AnswerInput
-// (answer_input.{h,cpp}) that its row names.
+// Which widget takes which answer input: one table (answer_inputs.cpp), keyed by the input the
+// course asks for (course/exercise.h, answerInput), read by the exercise box. A new way of
+// answering adds an AnswerInput (answer_input.{h,cpp}) and its row there.
 #include "answer_input.h"
+
+#include "course/exercise.h"
 
 #include <QBoxLayout>
 
@@ -12,15 +14,16 @@ namespace raystep::gui {
 
 using AnswerInputMaker = AnswerInput* (*)();
 
-/// How an exercise kind is answered: the input that takes it and, for the text box, its rule.
+/// How an answer input is taken: the widget that takes it (inputs with the same maker share one
+/// widget), and whether a text box refuses letters.
 struct AnswerInputRow {
-    ExerciseKind kind;
-    AnswerInputMaker make;  // kinds with the same maker share one input (and its widgets)
-    TextBoxRule text;
+    AnswerInputSpec::Widget widget;
+    AnswerInputMaker make;
+    bool number = false;
 };
 
-/// The row of `kind`.
-const AnswerInputRow& answerInputRow(ExerciseKind kind);
+/// The row of `widget`.
+const AnswerInputRow& answerInputRow(AnswerInputSpec::Widget widget);
 
 /// The exercise box's inputs: one of each that the table names, made once in the table's order
 /// (a student's focus, or a test, keeps hold of the text box across exercises), the one the

@@ -90,22 +90,25 @@ TEST(ExerciseRegistry, ReferenceAnswersRoundTripThroughTheirTypedForm) {
 TEST(ExerciseRegistry, AnswerInputFollowsTheKind) {
     Exercise ex;
     ex.kind = ExerciseKind::NextCell;
-    EXPECT_EQ(answerInput(ex).click, AnswerInput::ViewClick::Fills);
+    EXPECT_EQ(answerInput(ex).click, AnswerInputSpec::ViewClick::Fills);
     ex.kind = ExerciseKind::Sequence;
-    EXPECT_EQ(answerInput(ex).click, AnswerInput::ViewClick::Appends);
+    EXPECT_EQ(answerInput(ex).click, AnswerInputSpec::ViewClick::Appends);
     ex.ofNodes = true;
-    EXPECT_EQ(answerInput(ex).click, AnswerInput::ViewClick::None);
-    EXPECT_EQ(answerInput(ex).widget, AnswerInput::Widget::Text);
+    EXPECT_EQ(answerInput(ex).click, AnswerInputSpec::ViewClick::None);
+    EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::Text);
     ex.kind = ExerciseKind::PickSplit;
-    EXPECT_EQ(answerInput(ex).widget, AnswerInput::Widget::SplitPicker);
+    EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::SplitPicker);
     ex.kind = ExerciseKind::Choice;
-    EXPECT_EQ(answerInput(ex).widget, AnswerInput::Widget::Options);
+    EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::Options);
     ex.kind = ExerciseKind::SweepPick;
-    EXPECT_EQ(answerInput(ex).widget, AnswerInput::Widget::SweepRows);
-    for (const ExerciseKind k : {ExerciseKind::Value, ExerciseKind::Count, ExerciseKind::Compute}) {
+    EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::SweepRows);
+    // Only a compute's box refuses letters; a value or a count is typed freely, as ever.
+    ex.kind = ExerciseKind::Compute;
+    EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::Number);
+    for (const ExerciseKind k : {ExerciseKind::Value, ExerciseKind::Count}) {
         ex.kind = k;
-        EXPECT_EQ(answerInput(ex).widget, AnswerInput::Widget::Number);
-        EXPECT_EQ(answerInput(ex).click, AnswerInput::ViewClick::None);
+        EXPECT_EQ(answerInput(ex).widget, AnswerInputSpec::Widget::Text);
+        EXPECT_EQ(answerInput(ex).click, AnswerInputSpec::ViewClick::None);
     }
 }
 

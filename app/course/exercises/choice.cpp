@@ -101,7 +101,9 @@ class Choice final : public ExerciseKindUnit {
                   "that case.");
     }
     bool answerInTrace() const override { return false; }
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::Options}; }
+    AnswerInputSpec input(const Exercise&) const override {
+        return {AnswerInputSpec::Widget::Options};
+    }
     // No answer forms: a choice's options are on screen by design.
 };
 

@@ -254,7 +254,12 @@ class Compute final : public ExerciseKindUnit {
                   "not hold them.");
     }
     bool answerInTrace() const override { return false; }
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::Number}; }
+    AnswerInputSpec input(const Exercise&) const override {
+        return {AnswerInputSpec::Widget::Number};
+    }
+    std::string placeholder(const Exercise&, int, Language lang) const override {
+        return tr(lang, "your result, a number (e.g. -2.5 or 0,75)");
+    }
     const std::vector<double>* givenNumbers(const Exercise& ex) const override {
         return &ex.given.numbers;
     }

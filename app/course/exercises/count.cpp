@@ -177,7 +177,9 @@ class Count final : public ExerciseKindUnit {
                   "scene in the view what the rest of the trace must hold.");
     }
 
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::Number}; }
+    std::string placeholder(const Exercise&, int, Language lang) const override {
+        return tr(lang, "a whole number");
+    }
     // No answer forms: a count is one small whole number among many in every text.
 };
 

@@ -123,6 +123,10 @@ class HitOrMiss final : public ExerciseKindUnit {
                   "ray's and the primitive's numbers.");
     }
 
+    std::string placeholder(const Exercise& ex, int, Language lang) const override {
+        return ex.withT ? tr(lang, "hit T, or miss") : tr(lang, "hit or miss");
+    }
+
     void answerForms(const LeakInput& in, AnswerForms& f) const override {
         const Answer a = referenceAnswer(in.ex, in.log, in.file, in.sweep);
         const LessonScene* scene = in.scene;

@@ -156,7 +156,7 @@ class ExerciseKindUnit {
     /// answerEventIndex names the event.
     virtual bool answerInTrace() const { return true; }
     virtual std::string placeholder(const Exercise&, int /*dims*/, Language) const { return ""; }
-    virtual AnswerInput input(const Exercise&) const { return {}; }
+    virtual AnswerInputSpec input(const Exercise&) const { return {}; }
 
     /// The forms of its answer a text would give away (course/answer_leaks.h); none by default.
     virtual void answerForms(const LeakInput&, AnswerForms&) const {}

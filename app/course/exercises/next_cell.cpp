@@ -140,8 +140,8 @@ class NextCell final : public ExerciseKindUnit {
                          : tr(lang, "X,Y (or click the cell in the 2D view)");
     }
 
-    AnswerInput input(const Exercise&) const override {
-        return {AnswerInput::Widget::Text, AnswerInput::ViewClick::Fills};
+    AnswerInputSpec input(const Exercise&) const override {
+        return {AnswerInputSpec::Widget::Text, AnswerInputSpec::ViewClick::Fills};
     }
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {

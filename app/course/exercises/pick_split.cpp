@@ -108,7 +108,9 @@ class PickSplit final : public ExerciseKindUnit {
                   "of the candidates listed.");
     }
 
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::SplitPicker}; }
+    AnswerInputSpec input(const Exercise&) const override {
+        return {AnswerInputSpec::Widget::SplitPicker};
+    }
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {
         const Answer a = referenceAnswer(in.ex, in.log, in.file, in.sweep);

@@ -203,9 +203,9 @@ class Sequence final : public ExerciseKindUnit {
                          : tr(lang, "cells in order, e.g. 0,0; 1,0 (or click them in the 2D view)");
     }
 
-    AnswerInput input(const Exercise& ex) const override {
-        return {AnswerInput::Widget::Text,
-                ex.ofNodes ? AnswerInput::ViewClick::None : AnswerInput::ViewClick::Appends};
+    AnswerInputSpec input(const Exercise& ex) const override {
+        return {AnswerInputSpec::Widget::Text, ex.ofNodes ? AnswerInputSpec::ViewClick::None
+                                                          : AnswerInputSpec::ViewClick::Appends};
     }
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {

@@ -120,7 +120,9 @@ class SweepPick final : public ExerciseKindUnit {
                   "them all.");
     }
     bool answerInTrace() const override { return false; }
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::SweepRows}; }
+    AnswerInputSpec input(const Exercise&) const override {
+        return {AnswerInputSpec::Widget::SweepRows};
+    }
     bool needsSweep() const override { return true; }
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {

@@ -263,7 +263,10 @@ class Value final : public ExerciseKindUnit {
                   "numbers from the inspector into the formula.");
     }
 
-    AnswerInput input(const Exercise&) const override { return {AnswerInput::Widget::Number}; }
+    // A text line, not a number box: the app has always let a value be typed freely.
+    std::string placeholder(const Exercise&, int, Language lang) const override {
+        return tr(lang, "a number, e.g. 1.25");
+    }
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {
         const Answer a = referenceAnswer(in.ex, in.log, in.file, in.sweep);
