@@ -159,8 +159,7 @@ LocalText textbookNote(const GridSpec<2, double>& grid, const Ray2& ray) {
                    {std::to_string(part + 1), at(loop), at(exact)});
     };
     LocalText note;
-    note.en = in(Language::En);
-    note.it = in(Language::It);
+    for (const Language lang : languages()) note.set(lang, in(lang));
     return note;
 }
 }  // namespace
