@@ -215,9 +215,9 @@ std::string describePosition(const ReplayPosition& at, Language lang) {
         case ReplayPosition::Mode::Cursor:
             return trf(lang, "event %1", {std::to_string(at.cursor)});
         case ReplayPosition::Mode::AfterEvent:
-            return feedback::afterEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
+            return feedback::afterEvent(lang, at.eventKind, ordinal(lang, at.nth));
         case ReplayPosition::Mode::BeforeEvent:
-            return feedback::beforeEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
+            return feedback::beforeEvent(lang, at.eventKind, ordinal(lang, at.nth));
     }
     return "?";
 }
