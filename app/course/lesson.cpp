@@ -112,8 +112,10 @@ LocalText readText(const Reader& r, const json& j, const std::string& path,
     for (const auto& [key, value] : j.items())
         if (!parseLanguage(key)) {
             std::string codes;
-            for (const Language lang : all)
-                codes += (codes.empty() ? "" : ", ") + std::string(lang.code());
+            for (const Language lang : all) {
+                codes += codes.empty() ? "" : ", ";
+                codes += lang.code();
+            }
             r.fail(JsonLineMap::child(path, key), "unknown key (allowed here: " + codes + ")");
         }
     if (!j.contains("en")) r.fail(path, "the English text \"en\" is required");

@@ -56,8 +56,10 @@ int main(int argc, char** argv) {
     // input.
     std::string languageCodes;
     try {
-        for (const raystep::Language l : raystep::languages())
-            languageCodes += (languageCodes.empty() ? "" : "|") + std::string(l.code());
+        for (const raystep::Language l : raystep::languages()) {
+            languageCodes += languageCodes.empty() ? "" : "|";
+            languageCodes += l.code();
+        }
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
