@@ -52,7 +52,8 @@ void addLessonCommand(CLI::App& app, LessonArgs& a) {
     a.sweep->add_option("LESSON", a.lesson, "Lesson id, number or file")->required();
     a.sweep->add_flag("--json", a.json, "Print the rows as JSON");
     for (CLI::App* c : {a.show, a.check, a.key})
-        c->add_option("--lang", a.lang, "Language of the texts: en or it")->capture_default_str();
+        c->add_option("--lang", a.lang, "Language of the texts: " + languageChoices())
+            ->capture_default_str();
 }
 
 namespace {
@@ -228,7 +229,7 @@ int sweep(const Lesson& l, bool json) {
 
 int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
     const auto lang = parseLanguage(a.lang);
-    if (!lang) return fail("--lang " + a.lang + ": expected en or it");
+    if (!lang) return fail("--lang " + a.lang + ": expected " + languageChoices());
     try {
         if (a.list->parsed()) return list();
         const Lesson l = loadLesson(a.lesson);

@@ -9,6 +9,8 @@
 #include "scenes_command.h"
 #include "trace_command.h"
 
+#include "raystep/base/i18n.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -35,6 +37,14 @@ int main(int argc, char** argv) {
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
                     "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson)");
+
+    // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
+    // input.
+    try {
+        (void)raystep::languages();
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
 
     // Each command lives in its <name>_command file; `--help` lists them in this order.
     addScenesCommand(app);

@@ -14,6 +14,8 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,10 +23,23 @@
 
 namespace raystep {
 
-/// A text in both languages (Italian falls back to English where a lesson leaves it out).
+/// A text in every language a lesson gives it in, by language code ("en", "it", any code of the
+/// registry, base/i18n.h); a language the lesson leaves out reads the English.
 struct LocalText {
-    std::string en, it;
-    const std::string& in(Language l) const { return l == Language::It && !it.empty() ? it : en; }
+    std::string en;  // the source text, required
+    // Italian's text, in a member of its own only while grading.cpp still writes and reads
+    // `.it`: in() and set() route "it" here, every other language goes to `other`.
+    std::string it;
+    std::map<std::string, std::string, std::less<>> other;  // code -> text
+
+    /// The text in `l`, else the English.
+    const std::string& in(Language l) const;
+    /// Whether the lesson gives a text of its own in `l` (English always).
+    bool has(Language l) const { return l == Language::En || !slot(l).empty(); }
+    void set(Language l, std::string text);
+
+  private:
+    const std::string& slot(Language l) const;
 };
 
 /// A slip in the slides, pointed out: the slide's line as written, the right one, and why. The

@@ -161,8 +161,7 @@ LocalText textbookNote(const GridSpec<2, double>& grid, const Ray2& ray) {
                    {std::to_string(part + 1), at(loop), at(exact)});
     };
     LocalText note;
-    note.en = in(Language::En);
-    note.it = in(Language::It);
+    for (const Language lang : languages()) note.set(lang, in(lang));
     return note;
 }
 }  // namespace
@@ -218,9 +217,9 @@ std::string describePosition(const ReplayPosition& at, Language lang) {
         case ReplayPosition::Mode::Cursor:
             return trf(lang, "event %1", {std::to_string(at.cursor)});
         case ReplayPosition::Mode::AfterEvent:
-            return feedback::afterEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
+            return feedback::afterEvent(lang, at.eventKind, ordinal(lang, at.nth));
         case ReplayPosition::Mode::BeforeEvent:
-            return feedback::beforeEvent(lang, at.eventKind, feedback::ordinal(lang, at.nth));
+            return feedback::beforeEvent(lang, at.eventKind, ordinal(lang, at.nth));
     }
     return "?";
 }

@@ -22,8 +22,10 @@ namespace raystep {
 struct PaletteColour {
     std::string_view key;  // as a lesson names it: {colour:KEY}
     std::uint8_t r, g, b;
-    std::string_view en, it;  // the colour's name, as a lesson's text reads it
-    std::string_view name(Language lang) const { return lang == Language::It ? it : en; }
+    std::string_view
+        en;  // the colour's name, as a lesson's text reads it (i18n/<code>/palette.json)
+    /// The name in `lang`, from its catalogue (English where it has none).
+    std::string_view name(Language lang) const;
 };
 
 /// What the 2D view draws, besides the rays.

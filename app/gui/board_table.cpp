@@ -21,7 +21,6 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QScrollBar>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -101,11 +100,19 @@ QString shownText(const std::string& cell) {
     QString text = QString::fromStdString(cell);
     // On screen a number reads as the interface writes it (a decimal comma in Italian, as the
     // inspector and the events); the exports keep the point, as a spreadsheet or LaTeX reads it.
-    if (interfaceLanguage() == Language::It) {
-        static const QRegularExpression decimalPoint(QStringLiteral("(\\d)\\.(\\d)"));
-        text.replace(decimalPoint, QStringLiteral("\\1,\\2"));
+    const std::string_view mark = decimalMark(interfaceLanguage());
+    if (mark == ".") return text;
+    const QString shownMark = QString::fromUtf8(mark.data(), static_cast<qsizetype>(mark.size()));
+    QString out;
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const bool decimal = text[i] == QLatin1Char('.') && i > 0 && i + 1 < text.size() &&
+                             text[i - 1].isDigit() && text[i + 1].isDigit();
+        if (decimal)
+            out += shownMark;
+        else
+            out += text[i];
     }
-    return text;
+    return out;
 }
 
 int BoardModel::rowCount(const QModelIndex& parent) const {

@@ -38,16 +38,19 @@ void setInterfaceLanguage(Language lang) {
     gCatalogue.reset();
     gQtBase.reset();
     gLanguage = lang;
-    // Qt's widgets (spin boxes, dialogs) write numbers the Italian way too; English keeps the
-    // system's locale, as before there was a choice.
-    QLocale::setDefault(lang == Language::It ? QLocale(QLocale::Italian, QLocale::Italy)
-                                             : QLocale::system());
+    // Qt's widgets (spin boxes, dialogs) write numbers the language's way too (its "locale",
+    // language.json); English, or a language without one, keeps the system's locale.
+    const std::string& localeName = languageInfo(lang).locale;
+    const QLocale locale =
+        localeName.empty() ? QLocale::system() : QLocale(QString::fromStdString(localeName));
+    QLocale::setDefault(locale);
     if (lang == Language::En) return;
     gCatalogue = std::make_unique<CatalogueTranslator>(lang);
     QCoreApplication::installTranslator(gCatalogue.get());
     // Qt's own dialogs (file dialogs, message boxes' buttons): Debian's qt6-translations-l10n.
     gQtBase = std::make_unique<QTranslator>();
-    if (gQtBase->load(QLocale(QLocale::Italian), QStringLiteral("qtbase"), QStringLiteral("_"),
+    if (!localeName.empty() &&
+        gQtBase->load(QLocale(locale.language()), QStringLiteral("qtbase"), QStringLiteral("_"),
                       QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(gQtBase.get());
     else
@@ -60,7 +63,10 @@ Language interfaceLanguage() {
 
 QString numberText(double v, char format, int precision) {
     QString text = QString::number(v, format, precision);
-    if (gLanguage == Language::It) text.replace(QLatin1Char('.'), QLatin1Char(','));
+    const std::string_view mark = decimalMark(gLanguage);
+    if (mark != ".")
+        text.replace(QLatin1Char('.'),
+                     QString::fromUtf8(mark.data(), static_cast<qsizetype>(mark.size())));
     return text;
 }
 

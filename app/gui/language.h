@@ -32,7 +32,7 @@ void setInterfaceLanguage(Language lang);
 /// What setInterfaceLanguage set (English until then).
 Language interfaceLanguage();
 
-/// A number as the interface writes it: QString::number's format, a decimal comma in Italian.
+/// A number as the interface writes it: QString::number's format, the language's decimal mark.
 QString numberText(double v, char format = 'g', int precision = 6);
 /// A built-in scene's description in the interface's language (the catalogue's scenes.json; a
 /// user's scene file keeps its own words).

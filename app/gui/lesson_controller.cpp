@@ -427,9 +427,12 @@ QString LessonController::replayDescription() const {
 }
 
 QString LessonController::lectureText(const QString& name) const {
-    // texts/<language>/<name>.md, compiled in as a Qt resource (CMakeLists.txt).
-    const QString lang = lang_ == Language::It ? QStringLiteral("it") : QStringLiteral("en");
-    QFile f(QStringLiteral(":/texts/%1/%2.md").arg(lang, name));
+    // texts/<language>/<name>.md, compiled in as a Qt resource (CMakeLists.txt); a language
+    // without its own pages shows the English ones.
+    const std::string_view code = languageCode(lang_);
+    QFile f(QStringLiteral(":/texts/%1/%2.md")
+                .arg(QString::fromUtf8(code.data(), static_cast<int>(code.size())), name));
+    if (!f.exists()) f.setFileName(QStringLiteral(":/texts/en/%1.md").arg(name));
     if (!f.open(QIODevice::ReadOnly)) return {};
     // Colours by their palette names ({colour:chosen}), as in the lessons: named once.
     const auto text = expandColourNames(f.readAll().toStdString(), lang_, nullptr);

@@ -52,7 +52,20 @@ int main(int argc, char** argv) {
     const QCommandLineOption stepOpt("step", "Put the replay cursor after N events.", "N");
     const QCommandLineOption replayOpt("replay", "What to replay: ray (the default) or build.",
                                        "ray|build", "ray");
-    const QCommandLineOption langOpt("lang", "Interface language: en or it.", "en|it", "en");
+    // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
+    // input.
+    std::string languageCodes;
+    try {
+        for (const raystep::Language l : raystep::languages()) {
+            languageCodes += languageCodes.empty() ? "" : "|";
+            languageCodes += l.code();
+        }
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    const QCommandLineOption langOpt(
+        "lang", QString::fromStdString("Interface language: " + raystep::languageChoices() + "."),
+        QString::fromStdString(languageCodes), "en");
     const QCommandLineOption compareOpt(
         "compare",
         "Also open compare mode on the scene: the structures --accel lists (grid,kdtree,bvh: "
@@ -68,7 +81,9 @@ int main(int argc, char** argv) {
     // The interface's language, before any widget takes its texts (language.h).
     const QString lang = parser.value(langOpt);
     const auto language = raystep::parseLanguage(lang.toStdString());
-    if (!language) return fail("--lang " + lang + ": expected en or it");
+    if (!language)
+        return fail("--lang " + lang + ": expected " +
+                    QString::fromStdString(raystep::languageChoices()));
     raystep::gui::setInterfaceLanguage(*language);
     // With --compare, --accel may list several structures; the first is the one opened.
     std::vector<raystep::StructureChoice> compared;

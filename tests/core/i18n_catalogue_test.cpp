@@ -143,6 +143,7 @@ Found scan(const std::string& source) {
     // QCoreApplication::translate(context, text); tr/trf below.
     static const std::map<std::string, int> kTextArgument = {{"tr", 0},
                                                              {"trf", 0},
+                                                             {"trNoop", 1},
                                                              {"QT_TR_NOOP", 1},
                                                              {"QT_TRANSLATE_NOOP", 2},
                                                              {"QT_TRANSLATE_NOOP3", 2},
@@ -256,23 +257,14 @@ TEST(I18nExtract, PlaceholdersAreCountedNotPercentSigns) {
     EXPECT_TRUE(placeholders("50%% off").empty());
 }
 
-TEST(I18nCatalogue, EverySourceTextIsTranslatedAndEveryEntryIsUsed) {
-    const fs::path root = RAYSTEP_SOURCE_DIR;
-    // The embedded files are the folder's: a file added since the build would go unchecked.
-    const auto files = catalogueFiles(Language::It);
-    std::set<std::string> onDisk, embedded;
-    for (const auto& entry : fs::directory_iterator(root / "i18n" / "it"))
-        if (entry.path().extension() == ".json") onDisk.insert(entry.path().filename().string());
-    for (const auto& [file, entries] : files) embedded.insert(file);
-    EXPECT_EQ(embedded, onDisk) << "rebuild: the catalogue embedded is not the folder's";
+/// The sources' texts and the built-in scenes' descriptions, each with where it is.
+struct SourceTexts {
+    std::vector<std::pair<std::string, std::string>> keys;  // text, "file:line"
+    std::set<std::string> scenes;
+};
 
-    std::map<std::string, std::string> fileOf;  // English -> the catalogue file that has it
-    for (const auto& [file, entries] : files)
-        for (const auto& [english, italian] : entries) fileOf[english] = file;
-    const auto& italian = catalogue(Language::It);
-
-    std::set<std::string> used;
-    std::size_t texts = 0;
+SourceTexts sourceTexts(const fs::path& root) {
+    SourceTexts out;
     for (const char* top : {"algorithms", "app"})
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const fs::path ext = entry.path().extension();
@@ -284,39 +276,79 @@ TEST(I18nCatalogue, EverySourceTextIsTranslatedAndEveryEntryIsUsed) {
                     ADD_FAILURE()
                         << relative.string() << ":" << line
                         << ": the text to translate is not a literal; pass the literal, "
-                           "or mark its texts (QT_TR_NOOP, a tr call on each) and say "
+                           "or mark its texts (QT_TR_NOOP, trNoop, a tr call on each) and say "
                            "where in an \"// i18n:\" comment on the call's line or the line before";
-            for (const auto& [text, line] : found.keys) {
-                ++texts;
-                used.insert(text);
-                const auto it = italian.find(text);
-                if (it == italian.end()) {
-                    ADD_FAILURE() << relative.string() << ":" << line << ": no Italian for \""
-                                  << text << "\" (add it to i18n/it/<area>.json)";
-                    continue;
-                }
-                EXPECT_EQ(placeholders(it->second), placeholders(text))
-                    << relative.string() << ":" << line << ": the placeholders differ between \""
-                    << text << "\" and its Italian \"" << it->second << "\" (" << fileOf[text]
-                    << ")";
-            }
+            for (const auto& [text, line] : found.keys)
+                out.keys.emplace_back(text, relative.string() + ":" + std::to_string(line));
         }
-    EXPECT_GT(texts, 100u);  // the scan found the sources' texts at all
     // The built-in scenes' descriptions: the app shows them in the interface's language.
     std::vector<std::string> scenes = builtinSceneNames();
     for (std::string& name : builtinScene2DNames()) scenes.push_back(std::move(name));
     for (const std::string& name : scenes) {
         const auto scene = loadAnyScene(name);
         const std::string& text = std::visit([](const auto& s) { return s.description; }, scene);
-        used.insert(text);
-        if (!text.empty() && !italian.count(text))
-            ADD_FAILURE() << "scenes/" << name << ".json: no Italian for the description \"" << text
-                          << "\" (add it to i18n/it/scenes.json)";
+        if (!text.empty()) out.scenes.insert(text);
     }
-    for (const auto& [english, file] : fileOf)
-        if (!used.count(english))
-            ADD_FAILURE() << "i18n/it/" << file << ": \"" << english
-                          << "\" is used by no source (remove it, or the source lost its tr)";
+    return out;
+}
+
+TEST(I18nCatalogue, TheEmbeddedLanguagesAreTheFolders) {
+    const fs::path root = RAYSTEP_SOURCE_DIR;
+    // A folder added since the build would go unchecked: rebuild.
+    std::set<std::string> onDisk, embedded;
+    for (const auto& entry : fs::directory_iterator(root / "i18n"))
+        if (fs::exists(entry.path() / "language.json"))
+            onDisk.insert(entry.path().filename().string());
+    for (const Language l : languages()) embedded.insert(std::string(l.code()));
+    EXPECT_EQ(embedded, onDisk);
+    EXPECT_TRUE(onDisk.count("en") && onDisk.count("it"));
+    EXPECT_EQ(languages().front(), Language::En);  // the source language comes first
+}
+
+TEST(I18nCatalogue, EverySourceTextIsTranslatedAndEveryEntryIsUsed) {
+    const fs::path root = RAYSTEP_SOURCE_DIR;
+    const SourceTexts sources = sourceTexts(root);
+    EXPECT_GT(sources.keys.size(), 100u);  // the scan found the sources' texts at all
+    for (const Language lang : languages()) {
+        if (lang == Language::En) continue;  // the key: complete by construction
+        const std::string code(lang.code());
+        // The embedded files are the folder's: a file added since the build would go unchecked.
+        const auto files = catalogueFiles(lang);
+        std::set<std::string> onDisk, embedded;
+        for (const auto& entry : fs::directory_iterator(root / "i18n" / code))
+            if (entry.path().extension() == ".json" && entry.path().filename() != "language.json")
+                onDisk.insert(entry.path().filename().string());
+        for (const auto& [file, entries] : files) embedded.insert(file);
+        EXPECT_EQ(embedded, onDisk) << "rebuild: the catalogue embedded is not i18n/" << code;
+
+        std::map<std::string, std::string> fileOf;  // English -> the catalogue file that has it
+        for (const auto& [file, entries] : files)
+            for (const auto& [english, translated] : entries) fileOf[english] = file;
+        const auto& table = catalogue(lang);
+        std::set<std::string> used;
+        for (const auto& [text, where] : sources.keys) {
+            used.insert(text);
+            const auto it = table.find(text);
+            if (it == table.end()) {
+                ADD_FAILURE() << where << ": no " << code << " text for \"" << text
+                              << "\" (add it to i18n/" << code << "/<area>.json)";
+                continue;
+            }
+            EXPECT_EQ(placeholders(it->second), placeholders(text))
+                << where << ": the placeholders differ between \"" << text << "\" and its " << code
+                << " \"" << it->second << "\" (" << fileOf[text] << ")";
+        }
+        for (const std::string& text : sources.scenes) {
+            used.insert(text);
+            if (!table.count(text))
+                ADD_FAILURE() << "a built-in scene: no " << code << " text for the description \""
+                              << text << "\" (add it to i18n/" << code << "/scenes.json)";
+        }
+        for (const auto& [english, file] : fileOf)
+            if (!used.count(english))
+                ADD_FAILURE() << "i18n/" << code << "/" << file << ": \"" << english
+                              << "\" is used by no source (remove it, or the source lost its tr)";
+    }
 }
 
 }  // namespace

@@ -112,7 +112,7 @@ TEST(LessonFormat, ThePalettesColoursAreDistinctWithinAView) {
         for (const PaletteColour& c : group) {
             EXPECT_TRUE(rgb.insert({c.r, c.g, c.b}).second) << c.key;
             EXPECT_TRUE(en.insert(c.en).second) << c.key;
-            EXPECT_TRUE(it.insert(c.it).second) << c.key;
+            EXPECT_TRUE(it.insert(c.name(Language::It)).second) << c.key;
         }
     };
     std::vector<PaletteColour> rays, view2D{rayColour(RayKind::Primary)};
@@ -127,7 +127,7 @@ TEST(LessonFormat, ThePalettesColoursAreDistinctWithinAView) {
         for (const PaletteColour& ray : rays) {
             EXPECT_NE(std::tie(s.r, s.g, s.b), std::tie(ray.r, ray.g, ray.b)) << s.key;
             EXPECT_NE(s.en, ray.en) << s.key;
-            EXPECT_NE(s.it, ray.it) << s.key;
+            EXPECT_NE(s.name(Language::It), ray.name(Language::It)) << s.key;
         }
     }
 }

@@ -1,5 +1,6 @@
 #pragma once
-// The Italian catalogue's files as embedded in raystep_i18n (generated table; base/i18n.cpp).
+// Every language's files (i18n/<code>/*.json) as embedded in raystep_i18n (generated table;
+// base/i18n.cpp).
 #include <optional>
 #include <string>
 #include <string_view>
@@ -7,7 +8,7 @@
 
 namespace raystep {
 
-/// The text of an embedded catalogue file by its name ("core.json").
+/// The text of an embedded catalogue file by its path under i18n/ ("it/core.json").
 std::optional<std::string_view> embeddedCatalogue(std::string_view name);
 /// The embedded catalogue files' names, sorted.
 std::vector<std::string> embeddedCatalogueNames();

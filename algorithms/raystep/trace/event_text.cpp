@@ -103,10 +103,13 @@ std::string cellText(const std::array<std::int32_t, 3>& cell, int dims) {
 }
 
 std::string tupleText(const std::array<double, 3>& v, int dims, Language lang) {
-    // A comma already separates an Italian number's decimals: the items are parted by "; ".
-    const char* separator = lang == Language::It ? "; " : ", ";
+    // Where the comma is the decimal mark (Italian) the items are parted otherwise ("; ").
+    const std::string_view separator = listSeparator(lang);
     std::string s = "(";
-    for (int i = 0; i < dims; ++i) s += (i ? separator : "") + numberText(v[i], lang);
+    for (int i = 0; i < dims; ++i) {
+        if (i) s += separator;
+        s += numberText(v[i], lang);
+    }
     return s + ")";
 }
 
