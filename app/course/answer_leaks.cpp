@@ -280,30 +280,25 @@ std::vector<std::pair<std::string, std::size_t>> words(std::string_view s) {
     return out;
 }
 
-bool oneOf(const std::string& w, std::initializer_list<std::string_view> list) {
+/// Whether `w` is one of the words `role` is said with in any language (language.json).
+bool oneOf(const std::string& w, std::string_view role) {
+    const std::vector<std::string> list = wordsInAnyLanguage(role);
     return std::find(list.begin(), list.end(), w) != list.end();
 }
 
 /// A yes-or-no question ("Does the ray hit triangle 2?", "Il raggio incontra la sfera?") asks
 /// what it names; a question of another kind takes it as known ("How many shadow rays leave the
-/// hit point on the mirror?"). Italian "che", "come" and "quando" also join clauses: left out.
+/// hit point on the mirror?"): its words are a language's "question" words (Italian's leave out
+/// "che", "come" and "quando", which also join clauses).
 bool polar(std::string_view sentence) {
     for (const auto& [w, at] : words(sentence))
-        if (oneOf(w, {"how", "what", "which", "where", "why", "when", "who", "whose", "quanti",
-                      "quante", "quanto", "quanta", "quale", "quali", "cosa", "dove",
-                      "perch\xc3\xa9", "chi"}))
-            return false;
+        if (oneOf(w, "question")) return false;
     return true;
 }
 
-/// A word that says how a test came out, in either language.
+/// A word that says how a test came out, in any language.
 bool outcomeWord(const std::string& w) {
-    return oneOf(w, {"hit",       "hits",        "hitting",     "miss",        "misses",
-                     "missed",    "missing",     "intersects",  "intersected", "intersection",
-                     "meets",     "colpisce",    "colpito",     "colpita",     "colpiti",
-                     "colpite",   "colpire",     "manca",       "mancato",     "mancata",
-                     "interseca", "intersecato", "intersecata", "intersecare", "intersezione",
-                     "incontra"});
+    return oneOf(w, "outcome");
 }
 
 /// Whether a sentence names the outcome's primitive: "primitive 2", "triangle 2", or its kind
@@ -315,11 +310,10 @@ std::optional<std::size_t> namesPrimitive(const std::vector<std::pair<std::strin
         if (role != TextRole::GivenData &&
             std::find(o.names.begin(), o.names.end(), word) != o.names.end())
             return w[k].second;
-        const bool generic = oneOf(word, {"primitive", "primitiva"});
-        const bool kind = (o.circle && oneOf(word, {"circle", "cerchio", "cerchietto"})) ||
-                          (o.segment && oneOf(word, {"segment", "segmento"})) ||
-                          (o.sphere && oneOf(word, {"sphere", "sfera"})) ||
-                          (o.triangle && oneOf(word, {"triangle", "triangolo"}));
+        const bool generic = oneOf(word, "primitive");
+        const bool kind =
+            (o.circle && oneOf(word, "circle")) || (o.segment && oneOf(word, "segment")) ||
+            (o.sphere && oneOf(word, "sphere")) || (o.triangle && oneOf(word, "triangle"));
         if (!generic && !kind) continue;
         const bool numbered = k + 1 < w.size() && isDigit(w[k + 1].first[0]);
         if (numbered) {
@@ -337,26 +331,14 @@ std::optional<std::size_t> namesPrimitive(const std::vector<std::pair<std::strin
 namespace exercises {
 
 /// The name a 3D primitive goes by when its material is its own ("the mirror", "lo specchio"):
-/// the material's name, and the Italian of the built-in scenes' materials.
+/// the material's name, and its words in the languages ("material:mirror" in language.json).
 std::vector<std::string> uniqueNames(const Scene& scene, std::uint32_t prim) {
     if (prim >= scene.primitiveCount()) return {};
     const std::string& name = scene.materialOf(prim).name;
     for (std::uint32_t p = 0; p < scene.primitiveCount(); ++p)
         if (p != prim && scene.materialOf(p).name == name) return {};
     std::vector<std::string> names{lowerAscii(name)};
-    struct Italian {
-        const char* en;
-        std::array<const char*, 3> it;  // padded with nullptr
-    };
-    static constexpr Italian kItalian[] = {
-        {"mirror", {"specchio"}},        {"glass", {"vetro"}},
-        {"red", {"rossa", "rosso"}},     {"green", {"verde"}},
-        {"white", {"bianca", "bianco"}}, {"gold", {"oro", "dorata", "dorato"}},
-        {"floor", {"pavimento"}}};
-    for (const Italian& m : kItalian)
-        if (names[0] == m.en)
-            for (const char* w : m.it)
-                if (w) names.emplace_back(w);
+    for (std::string& w : wordsInAnyLanguage("material:" + names[0])) names.push_back(std::move(w));
     return names;
 }
 

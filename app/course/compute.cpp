@@ -30,11 +30,11 @@ std::string num(double v, Language lang) {
     const std::string s = formatNumber(v == 0.0 ? 0.0 : v, lang);
     return v < 0 ? "(" + s + ")" : s;
 }
-/// A tuple: "(1.5, 2, 0)"; in Italian "(1,5; 2; 0)", since the comma is the decimal mark.
+/// A tuple: "(1.5, 2, 0)"; in Italian "(1,5; 2; 0)", the language's list separator.
 std::string tuple(const std::array<double, 3>& v, int dims, Language lang) {
     std::string s = "(";
     for (int i = 0; i < dims; ++i) {
-        if (i) s += lang == Language::It ? "; " : ", ";
+        if (i) s += listSeparator(lang);
         s += formatNumber(v[i] == 0.0 ? 0.0 : v[i], lang);
     }
     return s + ")";
@@ -252,8 +252,7 @@ std::string computeWorking(const Exercise& ex, Language lang) {
                 double t0 = (g.lo[i] - g.o[i]) / g.d[i], t1 = (g.hi[i] - g.o[i]) / g.d[i];
                 if (t0 > t1) std::swap(t0, t1);
                 s += std::string(" ") + axisLetter(i) + " " +
-                     (enter ? v(t0)
-                            : "[" + v(t0) + (lang == Language::It ? "; " : ", ") + v(t1) + "]");
+                     (enter ? v(t0) : "[" + v(t0) + std::string(listSeparator(lang)) + v(t1) + "]");
             }
             return s + "; " +
                    (what == "t_enter"
@@ -506,10 +505,14 @@ std::vector<double> numbersInText(std::string_view text, Language lang) {
         std::size_t j = i;
         std::string s;
         while (digit(j)) s += text[j++];
-        const char mark = lang == Language::It ? ',' : '.';
-        if ((j < text.size() && (text[j] == mark || text[j] == '.')) && digit(j + 1)) {
+        // The language's decimal mark, or a point (a number pasted from elsewhere).
+        const std::string_view mark = decimalMark(lang);
+        const std::size_t markSize = text.compare(j, mark.size(), mark) == 0 ? mark.size()
+                                     : j < text.size() && text[j] == '.'     ? 1
+                                                                             : 0;
+        if (markSize && digit(j + markSize)) {
             s += '.';
-            ++j;
+            j += markSize;
             while (digit(j)) s += text[j++];
         }
         if (j < text.size() && (text[j] == 'e' || text[j] == 'E') &&

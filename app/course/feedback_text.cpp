@@ -13,14 +13,6 @@ const char* axisName(int a) {
     return a == 0 ? "x" : a == 1 ? "y" : "z";
 }
 
-std::string ordinal(Language lang, int n) {
-    const std::string s = std::to_string(n);
-    if (lang == Language::It) return s;
-    const int tens = n % 100, units = n % 10;
-    if (tens >= 11 && tens <= 13) return s + "th";
-    return s + (units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th");
-}
-
 std::string afterEvent(Language lang, std::size_t kind, const std::string& nth) {
     // The nth event of a kind, as the lecture would say it (no internal names).
     switch (kind) {
@@ -168,10 +160,10 @@ std::string nextCell(Language lang, const std::optional<DdaCell>& before, const 
                    "The walk starts in the cell that holds the ray's entry point (t_enter): %1.",
                    {cellText(next.cell, dims)});
     std::string tmax;
-    // In Italian the comma is the decimal mark: "tMaxX = 3,25; tMaxY = 4".
+    // Where the comma is the decimal mark the list's separator is not: "tMaxX = 3,25; tMaxY = 4".
     for (int i = 0; i < dims; ++i)
-        tmax += std::string(i ? (lang == Language::It ? "; " : ", ") : "") + "tMax" + "XYZ"[i] +
-                " = " + formatNumber(before->tMax[i], lang);
+        tmax += std::string(i ? listSeparator(lang) : "") + "tMax" + "XYZ"[i] + " = " +
+                formatNumber(before->tMax[i], lang);
     const std::string axes = axesText(next.axes);
     if (axes.size() > 1)
         return trf(lang,

@@ -17,8 +17,6 @@ namespace raystep::feedback {
 
 const char* axisName(int a);  // "x", "y", "z"
 
-/// "1st", "2nd" in English; "1" in Italian, whose patterns add "°" or "ª" by the noun's gender.
-std::string ordinal(Language lang, int n);
 /// "after the 2nd cell visited" / "dopo la 2ª cella visitata": no internal event names.
 std::string afterEvent(Language lang, std::size_t kind, const std::string& nth);
 std::string beforeEvent(Language lang, std::size_t kind, const std::string& nth);

@@ -74,7 +74,7 @@ void checkComputePrompts(const Lesson& lesson) {
         const Exercise& ex = lesson.exercises[i];
         const std::vector<double>* given = exercises::unitOf(ex.kind).givenNumbers(ex);
         if (!given) continue;
-        for (const Language lang : {Language::En, Language::It}) {
+        for (const Language lang : languages()) {
             const auto missing = numbersNotInText(*given, ex.prompt.in(lang), lang);
             if (!missing.empty())
                 throw LessonError(lesson.file, ex.line,
@@ -118,10 +118,9 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
         const EventLog& log = logs.of(ex.setup);
         if (exercises::unitOf(ex.kind).needsSweep() && !swept) continue;
         if (!resolvePosition(ex.at, log)) continue;  // validateLesson names it
-        explanations[j].en =
-            checkAnswer(ex, log, Answer{}, Language::En, lesson.file, sweep, scene).feedback;
-        explanations[j].it =
-            checkAnswer(ex, log, Answer{}, Language::It, lesson.file, sweep, scene).feedback;
+        for (const Language lang : languages())
+            explanations[j].set(
+                lang, checkAnswer(ex, log, Answer{}, lang, lesson.file, sweep, scene).feedback);
     }
     for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
         const Exercise& ex = lesson.exercises[i];
@@ -180,9 +179,9 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
             });
         for (const Shown& s : shown) {
             if (givenEqualsAnswer && s.ownPrompt) continue;
-            for (const Language lang : {Language::En, Language::It}) {
-                // An Italian text left out shows the English, checked already.
-                if (lang == Language::It && s.text.it.empty()) continue;
+            for (const Language lang : languages()) {
+                // A language's text left out shows the English, checked already.
+                if (!s.text.has(lang)) continue;
                 const auto found = findAnswer(forms, s.text.in(lang), s.role);
                 if (!found) continue;
                 const bool explanation = s.place.find("explanation") != std::string::npos;

@@ -471,7 +471,6 @@ std::string erratumHeading(Language lang) {
 const std::string& LocalText::slot(Language l) const {
     static const std::string none;
     if (l == Language::En) return en;
-    if (l == Language::It) return it;  // its own member until grading.cpp reads in()/has()
     const auto found = other.find(l.code());
     return found == other.end() ? none : found->second;
 }
@@ -484,8 +483,6 @@ const std::string& LocalText::in(Language l) const {
 void LocalText::set(Language l, std::string text) {
     if (l == Language::En)
         en = std::move(text);
-    else if (l == Language::It)
-        it = std::move(text);
     else
         other[std::string(l.code())] = std::move(text);
 }

@@ -26,11 +26,8 @@ namespace raystep {
 /// A text in every language a lesson gives it in, by language code ("en", "it", any code of the
 /// registry, base/i18n.h); a language the lesson leaves out reads the English.
 struct LocalText {
-    std::string en;  // the source text, required
-    // Italian's text, in a member of its own only while grading.cpp still writes and reads
-    // `.it`: in() and set() route "it" here, every other language goes to `other`.
-    std::string it;
-    std::map<std::string, std::string, std::less<>> other;  // code -> text
+    std::string en;                                         // the source text, required
+    std::map<std::string, std::string, std::less<>> other;  // every other language: code -> text
 
     /// The text in `l`, else the English.
     const std::string& in(Language l) const;

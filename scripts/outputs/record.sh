@@ -43,5 +43,7 @@ md5sum *.png > png.md5; rm -f *.png
 # Wall-clock times differ from run to run: masked (the "N ms" of render, compare's last column).
 sed -i -E 's/, [0-9]+ ms\)/, _ ms)/' r.*.txt
 sed -i -E 's/ +[0-9]+\.[0-9]+$/ _/' cmp.txt
+# ... and its "build ms" column (the second), after the structure's name.
+sed -i -E 's/^([a-z]+( [a-z0-9x]+)?) +[0-9]+\.[0-9]+ /\1 _ /' cmp.txt
 # The binary's own path (CLI11's "Usage:" line) differs from one checkout to the next.
 sed -i "s|$B|raystep-cli|g" help*.txt

@@ -85,7 +85,7 @@ TEST(LessonFormat, ColourNamesComeFromThePalette) {
         "c.json");
     // The names as the palette's table gives them, written here by hand.
     EXPECT_EQ(l.steps[0].text.en, "Primary rays are orange-red, shadow rays yellow.");
-    EXPECT_EQ(l.steps[0].text.it,
+    EXPECT_EQ(l.steps[0].text.in(Language::It),
               "I raggi primari sono in rosso arancio,\nquelli d'ombra in giallo.");
     expectLessonError(
         lessonWith(",\n\"steps\": [{\"text\": {\"en\": \"a\",\n \"it\": \"{colour:mauve}\"}}]"), 12,

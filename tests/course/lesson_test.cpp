@@ -34,14 +34,14 @@ TEST(Lessons, ThirteenInTheLecturesOrderEachInBothLanguages) {
         const Lesson& l = lessons[i];
         SCOPED_TRACE(l.file);
         EXPECT_EQ(l.number, i + 1);
-        EXPECT_FALSE(l.title.it.empty());
-        EXPECT_FALSE(l.text.it.empty());
+        EXPECT_TRUE(l.title.has(Language::It));
+        EXPECT_TRUE(l.text.has(Language::It));
         EXPECT_FALSE(l.exercises.empty()) << "every lesson has exercises";
-        for (const LessonStep& s : l.steps) EXPECT_FALSE(s.text.it.empty());
+        for (const LessonStep& s : l.steps) EXPECT_TRUE(s.text.has(Language::It));
         for (const Exercise& e : l.exercises) {
-            EXPECT_FALSE(e.prompt.it.empty()) << e.id;
+            EXPECT_TRUE(e.prompt.has(Language::It)) << e.id;
             ASSERT_FALSE(e.hints.empty()) << e.id << ": every exercise has a hint";
-            for (const LocalText& h : e.hints) EXPECT_FALSE(h.it.empty()) << e.id;
+            for (const LocalText& h : e.hints) EXPECT_TRUE(h.has(Language::It)) << e.id;
         }
         // By id, by number, the same lesson.
         EXPECT_EQ(loadLesson(l.id).number, l.number);
@@ -452,7 +452,8 @@ TEST(Lessons, TheRobustnessLessonSetsTheSlidesLoopBesideTheExactWalk) {
     EXPECT_NE(en.find("They part at cell 2: the loop enters (0, 1), the exact walk (1, 1)."),
               std::string::npos)
         << en;
-    EXPECT_NE(noted->note.it.find("Si separano alla cella 2"), std::string::npos) << noted->note.it;
+    EXPECT_NE(noted->note.in(Language::It).find("Si separano alla cella 2"), std::string::npos)
+        << noted->note.in(Language::It);
     // Only a 2D ray through a grid has such a walk: validation names the step that asks anyway.
     Lesson pixel = loadLesson("1");
     pixel.steps.at(0).textbookDda = true;

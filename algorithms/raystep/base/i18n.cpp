@@ -66,10 +66,14 @@ void readLanguageFile(LanguageInfo& info, std::string_view text, const std::stri
             info.hitWords = stringList(v, at);
         else if (key == "miss")
             info.missWords = stringList(v, at);
-        else
+        else if (key == "words") {
+            if (!v.is_object()) throw std::runtime_error(at + ": expected an object of lists");
+            for (const auto& [role, list] : v.items())
+                info.words[role] = stringList(list, at + "." + role);
+        } else
             throw std::runtime_error(at +
                                      ": unknown (name, decimal_mark, list_separator, "
-                                     "ordinal, locale, hit, miss)");
+                                     "ordinal, locale, hit, miss, words)");
     }
     if (info.decimalMark.empty()) throw std::runtime_error(where + ": empty decimal_mark");
 }
@@ -207,6 +211,16 @@ const LanguageInfo& languageInfo(Language lang) {
     const Registry& r = registry();
     const LanguageInfo* found = r.find(lang);
     return found ? *found : r.infos.front();
+}
+
+std::vector<std::string> wordsInAnyLanguage(std::string_view role) {
+    std::vector<std::string> out;
+    for (const Language lang : languages()) {
+        const auto& words = languageInfo(lang).words;
+        if (const auto found = words.find(role); found != words.end())
+            out.insert(out.end(), found->second.begin(), found->second.end());
+    }
+    return out;
 }
 
 std::optional<Language> parseLanguage(std::string_view code) {

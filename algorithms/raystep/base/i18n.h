@@ -36,8 +36,8 @@ class Language {
     constexpr bool operator==(const Language&) const = default;
 
     static const Language En;
-    /// Italian, by name, for the code written before languages were data; new code asks the
-    /// registry (languages(), parseLanguage) and the formats below instead.
+    /// Italian, by name, for the tests of its texts; the code asks the registry (languages(),
+    /// parseLanguage) and the formats below, and tests for no language but the source.
     static const Language It;
 
   private:
@@ -57,6 +57,9 @@ struct LanguageInfo {
     std::string locale;                 // Qt's locale of the app's widgets ("it_IT"); empty: system
     std::vector<std::string> hitWords;  // the words an answer may say "hit" with; the first is
     std::vector<std::string> missWords;  // the one written; likewise for "miss"
+    /// The words a role is said with, for the lesson checks that read texts ("question": the
+    /// words of a question that is not yes-or-no; "outcome", "circle", "material:mirror"...).
+    std::map<std::string, std::vector<std::string>, std::less<>> words;
     /// The catalogue: English -> text, all files together, and per file for the tests.
     std::map<std::string, std::string, std::less<>> entries;
     std::map<std::string, std::map<std::string, std::string>> files;
@@ -69,6 +72,8 @@ std::vector<Language> languages();
 std::string languageChoices();
 /// The registry's entry; English's for a code it does not know.
 const LanguageInfo& languageInfo(Language lang);
+/// The words of `role` (LanguageInfo::words) in every language, English's first.
+std::vector<std::string> wordsInAnyLanguage(std::string_view role);
 /// The language of `code` if the registry has it.
 std::optional<Language> parseLanguage(std::string_view code);
 std::string_view languageCode(Language lang);  // "en", "it"

@@ -56,19 +56,19 @@ class HitOrMiss final : public ExerciseKindUnit {
         const auto parts = splitAny(s, " \t=:");
         if (parts.empty()) return expected();
         const std::string_view word = parts[0];
-        // The words of both languages, whatever the app's language.
-        for (const char* no :
-             {"miss", "false", "no", "manca", "mancata", "mancato", "falso", "nessuna"})
-            if (word == no) {
-                if (parts.size() > 1) return bad(tr(lang, "a miss has no t"));
-                a.hit = false;
-                return a;
-            }
-        bool yes = false;
-        for (const char* w :
-             {"hit", "true", "yes", "colpisce", "colpita", "colpito", "sì", "si", "vero"})
-            yes = yes || word == w;
-        if (!yes) return expected();
+        // The words of every language (language.json's "hit" and "miss"), whatever the app's.
+        const auto said = [&](const std::vector<std::string> LanguageInfo::*words) {
+            for (const Language l : languages())
+                for (const std::string& w : languageInfo(l).*words)
+                    if (word == w) return true;
+            return false;
+        };
+        if (said(&LanguageInfo::missWords)) {
+            if (parts.size() > 1) return bad(tr(lang, "a miss has no t"));
+            a.hit = false;
+            return a;
+        }
+        if (!said(&LanguageInfo::hitWords)) return expected();
         a.hit = true;
         std::size_t i = 1;
         if (i < parts.size() && parts[i] == "t") ++i;
@@ -84,11 +84,16 @@ class HitOrMiss final : public ExerciseKindUnit {
 
     std::string format(const Exercise&, const Answer& a, Language lang) const override {
         if (!a.hit) return "";
-        // The answer's keywords, which parseAnswer reads in either language: a grammar, not
-        // a translation (the catalogue's "hit" is the event list's noun, "intersezione").
-        const bool it = lang == Language::It;
-        if (!*a.hit) return it ? "mancata" : "miss";
-        const std::string word = it ? "colpita" : "hit";
+        // The answer's keywords, which parseAnswer reads in any language: a grammar, not a
+        // translation (the catalogue's "hit" is the event list's noun, "intersezione"); the
+        // language's first word of each (language.json), English's if it has none.
+        const auto first = [&](const std::vector<std::string> LanguageInfo::*words,
+                               const char* english) {
+            const auto& own = languageInfo(lang).*words;
+            return own.empty() ? std::string(english) : own.front();
+        };
+        if (!*a.hit) return first(&LanguageInfo::missWords, "miss");
+        const std::string word = first(&LanguageInfo::hitWords, "hit");
         return a.numbers.empty() ? word : word + " " + formatNumber(a.numbers[0], lang);
     }
 

@@ -40,7 +40,7 @@ std::string nodeBoxText(const EventLog& log, std::uint32_t node, Language lang) 
     const auto corner = [&](const std::array<double, 3>& v) {
         std::string s = "(";
         for (int k = 0; k < log.dims(); ++k) {
-            if (k) s += lang == Language::It ? "; " : ", ";
+            if (k) s += listSeparator(lang);
             s += formatNumber(v[k], lang);
         }
         return s + ")";

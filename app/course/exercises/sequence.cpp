@@ -39,7 +39,7 @@ std::string sequenceSlip(const Context& c, const Answer& given, const Answer& ri
         return trf(lang, "The trace has only %1 here; %2 is not in it.",
                    {std::to_string(items), item(given, k)});
     // The k-th event of the range: the reason it comes next.
-    const std::string place = feedback::ordinal(lang, static_cast<int>(k + 1));
+    const std::string place = ordinal(lang, static_cast<int>(k + 1));
     std::size_t seen = 0;
     std::optional<DdaCell> prevCell;
     for (std::size_t i = c.at; i < c.log.events().size(); ++i) {
