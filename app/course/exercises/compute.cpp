@@ -198,7 +198,7 @@ std::vector<std::string> computeQuantities(const ComputeGiven& g) {
     return {};
 }
 
-class Compute final : public ExerciseKindUnit {
+class Compute final : public OneNumberUnit {
   public:
     ExerciseKind kind() const override { return ExerciseKind::Compute; }
     std::string_view name() const override { return "compute"; }
@@ -227,20 +227,6 @@ class Compute final : public ExerciseKindUnit {
         a.numbers.push_back(computeAnswer(c.ex, c.file));
         why = computeWorking(c.ex, lang);
         return ref;
-    }
-
-    std::optional<Answer> parse(const Exercise&, std::string_view text, std::string* why,
-                                Language lang) const override {
-        return parseOneNumber(text, why, lang);
-    }
-
-    std::string format(const Exercise&, const Answer& a, Language lang) const override {
-        return a.numbers.empty() ? "" : formatNumber(a.numbers[0], lang);
-    }
-
-    bool grade(const Context& c, const Answer& given, const Reference& ref) const override {
-        return given.numbers.size() == 1 &&
-               close(given.numbers[0], ref.answer.numbers[0], c.ex.tolerance);
     }
 
     std::string slip(const Context& c, const Answer& given, const Reference&, const std::string&,

@@ -168,6 +168,25 @@ class ExerciseKindUnit {
     virtual bool needsNodeBoxes() const { return false; }
 };
 
+/// A kind whose answer is one number, right within the exercise's tolerance (value, compute).
+class OneNumberUnit : public ExerciseKindUnit {
+  public:
+    std::optional<Answer> parse(const Exercise&, std::string_view text, std::string* why,
+                                Language lang) const override {
+        return parseOneNumber(text, why, lang);
+    }
+    std::string format(const Exercise&, const Answer& a, Language lang) const override {
+        return a.numbers.empty() ? "" : formatNumber(a.numbers[0], lang);
+    }
+    bool grade(const Context& c, const Answer& given, const Reference& ref) const override {
+        return given.numbers.size() == 1 &&
+               close(given.numbers[0], ref.answer.numbers[0], c.ex.tolerance);
+    }
+};
+
+/// The cells of an answer, `per` indices each, as the leak check looks for them.
+void addLeakCells(AnswerForms& f, const Answer& a, int per);
+
 /// Every kind, one unit each, in the order of ExerciseKind.
 const std::vector<const ExerciseKindUnit*>& kindUnits();
 /// The unit of `kind` (every ExerciseKind has one: the course tests check it).

@@ -146,13 +146,7 @@ class NextCell final : public ExerciseKindUnit {
 
     void answerForms(const LeakInput& in, AnswerForms& f) const override {
         const Answer a = referenceAnswer(in.ex, in.log, in.file, in.sweep);
-        const int per = static_cast<int>(a.numbers.size());
-        f.dims = per;
-        for (std::size_t k = 0; k + per <= a.numbers.size(); k += per) {
-            std::array<int, 3> c{0, 0, 0};
-            for (int i = 0; i < per; ++i) c[i] = static_cast<int>(a.numbers[k + i]);
-            f.cells.push_back(c);
-        }
+        addLeakCells(f, a, static_cast<int>(a.numbers.size()));
         f.describe = formatAnswer(in.ex, a);
     }
 };

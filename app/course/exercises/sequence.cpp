@@ -213,13 +213,7 @@ class Sequence final : public ExerciseKindUnit {
         if (in.ex.ofNodes) {
             for (const double n : a.numbers) f.nodes.push_back(static_cast<int>(n));
         } else {
-            const int per = std::max(a.perItem, 1);
-            f.dims = per;
-            for (std::size_t k = 0; k + per <= a.numbers.size(); k += per) {
-                std::array<int, 3> c{0, 0, 0};
-                for (int i = 0; i < per; ++i) c[i] = static_cast<int>(a.numbers[k + i]);
-                f.cells.push_back(c);
-            }
+            addLeakCells(f, a, std::max(a.perItem, 1));
         }
         f.describe = formatAnswer(in.ex, a);
     }

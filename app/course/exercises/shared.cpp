@@ -166,4 +166,13 @@ void addLeakNumber(AnswerForms& f, double v) {
     if (!(v == std::floor(v) && std::abs(v) <= 1.0)) f.numbers.push_back(v);
 }
 
+void addLeakCells(AnswerForms& f, const Answer& a, int per) {
+    f.dims = per;
+    for (std::size_t k = 0; per > 0 && k + per <= a.numbers.size(); k += per) {
+        std::array<int, 3> c{0, 0, 0};
+        for (int i = 0; i < per; ++i) c[i] = static_cast<int>(a.numbers[k + i]);
+        f.cells.push_back(c);
+    }
+}
+
 }  // namespace raystep::exercises

@@ -121,7 +121,7 @@ std::string valueSlip(const Context& c, double given, double right, std::size_t 
     return "";
 }
 
-class Value final : public ExerciseKindUnit {
+class Value final : public OneNumberUnit {
   public:
     ExerciseKind kind() const override { return ExerciseKind::Value; }
     std::string_view name() const override { return "value"; }
@@ -235,20 +235,6 @@ class Value final : public ExerciseKindUnit {
         if (!std::isfinite(v)) c.fail("the trace's value is not finite (the ray never crosses)");
         a.numbers.push_back(v);
         return ref;
-    }
-
-    std::optional<Answer> parse(const Exercise&, std::string_view text, std::string* why,
-                                Language lang) const override {
-        return parseOneNumber(text, why, lang);
-    }
-
-    std::string format(const Exercise&, const Answer& a, Language lang) const override {
-        return a.numbers.empty() ? "" : formatNumber(a.numbers[0], lang);
-    }
-
-    bool grade(const Context& c, const Answer& given, const Reference& ref) const override {
-        return given.numbers.size() == 1 &&
-               close(given.numbers[0], ref.answer.numbers[0], c.ex.tolerance);
     }
 
     std::string slip(const Context& c, const Answer& given, const Reference& ref,

@@ -1,14 +1,11 @@
 // Fails, naming file:line, when code under the given folder (app/) branches on a structure's kind
 // or type (branch_check.h).
 #include "branch_check.h"
+#include "source_tree.h"
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -18,21 +15,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    const std::vector<std::string> folders(argv + 2, argv + argc);
-    std::vector<fs::path> files;
-    for (const std::string& folder : folders)
-        for (const auto& e : fs::recursive_directory_iterator(root / folder))
-            if (e.is_regular_file() &&
-                (e.path().extension() == ".h" || e.path().extension() == ".cpp"))
-                files.push_back(e.path());
-    std::sort(files.begin(), files.end());
+    const auto files = raystep::checks::sourceFiles(root, {argv + 2, argv + argc});
     int failures = 0;
     for (const fs::path& file : files) {
-        std::ifstream in(file, std::ios::binary);
-        std::stringstream text;
-        text << in.rdbuf();
         const std::string name = fs::relative(file, root).generic_string();
-        for (const auto& b : raystep::checks::findBranches(text.str())) {
+        for (const auto& b : raystep::checks::findBranches(raystep::checks::readWhole(file))) {
             std::cerr << name << ":" << b.line << ": " << b.what << ": " << b.text << "\n";
             ++failures;
         }

@@ -1,28 +1,17 @@
 // The layering check itself: an include planted in a real file is caught at its line with its
 // rule; what the layering allows is not flagged; a commented-out include is no include.
 #include "layer_check.h"
+#include "source_tree.h"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace raystep::checks {
 namespace {
 
 std::string readSource(const std::string& relative) {
-    std::ifstream in(std::string(RAYSTEP_SOURCE_DIR) + "/" + relative, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/// `text` with `line` put before its line number `at` (from 1).
-std::string plantAt(const std::string& text, std::size_t at, const std::string& line) {
-    std::size_t offset = 0;
-    for (std::size_t k = 1; k < at; ++k) offset = text.find('\n', offset) + 1;
-    return text.substr(0, offset) + line + "\n" + text.substr(offset);
+    return readWhole(std::filesystem::path(RAYSTEP_SOURCE_DIR) / relative);
 }
 
 TEST(LayerCheck, TheSceneIncludingTheStructuresIsCaughtAtItsLine) {

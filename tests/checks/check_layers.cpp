@@ -1,14 +1,11 @@
 // Fails, naming file:line, when a source file under the given folders breaks the layering
 // (layer_check.h).
 #include "layer_check.h"
+#include "source_tree.h"
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -18,20 +15,12 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    std::vector<fs::path> files;
-    for (int i = 2; i < argc; ++i)
-        for (const auto& e : fs::recursive_directory_iterator(root / argv[i]))
-            if (e.is_regular_file() &&
-                (e.path().extension() == ".h" || e.path().extension() == ".cpp"))
-                files.push_back(e.path());
-    std::sort(files.begin(), files.end());
+    const auto files = raystep::checks::sourceFiles(root, {argv + 2, argv + argc});
     int failures = 0;
     for (const fs::path& file : files) {
-        std::ifstream in(file, std::ios::binary);
-        std::stringstream text;
-        text << in.rdbuf();
         const std::string name = fs::relative(file, root).generic_string();
-        for (const auto& v : raystep::checks::findLayerViolations(name, text.str())) {
+        for (const auto& v :
+             raystep::checks::findLayerViolations(name, raystep::checks::readWhole(file))) {
             std::cerr << name << ":" << v.line << ": #include \"" << v.header << "\": " << v.rule
                       << "\n";
             ++failures;
