@@ -32,7 +32,9 @@ std::string codeOnly(std::string_view src) {
             // A raw string: R"delim( ... )delim".
             const std::size_t open = src.find('(', i + 2);
             if (open == std::string_view::npos) break;
-            const std::string close = ")" + std::string(src.substr(i + 2, open - i - 2)) + "\"";
+            // Built by append: GCC 12 warns (-Wrestrict, falsely) on ")" + std::string(...).
+            const std::string close =
+                std::string(")").append(src.substr(i + 2, open - i - 2)).append("\"");
             const std::size_t at = src.find(close, open + 1);
             const std::size_t end = at == std::string_view::npos ? src.size() : at + close.size();
             blank(i + 2, end - 1);

@@ -51,7 +51,10 @@ inline std::string markText(const std::string& english) {
 /// A lesson's text marked line by line (Markdown's lists and code blocks keep their lines).
 inline json markLines(const json& en) {
     const auto line = [](const std::string& l) {
-        return l.find_first_not_of(' ') == std::string::npos ? l : "[[" + l + "]]";
+        // Built by append: GCC 12 warns (-Wrestrict, falsely) on "[[" + l + "]]".
+        return l.find_first_not_of(' ') == std::string::npos
+                   ? l
+                   : std::string("[[").append(l).append("]]");
     };
     if (en.is_array()) {
         json out = json::array();
@@ -60,7 +63,10 @@ inline json markLines(const json& en) {
     }
     std::string out, s = en.get<std::string>();
     std::istringstream in(s);
-    for (std::string l; std::getline(in, l);) out += (out.empty() ? "" : "\n") + line(l);
+    for (std::string l; std::getline(in, l);) {
+        if (!out.empty()) out += '\n';
+        out += line(l);
+    }
     return out;
 }
 
