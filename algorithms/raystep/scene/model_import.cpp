@@ -1,8 +1,8 @@
 #include "raystep/scene/model_import.h"
 
+#include "raystep/base/file_write.h"
 #include "raystep/base/json_reader.h"
 #include "raystep/geometry/kernels.h"
-#include "raystep/base/file_write.h"
 #include "raystep/scene/model_checks.h"
 #include "raystep/scene/resources.h"
 
