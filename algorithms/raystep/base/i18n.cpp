@@ -127,7 +127,8 @@ void addFrom(Registry& r, const std::string& dir) {
     std::vector<fs::path> folders;
     for (const auto& e : fs::directory_iterator(dir)) {
         if (!e.is_directory()) continue;
-        if (!fs::exists(e.path() / kLanguageFile)) continue;
+        // A language.json that is no regular file (a FIFO, a device) is no language: never opened.
+        if (!fs::is_regular_file(e.path() / kLanguageFile, ec)) continue;
         const std::string code = e.path().filename().string();
         if (!validCode(code))
             throw std::runtime_error(e.path().string() +
