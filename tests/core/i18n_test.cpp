@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -130,6 +131,21 @@ TEST(I18nDeathTest, ABadLanguageFileIsNamed) {
             std::exit(0);
         },
         ::testing::ExitedWithCode(3), "zz/language.json: key 'decimal_point': unknown");
+    std::filesystem::remove_all(root);
+}
+
+TEST(I18nDeathTest, ALanguageFileThatIsAFifoIsNeverOpened) {
+    // Opening a FIFO for reading waits for a writer: the folder's zz must be passed over.
+    const auto root = languageFolder("fifo", "{}", "{}");
+    std::filesystem::remove(root / "zz" / "language.json");
+    ASSERT_EQ(::mkfifo((root / "zz" / "language.json").c_str(), 0600), 0);
+    EXPECT_EXIT(
+        {
+            ::alarm(20);  // a hang ends the child with SIGALRM, not the suite
+            addLanguages(root.string());
+            std::exit(parseLanguage("zz") ? 1 : 0);
+        },
+        ::testing::ExitedWithCode(0), "");
     std::filesystem::remove_all(root);
 }
 
