@@ -52,15 +52,19 @@ class TextBox final : public AnswerInput {
             emit cellsChanged(cells_);
         });
         connect(line_, &QLineEdit::returnPressed, this, &AnswerInput::submitted);
+        number_ = new QRegularExpressionValidator(line_);
     }
     void prepare(const Exercise& ex, const AnswerContext& ctx, const TextBoxRule& rule) override {
         line_->setValidator(nullptr);
         if (rule.placeholder) line_->setPlaceholderText(rule.placeholder(ex, ctx));
         if (rule.number) {
-            // A number box: digits, one sign, a decimal point or comma, an exponent.
-            static const QRegularExpression number(
-                QStringLiteral("[-+]?[0-9]*([.,][0-9]*)?([eE][-+]?[0-9]*)?"));
-            line_->setValidator(new QRegularExpressionValidator(number, line_));
+            // A number box: digits, one sign, a decimal point, comma or the language's own
+            // mark, an exponent.
+            const QString mark = QRegularExpression::escape(
+                QString::fromStdString(std::string(decimalMark(ctx.lang))));
+            number_->setRegularExpression(QRegularExpression(
+                QStringLiteral("[-+]?[0-9]*(([.,]|%1)[0-9]*)?([eE][-+]?[0-9]*)?").arg(mark)));
+            line_->setValidator(number_);
         }
         appendCells_ = rule.cells == CellClick::Append;
         answerCell_ = rule.cells == CellClick::Answer;
@@ -93,8 +97,9 @@ class TextBox final : public AnswerInput {
 
   private:
     QLineEdit* line_ = nullptr;
-    QPushButton* clear_ = nullptr;  // a sequence answer: start again
-    QList<QPoint> cells_;           // cells clicked for a sequence answer, in order
+    QRegularExpressionValidator* number_ = nullptr;  // a number box's, one for every exercise
+    QPushButton* clear_ = nullptr;                   // a sequence answer: start again
+    QList<QPoint> cells_;  // cells clicked for a sequence answer, in order
     bool appendCells_ = false, answerCell_ = false;
 };
 

@@ -114,6 +114,15 @@ TEST_F(PseudoLanguage, LessonShowKeyAndCheckSayNothingUnmarked) {
                 ADD_FAILURE() << lesson << " key " << id << ": unmarked " << w;
             EXPECT_EQ(answer.find('.'), std::string::npos) << id << ": " << answer;
         }
+        // ...and read back as xx writes them: the key in xx is a sheet with every answer right.
+        write(sheets + "/xx-key.json", xxKey.out);
+        const CliResult back =
+            run("lesson check " + lesson + " --answers " + sheets + "/xx-key.json --lang xx");
+        ASSERT_EQ(back.code, 0) << back.err;
+        std::smatch score;
+        const std::string first = back.out.substr(0, back.out.find('\n'));
+        ASSERT_TRUE(std::regex_search(first, score, std::regex("(\\d+) / (\\d+)$"))) << first;
+        EXPECT_EQ(score[1], score[2]) << first;
     }
 }
 

@@ -73,19 +73,24 @@ TEST(Progressive, PlanHalvesTheBlocksThenDoublesTheSamples) {
     ASSERT_EQ(once.size(), 1u);
     EXPECT_EQ(once[0].block, 1);
     EXPECT_EQ(once[0].samples, 6);
+    // After coarse passes, every pixel's first sample, then the other two at once.
     const auto coarse = progressivePlan(4, 3, false);
-    ASSERT_EQ(coarse.size(), 3u);
-    EXPECT_EQ(coarse[1].block, 2);
-    EXPECT_EQ(coarse[2].block, 1);
-    EXPECT_EQ(coarse[2].samples, 3);
+    const std::vector<std::pair<int, int>> coarseWant = {{4, 1}, {2, 1}, {1, 1}, {1, 3}};
+    ASSERT_EQ(coarse.size(), coarseWant.size());
+    for (std::size_t i = 0; i < coarse.size(); ++i) {
+        EXPECT_EQ(coarse[i].block, coarseWant[i].first) << i;
+        EXPECT_EQ(coarse[i].samples, coarseWant[i].second) << i;
+    }
 }
 
 TEST(Render, OnePassAndPassesGiveEveryPixelAsTracedAlone) {
     // render() in its default one pass, and in the app's passes, against each pixel on its own.
     const Scene scene = loadBuiltinScene("cornell");
     const Accelerator accel = buildAccelerator(scene, AccelKind::Grid);
-    for (const bool passes : {false, true}) {
-        RenderOptions o = passes ? progressive() : RenderOptions{};
+    // One pass; the app's passes; coarse passes then every remaining sample at once.
+    for (const int plan : {0, 1, 2}) {
+        RenderOptions o = plan == 1 ? progressive() : RenderOptions{};
+        if (plan == 2) o.firstBlock = 4;
         o.width = 37;
         o.height = 29;
         o.spp = 3;
@@ -94,7 +99,7 @@ TEST(Render, OnePassAndPassesGiveEveryPixelAsTracedAlone) {
         o.threads = 2;
         const RenderResult r = render(scene, accel, o);
         const RenderResult ref = referenceRender(scene, scene.camera, o, AccelKind::Grid);
-        SCOPED_TRACE(passes ? "passes" : "one pass");
+        SCOPED_TRACE(plan);
         EXPECT_FALSE(r.cancelled);
         expectSameImage(r.image, ref.image);
         EXPECT_EQ(r.costPerPixel, ref.costPerPixel);

@@ -46,7 +46,10 @@ std::vector<std::string> stringList(const json& v, const std::string& where) {
 void readLanguageFile(LanguageInfo& info, std::string_view text, const std::string& where) {
     const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (!j.is_object()) throw std::runtime_error(where + ": not a JSON object");
-    for (const auto& [key, v] : j.items()) {
+    for (const auto& item : j.items()) {
+        // Named, not a structured binding: clang 14 cannot capture a binding in a lambda.
+        const std::string& key = item.key();
+        const json& v = item.value();
         const std::string at = where + ": key '" + key + "'";
         const auto text = [&]() {
             if (!v.is_string()) throw std::runtime_error(at + ": expected a string");
@@ -94,7 +97,7 @@ void readCatalogueFile(LanguageInfo& info, const std::string& file, std::string_
 
 struct Registry {
     // A deque, never reordered: the references catalogue() and languageInfo() hand out stay
-    // valid as languages are added (languages() sorts a copy).
+    // valid as languages are added (languages() sorts a copy); a replaced language's change.
     std::deque<LanguageInfo> infos;
 
     LanguageInfo& entry(std::string_view code) {
@@ -137,13 +140,13 @@ void addFrom(Registry& r, const std::string& dir) {
         folders.push_back(e.path());
     }
     std::sort(folders.begin(), folders.end());
+    // Every folder read whole before any replaces a language of the same code (a folder is a
+    // complete language): a file that cannot be read leaves the registry as it was.
+    std::vector<LanguageInfo> read;
     for (const fs::path& folder : folders) {
-        LanguageInfo& info = r.entry(folder.filename().string());
-        // Replaces an embedded language of the same code whole: a folder is a complete language.
-        const Language lang = info.lang;
-        info = LanguageInfo{};
-        info.lang = lang;
-        info.name = std::string(lang.code());
+        LanguageInfo& info = read.emplace_back();
+        info.lang = Language(folder.filename().string());
+        info.name = std::string(info.lang.code());
         std::vector<fs::path> files;
         for (const auto& e : fs::directory_iterator(folder))
             if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
@@ -156,6 +159,7 @@ void addFrom(Registry& r, const std::string& dir) {
                 readCatalogueFile(info, p.filename().string(), text, p.string());
         }
     }
+    for (LanguageInfo& info : read) r.entry(info.lang.code()) = std::move(info);
 }
 
 Registry makeRegistry() {

@@ -81,8 +81,9 @@ std::string_view languageCode(Language lang);  // "en", "it"
 /// Adds the languages in `dir`, one folder each (dir/<code>/language.json and any other *.json
 /// as its catalogue), over an embedded one of the same code. The binaries call it on the folder
 /// the environment variable RAYSTEP_LANGUAGES names, when the registry is first used; tests call
-/// it directly. Call it before other threads use the languages. Throws std::runtime_error
-/// naming the file that cannot be read.
+/// it directly. Call it before other threads use the languages, and before anything holds the
+/// catalogue or a format of a language it replaces (those change). Throws std::runtime_error
+/// naming the file that cannot be read, having added nothing.
 void addLanguages(const std::string& dir);
 
 /// `english` in `lang`: itself in English, the catalogue's entry otherwise (the English when the

@@ -19,11 +19,13 @@ namespace raystep {
 std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp, bool refine) {
     std::vector<ProgressivePass> plan;
     for (int b = std::max(firstBlock, 1); b >= 2; b /= 2) plan.push_back({b, 1});
-    if (!refine) {
+    // After coarse passes every pixel first gets its sample 0 (the pixels they traced already
+    // have it), then the rest: doubling, or all at once.
+    if (refine || firstBlock > 1) plan.push_back({1, 1});
+    if (refine)
+        for (int s = 2; s < 2 * spp; s *= 2) plan.push_back({1, std::min(s, spp)});
+    else if (spp > 1 || firstBlock <= 1)
         plan.push_back({1, spp});
-        return plan;
-    }
-    for (int s = 1; s < 2 * spp; s *= 2) plan.push_back({1, std::min(s, spp)});
     return plan;
 }
 

@@ -27,9 +27,9 @@ struct ProgressivePass {
     int samples = 1;
 };
 
-/// The passes a render makes, in order: the coarse blocks halving down to 2 (one sample each),
-/// then every pixel: its samples doubling 1, 2, 4 ... up to `spp` when `refine`, else all `spp`
-/// at once. firstBlock 1 without refine: one pass, the whole-image render.
+/// The passes a render makes, in order: the coarse blocks halving down to 1 (one sample each),
+/// then the samples per pixel doubling 2, 4 ... up to `spp` when `refine`, else the rest of
+/// `spp` at once. firstBlock 1 without refine: one pass of every sample, the whole-image render.
 std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp, bool refine = true);
 
 class ProgressiveRender {
@@ -39,8 +39,9 @@ class ProgressiveRender {
     /// (std::invalid_argument otherwise). No camera in the options: the scene's.
     ProgressiveRender(const Scene& scene, const Accelerator& accel, RenderOptions options);
 
-    /// Runs the next pass on all the options' threads. Returns false, with the image left as the
-    /// previous pass made it, when `progress` asks to stop (then the render is over: done()).
+    /// Runs the next pass on all the options' threads. Returns false when `progress` asks to stop
+    /// (then the render is over: done()), the image left as the previous pass made it; a single
+    /// pass writes its pixels as it goes, so a cancelled one leaves them partly written.
     bool nextPass(const ProgressFn& progress = {});
     /// Runs every pass left; false if cancelled.
     bool run(const ProgressFn& progress = {});
@@ -80,7 +81,7 @@ class ProgressiveRender {
     std::vector<Pcg32> rng_;            // each pixel's random stream, kept between its passes
     std::vector<Color> sum_;            // each pixel's sum of samples so far
     std::vector<std::uint64_t> tests_;  // each pixel's primitive tests so far
-    int samplesDone_ = 0;               // samples every pixel holds (0 during the coarse passes)
+    int samplesDone_ = 0;  // samples each traced pixel holds (every pixel's from the 1x1 pass on)
     Image image_;
     std::vector<std::uint64_t> cost_;
     RayCounters counters_;

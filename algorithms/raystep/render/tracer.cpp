@@ -156,6 +156,7 @@ void Tracer::samples(int x, int y, int from, int to, const RenderOptions& option
                      Color& sum, RayCounters& counters, Rec& rec) const {
     const Camera& cam = options.camera ? *options.camera : scene_.camera;
     if (options.spp == 1) {
+        if (from > 0 || to < 1) return;  // the one sample is sample 0
         sum += trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
                      RayKind::Primary, 0, kNoId, false, rng, counters, rec);
         return;

@@ -39,7 +39,8 @@ using detail::ifPresent;
 // ---- what the kinds share ----
 
 std::string_view trim(std::string_view s);
-/// A number as typed, "0.75" or "0,75"; nullopt when it is none.
+/// A number as typed, with a point or any language's decimal mark ("0.75", "0,75"); nullopt
+/// when it is none.
 std::optional<double> parseNumber(std::string_view s);
 std::optional<long> parseWhole(std::string_view s);
 std::vector<std::string_view> splitAny(std::string_view s, std::string_view seps);

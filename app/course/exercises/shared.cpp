@@ -23,7 +23,13 @@ std::optional<double> parseNumber(std::string_view s) {
     s = trim(s);
     if (s.empty()) return std::nullopt;
     std::string copy(s);
-    std::replace(copy.begin(), copy.end(), ',', '.');  // "0,75" as Italian students write it
+    // Any language's decimal mark, whatever the app's ("0,75" as Italian students write it).
+    for (const Language lang : languages()) {
+        const std::string_view mark = decimalMark(lang);
+        if (mark == "." || mark.empty()) continue;
+        for (std::size_t at = copy.find(mark); at != std::string::npos; at = copy.find(mark, at))
+            copy.replace(at, mark.size(), ".");
+    }
     double v = 0.0;
     const auto [end, ec] = std::from_chars(copy.data(), copy.data() + copy.size(), v);
     if (ec != std::errc() || end != copy.data() + copy.size() || !std::isfinite(v))
