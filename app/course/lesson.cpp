@@ -409,7 +409,10 @@ Exercise readExercise(const Reader& r, const json& j, const std::string& path,
     });
     // A kind's own keys: a kind that does not take one names the first kind that does.
     const exercises::ExerciseKindUnit& unit = exercises::unitOf(ex.kind);
-    for (const auto& [key, owner] : kindKeys()) {
+    for (const auto& entry : kindKeys()) {
+        // Named, not a structured binding: clang 14 cannot capture a binding in a lambda.
+        const auto& key = entry.first;
+        const auto& owner = entry.second;
         const auto own = unit.keys();
         const auto takes = [&](const char* k) { return std::string_view(k) == key; };
         if (j.contains(key) && std::none_of(own.begin(), own.end(), takes))
