@@ -108,7 +108,8 @@ TEST_F(PseudoLanguage, LessonShowKeyAndCheckSayNothingUnmarked) {
         // The key's answers in xx: only its values are the student's to read (the keys are ids).
         const CliResult xxKey = run("lesson key " + lesson + " --lang xx");
         ASSERT_EQ(xxKey.code, 0) << xxKey.err;
-        for (const auto& [id, v] : json::parse(xxKey.out)["answers"].items()) {
+        const json xxAnswers = json::parse(xxKey.out)["answers"];  // outlives the loop over it
+        for (const auto& [id, v] : xxAnswers.items()) {
             const std::string answer = v.get<std::string>();
             for (const std::string& w : unmarkedWords(answer, ok))
                 ADD_FAILURE() << lesson << " key " << id << ": unmarked " << w;
