@@ -74,7 +74,9 @@ void printErrata(const std::vector<Erratum>& errata, Language lang) {
                     e.why.in(lang).c_str());
 }
 
-int show(Lesson l, Language lang) {
+}  // namespace
+
+int showLesson(Lesson l, Language lang) {
     // Steps with a computed note (the slides' DDA loop beside the exact walk) need the lesson run.
     if (std::any_of(l.steps.begin(), l.steps.end(),
                     [](const LessonStep& s) { return s.textbookDda; })) {
@@ -110,6 +112,8 @@ int show(Lesson l, Language lang) {
     }
     return 0;
 }
+
+namespace {
 
 /// The answer key; in Italian the numbers with a decimal comma, as a student there types them.
 int key(const Lesson& l, Language lang) {
@@ -194,8 +198,8 @@ int sweep(const Lesson& l, bool json) {
     if (!l.sweep) return fail(l.file + ": lesson " + l.id + " has no sweep");
     std::variant<Scene, Scene2D> scene;
     try {
-        scene = loadAnyScene(lessonScenePath(l));
-    } catch (const SceneError& e) {
+        scene = loadLessonScene(l);
+    } catch (const LessonError& e) {
         return fail(e.what());
     }
     ProgressBar bar("sweep");
@@ -233,7 +237,7 @@ int runLesson(CLI::App* /*lessonCommand*/, const LessonArgs& a) {
     try {
         if (a.list->parsed()) return list();
         const Lesson l = loadLesson(a.lesson);
-        if (a.show->parsed()) return show(l, *lang);
+        if (a.show->parsed()) return showLesson(l, *lang);
         if (a.validate->parsed()) {
             validateLesson(l);
             std::printf(

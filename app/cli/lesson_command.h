@@ -1,6 +1,8 @@
 #pragma once
 // raystep-cli lesson list | show | validate | key | check | sweep: the lessons from the command
 // line, and grading a course's answers against the recorded trace.
+#include "raystep/base/i18n.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -23,5 +25,14 @@ struct LessonArgs {
 
 void addLessonCommand(CLI::App& app, LessonArgs& args);
 int runLesson(CLI::App* lessonCommand, const LessonArgs& args);
+}  // namespace raystep::cli
+
+namespace raystep {
+struct Lesson;
+}
+
+namespace raystep::cli {
+/// A lesson's text, steps and exercises as Markdown (`lesson show`; `practice make`).
+int showLesson(Lesson lesson, Language lang);
 
 }  // namespace raystep::cli

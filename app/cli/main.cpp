@@ -5,6 +5,7 @@
 #include "dda_command.h"
 #include "intersect_command.h"
 #include "lesson_command.h"
+#include "practice_command.h"
 #include "render_command.h"
 #include "scenes_command.h"
 #include "trace_command.h"
@@ -31,12 +32,13 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    const std::array<std::string, 8> commands = {"scenes", "render", "intersect", "dda",
-                                                 "build",  "trace",  "compare",   "lesson"};
+    const std::array<std::string, 9> commands = {
+        "scenes", "render", "intersect", "dda", "build", "trace", "compare", "lesson", "practice"};
     if (!first.empty() && first[0] != '-' &&
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
-                    "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson)");
+                    "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson, "
+                    "practice)");
 
     // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
     // input.
@@ -62,6 +64,8 @@ int main(int argc, char** argv) {
     addCompareCommand(app, compareArgs);
     LessonArgs lessonArgs;
     addLessonCommand(app, lessonArgs);
+    PracticeArgs practiceArgs;
+    addPracticeCommand(app, practiceArgs);
 
     try {
         app.parse(argc, argv);
@@ -91,6 +95,8 @@ int main(int argc, char** argv) {
             code = runCompare(compareArgs);
         else if (app.got_subcommand("lesson"))
             code = runLesson(app.get_subcommand("lesson"), lessonArgs);
+        else if (app.got_subcommand("practice"))
+            code = runPractice(practiceArgs);
         else
             code = runRender(renderArgs);
     } catch (const std::filesystem::filesystem_error& e) {

@@ -171,14 +171,19 @@ void checkNoAnswerGivenAway(const Lesson& lesson, const LessonLogs& logs, const 
             if (j < i && !explanations[j].en.empty())
                 shown.push_back({ok + "'s explanation", explanations[j]});
         }
-        // A compute exercise's own data may equal its answer; the prompt must state them.
+        // A compute exercise's own data may equal its answer; its prompt must state them ...
         const std::vector<double>* given = exercises::unitOf(ex.kind).givenNumbers(ex);
         const bool givenEqualsAnswer =
             given && std::any_of(given->begin(), given->end(), [&](double g) {
                 return !forms.numbers.empty() && g == forms.numbers[0];
             });
         for (const Shown& s : shown) {
-            if (givenEqualsAnswer && s.ownPrompt) continue;
+            // ... and so may the other texts that state data: the lesson's text (a practice's
+            // states its instance) and the other compute prompts.
+            if (givenEqualsAnswer &&
+                (s.ownPrompt || s.place == "text" ||
+                 (s.role == TextRole::GivenData && s.place.ends_with(".prompt"))))
+                continue;
             for (const Language lang : languages()) {
                 // A language's text left out shows the English, checked already.
                 if (!s.text.has(lang)) continue;

@@ -5,11 +5,13 @@
 #include "course/embedded_lessons.h"
 #include "course/exercises/kind_unit.h"
 #include "course/palette.h"
+#include "course/practice/practice.h"
 
 #include "raystep/base/format.h"
 #include "raystep/base/json_reader.h"
 #include "raystep/base/names.h"
 #include "raystep/geometry/kernels.h"
+#include "raystep/scene/scene_loader.h"
 #include "raystep/trace/replay.h"
 
 #include <algorithm>
@@ -322,8 +324,20 @@ void readTrace(const Reader& r, const json& j, const std::string& path, LessonTr
         if (v == "example") {
             t.kind = LessonTrace::Kind::ExampleRay;
         } else {
+            if (v.is_array() && v.size() == 6) {
+                double n[6];
+                for (int i = 0; i < 6; ++i) n[i] = r.number(v[i], JsonLineMap::element(p, i));
+                const double o = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+                const double d = std::max({std::abs(n[3]), std::abs(n[4]), std::abs(n[5])});
+                if (d == 0.0) r.fail(p, "the direction must not be zero");
+                if (const auto problem = rayRangeProblem(Precision::Double, o, d))
+                    r.fail(p, *problem);
+                t.kind = LessonTrace::Kind::Ray3D;
+                t.ray3D = Ray{Vec3(n[0], n[1], n[2]), Vec3(n[3], n[4], n[5])};
+                return;
+            }
             if (!v.is_array() || v.size() != 4)
-                r.fail(p, "expected \"example\" or [OX, OY, DX, DY]");
+                r.fail(p, "expected \"example\", [OX, OY, DX, DY] or [OX, OY, OZ, DX, DY, DZ]");
             double n[4];
             for (int i = 0; i < 4; ++i) n[i] = r.number(v[i], JsonLineMap::element(p, i));
             if (n[2] == 0.0 && n[3] == 0.0) r.fail(p, "the direction must not be zero");
@@ -572,8 +586,30 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     l.text = readText(r, root["text"], "text");
     ifPresent(root, "", "errata",
               [&](const json& v, const std::string& p) { l.errata = readErrata(r, v, p); });
-    l.scene = r.string(root["scene"], "scene");
-    if (l.scene.empty()) r.fail("scene", "must name a built-in scene or a scene file");
+    if (root["scene"].is_object()) {
+        // An inline scene is read here, so its errors name the lesson file and its key.
+        l.sceneText = root["scene"].dump();
+        l.scene = "scene";
+        try {
+            if (isScene2DText(l.sceneText))
+                loadScene2DText(l.sceneText, "scene");
+            else
+                loadSceneText(l.sceneText, "scene",
+                              [](const std::string&) { return std::nullopt; });
+        } catch (const SceneError& e) {
+            // The scene's key under the lesson's "scene", on the lesson file's own line.
+            std::string message = e.what();
+            const std::string lead =
+                e.key().empty() ? ": " : "key '" + printable(e.key(), 160) + "': ";
+            if (const auto at = message.find(lead); at != std::string::npos)
+                message = message.substr(at + lead.size());
+            r.fail(e.key().empty() ? std::string("scene") : "scene." + e.key(), message);
+        }
+    } else {
+        l.scene = r.string(root["scene"], "scene");
+        if (l.scene.empty())
+            r.fail("scene", "must name a built-in scene or a scene file, or hold one");
+    }
     LessonSetup setup;
     ifPresent(root, "", "setup",
               [&](const json& v, const std::string& p) { readSetup(r, v, p, setup); });
@@ -681,6 +717,9 @@ Lesson loadLesson(const std::string& idOrPath) {
         if (!f.missing())
             throw LessonError(idOrPath, 0, "",
                               std::string("cannot read the lesson file: ") + f.what());
+        // A practice's id made again from its topic, level and seed (a homework's sheets).
+        if (const auto k = parsePracticeLessonId(idOrPath))
+            return makePractice(k->topic, k->seed, k->level).lesson;
         std::string ids;
         for (const Lesson& l : builtinLessons())
             ids += (ids.empty() ? "" : ", ") + std::to_string(l.number) + " " + l.id;

@@ -105,9 +105,10 @@ struct LessonStep {
 
 /// The recording a lesson is about.
 struct LessonTrace {
-    enum class Kind { ExampleRay, Ray2D, Pixel, Build };
+    enum class Kind { ExampleRay, Ray2D, Pixel, Build, Ray3D };
     Kind kind = Kind::ExampleRay;
     Ray2 ray;          // Ray2D
+    Ray ray3D;         // Ray3D: one ray through a 3D scene's structure (a practice's DDA walk)
     int x = 0, y = 0;  // Pixel, in a width x height image
     int width = 320, height = 240;
 };
@@ -212,6 +213,9 @@ struct Lesson {
     int number = 0;
     LocalText title, text;
     std::string scene;  // a built-in scene name or a path relative to the lesson file
+    // An inline scene ("scene": {...}, a generated practice's): its JSON text; `scene` then
+    // names the lesson file's key for messages.
+    std::string sceneText;
     AccelKind accel = AccelKind::BruteForce;
     AccelOptions options;
     std::vector<LessonView> views;

@@ -84,6 +84,10 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSe
             if (!s3) fail("a pixel needs a 3D scene; " + printable(lesson.scene) + " is 2D");
             tracePixelEvents(*s3, *accel3D, t.x, t.y, t.width, t.height, *log);
             break;
+        case LessonTrace::Kind::Ray3D:
+            if (!s3) fail("a 3D ray needs a 3D scene; " + printable(lesson.scene) + " is 2D");
+            traceRay3D(*accel3D, t.ray3D, *log);
+            break;
     }
     // An overlap exercise's answer is two of these boxes: the trace carries them (a build has
     // its own already).
@@ -97,14 +101,21 @@ std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSe
     return log;
 }
 
-LessonRun runLesson(const Lesson& lesson) {
-    LessonRun run;
+std::variant<Scene, Scene2D> loadLessonScene(const Lesson& lesson) {
     try {
-        run.scene =
-            std::make_unique<std::variant<Scene, Scene2D>>(loadAnyScene(lessonScenePath(lesson)));
+        if (lesson.sceneText.empty()) return loadAnyScene(lessonScenePath(lesson));
+        // Checked when the lesson was read: a failure here is the file changed since.
+        if (isScene2DText(lesson.sceneText)) return loadScene2DText(lesson.sceneText, lesson.file);
+        return loadSceneText(lesson.sceneText, lesson.file,
+                             [](const std::string&) { return std::nullopt; });
     } catch (const SceneError& e) {
         throw LessonError(lesson.file, 0, "scene", e.what());
     }
+}
+
+LessonRun runLesson(const Lesson& lesson) {
+    LessonRun run;
+    run.scene = std::make_unique<std::variant<Scene, Scene2D>>(loadLessonScene(lesson));
     AnyStructure built = buildStructure(*run.scene, lesson.accel, {}, lesson.options);
     run.accel2D = std::move(built.in2D);
     run.accel3D = std::move(built.in3D);

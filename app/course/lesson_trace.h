@@ -51,8 +51,10 @@ struct LessonRun {
     std::vector<LessonStructureRun> others;  // Lesson::setups() after the lesson's own
     LessonLogs logs() const;
 };
-/// The lesson's scene, as a path the app and loadAnyScene accept.
+/// The lesson's scene, as a path the app and loadAnyScene accept (not for an inline scene).
 std::string lessonScenePath(const Lesson& lesson);
+/// The lesson's scene, a file's or its inline one; LessonError naming the lesson otherwise.
+std::variant<Scene, Scene2D> loadLessonScene(const Lesson& lesson);
 /// Loads the scene, builds the structure and records the trace.
 LessonRun runLesson(const Lesson& lesson);
 /// Records the lesson's trace with a scene and structure already made (the lesson's own).

@@ -34,7 +34,14 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
     AccelOptions options = lesson.options;
     options.setProgress(progress);
     Opened o;
-    o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
+    if (lesson.sceneText.empty()) {
+        o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
+    } else {
+        // An inline scene (a practice's): loaded from the lesson, prepared as a file's would be.
+        o.scene = std::visit(
+            [&](auto s) { return Session::prepare(std::move(s), lesson.accel, options); },
+            loadLessonScene(lesson));
+    }
     // A lesson that traces a 2D ray of its own shows its scene with that ray as the example ray:
     // the handles, a live edit, a live control, R and compare all start from the ray replayed.
     if (const Scene2D* s2 = std::get_if<Scene2D>(&o.scene->scene);

@@ -200,4 +200,18 @@ std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, Even
     return hit;
 }
 
+std::optional<Hit> traceRay3D(const Accelerator& accel, const Ray& ray, EventLog& log,
+                              TraversalCounters* counters) {
+    TraversalCounters local;
+    TraversalCounters& c = counters ? *counters : local;
+    log.setDims(3);
+    const std::uint32_t id = log.beginRay(ray, RayKind::Primary, 0, kNoId);
+    const auto hit = intersect(accel, ray, c, log, id);
+    if (hit)
+        log(RayHit{id, hit->prim, hit->t, hit->u, hit->v});
+    else
+        log(RayMiss{id});
+    return hit;
+}
+
 }  // namespace raystep

@@ -122,5 +122,8 @@ BuildSummary summarize(const Accelerator2D& accel);
 /// Records one 2D ray through the structure: its RayBegin, the traversal, then RayHit or RayMiss.
 std::optional<Hit2> traceRay2D(const Accelerator2D& accel, const Ray2& ray, EventLog& log,
                                TraversalCounters* counters = nullptr);
+/// The same for one 3D ray (a practice's DDA walk through a 3D grid).
+std::optional<Hit> traceRay3D(const Accelerator& accel, const Ray& ray, EventLog& log,
+                              TraversalCounters* counters = nullptr);
 
 }  // namespace raystep
