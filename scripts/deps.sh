@@ -15,6 +15,7 @@ RAYSTEP_GUI_PACKAGES=(
 )
 RAYSTEP_TEST_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev libembree-dev
+  python3  # tests/practice: the generators' answers recomputed by an independent reader
   g++-aarch64-linux-gnu  # scripts/check_aarch64.sh: the core compiles for ARM64
   glmark2-data  # the Stanford bunny (models/bunny.obj, 69,666 triangles) of the model tests
 )
