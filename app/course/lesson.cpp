@@ -589,7 +589,7 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
     if (root["scene"].is_object()) {
         // An inline scene is read here, so its errors name the lesson file and its key.
         l.sceneText = root["scene"].dump();
-        l.scene = "scene";
+        l.scene = "(inline scene)";
         try {
             if (isScene2DText(l.sceneText))
                 loadScene2DText(l.sceneText, "scene");
@@ -718,8 +718,14 @@ Lesson loadLesson(const std::string& idOrPath) {
             throw LessonError(idOrPath, 0, "",
                               std::string("cannot read the lesson file: ") + f.what());
         // A practice's id made again from its topic, level and seed (a homework's sheets).
-        if (const auto k = parsePracticeLessonId(idOrPath))
-            return makePractice(k->topic, k->seed, k->level).lesson;
+        if (const auto k = parsePracticeLessonId(idOrPath)) {
+            try {
+                return makePractice(k->topic, k->seed, k->level).lesson;
+            } catch (const std::logic_error& e) {
+                // A generator that finds no valid draw is a bug, yet one line, never a crash.
+                throw LessonError(idOrPath, 0, "", e.what());
+            }
+        }
         std::string ids;
         for (const Lesson& l : builtinLessons())
             ids += (ids.empty() ? "" : ", ") + std::to_string(l.number) + " " + l.id;
