@@ -4,6 +4,7 @@
 #include "lesson_command.h"
 
 #include "course/lesson.h"
+#include "course/practice/figure.h"
 #include "course/practice/practice.h"
 
 #include <cstdio>
@@ -34,6 +35,8 @@ void addPracticeCommand(CLI::App& app, PracticeArgs& a) {
         ->add_option("-o,--output", a.output,
                      "Write the instance as a lesson file (the app and `lesson check` open it)")
         ->check(fileName());
+    a.make->add_option("--figure", a.figure, "Draw a 2D instance (grid, ray, d) as a PNG file")
+        ->check(fileName());
 }
 
 int runPractice(const PracticeArgs& a) {
@@ -48,12 +51,25 @@ int runPractice(const PracticeArgs& a) {
     if (!findPracticeTopic(a.topic))
         return fail("practice make " + a.topic + ": unknown topic (expected one of " +
                     practiceTopicList() + ")");
-    if (auto problem = checkOutputs({{"-o", a.output}})) return fail(*problem);
+    if (auto problem = checkOutputs({{"-o", a.output}, {"--figure", a.figure}}))
+        return fail(*problem);
     const PracticeInstance p = makePractice(a.topic, a.seed, *parsePracticeLevel(a.level));
-    if (!a.output.empty())
-        if (auto problem = writeOutputs({{a.output, p.lessonText}})) return fail(*problem);
+    std::vector<FileToWrite> files;
+    if (!a.output.empty()) files.push_back({a.output, p.lessonText});
+    std::optional<std::string> png;
+    if (!a.figure.empty()) {
+        png = practiceFigurePng(p.lesson);
+        if (!png)
+            return fail("--figure: " + a.topic + " is a 3D topic; only 2D instances are drawn");
+        files.push_back({a.figure, *png});
+    }
+    if (auto problem = writeOutputs(files)) return fail(*problem);
     if (a.json) {
         std::printf("%s\n", p.toJson().dump(2).c_str());
+        return 0;
+    }
+    if (!a.figure.empty() && a.output.empty()) {
+        std::printf("%s: the figure of %s\n", a.figure.c_str(), p.lesson.id.c_str());
         return 0;
     }
     if (!a.output.empty()) {

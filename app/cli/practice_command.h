@@ -15,6 +15,7 @@ struct PracticeArgs {
     std::string level = "easy";
     std::string lang = "en";
     std::string output;  // -o: the lesson file
+    std::string figure;  // --figure: a 2D instance drawn as a PNG
     bool json = false;
 };
 

@@ -1,0 +1,112 @@
+// Drawn by distance: each pixel takes the colour of the nearest stroke within its half width,
+// sampled 3 x 3 for smooth edges. A few strokes over a small image: no rasteriser library needed.
+#include "course/practice/figure.h"
+
+#include "course/lesson_trace.h"
+
+#include "raystep/render/image.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace raystep {
+
+namespace {
+
+struct Stroke {
+    Vec2 a, b;         // a segment (a == b: a dot)
+    double halfWidth;  // in pixels
+    std::array<double, 3> colour;
+    bool circle = false;  // a circle's outline: centre a, radius b.x
+};
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double s = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + s * ab));
+}
+
+}  // namespace
+
+std::optional<std::string> practiceFigurePng(const Lesson& lesson, int widthPx) {
+    const auto any = loadLessonScene(lesson);
+    const auto* scene = std::get_if<Scene2D>(&any);
+    if (!scene) return std::nullopt;
+    const BoxN<2> box = scene->bounds();
+    const std::optional<Ray2> ray = lesson.trace.kind == LessonTrace::Kind::Ray2D
+                                        ? std::optional<Ray2>(lesson.trace.ray)
+                                        : scene->exampleRay;
+    // The view: the box and the ray's origin, with a margin.
+    Vec2 lo = box.lo, hi = box.hi;
+    if (ray) {
+        lo = glm::min(lo, ray->origin);
+        hi = glm::max(hi, ray->origin);
+    }
+    const double margin = 0.08 * std::max(hi.x - lo.x, hi.y - lo.y);
+    lo -= Vec2(margin);
+    hi += Vec2(margin);
+    const double scale = widthPx / (hi.x - lo.x);
+    const int w = widthPx, h = std::max(1, static_cast<int>(std::lround((hi.y - lo.y) * scale)));
+    const auto toPx = [&](const Vec2& p) {
+        return Vec2((p.x - lo.x) * scale, (hi.y - p.y) * scale);
+    };
+
+    std::vector<Stroke> strokes;
+    const std::array<double, 3> gridGrey{0.75, 0.75, 0.75}, ink{0.15, 0.15, 0.15},
+        vermillion{0.84, 0.37, 0.0};  // Okabe and Ito's, the app's primary ray
+    std::array<int, 2> res{1, 1};
+    if (lesson.options.grid.res)
+        res = {(*lesson.options.grid.res)[0], (*lesson.options.grid.res)[1]};
+    else if (scene->gridRes)
+        res = {(*scene->gridRes)[0], (*scene->gridRes)[1]};
+    if (lesson.accel == AccelKind::Grid)
+        for (int a = 0; a < 2; ++a)
+            for (int k = 0; k <= res[a]; ++k) {
+                const double at = box.lo[a] + (box.hi[a] - box.lo[a]) * k / res[a];
+                Vec2 p = box.lo, q = box.hi;
+                p[a] = q[a] = at;
+                const bool edge = k == 0 || k == res[a];
+                strokes.push_back({toPx(p), toPx(q), edge ? 1.2 : 0.7, edge ? ink : gridGrey});
+            }
+    for (const Circle2& c : scene->circles)
+        strokes.push_back({toPx(c.center), Vec2(c.radius * scale, 0), 1.0, ink, true});
+    for (const Segment2& s : scene->segments) strokes.push_back({toPx(s.a), toPx(s.b), 1.2, ink});
+    if (ray) {
+        // The ray across the view, then its direction d as an arrow from the origin.
+        const Vec2 o = toPx(ray->origin);
+        const Vec2 dir = glm::normalize(Vec2(ray->dir.x, -ray->dir.y));
+        strokes.push_back({o, o + dir * double(w + h) * 2.0, 0.8, vermillion});
+        const Vec2 tip = toPx(ray->origin + ray->dir);
+        strokes.push_back({o, tip, 1.8, vermillion});
+        const Vec2 back = -glm::normalize(tip - o) * 9.0, side(-back.y * 0.5, back.x * 0.5);
+        strokes.push_back({tip, tip + back + side, 1.8, vermillion});
+        strokes.push_back({tip, tip + back - side, 1.8, vermillion});
+        strokes.push_back({o, o, 3.5, vermillion});
+    }
+
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::array<double, 3> sum{0, 0, 0};
+            for (int sy = 0; sy < 3; ++sy)
+                for (int sx = 0; sx < 3; ++sx) {
+                    const Vec2 p(x + (sx + 0.5) / 3, y + (sy + 0.5) / 3);
+                    std::array<double, 3> c{1, 1, 1};
+                    for (const Stroke& s : strokes) {  // later strokes draw over earlier ones
+                        const double dist = s.circle ? std::abs(glm::length(p - s.a) - s.b.x)
+                                                     : distanceToSegment(p, s.a, s.b);
+                        if (dist <= s.halfWidth) c = s.colour;
+                    }
+                    for (int k = 0; k < 3; ++k) sum[k] += c[k] / 9;
+                }
+            for (int k = 0; k < 3; ++k)
+                rgb[(static_cast<std::size_t>(y) * w + x) * 3 + k] =
+                    static_cast<std::uint8_t>(std::lround(255 * sum[k]));
+        }
+    return encodePng(lesson.id + ".png", rgb, w, h);
+}
+
+}  // namespace raystep
