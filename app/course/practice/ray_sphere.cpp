@@ -178,7 +178,7 @@ Draft makeRaySphere(Random& r, PracticeLevel level) {
     ex.push_back(ch);
     if (hit) {
         const std::string roundEn = exact ? "" : " Give it to two decimals.";
-        const std::string roundIt = exact ? "" : " Dallo con due decimali.";
+        const std::string roundIt = exact ? "" : " Arrotonda a due decimali.";
         ojson et = compute("t", "t", "At what t does the ray first meet the sphere?" + roundEn,
                            "A quale t il raggio incontra per la prima volta la sfera?" + roundIt);
         if (!exact) et["tolerance"] = 0.005;

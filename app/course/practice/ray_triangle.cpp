@@ -139,7 +139,7 @@ Draft makeRayTriangle(Random& r, PracticeLevel level) {
         const bool exact = multipleOf(value, 0.01);
         ojson e = exercise(id, "compute",
                            text(en + " " + askEn + (exact ? "" : " Give it to two decimals."),
-                                it + " " + askIt + (exact ? "" : " Dallo con due decimali.")));
+                                it + " " + askIt + (exact ? "" : " Arrotonda a due decimali.")));
         e["given"] = given;
         e["quantity"] = id;
         if (!exact) e["tolerance"] = 0.005;
