@@ -23,6 +23,28 @@ const std::vector<Generator>& generators() {
              "facile: dall'interno, direzioni positive; medio: ogni direzione, anche da "
              "fuori; difficile: pareggi"}}}},
          makeDda3D},
+        {{"ray-sphere",
+          {"Ray-sphere intersection: B, C, the discriminant, hit or miss and t",
+           {{"it", "Intersezione raggio-sfera: B, C, il discriminante, colpisce o manca e t"}}},
+          {"easy: from outside, a perfect square discriminant; medium: any discriminant, misses "
+           "too; hard: from inside the sphere, and a sphere behind the ray",
+           {{"it",
+             "facile: da fuori, un discriminante quadrato perfetto; medio: ogni discriminante, "
+             "anche raggi che mancano la sfera; difficile: dall'interno della sfera, e una sfera "
+             "dietro il raggio"}}}},
+         makeRaySphere},
+        {{"ray-triangle",
+          {"Ray-triangle intersection: t, the barycentric u and v, hit or miss",
+           {{"it",
+             "Intersezione raggio-triangolo: t, le coordinate baricentriche u e v, colpisce o "
+             "manca"}}},
+          {"easy: a triangle in a plane z = k, short decimals; medium: any plane, points outside "
+           "the triangle too; hard: the plane behind the origin, u + v just above 1",
+           {{"it",
+             "facile: un triangolo in un piano z = k, decimali brevi; medio: ogni piano, anche "
+             "punti esterni al triangolo; difficile: il piano dietro l'origine, u + v appena "
+             "sopra 1"}}}},
+         makeRayTriangle},
     };
     return list;
 }
