@@ -3,6 +3,7 @@
 #include "common.h"
 #include "compare_command.h"
 #include "dda_command.h"
+#include "homework_command.h"
 #include "intersect_command.h"
 #include "lesson_command.h"
 #include "practice_command.h"
@@ -32,13 +33,14 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    const std::array<std::string, 9> commands = {
-        "scenes", "render", "intersect", "dda", "build", "trace", "compare", "lesson", "practice"};
+    const std::array<std::string, 10> commands = {"scenes",   "render",  "intersect", "dda",
+                                                  "build",    "trace",   "compare",   "lesson",
+                                                  "practice", "homework"};
     if (!first.empty() && first[0] != '-' &&
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
                     "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson, "
-                    "practice)");
+                    "practice, homework)");
 
     // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
     // input.
@@ -66,6 +68,8 @@ int main(int argc, char** argv) {
     addLessonCommand(app, lessonArgs);
     PracticeArgs practiceArgs;
     addPracticeCommand(app, practiceArgs);
+    HomeworkArgs homeworkArgs;
+    addHomeworkCommand(app, homeworkArgs);
 
     try {
         app.parse(argc, argv);
@@ -97,6 +101,8 @@ int main(int argc, char** argv) {
             code = runLesson(app.get_subcommand("lesson"), lessonArgs);
         else if (app.got_subcommand("practice"))
             code = runPractice(practiceArgs);
+        else if (app.got_subcommand("homework"))
+            code = runHomework(homeworkArgs);
         else
             code = runRender(renderArgs);
     } catch (const std::filesystem::filesystem_error& e) {
