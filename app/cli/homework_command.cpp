@@ -217,7 +217,9 @@ int make(const HomeworkArgs& a, Language lang) {
                 {"lesson", l.id}, {"student", s.id}, {"answers", nlohmann::ordered_json::object()}};
             out.emplace_back((dir / s.id / ("answers-" + t + ".json")).string(),
                              sheet.dump(2) + "\n");
-            for (const auto& ex : p.toJson()["exercises"])
+            // Kept alive: a range-for over a temporary's member would dangle.
+            const nlohmann::ordered_json pj = p.toJson();
+            for (const auto& ex : pj["exercises"])
                 key += csvField(s.id) + "," + t + "," + l.id + "," +
                        csvField(ex["id"].get<std::string>()) + "," +
                        csvField(ex["answer"].get<std::string>()) + "\r\n";
