@@ -4,6 +4,7 @@
 #include "compare_command.h"
 #include "dda_command.h"
 #include "export_command.h"
+#include "homework_command.h"
 #include "intersect_command.h"
 #include "lesson_command.h"
 #include "practice_command.h"
@@ -33,14 +34,14 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    const std::array<std::string, 10> commands = {"scenes",   "render", "intersect", "dda",
+    const std::array<std::string, 11> commands = {"scenes",   "render", "intersect", "dda",
                                                   "build",    "trace",  "compare",   "lesson",
-                                                  "practice", "export"};
+                                                  "practice", "export", "homework"};
     if (!first.empty() && first[0] != '-' &&
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
                     "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson, "
-                    "practice)");
+                    "practice, export, homework)");
 
     // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
     // input.
@@ -70,6 +71,8 @@ int main(int argc, char** argv) {
     addPracticeCommand(app, practiceArgs);
     ExportArgs exportArgs;
     addExportCommand(app, exportArgs);
+    HomeworkArgs homeworkArgs;
+    addHomeworkCommand(app, homeworkArgs);
 
     try {
         app.parse(argc, argv);
@@ -103,6 +106,8 @@ int main(int argc, char** argv) {
             code = runPractice(practiceArgs);
         else if (app.got_subcommand("export"))
             code = runExport(exportArgs);
+        else if (app.got_subcommand("homework"))
+            code = runHomework(homeworkArgs);
         else
             code = runRender(renderArgs);
     } catch (const std::filesystem::filesystem_error& e) {
