@@ -107,7 +107,9 @@ Roster loadRoster(const std::string& path) {
     Roster r{lower(head[idCol]), {}};
     std::set<std::string> seen;
     for (std::size_t k = 1; k < rows.size(); ++k) {
-        const auto& [line, f] = rows[k];
+        // Named locals, not a structured binding: clang 14 refuses one captured by a lambda.
+        const auto& line = rows[k].first;
+        const auto& f = rows[k].second;
         const std::string where = path + ":" + std::to_string(line) + ": " + head[idCol];
         auto at = [&](int c) { return c >= 0 && c < static_cast<int>(f.size()) ? f[c] : ""; };
         const std::string id = at(idCol);
