@@ -159,6 +159,21 @@ std::string html(const std::string& s) {
     return o;
 }
 
+/// A lesson's text as HTML: escaped, its `code spans` as <code>.
+std::string prose(const std::string& s) {
+    std::string o;
+    bool code = false;
+    for (const char c : html(s)) {
+        if (c == '`') {
+            o += code ? "</code>" : "<code>";
+            code = !code;
+        } else {
+            o += c;
+        }
+    }
+    return code ? o + "</code>" : o;
+}
+
 std::string csvField(const std::string& s) {
     if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
     std::string o = "\"";
@@ -200,7 +215,7 @@ int make(const HomeworkArgs& a, Language lang) {
             md += "## " + l.title.in(lang) + "\n\nLesson id: `" + l.id + "`\n\n" + l.text.in(lang) +
                   "\n\n";
             h += "<h2>" + html(l.title.in(lang)) + "</h2>\n<p>Lesson id: <code>" + html(l.id) +
-                 "</code></p>\n<p>" + html(l.text.in(lang)) + "</p>\n";
+                 "</code></p>\n<p>" + prose(l.text.in(lang)) + "</p>\n";
             if (auto png = practiceFigurePng(l)) {
                 const std::string fig = "figure-" + t + ".png";
                 out.emplace_back((dir / s.id / fig).string(), *png);
@@ -211,7 +226,7 @@ int make(const HomeworkArgs& a, Language lang) {
             for (const Exercise& ex : l.exercises) {
                 md += "- **" + ex.id + "**: " + ex.prompt.in(lang) +
                       "\n\n  Answer: ____________________\n\n";
-                h += "<li><b>" + html(ex.id) + "</b>: " + html(ex.prompt.in(lang)) +
+                h += "<li><b>" + html(ex.id) + "</b>: " + prose(ex.prompt.in(lang)) +
                      "<br>Answer: ______________________________</li>\n";
             }
             h += "</ol>\n";
