@@ -4,6 +4,7 @@
 
 #include "course/lesson_trace.h"
 
+#include "raystep/accel/outline.h"
 #include "raystep/render/image.h"
 
 #include <algorithm>
@@ -57,20 +58,33 @@ std::optional<std::string> practiceFigurePng(const Lesson& lesson, int widthPx) 
     std::vector<Stroke> strokes;
     const std::array<double, 3> gridGrey{0.75, 0.75, 0.75}, ink{0.15, 0.15, 0.15},
         vermillion{0.84, 0.37, 0.0};  // Okabe and Ito's, the app's primary ray
-    std::array<int, 2> res{1, 1};
-    if (lesson.options.grid.res)
-        res = {(*lesson.options.grid.res)[0], (*lesson.options.grid.res)[1]};
-    else if (scene->gridRes)
-        res = {(*scene->gridRes)[0], (*scene->gridRes)[1]};
-    if (lesson.accel == AccelKind::Grid)
-        for (int a = 0; a < 2; ++a)
-            for (int k = 0; k <= res[a]; ++k) {
-                const double at = box.lo[a] + (box.hi[a] - box.lo[a]) * k / res[a];
-                Vec2 p = box.lo, q = box.hi;
-                p[a] = q[a] = at;
-                const bool edge = k == 0 || k == res[a];
+    // The structure as the views draw it (outline.h): the grid's lines, a kd-tree's planes,
+    // a BVH's boxes, whatever the lesson builds.
+    const Accelerator2D accel = buildAccelerator2D(*scene, lesson.accel, lesson.options);
+    const StructureOutline<2> outlined = outline(accel);
+    if (outlined.grid)
+        for (int a = 0; a < 2; ++a) {
+            const std::vector<double>& lines = outlined.grid->lines[a];
+            for (std::size_t k = 0; k < lines.size(); ++k) {
+                Vec2 p = outlined.bounds.lo, q = outlined.bounds.hi;
+                p[a] = q[a] = lines[k];
+                const bool edge = k == 0 || k + 1 == lines.size();
                 strokes.push_back({toPx(p), toPx(q), edge ? 1.2 : 0.7, edge ? ink : gridGrey});
             }
+        }
+    for (const OutlinePlane<2>& plane : outlined.planes) {
+        const auto [p, q] = plane.extent();
+        strokes.push_back({toPx(p), toPx(q), 0.7, gridGrey});
+    }
+    const bool tree = !outlined.nodes.empty() && !outlined.nodes.front().leaf;  // not one leaf
+    for (const OutlineNode<2>& node : outlined.nodes) {
+        if (!tree || (!outlined.overlapping && node.parent != kNoId)) continue;  // kd: the root
+        const Vec2 c[4] = {node.box.lo, Vec2(node.box.hi.x, node.box.lo.y), node.box.hi,
+                           Vec2(node.box.lo.x, node.box.hi.y)};
+        for (int k = 0; k < 4; ++k)
+            strokes.push_back({toPx(c[k]), toPx(c[(k + 1) % 4]), node.parent == kNoId ? 1.2 : 0.7,
+                               node.parent == kNoId ? ink : gridGrey});
+    }
     for (const Circle2& c : scene->circles)
         strokes.push_back({toPx(c.center), Vec2(c.radius * scale, 0), 1.0, ink, true});
     for (const Segment2& s : scene->segments) strokes.push_back({toPx(s.a), toPx(s.b), 1.2, ink});
