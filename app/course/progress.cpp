@@ -4,6 +4,9 @@
 
 #include "raystep/base/json_reader.h"
 
+#include "course/practice/practice.h"
+
+#include <algorithm>
 #include <sstream>
 
 namespace raystep {
@@ -18,7 +21,7 @@ Progress readProgress(std::string_view text, const std::string& fileName) {
     const json& root = parsed.root;
     const Reader r(fileName, std::move(parsed.lines));
     r.requireObject(root, "");
-    r.checkKeys(root, "", {"format", "version", "lessons"});
+    r.checkKeys(root, "", {"format", "version", "lessons", "practice"});
     if (root.value("format", json()) != "raystep-progress")
         r.fail("format", "not a raystep progress file");
     Progress p;
@@ -53,9 +56,103 @@ Progress readProgress(std::string_view text, const std::string& fileName) {
             });
         }
     });
+    ifPresent(root, "", "practice", [&](const json& v, const std::string& path) {
+        r.requireObject(v, path);
+        for (const auto& [key, rj] : v.items()) {
+            const std::string kp = JsonLineMap::child(path, key);
+            if (!rj.is_array()) r.fail(kp, "expected an array of instances [...]");
+            PracticeRecord& rec = p.practice[key];
+            for (std::size_t i = 0; i < rj.size(); ++i) {
+                const std::string ip = JsonLineMap::element(kp, i);
+                r.requireObject(rj[i], ip);
+                r.checkKeys(rj[i], ip, {"seed", "result"});
+                PracticeRecord::Instance in;
+                ifPresent(rj[i], ip, "seed", [&](const json& x, const std::string& xp) {
+                    if (!x.is_number_unsigned()) r.fail(xp, "expected a whole number from 0");
+                    in.seed = x.get<std::uint64_t>();
+                });
+                ifPresent(rj[i], ip, "result", [&](const json& x, const std::string& xp) {
+                    const std::string res = r.string(x, xp);
+                    if (res == "right") in.result = PracticeRecord::Result::Right;
+                    else if (res == "missed") in.result = PracticeRecord::Result::Missed;
+                    else if (res == "open") in.result = PracticeRecord::Result::Open;
+                    else r.fail(xp, "expected \"right\", \"missed\" or \"open\"");
+                });
+                rec.instances.push_back(in);
+            }
+        }
+    });
     return p;
 }
+
+const char* resultName(PracticeRecord::Result r) {
+    switch (r) {
+        case PracticeRecord::Result::Right:
+            return "right";
+        case PracticeRecord::Result::Missed:
+            return "missed";
+        case PracticeRecord::Result::Open:
+            break;
+    }
+    return "open";
+}
 }  // namespace
+
+int PracticeRecord::streak() const {
+    int n = 0;
+    for (auto it = instances.rbegin(); it != instances.rend(); ++it) {
+        if (it->result == Result::Missed) break;
+        n += it->result == Result::Right;
+    }
+    return n;
+}
+
+bool PracticeRecord::mastered() const {
+    int run = 0;
+    for (const Instance& in : instances) {
+        if (in.result == Result::Missed) run = 0;
+        if (in.result == Result::Right && ++run >= kMasteryStreak) return true;
+    }
+    return false;
+}
+
+int PracticeRecord::right() const {
+    return static_cast<int>(std::count_if(instances.begin(), instances.end(), [](const Instance& i) {
+        return i.result == Result::Right;
+    }));
+}
+
+bool PracticeRecord::drawn(std::uint64_t seed) const {
+    return std::any_of(instances.begin(), instances.end(),
+                       [&](const Instance& i) { return i.seed == seed; });
+}
+
+std::string practiceKey(std::string_view topic, std::string_view level) {
+    return std::string(topic) + "/" + std::string(level);
+}
+
+PracticeRecord::Result practiceResult(const Lesson& lesson, const LessonProgress& progress) {
+    bool all = !lesson.exercises.empty();
+    for (const Exercise& ex : lesson.exercises) {
+        const auto e = progress.exercises.find(ex.id);
+        if (e == progress.exercises.end() || e->second.attempts == 0) {
+            all = false;
+            continue;
+        }
+        // A first answer that was wrong: the record keeps counting until it is right.
+        if (!e->second.correct || e->second.attempts > 1) return PracticeRecord::Result::Missed;
+    }
+    return all ? PracticeRecord::Result::Right : PracticeRecord::Result::Open;
+}
+
+void recordPractice(PracticeRecord& record, std::uint64_t seed, PracticeRecord::Result result) {
+    for (PracticeRecord::Instance& in : record.instances)
+        if (in.seed == seed) {
+            if (in.result == PracticeRecord::Result::Open) in.result = result;
+            return;
+        }
+    record.instances.push_back({seed, result});
+}
 
 Progress parseProgress(std::string_view text, const std::string& fileName) {
     return detail::guarded<LessonError>(fileName, [&] { return readProgress(text, fileName); });
@@ -80,7 +177,17 @@ std::string progressToJson(const Progress& p) {
             ex[eid] = {{"correct", e.correct}, {"attempts", e.attempts}, {"answer", e.answer}};
         lessons[id] = {{"step", l.step}, {"exercises", ex}};
     }
-    const json root = {{"format", "raystep-progress"}, {"version", 1}, {"lessons", lessons}};
+    json root = {{"format", "raystep-progress"}, {"version", 1}, {"lessons", lessons}};
+    if (!p.practice.empty()) {
+        json practice = json::object();
+        for (const auto& [key, rec] : p.practice) {
+            json list = json::array();
+            for (const PracticeRecord::Instance& in : rec.instances)
+                list.push_back({{"seed", in.seed}, {"result", resultName(in.result)}});
+            practice[key] = list;
+        }
+        root["practice"] = practice;
+    }
     return root.dump(2) + "\n";
 }
 
@@ -97,6 +204,11 @@ void mergeProgress(Progress& into, const Progress& saved) {
             }
             mine->second.correct = mine->second.correct || rec.correct;
         }
+    }
+    for (const auto& [key, theirs] : saved.practice) {
+        PracticeRecord& mine = into.practice[key];
+        for (const PracticeRecord::Instance& in : theirs.instances)
+            recordPractice(mine, in.seed, in.result);
     }
 }
 
@@ -174,6 +286,31 @@ std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons
               << (tried ? markdownCell(e->second.answer) : "") << " |\n";
         }
     }
+    // Practice (docs/practice.md): per topic and level worked on, in the lecture's order.
+    bool any = false;
+    for (const PracticeTopic& topic : practiceTopics())
+        for (const PracticeLevel level :
+             {PracticeLevel::Easy, PracticeLevel::Medium, PracticeLevel::Hard}) {
+            const auto it = p.practice.find(practiceKey(topic.name, practiceLevelName(level)));
+            if (it == p.practice.end() || it->second.instances.empty()) continue;
+            if (!any) {
+                s << "\n## " << tr(lang, "Practice") << "\n\n| " << tr(lang, "Topic") << " | "
+                  << tr(lang, "Level") << " | " << tr(lang, "Instances") << " | "
+                  << tr(lang, "Right") << " | " << tr(lang, "Right in a row") << " | "
+                  << tr(lang, "Mastered") << " |\n|---|---|---:|---:|---:|---|\n";
+                any = true;
+            }
+            const PracticeRecord& rec = it->second;
+            s << "| " << topic.title.in(lang) << " | " << practiceLevelLabel(level, lang)
+              << " | " << rec.instances.size() << " | " << rec.right() << " | " << rec.streak()
+              << " | " << (rec.mastered() ? tr(lang, "yes") : tr(lang, "not yet")) << " |\n";
+        }
+    if (any)
+        s << "\n"
+          << trf(lang, "A topic is mastered at a level by %1 instances in a row, each right at "
+                       "every first answer.",
+                 {std::to_string(kMasteryStreak)})
+          << "\n";
     return s.str();
 }
 

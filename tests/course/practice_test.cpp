@@ -1,6 +1,7 @@
 // The practice driver: ids, determinism, errors; and the lesson format's inline scene and 3D ray
 // it relies on. The generators' answers are recomputed independently in tests/practice.
 #include "course/practice/practice.h"
+#include "course/exercise.h"
 #include "course/grading.h"
 #include "course/lesson.h"
 #include "course/lesson_trace.h"
@@ -94,4 +95,21 @@ TEST(Practice, A3DRayThroughAnInlineSceneRecordsItsWalk) {
                             "[0, 0, 0, 1, 1, 1]"),
             "l.json")),
         LessonError);
+}
+
+TEST(Practice, AdviceAtTheStartPointsToTheGivenDataNotTheInspector) {
+    // The set-up questions wait before the trace's first event: nothing is in the inspector yet.
+    const PracticeInstance inst = makePractice("dda-2d", 3, PracticeLevel::Easy);
+    int seen = 0;
+    for (const Exercise& ex : inst.lesson.exercises) {
+        if (ex.at.mode != ReplayPosition::Mode::Start) continue;
+        ++seen;
+        for (const Language lang : {Language::En, Language::It}) {
+            const std::string advice = retryAdvice(ex, true, false, lang);
+            EXPECT_EQ(advice.find("inspector"), std::string::npos) << ex.id << ": " << advice;
+            EXPECT_EQ(advice.find("ispettore"), std::string::npos) << ex.id << ": " << advice;
+            EXPECT_EQ(advice.find("current cell"), std::string::npos) << ex.id << ": " << advice;
+        }
+    }
+    EXPECT_GE(seen, 2);  // the first cell and the tDelta at least
 }

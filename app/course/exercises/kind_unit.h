@@ -104,6 +104,9 @@ std::string rootSlip(const Context& c, double given, double right, std::uint32_t
 
 /// The advice of every kind read from the trace while the replay is not held.
 std::string stepTheReplayAdvice(Language lang);
+/// Whether a held exercise waits before the trace's first event: the inspector shows nothing
+/// yet, so its advice points to the data the exercise gives (a practice's set-up questions).
+bool heldAtTheStart(const Exercise& ex);
 
 /// Answer-leak forms: a number the texts must not print (whole 0 and 1 are in every formula).
 void addLeakNumber(AnswerForms& f, double v);

@@ -6,6 +6,7 @@
 
 #include "raystep/base/i18n.h"
 #include "raystep/trace/event_text.h"
+#include "raystep/trace/replay.h"
 
 namespace raystep::exercises {
 
@@ -127,8 +128,17 @@ class NextCell final : public ExerciseKindUnit {
         return nextCellSlip(c, given, *ref.source, lang);
     }
 
-    std::string retryAdvice(const Exercise&, bool replayHeld, Language lang) const override {
+    std::string retryAdvice(const Exercise& ex, bool replayHeld, Language lang) const override {
         if (!replayHeld) return stepTheReplayAdvice(lang);
+        // Held before the walk's first cell: there is no current cell on screen to compare.
+        const bool beforeTheWalk =
+            heldAtTheStart(ex) ||
+            (ex.at.mode == ReplayPosition::Mode::BeforeEvent &&
+             ex.at.eventKind == variantIndex<DdaCell>() && ex.at.nth == 1);
+        if (beforeTheWalk)
+            return tr(lang,
+                      "The replay waits here until you answer, before the walk's first cell: "
+                      "work it out from the ray and the grid the exercise gives.");
         // Held at the exercise's position: what is on screen there is what there is to use.
         return tr(lang,
                   "The replay waits here until you answer: compare the "

@@ -167,6 +167,11 @@ std::string stepTheReplayAdvice(Language lang) {
     return tr(lang, "Step the replay and look at the inspector.");
 }
 
+bool heldAtTheStart(const Exercise& ex) {
+    return ex.at.mode == ReplayPosition::Mode::Start ||
+           (ex.at.mode == ReplayPosition::Mode::Cursor && ex.at.cursor == 0);
+}
+
 void addLeakNumber(AnswerForms& f, double v) {
     // Whole 0 and 1 are in every formula.
     if (!(v == std::floor(v) && std::abs(v) <= 1.0)) f.numbers.push_back(v);

@@ -242,8 +242,12 @@ class Value final : public OneNumberUnit {
         return valueSlip(c, given.numbers[0], ref.answer.numbers[0], *ref.source, lang);
     }
 
-    std::string retryAdvice(const Exercise&, bool replayHeld, Language lang) const override {
+    std::string retryAdvice(const Exercise& ex, bool replayHeld, Language lang) const override {
         if (!replayHeld) return stepTheReplayAdvice(lang);
+        if (heldAtTheStart(ex))
+            return tr(lang,
+                      "The replay waits at the start until you answer: put the numbers the "
+                      "exercise gives into the formula.");
         return tr(lang,
                   "The replay waits here until you answer: put the ray's "
                   "numbers from the inspector into the formula.");

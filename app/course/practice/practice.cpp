@@ -3,6 +3,7 @@
 #include "course/practice/generator.h"
 
 #include "course/grading.h"
+#include "raystep/base/i18n.h"
 
 #include <algorithm>
 #include <charconv>
@@ -22,6 +23,18 @@ std::string_view practiceLevelName(PracticeLevel l) {
             return "hard";
     }
     return "easy";
+}
+
+std::string practiceLevelLabel(PracticeLevel l, Language lang) {
+    switch (l) {
+        case PracticeLevel::Easy:
+            return tr(lang, "easy");
+        case PracticeLevel::Medium:
+            return tr(lang, "medium");
+        case PracticeLevel::Hard:
+            return tr(lang, "hard");
+    }
+    return tr(lang, "easy");
 }
 
 std::optional<PracticeLevel> parsePracticeLevel(std::string_view name) {

@@ -18,6 +18,8 @@ namespace raystep {
 enum class PracticeLevel { Easy, Medium, Hard };
 std::string_view practiceLevelName(PracticeLevel l);  // "easy", "medium", "hard"
 std::optional<PracticeLevel> parsePracticeLevel(std::string_view name);
+/// The level's name for people ("facile"), in `lang`.
+std::string practiceLevelLabel(PracticeLevel l, Language lang);
 
 struct PracticeTopic {
     std::string name;  // "dda-2d"
