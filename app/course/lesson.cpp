@@ -707,6 +707,11 @@ std::vector<Lesson> builtinLessons() {
     return lessons;
 }
 
+std::string lessonHeading(const Lesson& lesson, Language lang) {
+    if (parsePracticeLessonId(lesson.id)) return lesson.title.in(lang);
+    return std::to_string(lesson.number) + ". " + lesson.title.in(lang);
+}
+
 Lesson loadLesson(const std::string& idOrPath) {
     for (Lesson& l : builtinLessons())
         if (l.id == idOrPath || std::to_string(l.number) == idOrPath) return std::move(l);

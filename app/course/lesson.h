@@ -242,6 +242,9 @@ struct Lesson {
 Lesson loadLessonText(std::string_view text, const std::string& fileName);
 /// A built-in lesson by id ("grid-2d-dda") or number ("6"), else a lesson file.
 Lesson loadLesson(const std::string& idOrPath);
+/// "6. The 2D DDA" as a lesson's heading and the window name it; a practice instance, whose
+/// number only orders it after the lecture's, is its title alone.
+std::string lessonHeading(const Lesson& lesson, Language lang);
 /// The built-in lessons in the lecture's order.
 std::vector<Lesson> builtinLessons();
 

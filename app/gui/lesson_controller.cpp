@@ -37,9 +37,13 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
     if (lesson.sceneText.empty()) {
         o.scene = Session::prepare(lessonScenePath(lesson), lesson.accel, options);
     } else {
-        // An inline scene (a practice's): loaded from the lesson, prepared as a file's would be.
+        // An inline scene (a practice's): loaded from the lesson, prepared as a file's would be,
+        // named by the lesson's id (which `practice make` takes back) rather than a file's name.
         o.scene = std::visit(
-            [&](auto s) { return Session::prepare(std::move(s), lesson.accel, options); },
+            [&](auto s) {
+                s.name = lesson.id;
+                return Session::prepare(std::move(s), lesson.accel, options);
+            },
             loadLessonScene(lesson));
     }
     // A lesson that traces a 2D ray of its own shows its scene with that ray as the example ray:
@@ -123,7 +127,10 @@ LessonController::LessonController(QMainWindow& window, Session& session, TaskRu
     });
     connect(lesson_, &LessonPanel::compareRequested, this, &LessonController::compareRequested);
     connect(lesson_, &LessonPanel::quizChanged, this, [this] { updateQuizLimit(); });
-    connect(lesson_, &LessonPanel::answered, this, [this] { saveProgress(); });
+    connect(lesson_, &LessonPanel::answered, this, [this] {
+        if (lesson_->hasLesson()) emit answerRecorded(lesson_->lesson());
+        saveProgress();
+    });
     connect(lesson_, &LessonPanel::sweepRequested, this, [this] { runSweep(); });
     connect(&session_, &Session::logChanged, this, [this] { showReplayText(); });
     // The exploring note says whether a hold hides the explored trace: it follows the hold.
@@ -150,6 +157,7 @@ void LessonController::show(const Lesson& lesson, const LogRef& trace,
     if (trace)
         if (const auto kind = lessonEventKind(lesson, *trace)) emit jumpKindSuggested(*kind);
     applyStep(lesson_->step());
+    emit lessonShown(lesson_->lesson());
 }
 
 std::optional<std::size_t> LessonController::lessonEventKind(const Lesson& lesson,
@@ -391,6 +399,7 @@ void LessonController::showSceneIntro() {
             .arg(QString::fromStdString(session_.name()),
                  QString::fromStdString(sceneDescription(twoD ? session_.scene2D()->description
                                                               : session_.scene3D()->description))));
+    emit lessonClosed();
 }
 
 void LessonController::showReplayText() {

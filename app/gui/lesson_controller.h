@@ -66,6 +66,9 @@ class LessonController : public QObject {
     /// The menu the built-in lessons are listed in (filled again on a change of language).
     void setLessonsMenu(QMenu* menu);
     const Progress& studentProgress() const { return studentProgress_; }
+    /// The progress to add to (the practice's records); saved with the next answer or `save`.
+    Progress& studentProgress() { return studentProgress_; }
+    void save() { saveProgress(); }
     QString progressPath() const { return progressPath_; }
     /// The last save failed: the answers since are in memory only (the note says so).
     bool progressUnsaved() const { return unsaved_; }
@@ -82,6 +85,13 @@ class LessonController : public QObject {
     static std::optional<std::size_t> lessonEventKind(const Lesson& lesson, const EventLog& log);
 
   signals:
+    /// A lesson is shown (its trace replayed, its progress in studentProgress()).
+    void lessonShown(const Lesson& lesson);
+    /// A scene opened by hand replaces the lesson.
+    void lessonClosed();
+    /// An answer was recorded in the shown lesson's progress, about to be saved: a listener
+    /// may add to the progress (the practice's result) and it is saved with the answer.
+    void answerRecorded(const Lesson& lesson);
     /// A lesson picked in the lessons menu.
     void lessonRequested(const QString& id);
     /// A lesson was shown whose steps are about events of this kind (the timeline's N).

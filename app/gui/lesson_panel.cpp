@@ -127,6 +127,10 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     showText({});
 }
 
+void LessonPanel::setHeader(QWidget* header) {
+    static_cast<QVBoxLayout*>(layout())->insertWidget(1, header);
+}
+
 void LessonPanel::setLessons(const std::vector<Lesson>& lessons) {
     picker_->clear();
     picker_->addItem(tr("Lessons..."), QString());

@@ -78,6 +78,8 @@ class LessonPanel : public QWidget {
     QString heldNote() const;
     /// The picker shows the open lesson again (after a pick that could not be opened).
     void syncPicker();
+    /// A part the window puts under the picker (the practice bar), shown and hidden by its owner.
+    void setHeader(QWidget* header);
     /// Free text when no lesson is open (a scene opened by hand, a build replay).
     void showText(const QString& markdown);
     bool hasLesson() const { return hasLesson_; }

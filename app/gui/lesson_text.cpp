@@ -68,9 +68,8 @@ void LessonText::appendErrata(QTextCursor& at, const std::vector<Erratum>& errat
 
 void LessonText::showLesson(const Lesson& lesson, int step, std::optional<int> waitsFor,
                             bool errata, Language lang) {
-    setMarkdown(QStringLiteral("# %1. %2\n\n%3\n")
-                    .arg(lesson.number)
-                    .arg(q(lesson.title.in(lang)), q(lesson.text.in(lang))));
+    setMarkdown(QStringLiteral("# %1\n\n%2\n")
+                    .arg(q(lessonHeading(lesson, lang)), q(lesson.text.in(lang))));
     QTextCursor at(document());
     at.movePosition(QTextCursor::End);
     if (errata) appendErrata(at, lesson.errata, lang);

@@ -1,5 +1,6 @@
 // The replay app's window: its views, its parts made and wired, its own actions and the menus.
 #include "main_window.h"
+#include "practice_controller.h"
 #include "file_dialogs.h"
 
 #include "board_docks.h"
@@ -20,6 +21,7 @@
 #include "window_layout.h"
 
 #include "course/lesson_trace.h"
+#include "course/practice/practice.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -51,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     const std::uint64_t& generation = opener_->generation();
     lessons_ =
         new LessonController(*this, session_, runner_, generation, lesson_, events_, view3D_);
+    practice_ = new PracticeController(this, *lessons_, *lesson_);
     createStatusBar();
     createActions();
     const auto refused = [this](const QString& toWhat) { return refusedWhileHeld(toWhat); };
@@ -74,6 +77,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     const auto openLessonId = [this](const QString& id) { openLesson(id); };
     connect(lesson_, &LessonPanel::lessonRequested, this, openLessonId);
     connect(lessons_, &LessonController::lessonRequested, this, openLessonId);
+    connect(practice_, &PracticeController::lessonRequested, this, openLessonId);
     connect(opener_, &SceneOpener::sceneReplaced, compare_, &CompareLauncher::close);
     connect(opener_, &SceneOpener::sceneShown, image_, &ImageRender::sceneShown);
     connect(opener_, &SceneOpener::sceneOpened, this, &MainWindow::showOpenedScene);
@@ -318,6 +322,8 @@ void MainWindow::createMenus() {
     lessons_->setLessonsMenu(lessons->addMenu(tr("&Built-in lessons")));
     lessons->addActions({a.openLessonFile, a.backToLesson});
     lessons->addSeparator();
+    practice_->addLessonItems(lessons);
+    lessons->addSeparator();
     lessons->addActions({a.quizMode, a.presentMode, a.lecturer});
     lessons->addSeparator();
     lessons->addAction(a.showErrata);
@@ -361,7 +367,9 @@ void MainWindow::showOpenedLesson(const LessonController::Opened& o) {
     else
         imageView_->setLessonPixel(std::nullopt);
     const QString title = QString::fromStdString(lesson.title.in(lessons_->language()));
-    setWindowTitle(tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
+    setWindowTitle(parsePracticeLessonId(lesson.id)
+                       ? tr("raystep - %1").arg(title)
+                       : tr("raystep - lesson %1: %2").arg(lesson.number).arg(title));
 }
 
 void MainWindow::showViews(bool view2D, bool view3D, bool image) {
@@ -403,6 +411,7 @@ void MainWindow::replayBuild() {
 
 void MainWindow::setLanguage(Language lang) {
     lessons_->setLanguage(lang);
+    practice_->retranslate(lang);
     view2D_->setLanguage(lang);
     view3D_->setLanguage(lang);
 }

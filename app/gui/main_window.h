@@ -36,6 +36,7 @@ class BoardTable;
 class CompareChooser;
 class CompareLauncher;
 class CompareWindow;
+class PracticeController;
 class LiveControls;
 class LiveEdit;
 class EventList;
@@ -248,6 +249,7 @@ class MainWindow : public QMainWindow {
     // The parts, each owning one job (made and wired by the constructor).
     SceneOpener* opener_ = nullptr;
     LessonController* lessons_ = nullptr;
+    PracticeController* practice_ = nullptr;
     ImageRender* image_ = nullptr;
     LiveEdit* live_ = nullptr;
     BoardDocks* board_ = nullptr;

@@ -5,6 +5,8 @@
 #include "language.h"
 #include "lesson_panel.h"
 
+#include "course/practice/practice.h"
+
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QStatusBar>
@@ -116,15 +118,20 @@ void SceneOpener::openLesson(const QString& idOrPath, bool quiet) {
         return;
     }
     const QString title = QString::fromStdString(lesson.title.in(language_()));
+    // A practice instance has no lesson number to name it by (lessonHeading).
+    const bool practice = parsePracticeLessonId(lesson.id).has_value();
     const bool started = runner_.start<LessonController::Opened>(
-        TaskKind::Scene, tr("Opening lesson %1: %2...").arg(lesson.number).arg(title),
+        TaskKind::Scene,
+        practice ? tr("Opening %1...").arg(title)
+                 : tr("Opening lesson %1: %2...").arg(lesson.number).arg(title),
         [lesson](const ProgressFn& progress) {
             return LessonController::prepare(lesson, progress);
         },
-        [this, lesson, quiet](LessonController::Opened&& o, const TaskOutcome& outcome) {
+        [this, lesson, quiet, practice, title](LessonController::Opened&& o,
+                                                const TaskOutcome& outcome) {
             if (outcome.superseded) return;
             if (!outcome.ok()) {
-                openFailed(tr("lesson %1").arg(lesson.number), outcome, quiet);
+                openFailed(practice ? title : tr("lesson %1").arg(lesson.number), outcome, quiet);
                 lesson_->syncPicker();  // back to what is shown
                 return;
             }

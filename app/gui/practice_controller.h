@@ -1,0 +1,68 @@
+#pragma once
+// Lessons > Practice (docs/practice.md): a bar over the lesson panel to choose a topic and a
+// level, and "New exercise", a fresh instance drawn by the topic's generator and opened as a
+// lesson, answered and graded as any other. Each instance's result goes into the student's
+// progress (course/progress.h): right, missed or open, and mastery at kMasteryStreak in a row.
+#include "course/lesson.h"
+
+#include <QObject>
+#include <QString>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QMenu;
+class QPushButton;
+class QWidget;
+
+namespace raystep::gui {
+
+class LessonController;
+class LessonPanel;
+
+class PracticeController : public QObject {
+    Q_OBJECT
+  public:
+    /// `draw` gives a new seed (random in the app; a test's own sequence).
+    PracticeController(QObject* parent, LessonController& lessons, LessonPanel& panel,
+                       std::function<std::uint64_t()> draw = {});
+
+    /// Lessons > Practice...: the bar, and a new instance of the topic and level it shows.
+    void addLessonItems(QMenu* lessons);
+    /// Draws a new instance of the chosen topic and level (never one the student was given).
+    void newExercise();
+    /// The bar's text: the topic, the level, the streak and mastery.
+    QString status() const;
+    QWidget* bar() const { return bar_; }
+    /// After a change of language: the combos' texts and the status again.
+    void retranslate(Language lang);
+
+  signals:
+    void lessonRequested(const QString& id);
+
+  private:
+    std::string topic() const;
+    std::string level() const;
+    void lessonShown(const Lesson& lesson);
+    void answerRecorded(const Lesson& lesson);
+    void refresh();
+
+    LessonController& lessons_;
+    LessonPanel& panel_;
+    std::function<std::uint64_t()> draw_;
+    Language lang_ = Language::En;
+    QWidget* bar_ = nullptr;
+    QComboBox* topics_ = nullptr;
+    QComboBox* levels_ = nullptr;
+    QPushButton* newButton_ = nullptr;
+    QLabel* status_ = nullptr;
+    QLabel* seedLabel_ = nullptr;
+    QAction* practice_ = nullptr;
+    std::optional<std::uint64_t> shownSeed_;  // the practice instance shown, if one is
+};
+
+}  // namespace raystep::gui
