@@ -51,14 +51,16 @@ PracticeController::PracticeController(QObject* parent, LessonController& lesson
     seedLabel_->setObjectName("practiceSeed");
     seedLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     seedLabel_->setStyleSheet(QStringLiteral("color: #4a4a4a"));
-    auto* topicLabel = new QLabel(tr("Practice:"));
-    grid->addWidget(topicLabel, 0, 0);
-    grid->addWidget(topics_, 0, 1, 1, 2);
-    grid->addWidget(levels_, 1, 1);
-    grid->addWidget(newButton_, 1, 2);
-    grid->addWidget(status_, 2, 0, 1, 3);
-    grid->addWidget(seedLabel_, 3, 0, 1, 3);
-    grid->setColumnStretch(1, 1);
+    // Two rows, so that the lesson's text (which states the instance's data) keeps its room on
+    // a laptop's screen: what to practise, then how it is going.
+    topics_->setToolTip(tr("Practice: the topic"));
+    levels_->setToolTip(tr("Practice: the level"));
+    grid->addWidget(topics_, 0, 0);
+    grid->addWidget(levels_, 0, 1);
+    grid->addWidget(newButton_, 0, 2);
+    grid->addWidget(status_, 1, 0, 1, 2);
+    grid->addWidget(seedLabel_, 1, 2, Qt::AlignRight | Qt::AlignTop);
+    grid->setColumnStretch(0, 1);
     bar_->hide();
     panel_.setHeader(bar_);
     retranslate(Language::En);
@@ -181,11 +183,7 @@ void PracticeController::refresh() {
                                "this one, then press New exercise.");
             }
     status_->setText(text);
-    seedLabel_->setText(shownSeed_ ? tr("Instance: %1 --seed %2 --level %3")
-                                         .arg(q(topic()))
-                                         .arg(*shownSeed_)
-                                         .arg(q(level()))
-                                   : QString());
+    seedLabel_->setText(shownSeed_ ? tr("seed %1").arg(*shownSeed_) : QString());
     seedLabel_->setToolTip(tr("raystep-cli practice make %1 --seed %2 --level %3 gives it again")
                                .arg(q(topic()))
                                .arg(shownSeed_.value_or(0))
