@@ -65,7 +65,7 @@ Progress readProgress(std::string_view text, const std::string& fileName) {
             for (std::size_t i = 0; i < rj.size(); ++i) {
                 const std::string ip = JsonLineMap::element(kp, i);
                 r.requireObject(rj[i], ip);
-                r.checkKeys(rj[i], ip, {"seed", "result"});
+                r.checkKeys(rj[i], ip, {"seed", "result", "digest"});
                 PracticeRecord::Instance in;
                 ifPresent(rj[i], ip, "seed", [&](const json& x, const std::string& xp) {
                     if (!x.is_number_unsigned()) r.fail(xp, "expected a whole number from 0");
@@ -77,6 +77,9 @@ Progress readProgress(std::string_view text, const std::string& fileName) {
                     else if (res == "missed") in.result = PracticeRecord::Result::Missed;
                     else if (res == "open") in.result = PracticeRecord::Result::Open;
                     else r.fail(xp, "expected \"right\", \"missed\" or \"open\"");
+                });
+                ifPresent(rj[i], ip, "digest", [&](const json& x, const std::string& xp) {
+                    in.digest = r.string(x, xp);
                 });
                 rec.instances.push_back(in);
             }
@@ -127,6 +130,12 @@ bool PracticeRecord::drawn(std::uint64_t seed) const {
                        [&](const Instance& i) { return i.seed == seed; });
 }
 
+bool PracticeRecord::given(std::string_view digest) const {
+    return !digest.empty() && std::any_of(instances.begin(), instances.end(), [&](const Instance& i) {
+        return i.digest == digest;
+    });
+}
+
 std::string practiceKey(std::string_view topic, std::string_view level) {
     return std::string(topic) + "/" + std::string(level);
 }
@@ -145,13 +154,15 @@ PracticeRecord::Result practiceResult(const Lesson& lesson, const LessonProgress
     return all ? PracticeRecord::Result::Right : PracticeRecord::Result::Open;
 }
 
-void recordPractice(PracticeRecord& record, std::uint64_t seed, PracticeRecord::Result result) {
+void recordPractice(PracticeRecord& record, std::uint64_t seed, PracticeRecord::Result result,
+                    const std::string& digest) {
     for (PracticeRecord::Instance& in : record.instances)
         if (in.seed == seed) {
             if (in.result == PracticeRecord::Result::Open) in.result = result;
+            if (in.digest.empty()) in.digest = digest;
             return;
         }
-    record.instances.push_back({seed, result});
+    record.instances.push_back({seed, result, digest});
 }
 
 Progress parseProgress(std::string_view text, const std::string& fileName) {
@@ -182,8 +193,11 @@ std::string progressToJson(const Progress& p) {
         json practice = json::object();
         for (const auto& [key, rec] : p.practice) {
             json list = json::array();
-            for (const PracticeRecord::Instance& in : rec.instances)
-                list.push_back({{"seed", in.seed}, {"result", resultName(in.result)}});
+            for (const PracticeRecord::Instance& in : rec.instances) {
+                json entry = {{"seed", in.seed}, {"result", resultName(in.result)}};
+                if (!in.digest.empty()) entry["digest"] = in.digest;
+                list.push_back(entry);
+            }
             practice[key] = list;
         }
         root["practice"] = practice;
@@ -208,7 +222,7 @@ void mergeProgress(Progress& into, const Progress& saved) {
     for (const auto& [key, theirs] : saved.practice) {
         PracticeRecord& mine = into.practice[key];
         for (const PracticeRecord::Instance& in : theirs.instances)
-            recordPractice(mine, in.seed, in.result);
+            recordPractice(mine, in.seed, in.result, in.digest);
     }
 }
 

@@ -29,6 +29,7 @@ struct PracticeRecord {
     struct Instance {
         std::uint64_t seed = 0;
         Result result = Result::Open;
+        std::string digest;  // practiceDigest of its data: two seeds may draw the same instance
     };
     std::vector<Instance> instances;
     /// The instances right in a row at the end (open ones between do not break it).
@@ -37,6 +38,8 @@ struct PracticeRecord {
     bool mastered() const;
     int right() const;
     bool drawn(std::uint64_t seed) const;
+    /// An instance with this digest was given (instances recorded without one never match).
+    bool given(std::string_view digest) const;
 };
 /// Right instances in a row that master a topic at a level.
 inline constexpr int kMasteryStreak = 3;
@@ -68,9 +71,10 @@ bool recordAnswer(LessonProgress& lesson, const std::string& exerciseId, const s
 /// What the answers recorded in `progress` make of a practice instance (`lesson`): missed at its
 /// first wrong answer, right once every exercise is right at its first answer, else open.
 PracticeRecord::Result practiceResult(const Lesson& lesson, const LessonProgress& progress);
-/// Records the result of instance `seed` in `record` (appended when new): a decided result is
-/// never changed again, so a later answer cannot undo a miss nor a right.
-void recordPractice(PracticeRecord& record, std::uint64_t seed, PracticeRecord::Result result);
+/// Records the result of instance `seed` in `record` (appended when new, with `digest`): a
+/// decided result is never changed again, so a later answer cannot undo a miss nor a right.
+void recordPractice(PracticeRecord& record, std::uint64_t seed, PracticeRecord::Result result,
+                    const std::string& digest = {});
 
 /// Who the report is for and when it was made (the caller's clock: the report is deterministic).
 struct ReportHeader {

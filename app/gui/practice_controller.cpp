@@ -123,10 +123,22 @@ void PracticeController::newExercise() {
     const auto parsedLevel = parsePracticeLevel(level());
     if (topic().empty() || !parsedLevel) return;
     PracticeRecord& record = lessons_.studentProgress().practice[practiceKey(topic(), level())];
-    // A seed the student was never given at this topic and level: no instance seen twice.
-    std::uint64_t seed = draw_();
-    while (record.drawn(seed)) seed = draw_();
-    recordPractice(record, seed, PracticeRecord::Result::Open);
+    // An instance the student was never given at this topic and level (two seeds may draw the
+    // same one): made here, a few milliseconds, then opened by its id as any lesson is.
+    std::uint64_t seed = 0;
+    std::string digest;
+    try {
+        const PracticeInstance inst =
+            drawPractice(topic(), *parsedLevel, draw_, [&](std::uint64_t s, const std::string& d) {
+                return record.drawn(s) || record.given(d);
+            });
+        seed = inst.seed;
+        digest = practiceDigest(inst);
+    } catch (const std::exception& e) {
+        status_->setText(QString::fromUtf8(e.what()));
+        return;
+    }
+    recordPractice(record, seed, PracticeRecord::Result::Open, digest);
     lessons_.save();
     bar_->show();
     emit lessonRequested(q(practiceLessonId(topic(), *parsedLevel, seed)));

@@ -144,3 +144,32 @@ TEST(PracticeProgress, TheReportShowsPracticePerTopicAndLevel) {
     // No practice, no section.
     EXPECT_EQ(progressReport(Progress{}, {}, Language::En).find("Practice"), std::string::npos);
 }
+
+TEST(PracticeProgress, ANewInstanceIsNeverOneGivenBeforeEvenFromAnotherSeed) {
+    // Seeds 27 and 84 draw the same easy 2D DDA instance (found by `practice make` over 200
+    // seeds); the draw after 27 skips 84 and gives the next seed's instance.
+    const PracticeInstance a = makePractice("dda-2d", 27, PracticeLevel::Easy);
+    const PracticeInstance b = makePractice("dda-2d", 84, PracticeLevel::Easy);
+    ASSERT_EQ(a.given.dump(), b.given.dump());
+    EXPECT_EQ(practiceDigest(a), practiceDigest(b));
+    EXPECT_EQ(practiceDigest(a).size(), 16u);
+    PracticeRecord rec;
+    recordPractice(rec, 27, Result::Right, practiceDigest(a));
+    std::vector<std::uint64_t> draws = {27, 84, 85};
+    std::size_t next = 0;
+    const auto seen = [&](std::uint64_t s, const std::string& d) {
+        return rec.drawn(s) || rec.given(d);
+    };
+    const PracticeInstance c =
+        drawPractice("dda-2d", PracticeLevel::Easy, [&] { return draws.at(next++); }, seen);
+    EXPECT_EQ(c.seed, 85u);
+    EXPECT_NE(practiceDigest(c), practiceDigest(a));
+    // The digest is kept in the file and read back.
+    Progress p;
+    p.practice["dda-2d/easy"] = rec;
+    EXPECT_EQ(parseProgress(progressToJson(p), "p").practice.at("dda-2d/easy").instances[0].digest,
+              practiceDigest(a));
+    // Every seed refused: one clear error, not a hang.
+    EXPECT_THROW(drawPractice("dda-2d", PracticeLevel::Easy, [] { return std::uint64_t(27); }, seen),
+                 PracticeError);
+}

@@ -143,6 +143,10 @@ TEST(Practice, ThreeRightInARowMasterATopicAndAWrongFirstAnswerStartsAgain) {
     EXPECT_EQ(easy.instances.size(), 3u);
     EXPECT_EQ(easy.right(), 3);
     EXPECT_TRUE(easy.mastered());
+    std::set<std::string> digests;
+    for (const PracticeRecord::Instance& in : easy.instances) digests.insert(in.digest);
+    EXPECT_EQ(digests.size(), 3u);  // three different instances, not only three seeds
+    EXPECT_EQ(digests.count(""), 0u);
     ASSERT_EQ(saved.practice.count("dda-2d/medium"), 1u);
     EXPECT_EQ(saved.practice.at("dda-2d/medium").instances.back().result,
               PracticeRecord::Result::Missed);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace raystep {
 
@@ -129,6 +130,30 @@ std::uint64_t streamSeed(std::string_view topic, PracticeLevel level, std::uint6
 constexpr int kAttempts = 400;
 
 }  // namespace
+
+std::string practiceDigest(const PracticeInstance& instance) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (const char c : instance.given.dump()) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 1099511628211ull;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return hex;
+}
+
+PracticeInstance drawPractice(std::string_view topic, PracticeLevel level,
+                              const std::function<std::uint64_t()>& draw,
+                              const std::function<bool(std::uint64_t, const std::string&)>& seen) {
+    for (int tries = 0; tries < 1000; ++tries) {
+        const std::uint64_t seed = draw();
+        if (seen(seed, {})) continue;  // the seed alone: no need to make it
+        PracticeInstance inst = makePractice(topic, seed, level);
+        if (!seen(seed, practiceDigest(inst))) return inst;
+    }
+    throw PracticeError("no new instance of " + printable(topic) + " at " +
+                        std::string(practiceLevelName(level)) + " in 1000 draws");
+}
 
 PracticeInstance makePractice(std::string_view topic, std::uint64_t seed, PracticeLevel level) {
     const auto& gens = practice::generators();

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,6 +56,17 @@ class PracticeError : public std::runtime_error {
 /// The instance of `topic` for `seed` at `level`. Every instance passes `lesson validate`
 /// (trace positions, answers read from the trace, no answer in a text the student reads first).
 PracticeInstance makePractice(std::string_view topic, std::uint64_t seed, PracticeLevel level);
+
+/// A short fingerprint of an instance's data (16 hex digits of FNV-1a over `given`): two seeds
+/// that draw the same instance have the same digest.
+std::string practiceDigest(const PracticeInstance& instance);
+
+/// A new instance of `topic` at `level` for a student: seeds from `draw` until one gives an
+/// instance `seen` (its seed, its digest) refuses; PracticeError after 1000 draws, which only
+/// a topic whose every instance the student was given comes to.
+PracticeInstance drawPractice(std::string_view topic, PracticeLevel level,
+                              const std::function<std::uint64_t()>& draw,
+                              const std::function<bool(std::uint64_t, const std::string&)>& seen);
 
 /// The lesson id a practice instance has ("practice-dda-2d-easy-42"), and back: the topic,
 /// level and seed of a practice lesson id, nullopt for any other id.
