@@ -28,9 +28,16 @@ struct BoxNode {
     std::vector<std::uint32_t> prims;     // leaf
 };
 
-bool overlap(const BoxN<2>& a, const BoxN<2>& b) {
+bool shareSpace(const BoxN<2>& a, const BoxN<2>& b) {
     return std::min(a.hi[0], b.hi[0]) > std::max(a.lo[0], b.lo[0]) &&
            std::min(a.hi[1], b.hi[1]) > std::max(a.lo[1], b.lo[1]);
+}
+bool contains(const BoxN<2>& a, const BoxN<2>& b) {
+    return a.lo[0] <= b.lo[0] && a.lo[1] <= b.lo[1] && a.hi[0] >= b.hi[0] && a.hi[1] >= b.hi[1];
+}
+/// Two boxes overlap as lesson 10 says: they share space and neither lies inside the other.
+bool overlap(const BoxN<2>& a, const BoxN<2>& b) {
+    return shareSpace(a, b) && !contains(a, b) && !contains(b, a);
 }
 
 struct BvhData {
@@ -51,7 +58,7 @@ std::optional<BvhData> drawBvh(Random& r, PracticeLevel level) {
     const Bvh<Scene2DPrims> bvh(Scene2DPrims(g.scene), options);
     const auto& nodes = bvh.nodes();
     if (nodes.size() < 3 || nodes.size() > (hard ? 11u : 9u)) return std::nullopt;
-    bool anyOverlap = false;
+    bool anyOverlap = false, anyShared = false;
     for (std::uint32_t id = 0; id < nodes.size(); ++id) {
         const BvhNode<2>& n = nodes[id];
         BoxNode b{id, n.bounds, n.leaf(), n.axis, 0, 0, {}};
@@ -62,10 +69,12 @@ std::optional<BvhData> drawBvh(Random& r, PracticeLevel level) {
             b.first = id + 1;
             b.second = n.index;
             anyOverlap = anyOverlap || overlap(nodes[b.first].bounds, nodes[b.second].bounds);
+            anyShared = anyShared || shareSpace(nodes[b.first].bounds, nodes[b.second].bounds);
         }
         g.nodes.push_back(b);
     }
-    if (anyOverlap == easy) return std::nullopt;
+    // easy: siblings share no space at all; above: two siblings overlap.
+    if (easy ? anyShared : !anyOverlap) return std::nullopt;
     std::vector<double> xs, ys;
     for (const BoxNode& n : g.nodes) {
         xs.push_back(n.box.lo[0]);
@@ -93,7 +102,9 @@ std::string boxWords(const Scene2D& s, const std::vector<BoxNode>& nodes, bool i
         }
         std::string names;
         for (std::size_t k = 0; k < n.prims.size(); ++k)
-            names += (k == 0 ? "" : k + 1 == n.prims.size() ? (it ? " e " : " and ") : ", ") +
+            names += (k == 0                    ? ""
+                      : k + 1 == n.prims.size() ? (it ? " e " : " and ")
+                                                : ", ") +
                      primName(s, n.prims[k], it);
         out += (it ? ": foglia con " : ": a leaf with ") + names;
     }
@@ -150,16 +161,18 @@ Draft makeBvh(Random& r, PracticeLevel level) {
                (it ? "` con direzione `d = " : "` with direction `d = ") +
                vec({g.ray.dir.x, g.ray.dir.y}) + "`.";
     };
-    const std::string en = "The primitives: " + primList(g.scene, false) +
-                           ". The BVH raystep builds over them with the SAH: " +
-                           boxWords(g.scene, g.nodes, false) + ". " + rayText(false);
+    const std::string en =
+        "The primitives: " + primList(g.scene, false) +
+        ". The BVH raystep builds over them with the SAH: " + boxWords(g.scene, g.nodes, false) +
+        ". " + rayText(false);
     const std::string it = "Le primitive: " + primList(g.scene, true) +
                            ". La BVH che raystep costruisce su di esse con la SAH: " +
                            boxWords(g.scene, g.nodes, true) + ". " + rayText(true);
 
     Draft d;
     ojson& l = d.lesson;
-    l["title"] = text("Practice: a ray through a BVH", "Esercitazione: un raggio attraverso una BVH");
+    l["title"] =
+        text("Practice: a ray through a BVH", "Esercitazione: un raggio attraverso una BVH");
     l["text"] = text(
         en +
             " The traversal, as raystep runs it (lesson 10): a box is entered when the slab test "
@@ -189,12 +202,13 @@ Draft makeBvh(Random& r, PracticeLevel level) {
              "spazi)?"));
     enters["of"] = "node_enter";
     enters["hint"] = hints(
-        {text("For each box, the slab test: on x, t = (x - o.x) / d.x; on y, t = (y - o.y) / d.y. "
-              "The ray is inside from the largest entry to the smallest exit, and misses the box "
-              "when that interval is empty.",
-              "Per ogni scatola, il test degli slab: su x, t = (x - o.x) / d.x; su y, t = (y - "
-              "o.y) / d.y. Il raggio è dentro dal maggiore degli ingressi al minore delle uscite, e "
-              "manca la scatola quando l'intervallo è vuoto."),
+        {text(
+             "For each box, the slab test: on x, t = (x - o.x) / d.x; on y, t = (y - o.y) / d.y. "
+             "The ray is inside from the largest entry to the smallest exit, and misses the box "
+             "when that interval is empty.",
+             "Per ogni scatola, il test degli slab: su x, t = (x - o.x) / d.x; su y, t = (y - "
+             "o.y) / d.y. Il raggio è dentro dal maggiore degli ingressi al minore delle uscite, e "
+             "manca la scatola quando l'intervallo è vuoto."),
          text("Boxes may overlap: a ray in the shared space enters both. A box entered does not "
               "mean a primitive hit.",
               "Le scatole possono intersecarsi: un raggio nello spazio condiviso entra in "
@@ -227,7 +241,8 @@ Draft makeBvh(Random& r, PracticeLevel level) {
     addPrims(given, g.scene);
     d.given = given;
     d.answers = [](const Reference& ref) {
-        return ojson{{"enters", ref.nodes("enters")}, {"tests", static_cast<int>(ref.number("tests"))}};
+        return ojson{{"enters", ref.nodes("enters")},
+                     {"tests", static_cast<int>(ref.number("tests"))}};
     };
     const std::vector<BoxNode> nodes = g.nodes;
     d.accept = [nodes, level](const Reference& ref) { return walkFits(ref, nodes, level); };

@@ -48,8 +48,7 @@ std::vector<BoxN<2>> boundsIn(const Scene2D& s, const BoxN<2>& box) {
 std::vector<Plane> planesOf(const std::vector<BoxN<2>>& prims, const BoxN<2>& box) {
     std::vector<Plane> out;
     for (int a = 0; a < 2; ++a)
-        for (int h = static_cast<int>(std::lround(box.lo[a] * 2)) + 1; halves(h) < box.hi[a];
-             ++h) {
+        for (int h = static_cast<int>(std::lround(box.lo[a] * 2)) + 1; halves(h) < box.hi[a]; ++h) {
             Plane p{a, halves(h)};
             bool onBound = false;
             for (const BoxN<2>& b : prims) {
@@ -114,11 +113,11 @@ std::string treeWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool
         const std::string id = std::to_string(n.id);
         if (!n.node.leaf()) {
             const std::string a = kAxis[n.node.axis], at = num(n.node.split, it);
-            parts.push_back((it ? "nodo " : "node ") + id + (it ? ": il piano `" : ": the plane `") +
-                            a + " = " + num(n.node.split) + (it ? "`, figli " : "`, children ") +
-                            std::to_string(n.id + 1) + " (" + a + " < " + at + ")" +
-                            (it ? " e " : " and ") + std::to_string(n.node.index) + " (" + a +
-                            " > " + at + ")");
+            parts.push_back(
+                (it ? "nodo " : "node ") + id + (it ? ": il piano `" : ": the plane `") + a +
+                " = " + num(n.node.split) + (it ? "`, figli " : "`, children ") +
+                std::to_string(n.id + 1) + " (" + a + " < " + at + ")" + (it ? " e " : " and ") +
+                std::to_string(n.node.index) + " (" + a + " > " + at + ")");
             continue;
         }
         std::vector<std::string> names;
@@ -135,7 +134,7 @@ std::string treeWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool
 struct KdData {
     Scene2D scene;
     std::vector<TreeNode> nodes;
-    BoxN<2> root, box;   // the tree's root box; the node of the named plane
+    BoxN<2> root, box;  // the tree's root box; the node of the named plane
     std::uint32_t node = 0;
     Plane plane;
     std::vector<Plane> candidates;
@@ -146,8 +145,8 @@ struct KdData {
 std::optional<KdData> drawKd(Random& r, PracticeLevel level) {
     const bool easy = level == PracticeLevel::Easy, hard = level == PracticeLevel::Hard;
     KdData g;
-    g.scene = drawPrims(r, easy ? r.between(3, 4) : r.between(4, 5), r.between(6, 8),
-                        r.between(4, 6));
+    g.scene =
+        drawPrims(r, easy ? r.between(3, 4) : r.between(4, 5), r.between(6, 8), r.between(4, 6));
     KdTreeOptions options;
     options.split = SplitMethod::Sah;
     options.cTrav = kCTrav;
@@ -252,8 +251,9 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
         const std::string a = kAxis[root.axis], at = num(root.split, it);
         const std::string side = a + (left ? " < " : " > ") + at;
         if (it)
-            return "Il nodo C = " + std::to_string(g.node) + ", il figlio della radice dalla parte " +
-                   side + ", " + corners(box, true) + ", con " + std::to_string(held) +
+            return "Il nodo C = " + std::to_string(g.node) +
+                   ", il figlio della radice dalla parte " + side + ", " + corners(box, true) +
+                   ", con " + std::to_string(held) +
                    " primitive (nessuna attraversa il piano della radice)";
         return "The node C = " + std::to_string(g.node) + ", the root's child on the side " + side +
                ", " + corners(box, false) + ", holding " + std::to_string(held) +
@@ -262,11 +262,13 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
     // "with N_L = 2 primitives on the left and N_R = 3 on the right" (below / above for y).
     const auto planeWords = [&](const Plane& p, bool it) {
         const bool x = p.axis == 0;
-        const std::string lo = it ? (x ? " a sinistra" : " sotto") : (x ? " on the left" : " below");
+        const std::string lo =
+            it ? (x ? " a sinistra" : " sotto") : (x ? " on the left" : " below");
         const std::string hi = it ? (x ? " a destra" : " sopra") : (x ? " on the right" : " above");
         return (it ? "dal piano `" : "the plane `") + std::string(kAxis[p.axis]) + " = " +
                num(p.at) + "`" + (it ? ", con N_L = " : ", with N_L = ") + std::to_string(p.nl) +
-               (it ? " primitive" : " primitives") + lo + (it ? " e N_R = " : " and N_R = ") + std::to_string(p.nr) + hi;
+               (it ? " primitive" : " primitives") + lo + (it ? " e N_R = " : " and N_R = ") +
+               std::to_string(p.nr) + hi;
     };
     const std::string costs = "C_trav = " + num(kCTrav) + ", C_isect = " + num(kCIsect);
     const std::string bonusEn = "empty bonus " + num(kEmptyBonus);
@@ -302,7 +304,11 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
                   {"c_isect", kCIsect},
                   {"empty_bonus", kEmptyBonus}};
     l["views"] = {"2d"};
-    l["trace"] = {{"ray", jsonVec({g.ray.origin.x, g.ray.origin.y, g.ray.dir.x, g.ray.dir.y})}};
+    // easy asks no walk: its replay is the build, as lesson 11's, and its figure draws no ray.
+    if (easy)
+        l["trace"] = {{"build", true}};
+    else
+        l["trace"] = {{"ray", jsonVec({g.ray.origin.x, g.ray.origin.y, g.ray.dir.x, g.ray.dir.y})}};
 
     ojson computeGiven = {{"node", boxJson(box)},
                           {"plane", {{"axis", kAxis[g.plane.axis]}, {"at", g.plane.at}}},
@@ -324,13 +330,13 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
             " part L (in 2D: the ratio of the perimeters).",
         "Calcola P(L|C), la probabilità che un raggio che attraversa C attraversi la sua parte " +
             sideIt + " L (in 2D: il rapporto dei perimetri).");
-    pl["hint"] = hints(
-        {text("perimeter = 2 (width + height); L is the part of C where " +
-                  std::string(kAxis[g.plane.axis]) + " < " + num(g.plane.at) + ".",
-              "perimetro = 2 (larghezza + altezza); L è la parte di C in cui " +
-                  std::string(kAxis[g.plane.axis]) + " < " + num(g.plane.at, true) + "."),
-         text("The counts of primitives play no part in P(L|C).",
-              "Il numero di primitive non entra in P(L|C).")});
+    pl["hint"] =
+        hints({text("perimeter = 2 (width + height); L is the part of C where " +
+                        std::string(kAxis[g.plane.axis]) + " < " + num(g.plane.at) + ".",
+                    "perimetro = 2 (larghezza + altezza); L è la parte di C in cui " +
+                        std::string(kAxis[g.plane.axis]) + " < " + num(g.plane.at, true) + "."),
+               text("The counts of primitives play no part in P(L|C).",
+                    "Il numero di primitive non entra in P(L|C).")});
     ex.push_back(pl);
     ojson pr = compute("p-right", "pR",
                        "Compute P(R|C), for the other part R (in 2D: the ratio of the perimeters).",
@@ -339,10 +345,8 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
                              "P(L|C) + P(R|C) supera 1: le due parti hanno in comune il lato del "
                              "taglio.")});
     ex.push_back(pr);
-    ojson cost = compute(
-        "cost", "sahCost",
-        "Its SAH cost, with " + costs + " and " + bonusEn + "?",
-        "Il suo costo SAH, con " + costs + " e " + bonusIt + "?");
+    ojson cost = compute("cost", "sahCost", "Its SAH cost, with " + costs + " and " + bonusEn + "?",
+                         "Il suo costo SAH, con " + costs + " e " + bonusIt + "?");
     cost["hint"] =
         hints({text(hard ? "One side holds no primitive: the bonus applies."
                          : "Neither side is empty, so the bonus does not apply.",
@@ -355,14 +359,13 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
     ex.push_back(cost);
 
     if (!easy) {
-        ojson ch = exercise(
-            "cheapest", "choice",
-            text("Take " + lowerFirst(nodeWords(false)) +
-                     ": which of these three planes has the lowest SAH cost (" + costs + ", " +
-                     bonusEn + ")?",
-                 "Considera " + lowerFirst(nodeWords(true)) +
-                     ": quale di questi tre piani ha il costo SAH minore (" + costs + ", " +
-                     bonusIt + ")?"));
+        ojson ch = exercise("cheapest", "choice",
+                            text("Take " + lowerFirst(nodeWords(false)) +
+                                     ": which of these three planes has the lowest SAH cost (" +
+                                     costs + ", " + bonusEn + ")?",
+                                 "Considera " + lowerFirst(nodeWords(true)) +
+                                     ": quale di questi tre piani ha il costo SAH minore (" +
+                                     costs + ", " + bonusIt + ")?"));
         ojson choices = ojson::array();
         for (std::size_t k = 0; k < g.candidates.size(); ++k) {
             const Plane& p = g.candidates[k];
@@ -371,9 +374,9 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
                 " (N_L = " + std::to_string(p.nl) + ", N_R = " + std::to_string(p.nr) + ")";
             const bool empty = p.nl == 0 || p.nr == 0;
             choices.push_back(
-                {{"text", text("`" + planeText(p, false) + "`" + counts,
-                               "`" + std::string(kAxis[p.axis]) + " = " + num(p.at) + "`" +
-                                   counts)},
+                {{"text",
+                  text("`" + planeText(p, false) + "`" + counts,
+                       "`" + std::string(kAxis[p.axis]) + " = " + num(p.at) + "`" + counts)},
                  {"why",
                   best ? text("The cheapest of the three: its parts' perimeters, weighted by their "
                               "counts, add up to the least" +
@@ -406,23 +409,25 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
         };
         ojson seq = exercise(
             "test-tree", "sequence",
-            text("The kd-tree raystep builds on these primitives with the SAH (the costs above): " +
-                     treeWords(g.scene, g.nodes, false) + ". The ray " + rayText(false) +
-                     ". Which nodes does TestTree enter, in order (node ids separated by "
-                     "spaces)? As raystep runs it (lesson 10): the slab test at the root gives "
-                     "[tNear, tFar]; the child on the origin's side first, the other on the "
-                     "stack with its part of the interval; a child the ray does not reach "
-                     "within [tNear, tFar] is not entered; the walk stops when the nearest hit "
-                     "found lies before the next node's tNear.",
-                 "Il kd-tree che raystep costruisce su queste primitive con la SAH (con i costi "
-                 "sopra): " +
-                     treeWords(g.scene, g.nodes, true) + ". Il raggio " + rayText(true) +
-                     ". In quali nodi entra TestTree, in ordine (gli id dei nodi separati da "
-                     "spazi)? Come lo esegue raystep (lezione 10): il test degli slab nella "
-                     "radice dà [tNear, tFar]; prima il figlio dalla parte dell'origine, l'altro "
-                     "sulla pila con la sua parte dell'intervallo; in un figlio che il raggio non "
-                     "raggiunge dentro [tNear, tFar] non si entra; la visita si ferma quando "
-                     "l'intersezione più vicina trovata cade prima del tNear del nodo successivo."));
+            text(
+                "The kd-tree raystep builds on these primitives with the SAH (" + costs + ", " +
+                    bonusEn + "): " + treeWords(g.scene, g.nodes, false) + ". The ray " +
+                    rayText(false) +
+                    ". Which nodes does TestTree enter, in order (node ids separated by "
+                    "spaces)? As raystep runs it (lesson 10): the slab test at the root gives "
+                    "[tNear, tFar]; the child on the origin's side first, the other on the "
+                    "stack with its part of the interval; a child the ray does not reach "
+                    "within [tNear, tFar] is not entered; the walk stops when the nearest hit "
+                    "found lies before the next node's tNear.",
+                "Il kd-tree che raystep costruisce su queste primitive con la SAH (" + costs +
+                    ", " + bonusIt + "): " + treeWords(g.scene, g.nodes, true) + ". Il raggio " +
+                    rayText(true) +
+                    ". In quali nodi entra TestTree, in ordine (gli id dei nodi separati da "
+                    "spazi)? Come lo esegue raystep (lezione 10): il test degli slab nella "
+                    "radice dà [tNear, tFar]; prima il figlio dalla parte dell'origine, l'altro "
+                    "sulla pila con la sua parte dell'intervallo; in un figlio che il raggio non "
+                    "raggiunge dentro [tNear, tFar] non si entra; la visita si ferma quando "
+                    "l'intersezione più vicina trovata cade prima del tNear del nodo successivo."));
         seq["of"] = "node_enter";
         seq["hint"] = hints(
             {text("The ray crosses the plane x = X at t = (X - o.x) / d.x, y = Y at t = (Y - "

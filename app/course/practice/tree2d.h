@@ -84,8 +84,9 @@ inline std::string primList(const Scene2D& s, bool it) {
                             vec({c.center.x, c.center.y}) + "`, radius " + num(c.radius);
         } else {
             const Segment2& g = s.segments[p - s.circles.size()];
-            out += (it ? "segmento " : "segment ") + std::to_string(p) + (it ? " da `" : " from `") +
-                   vec({g.a.x, g.a.y}) + (it ? "` a `" : "` to `") + vec({g.b.x, g.b.y}) + "`";
+            out += (it ? "segmento " : "segment ") + std::to_string(p) +
+                   (it ? " da `" : " from `") + vec({g.a.x, g.a.y}) + (it ? "` a `" : "` to `") +
+                   vec({g.b.x, g.b.y}) + "`";
         }
     }
     return out;
