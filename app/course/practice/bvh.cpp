@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <variant>
 
 namespace raystep::practice {
@@ -152,8 +153,9 @@ bool walkFits(const Reference& ref, const std::vector<BoxNode>& nodes, PracticeL
 
 Draft makeBvh(Random& r, PracticeLevel level) {
     std::optional<BvhData> drawn;
-    while (!(drawn = drawBvh(r, level))) {
-    }
+    // A draw fails a rule now and then; thousands in a row would be a bug, not bad luck.
+    for (int draws = 0; !(drawn = drawBvh(r, level)); ++draws)
+        if (draws > 100000) throw std::logic_error("practice: no draw fits the level");
     const BvhData& g = *drawn;
     const auto rayText = [&](bool it) {
         return (it ? "Il raggio parte da `o = " : "The ray starts at `o = ") +

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 
 namespace raystep::practice {
 
@@ -226,8 +227,9 @@ std::optional<KdData> drawKd(Random& r, PracticeLevel level) {
 Draft makeKdTree(Random& r, PracticeLevel level) {
     const bool easy = level == PracticeLevel::Easy, hard = level == PracticeLevel::Hard;
     std::optional<KdData> drawn;
-    while (!(drawn = drawKd(r, level))) {
-    }
+    // A draw fails a rule now and then; thousands in a row would be a bug, not bad luck.
+    for (int draws = 0; !(drawn = drawKd(r, level)); ++draws)
+        if (draws > 100000) throw std::logic_error("practice: no draw fits the level");
     const KdData& g = *drawn;
     const BoxN<2>& box = g.box;
 
