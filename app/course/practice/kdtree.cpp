@@ -361,13 +361,18 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
     ex.push_back(cost);
 
     if (!easy) {
+        // The planes in the prompt too: a printed sheet lists no options.
+        std::vector<std::string> planes;
+        for (const Plane& p : g.candidates)
+            planes.push_back("`" + std::string(kAxis[p.axis]) + " = " + num(p.at) + "` (N_L = " +
+                             std::to_string(p.nl) + ", N_R = " + std::to_string(p.nr) + ")");
         ojson ch = exercise("cheapest", "choice",
-                            text("Take " + lowerFirst(nodeWords(false)) +
-                                     ": which of these three planes has the lowest SAH cost (" +
-                                     costs + ", " + bonusEn + ")?",
-                                 "Considera " + lowerFirst(nodeWords(true)) +
-                                     ": quale di questi tre piani ha il costo SAH minore (" +
-                                     costs + ", " + bonusIt + ")?"));
+                            text("Take " + lowerFirst(nodeWords(false)) + ": which of the planes " +
+                                     joinAnd(planes, false) + " has the lowest SAH cost (" + costs +
+                                     ", " + bonusEn + ")?",
+                                 "Considera " + lowerFirst(nodeWords(true)) + ": quale dei piani " +
+                                     joinAnd(planes, true) + " ha il costo SAH minore (" + costs +
+                                     ", " + bonusIt + ")?"));
         ojson choices = ojson::array();
         for (std::size_t k = 0; k < g.candidates.size(); ++k) {
             const Plane& p = g.candidates[k];
