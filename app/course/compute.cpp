@@ -289,9 +289,11 @@ std::string computeWorking(const Exercise& ex, Language lang) {
             const std::string area = g.dims == 2 ? tr(lang, "perimeter") : tr(lang, "surface area");
             std::string s =
                 trf(lang, "Area = the box's %1: Area(C) = %2, Area(L) = %3, Area(R) = %4",
-                    {area, v(q("area")), v(q("areaL")), v(q("areaR"))}) +
-                "; P(L|C) = Area(L) / Area(C) = " + v(q("pL")) +
-                ", P(R|C) = Area(R) / Area(C) = " + v(q("pR"));
+                    {area, v(q("area")), v(q("areaL")), v(q("areaR"))});
+            // pL's working leaves pR out (and pR's pL): a lesson may ask the other next.
+            if (what != "pR") s += "; P(L|C) = Area(L) / Area(C) = " + v(q("pL"));
+            if (what != "pL") s += (what == "pR" ? "; " : ", ");
+            if (what != "pL") s += "P(R|C) = Area(R) / Area(C) = " + v(q("pR"));
             if (what != "sahCost") return s + ".";
             s +=
                 "; " +

@@ -23,6 +23,32 @@ const std::vector<Generator>& generators() {
              "facile: dall'interno, direzioni positive; medio: ogni direzione, anche da "
              "fuori; difficile: pareggi"}}}},
          makeDda3D},
+        {{"kdtree",
+          {"Building a kd-tree: P(L|C), P(R|C), the SAH cost, the cheapest plane, TestTree",
+           {{"it",
+             "Costruire un kd-tree: P(L|C), P(R|C), il costo SAH, il piano migliore, TestTree"}}},
+          {"easy: one plane of the root, both sides full; medium: also the cheapest of three "
+           "planes and the nodes TestTree enters; hard: the plane in a child of the root, "
+           "cutting off empty space (the empty bonus)",
+           {{"it",
+             "facile: un piano della radice, con primitive da entrambe le parti; medio: anche il "
+             "meno costoso di tre piani e i nodi in cui entra TestTree; difficile: il piano in un "
+             "figlio della radice, che taglia via spazio vuoto (il bonus per lo spazio vuoto)"}}}},
+         makeKdTree},
+        {{"bvh",
+          {"A ray through a BVH: the boxes it enters, in order, and the primitives it tests",
+           {{"it",
+             "Un raggio attraverso una BVH: le scatole in cui entra, in ordine, e le primitive "
+             "che testa"}}},
+          {"easy: a few boxes, no two siblings overlap; medium: overlapping boxes, a leaf "
+           "entered whose primitives the ray misses; hard: more primitives, the ray enters both "
+           "of two overlapping boxes",
+           {{"it",
+             "facile: poche scatole, nessuna coppia di fratelli si interseca; medio: scatole che "
+             "si intersecano, una foglia in cui il raggio entra mancandone le primitive; "
+             "difficile: più primitive, il raggio entra in entrambe le scatole di una coppia che "
+             "si interseca"}}}},
+         makeBvh},
         {{"ray-sphere",
           {"Ray-sphere intersection: B, C, the discriminant, hit or miss and t",
            {{"it", "Intersezione raggio-sfera: B, C, il discriminante, colpisce o manca e t"}}},
