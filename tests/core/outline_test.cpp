@@ -292,3 +292,56 @@ TEST(Outline, NodeEnterNamesTheOutlinesNodes) {
 
 }  // namespace
 }  // namespace raystep
+
+namespace raystep {
+namespace {
+
+// With OutlineDetail::Primitives each leaf lists its primitives: every primitive in some leaf,
+// each inside (BVH) or meeting (kd-tree) its leaf's box; an interior node's children are the
+// nodes whose parent it is, left first; a kd node's axis is its plane's. Without, no ids.
+TEST(Outline, LeavesListTheirPrimitivesAndNodesTheirChildren) {
+    const Scene2D s = randomScene2D(40, 5);
+    for (const AccelKind kind : {AccelKind::KdTree, AccelKind::Bvh, AccelKind::BruteForce}) {
+        SCOPED_TRACE(static_cast<int>(kind));
+        const Accelerator2D accel = buildAccelerator2D(s, kind);
+        EXPECT_TRUE(outline(accel).leafPrimitives.empty());
+        const StructureOutline<2> o = outline(accel, OutlineDetail::Primitives);
+        std::vector<int> seen(s.primitiveCount(), 0);
+        for (std::uint32_t id = 0; id < o.nodes.size(); ++id) {
+            const OutlineNode<2>& n = o.nodes[id];
+            if (!n.leaf) {
+                EXPECT_EQ(n.children[0], id + 1);
+                for (const std::uint32_t c : n.children) {
+                    ASSERT_LT(c, o.nodes.size());
+                    EXPECT_EQ(o.nodes[c].parent, id);
+                }
+                if (n.plane) EXPECT_EQ(n.axis, o.planes[*n.plane].axis);
+                EXPECT_TRUE(n.axis == 0 || n.axis == 1);
+                EXPECT_TRUE(o.primitivesOf(id).empty());
+                continue;
+            }
+            const auto prims = o.primitivesOf(id);
+            EXPECT_EQ(prims.size(), n.primitives);
+            for (const std::uint32_t p : prims) {
+                ASSERT_LT(p, s.primitiveCount());
+                ++seen[p];
+                const BoxN<2> b = boxOf(s, p);
+                for (int a = 0; a < 2; ++a) {
+                    EXPECT_LE(b.lo[a], n.box.hi[a]);
+                    EXPECT_GE(b.hi[a], n.box.lo[a]);
+                    if (kind == AccelKind::Bvh) {
+                        EXPECT_GE(b.lo[a], n.box.lo[a]);
+                        EXPECT_LE(b.hi[a], n.box.hi[a]);
+                    }
+                }
+            }
+        }
+        for (std::uint32_t p = 0; p < s.primitiveCount(); ++p) {
+            EXPECT_GE(seen[p], 1) << "primitive " << p << " in no leaf";
+            if (kind != AccelKind::KdTree) EXPECT_EQ(seen[p], 1) << "primitive " << p;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace raystep

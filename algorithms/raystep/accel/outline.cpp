@@ -28,8 +28,17 @@ BoxN<Prims::N> primitivesBounds(const Prims& prims) {
     return b;
 }
 
+/// A leaf's primitive ids into the outline, when it lists them.
+template <int N>
+void listPrimitives(StructureOutline<N>& o, OutlineNode<N>& leaf, OutlineDetail detail,
+                    std::span<const std::uint32_t> ids) {
+    if (detail != OutlineDetail::Primitives) return;
+    leaf.firstPrimitive = static_cast<std::uint32_t>(o.leafPrimitives.size());
+    o.leafPrimitives.insert(o.leafPrimitives.end(), ids.begin(), ids.end());
+}
+
 template <typename Prims>
-StructureOutline<Prims::N> outlineOf(const BruteForceT<Prims>& bf) {
+StructureOutline<Prims::N> outlineOf(const BruteForceT<Prims>& bf, OutlineDetail detail) {
     // One leaf holding everything: the slides' RaySceneIntersection.
     StructureOutline<Prims::N> o;
     o.kind = AccelKind::BruteForce;
@@ -38,12 +47,15 @@ StructureOutline<Prims::N> outlineOf(const BruteForceT<Prims>& bf) {
     root.box = o.bounds;
     root.leaf = true;
     root.primitives = bf.primitives().count();
+    std::vector<std::uint32_t> all(root.primitives);
+    for (std::uint32_t p = 0; p < root.primitives; ++p) all[p] = p;
+    listPrimitives<Prims::N>(o, root, detail, all);
     o.nodes.push_back(root);
     return o;
 }
 
 template <typename Prims>
-StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g) {
+StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g, OutlineDetail) {
     constexpr int N = Prims::N;
     StructureOutline<N> o;
     o.kind = AccelKind::Grid;
@@ -61,7 +73,7 @@ StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g) {
 }
 
 template <typename Prims>
-StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd) {
+StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd, OutlineDetail detail) {
     constexpr int N = Prims::N;
     StructureOutline<N> o;
     o.kind = AccelKind::KdTree;
@@ -77,10 +89,14 @@ StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd) {
         o.maxDepth = std::max(o.maxDepth, out.depth);
         if (out.leaf) {
             out.primitives = n.count;
+            listPrimitives<N>(o, out, detail,
+                              std::span<const std::uint32_t>(kd.primIds()).subspan(n.index, n.count));
             return;
         }
         out.plane = static_cast<std::uint32_t>(o.planes.size());
         o.planes.push_back({id, n.axis, n.split, box});
+        out.axis = n.axis;
+        out.children = {id + 1, n.index};
         for (const std::uint32_t child : {id + 1, n.index}) {
             o.nodes[child].parent = id;
             o.nodes[child].depth = out.depth + 1;
@@ -90,7 +106,7 @@ StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd) {
 }
 
 template <typename Prims>
-StructureOutline<Prims::N> outlineOf(const Bvh<Prims>& bvh) {
+StructureOutline<Prims::N> outlineOf(const Bvh<Prims>& bvh, OutlineDetail detail) {
     constexpr int N = Prims::N;
     StructureOutline<N> o;
     o.kind = AccelKind::Bvh;
@@ -105,8 +121,13 @@ StructureOutline<Prims::N> outlineOf(const Bvh<Prims>& bvh) {
         o.maxDepth = std::max(o.maxDepth, out.depth);
         if (out.leaf) {
             out.primitives = nodes[id].count;
+            listPrimitives<N>(o, out, detail,
+                              std::span<const std::uint32_t>(bvh.primIds())
+                                  .subspan(nodes[id].index, nodes[id].count));
             continue;
         }
+        out.axis = nodes[id].axis;
+        out.children = {id + 1, nodes[id].index};
         for (const std::uint32_t child : {id + 1, nodes[id].index}) {
             o.nodes[child].parent = id;
             o.nodes[child].depth = out.depth + 1;
@@ -117,17 +138,17 @@ StructureOutline<Prims::N> outlineOf(const Bvh<Prims>& bvh) {
 }
 
 template <typename Prims>
-StructureOutline<Prims::N> outlineT(const AcceleratorT<Prims>& accel) {
-    return std::visit([](const auto& a) { return outlineOf(a); }, accel);
+StructureOutline<Prims::N> outlineT(const AcceleratorT<Prims>& accel, OutlineDetail detail) {
+    return std::visit([&](const auto& a) { return outlineOf(a, detail); }, accel);
 }
 
 }  // namespace
 
-StructureOutline<3> outline(const Accelerator& accel) {
-    return outlineT<ScenePrims>(accel);
+StructureOutline<3> outline(const Accelerator& accel, OutlineDetail detail) {
+    return outlineT<ScenePrims>(accel, detail);
 }
-StructureOutline<2> outline(const Accelerator2D& accel) {
-    return outlineT<Scene2DPrims>(accel);
+StructureOutline<2> outline(const Accelerator2D& accel, OutlineDetail detail) {
+    return outlineT<Scene2DPrims>(accel, detail);
 }
 
 }  // namespace raystep

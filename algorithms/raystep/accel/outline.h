@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace raystep {
@@ -22,6 +23,9 @@ struct OutlineNode {
     std::uint32_t primitives = 0;  // leaves: the primitives listed
     bool leaf = false;
     std::optional<std::uint32_t> plane;  // kd-tree interior: its plane in `planes`
+    int axis = -1;                       // interior: the axis its children are split along
+    std::array<std::uint32_t, 2> children{kNoId, kNoId};  // interior: the left, the right
+    std::uint32_t firstPrimitive = 0;  // leaves, in an outline with its primitives: leafPrimitives
 };
 
 /// A kd-tree node's split plane, within that node's box.
@@ -66,15 +70,27 @@ struct StructureOutline {
     std::optional<OutlineGrid<N>> grid;   // the grid's only
     bool overlapping = false;             // boxes may overlap (the BVH): draw them all, by depth
     std::uint32_t maxDepth = 0;
+    /// With OutlineDetail::Primitives: every leaf's primitive ids, a leaf's at its
+    /// firstPrimitive, `primitives` of them (a view needs no ids, and a big model's are many).
+    std::vector<std::uint32_t> leafPrimitives;
+    std::span<const std::uint32_t> primitivesOf(std::uint32_t id) const {
+        const OutlineNode<N>& n = nodes[id];
+        if (!n.leaf || leafPrimitives.empty()) return {};
+        return {leafPrimitives.data() + n.firstPrimitive, n.primitives};
+    }
     /// The box of node `id` (NodeEnter's node), if there is one.
     const BoxN<N>* nodeBox(std::uint32_t id) const {
         return id < nodes.size() ? &nodes[id].box : nullptr;
     }
 };
 
+/// What an outline holds besides the boxes: the leaves' primitive ids too (a practice's prompt
+/// names them), or not (a view's).
+enum class OutlineDetail { Boxes, Primitives };
 /// The outline of a built structure. O(nodes): a view makes it once per structure, not per frame.
-StructureOutline<3> outline(const Accelerator& accel);
-StructureOutline<2> outline(const Accelerator2D& accel);
+StructureOutline<3> outline(const Accelerator& accel, OutlineDetail detail = OutlineDetail::Boxes);
+StructureOutline<2> outline(const Accelerator2D& accel,
+                            OutlineDetail detail = OutlineDetail::Boxes);
 
 extern template struct OutlineGrid<2>;
 extern template struct OutlineGrid<3>;

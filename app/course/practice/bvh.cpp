@@ -5,7 +5,6 @@
 // overlapping siblings, on more primitives.
 #include "course/practice/tree2d.h"
 
-#include "raystep/accel/bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,15 +18,6 @@ namespace {
 using namespace tree2d;
 
 constexpr const char* kAxis[] = {"x", "y"};
-
-struct BoxNode {
-    std::uint32_t id;
-    BoxN<2> box;
-    bool leaf = false;
-    int axis = 0;
-    std::uint32_t first = 0, second = 0;  // interior: the children, the lower centres first
-    std::vector<std::uint32_t> prims;     // leaf
-};
 
 bool shareSpace(const BoxN<2>& a, const BoxN<2>& b) {
     return std::min(a.hi[0], b.hi[0]) > std::max(a.lo[0], b.lo[0]) &&
@@ -43,7 +33,7 @@ bool overlap(const BoxN<2>& a, const BoxN<2>& b) {
 
 struct BvhData {
     Scene2D scene;
-    std::vector<BoxNode> nodes;
+    std::vector<TreeNode> nodes;
     Ray2 ray;
 };
 
@@ -54,30 +44,21 @@ std::optional<BvhData> drawBvh(Random& r, PracticeLevel level) {
     // Overlap needs crowding: the harder levels draw into a smaller area.
     g.scene = drawPrims(r, count, easy ? r.between(7, 9) : r.between(5, 6),
                         easy ? r.between(5, 7) : r.between(4, 5));
-    BvhOptions options;
-    options.split = SplitMethod::Sah;
-    const Bvh<Scene2DPrims> bvh(Scene2DPrims(g.scene), options);
-    const auto& nodes = bvh.nodes();
-    if (nodes.size() < 3 || nodes.size() > (hard ? 11u : 9u)) return std::nullopt;
+    AccelOptions options;
+    options.bvh.split = SplitMethod::Sah;
+    g.nodes = treeNodes(g.scene, AccelKind::Bvh, options);
+    if (g.nodes.size() < 3 || g.nodes.size() > (hard ? 11u : 9u)) return std::nullopt;
     bool anyOverlap = false, anyShared = false;
-    for (std::uint32_t id = 0; id < nodes.size(); ++id) {
-        const BvhNode<2>& n = nodes[id];
-        BoxNode b{id, n.bounds, n.leaf(), n.axis, 0, 0, {}};
-        if (n.leaf()) {
-            for (std::uint32_t k = 0; k < n.count; ++k)
-                b.prims.push_back(bvh.primIds()[n.index + k]);
-        } else {
-            b.first = id + 1;
-            b.second = n.index;
-            anyOverlap = anyOverlap || overlap(nodes[b.first].bounds, nodes[b.second].bounds);
-            anyShared = anyShared || shareSpace(nodes[b.first].bounds, nodes[b.second].bounds);
-        }
-        g.nodes.push_back(b);
+    for (const TreeNode& n : g.nodes) {
+        if (n.leaf) continue;
+        const BoxN<2>&a = g.nodes[n.left].box, &b = g.nodes[n.right].box;
+        anyOverlap = anyOverlap || overlap(a, b);
+        anyShared = anyShared || shareSpace(a, b);
     }
     // easy: siblings share no space at all; above: two siblings overlap.
     if (easy ? anyShared : !anyOverlap) return std::nullopt;
     std::vector<double> xs, ys;
-    for (const BoxNode& n : g.nodes) {
+    for (const TreeNode& n : g.nodes) {
         xs.push_back(n.box.lo[0]);
         xs.push_back(n.box.hi[0]);
         ys.push_back(n.box.lo[1]);
@@ -90,15 +71,15 @@ std::optional<BvhData> drawBvh(Random& r, PracticeLevel level) {
     return std::nullopt;
 }
 
-std::string boxWords(const Scene2D& s, const std::vector<BoxNode>& nodes, bool it) {
+std::string boxWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool it) {
     std::string out;
-    for (const BoxNode& n : nodes) {
+    for (const TreeNode& n : nodes) {
         out += (n.id ? "; " : "") + std::string(it ? "scatola " : "box ") + std::to_string(n.id) +
                " " + corners(n.box, it);
         if (!n.leaf) {
             out += (it ? ", divisa lungo " : ", split along ") + std::string(kAxis[n.axis]) +
-                   (it ? ": figli " : ": children ") + std::to_string(n.first) +
-                   (it ? " e " : " and ") + std::to_string(n.second);
+                   (it ? ": figli " : ": children ") + std::to_string(n.left) +
+                   (it ? " e " : " and ") + std::to_string(n.right);
             continue;
         }
         std::string names;
@@ -114,7 +95,7 @@ std::string boxWords(const Scene2D& s, const std::vector<BoxNode>& nodes, bool i
 
 /// The walk is one for its level, as the trace shows it: 3 to 8 boxes entered; from medium on a
 /// leaf entered whose primitives all miss; at hard both boxes of an overlapping pair entered.
-bool walkFits(const Reference& ref, const std::vector<BoxNode>& nodes, PracticeLevel level) {
+bool walkFits(const Reference& ref, const std::vector<TreeNode>& nodes, PracticeLevel level) {
     const std::vector<int> enters = ref.nodes("enters");
     if (enters.size() < 3 || enters.size() > 8) return false;
     if (level == PracticeLevel::Easy) return true;
@@ -142,9 +123,9 @@ bool walkFits(const Reference& ref, const std::vector<BoxNode>& nodes, PracticeL
     const auto entered = [&](std::uint32_t id) {
         return std::find(enters.begin(), enters.end(), static_cast<int>(id)) != enters.end();
     };
-    for (const BoxNode& n : nodes)
-        if (!n.leaf && overlap(nodes[n.first].box, nodes[n.second].box) && entered(n.first) &&
-            entered(n.second))
+    for (const TreeNode& n : nodes)
+        if (!n.leaf && overlap(nodes[n.left].box, nodes[n.right].box) && entered(n.left) &&
+            entered(n.right))
             return true;
     return false;
 }
@@ -227,13 +208,13 @@ Draft makeBvh(Random& r, PracticeLevel level) {
     l["exercises"] = ex;
 
     ojson boxes = ojson::array();
-    for (const BoxNode& n : g.nodes) {
+    for (const TreeNode& n : g.nodes) {
         ojson j = boxJson(n.box, {{"id", n.id}});
         if (n.leaf) {
             j["prims"] = n.prims;
         } else {
             j["axis"] = kAxis[n.axis];
-            j["children"] = {n.first, n.second};
+            j["children"] = {n.left, n.right};
         }
         boxes.push_back(j);
     }
@@ -246,7 +227,7 @@ Draft makeBvh(Random& r, PracticeLevel level) {
         return ojson{{"enters", ref.nodes("enters")},
                      {"tests", static_cast<int>(ref.number("tests"))}};
     };
-    const std::vector<BoxNode> nodes = g.nodes;
+    const std::vector<TreeNode> nodes = g.nodes;
     d.accept = [nodes, level](const Reference& ref) { return walkFits(ref, nodes, level); };
     return d;
 }

@@ -7,7 +7,6 @@
 
 #include "course/compute.h"
 
-#include "raystep/accel/kdtree.h"
 
 #include <algorithm>
 #include <cctype>
@@ -100,25 +99,18 @@ std::string lowerFirst(std::string s) {
     return s;
 }
 
-struct TreeNode {
-    std::uint32_t id;
-    KdNode node;
-    BoxN<2> box;
-    std::vector<std::uint32_t> prims;  // a leaf's, in the engine's order
-};
-
 /// "node 0: the plane x = 3, children 1 (x < 3) and 4 (x > 3); leaf 1: circle 0; ...".
 std::string treeWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool it) {
     std::vector<std::string> parts;
     for (const TreeNode& n : nodes) {
         const std::string id = std::to_string(n.id);
-        if (!n.node.leaf()) {
-            const std::string a = kAxis[n.node.axis], at = num(n.node.split, it);
+        if (!n.leaf) {
+            const std::string a = kAxis[n.axis], at = num(n.split, it);
             parts.push_back(
                 (it ? "nodo " : "node ") + id + (it ? ": il piano `" : ": the plane `") + a +
-                " = " + num(n.node.split) + (it ? "`, figli " : "`, children ") +
-                std::to_string(n.id + 1) + " (" + a + " < " + at + ")" + (it ? " e " : " and ") +
-                std::to_string(n.node.index) + " (" + a + " > " + at + ")");
+                " = " + num(n.split) + (it ? "`, figli " : "`, children ") +
+                std::to_string(n.left) + " (" + a + " < " + at + ")" + (it ? " e " : " and ") +
+                std::to_string(n.right) + " (" + a + " > " + at + ")");
             continue;
         }
         std::vector<std::string> names;
@@ -148,35 +140,27 @@ std::optional<KdData> drawKd(Random& r, PracticeLevel level) {
     KdData g;
     g.scene =
         drawPrims(r, easy ? r.between(3, 4) : r.between(4, 5), r.between(6, 8), r.between(4, 6));
-    KdTreeOptions options;
-    options.split = SplitMethod::Sah;
-    options.cTrav = kCTrav;
-    options.cIsect = kCIsect;
-    options.emptyBonus = kEmptyBonus;
-    const KdTree<Scene2DPrims> tree(Scene2DPrims(g.scene), options);
-    g.root = tree.bounds();
-    tree.forEachNode([&](std::uint32_t id, const KdNode& n, const BoxN<2>& b) {
-        TreeNode t{id, n, b, {}};
-        for (std::uint32_t k = 0; n.leaf() && k < n.count; ++k)
-            t.prims.push_back(tree.primIds()[n.index + k]);
-        g.nodes.push_back(t);
-    });
-    std::sort(g.nodes.begin(), g.nodes.end(),
-              [](const TreeNode& a, const TreeNode& b) { return a.id < b.id; });
+    AccelOptions options;
+    options.kdtree.split = SplitMethod::Sah;
+    options.kdtree.cTrav = kCTrav;
+    options.kdtree.cIsect = kCIsect;
+    options.kdtree.emptyBonus = kEmptyBonus;
+    g.nodes = treeNodes(g.scene, AccelKind::KdTree, options);
+    g.root = g.nodes.front().box;
     if (g.nodes.size() < 3 || g.nodes.size() > (easy ? 99u : 11u)) return std::nullopt;
 
     g.box = g.root;
     if (hard) {
         // A child of the root whose primitives all lie on its side: it has a strip of empty
         // space to cut off, and its primitives' bounds are their own.
-        const KdNode& root = g.nodes[0].node;
+        const TreeNode& root = g.nodes[0];
         const auto [left, right] = g.root.splitAt(root.axis, root.split);
         for (std::uint32_t p = 0; p < g.scene.primitiveCount(); ++p) {
             const BoxN<2> b = g.scene.primitiveBounds(p);
             if (b.lo[root.axis] < root.split && b.hi[root.axis] > root.split) return std::nullopt;
         }
         const bool goLeft = r.chance(50);
-        g.node = goLeft ? 1 : root.index;
+        g.node = goLeft ? root.left : root.right;
         g.box = goLeft ? left : right;
     }
     const std::vector<BoxN<2>> prims = boundsIn(g.scene, g.box);
@@ -248,8 +232,8 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
             return std::string(it ? "La radice C, " : "The root C, ") + corners(box, it) +
                    (it ? ", con tutte le " : ", with all ") + std::to_string(held) +
                    (it ? " primitive" : " primitives");
-        const KdNode& root = g.nodes[0].node;
-        const bool left = g.node == 1;
+        const TreeNode& root = g.nodes[0];
+        const bool left = g.node == root.left;
         const std::string a = kAxis[root.axis], at = num(root.split, it);
         const std::string side = a + (left ? " < " : " > ") + at;
         if (it)
@@ -472,14 +456,14 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
         ojson nodes = ojson::array();
         for (const TreeNode& n : g.nodes) {
             ojson j = boxJson(n.box, {{"id", n.id}});
-            if (n.node.leaf()) {
+            if (n.leaf) {
                 ojson ids = ojson::array();
                 for (std::uint32_t p : n.prims) ids.push_back(p);
                 j["prims"] = ids;
             } else {
-                j["axis"] = kAxis[n.node.axis];
-                j["position"] = n.node.split;
-                j["children"] = {n.id + 1, n.node.index};
+                j["axis"] = kAxis[n.axis];
+                j["position"] = n.split;
+                j["children"] = {n.left, n.right};
             }
             nodes.push_back(j);
         }

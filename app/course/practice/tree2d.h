@@ -5,6 +5,8 @@
 // that keep a ray clear of every near tie (a box corner grazed, a circle touched, a segment's end).
 #include "course/practice/generator.h"
 
+#include "raystep/accel/accel.h"
+#include "raystep/accel/outline.h"
 #include "raystep/scene/scene2d.h"
 
 #include <algorithm>
@@ -40,6 +42,44 @@ inline Scene2D drawPrims(Random& r, int count, int w, int h) {
         s.segments.push_back({{double(ax), double(ay)}, {double(bx), double(by)}});
     }
     return s;
+}
+
+/// A node of the tree raystep builds, as a prompt and `given` describe it.
+struct TreeNode {
+    std::uint32_t id = 0;
+    BoxN<2> box;
+    bool leaf = false;
+    int axis = 0;         // interior: the axis of its split
+    double split = 0.0;   // a kd-tree's interior: its plane's position
+    std::uint32_t left = 0, right = 0;  // interior: its children (left: the lower side)
+    std::vector<std::uint32_t> prims;   // a leaf's, in the engine's order
+};
+
+/// The nodes of the structure `kind` raystep builds over `s`, by id, read from its outline
+/// (outline.h) as the views read it: no generator depends on one structure's type.
+inline std::vector<TreeNode> treeNodes(const Scene2D& s, AccelKind kind,
+                                       const AccelOptions& options) {
+    const Accelerator2D accel = buildAccelerator2D(s, kind, options);
+    const StructureOutline<2> o = outline(accel, OutlineDetail::Primitives);
+    std::vector<TreeNode> out;
+    for (std::uint32_t id = 0; id < o.nodes.size(); ++id) {
+        const OutlineNode<2>& n = o.nodes[id];
+        TreeNode t;
+        t.id = id;
+        t.box = n.box;
+        t.leaf = n.leaf;
+        if (n.leaf) {
+            const auto ids = o.primitivesOf(id);
+            t.prims.assign(ids.begin(), ids.end());
+        } else {
+            t.axis = n.axis;
+            t.left = n.children[0];
+            t.right = n.children[1];
+            if (n.plane) t.split = o.planes[*n.plane].position;
+        }
+        out.push_back(std::move(t));
+    }
+    return out;
 }
 
 inline ojson sceneJson(const Scene2D& s, const std::string& description) {
