@@ -212,10 +212,11 @@ int make(const HomeworkArgs& a, Language lang) {
             const PracticeInstance p = makePractice(t, seed, level);
             const Lesson& l = p.lesson;
             lessons[t] = l.id;
-            md += "## " + l.title.in(lang) + "\n\nLesson id: `" + l.id + "`\n\n" + l.text.in(lang) +
-                  "\n\n";
-            h += "<h2>" + html(l.title.in(lang)) + "</h2>\n<p>Lesson id: <code>" + html(l.id) +
-                 "</code></p>\n<p>" + prose(l.text.in(lang)) + "</p>\n";
+            md += "## " + l.title.in(lang) + "\n\n" + trf(lang, "Lesson id: %1", {"`" + l.id + "`"}) +
+                  "\n\n" + l.text.in(lang) + "\n\n";
+            h += "<h2>" + html(l.title.in(lang)) + "</h2>\n<p>" +
+                 trf(lang, "Lesson id: %1", {"<code>" + html(l.id) + "</code>"}) + "</p>\n<p>" +
+                 prose(l.text.in(lang)) + "</p>\n";
             if (auto png = practiceFigurePng(l)) {
                 const std::string fig = "figure-" + t + ".png";
                 out.emplace_back((dir / s.id / fig).string(), *png);
@@ -224,10 +225,21 @@ int make(const HomeworkArgs& a, Language lang) {
             }
             h += "<ol>\n";
             for (const Exercise& ex : l.exercises) {
-                md += "- **" + ex.id + "**: " + ex.prompt.in(lang) +
-                      "\n\n  Answer: ____________________\n\n";
-                h += "<li><b>" + html(ex.id) + "</b>: " + prose(ex.prompt.in(lang)) +
-                     "<br>Answer: ______________________________</li>\n";
+                md += "- **" + ex.id + "**: " + ex.prompt.in(lang) + "\n\n";
+                h += "<li><b>" + html(ex.id) + "</b>: " + prose(ex.prompt.in(lang));
+                // A choice is answered by its letter (key.csv's): the sheet lists the options.
+                if (!ex.choices.empty()) h += "<ol type=\"a\">";
+                for (std::size_t k = 0; k < ex.choices.size(); ++k) {
+                    const std::string letter(1, static_cast<char>('a' + k));
+                    md += "  " + letter + ") " + ex.choices[k].text.in(lang) + "\n";
+                    h += "<li>" + prose(ex.choices[k].text.in(lang)) + "</li>";
+                }
+                if (!ex.choices.empty()) {
+                    md += "\n";
+                    h += "</ol>";
+                }
+                md += "  " + tr(lang, "Answer") + ": ____________________\n\n";
+                h += "<br>" + html(tr(lang, "Answer")) + ": ______________________________</li>\n";
             }
             h += "</ol>\n";
             const nlohmann::ordered_json sheet = {

@@ -46,6 +46,21 @@ with tempfile.TemporaryDirectory() as tmp:
                 fail(f"{path}: the same command gave other bytes")
     if "Rossi, Anna" not in open(f"{hw}/ann/sheet.md", encoding="utf-8").read():
         fail("ann's sheet does not name her")
+    # A choice is answered by a letter in key.csv: the sheet lists its options, a) and b).
+    for name in ("sheet.md", "sheet.html"):
+        sheet = open(f"{hw}/ann/{name}", encoding="utf-8").read()
+        if name == "sheet.md" and not ("  a) " in sheet and "  b) " in sheet):
+            fail(f"ann's {name} lists no options for the choice exercise")
+        if name == "sheet.html" and '<ol type="a">' not in sheet:
+            fail(f"ann's {name} lists no options for the choice exercise")
+    cli("homework", "make", "--roster", roster, "--topics", "ray-sphere", "--seed", "9",
+        "--lang", "it", "-o", f"{tmp}/it")
+    sheet_it = open(f"{tmp}/it/ann/sheet.md", encoding="utf-8").read()
+    for word in ("Risposta:", "Id della lezione:"):
+        if word not in sheet_it:
+            fail(f"the Italian sheet lacks {word!r}")
+    if "Answer:" in sheet_it or "Lesson id:" in sheet_it:
+        fail("the Italian sheet has English labels")
     meta = json.load(open(f"{hw}/homework.json"))
     lessons = {s["id"]: s["lessons"] for s in meta["students"]}
     if len({l["dda-2d"] for l in lessons.values()}) != 3:

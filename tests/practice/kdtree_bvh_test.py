@@ -8,20 +8,13 @@ same bytes; most instances of a level differ; a `-o` file validates and its own 
 marks in both languages.
 
 Usage: kdtree_bvh_test.py RAYSTEP_CLI [SEEDS]"""
-import json
 import math
-import subprocess
 import sys
-import tempfile
 from fractions import Fraction as F
 
-LEVELS = ("easy", "medium", "hard")
+import practice_sweep
+
 AXES = {"x": 0, "y": 1}
-
-
-def run(cli, topic, seed, level):
-    return subprocess.run([cli, "practice", "make", topic, "--seed", str(seed), "--level", level,
-                           "--json"], check=True, capture_output=True).stdout
 
 
 def close(got, want):
@@ -370,53 +363,10 @@ def main():
     cli = sys.argv[1]
     seeds = int(sys.argv[2]) if len(sys.argv) > 2 else 200
     errors = []
-    for topic, check in (("kdtree", check_kdtree), ("bvh", check_bvh)):
-        for level in LEVELS:
-            seen, kinds = set(), {}
-            for seed in range(1, seeds + 1):
-                raw = run(cli, topic, seed, level)
-                where = "%s %s seed %d" % (topic, level, seed)
-
-                def fail(msg, where=where):
-                    errors.append("%s: %s" % (where, msg))
-
-                if seed <= 3 and run(cli, topic, seed, level) != raw:
-                    fail("two runs differ")
-                j = json.loads(raw)
-                kind = check(j, level, fail)
-                kinds[kind] = kinds.get(kind, 0) + 1
-                seen.add(json.dumps(j["given"], sort_keys=True))
-            if len(seen) < 0.9 * seeds:
-                errors.append("%s %s: only %d of %d instances distinct"
-                              % (topic, level, len(seen), seeds))
-            print("%s %s: %d distinct, %s" % (topic, level, len(seen), kinds))
-    # The lesson file (-o) validates, and its own key scores full marks, in both languages.
-    with tempfile.TemporaryDirectory() as tmp:
-        for topic in ("kdtree", "bvh"):
-            for level in LEVELS:
-                for lang in ("en", "it"):
-                    path = "%s/%s-%s-%s.json" % (tmp, topic, level, lang)
-                    subprocess.run([cli, "practice", "make", topic, "--seed", "7", "--level",
-                                    level, "--lang", lang, "-o", path], check=True,
-                                   capture_output=True)
-                    subprocess.run([cli, "lesson", "validate", path], check=True,
-                                   capture_output=True)
-                    key = subprocess.run([cli, "lesson", "key", path], check=True,
-                                         capture_output=True).stdout
-                    with open(tmp + "/key.json", "wb") as f:
-                        f.write(key)
-                    grade = json.loads(subprocess.run(
-                        [cli, "lesson", "check", path, "--answers", tmp + "/key.json", "--json",
-                         "--lang", lang], check=True, capture_output=True).stdout)
-                    if grade["score"] != grade["out_of"] or grade["out_of"] < 2:
-                        errors.append("%s: its own key does not score full marks: %s"
-                                      % (path, grade))
-    for e in errors[:40]:
-        print("FAIL", e)
-    if errors:
-        print("%d failures" % len(errors))
-        return 1
-    return 0
+    checks = (("kdtree", check_kdtree), ("bvh", check_bvh))
+    practice_sweep.sweep(cli, checks, seeds, 3, errors)
+    practice_sweep.lesson_files_score(cli, [t for t, _ in checks], errors)
+    return practice_sweep.finish(errors)
 
 
 if __name__ == "__main__":

@@ -4,20 +4,11 @@ recomputed from `given` with exact fractions (no raystep code), the level rules 
 the same seed gives the same bytes, and the instances of a level are mostly distinct.
 
 Usage: ray_shapes_test.py RAYSTEP_CLI [SEEDS]"""
-import json
 import math
-import subprocess
 import sys
 from fractions import Fraction as F
 
-LEVELS = ("easy", "medium", "hard")
-
-
-def run(cli, topic, seed, level):
-    out = subprocess.run([cli, "practice", "make", topic, "--seed", str(seed), "--level", level,
-                          "--json"], check=True, capture_output=True)
-    return out.stdout
-
+import practice_sweep
 
 def close(got, want):
     return got is not None and abs(got - want) <= 1e-9 * max(1.0, abs(float(want)))
@@ -136,32 +127,10 @@ def main():
     cli = sys.argv[1]
     seeds = int(sys.argv[2]) if len(sys.argv) > 2 else 150
     errors = []
-    for topic, check in (("ray-sphere", check_sphere), ("ray-triangle", check_triangle)):
-        for level in LEVELS:
-            seen, kinds = set(), {}
-            for seed in range(1, seeds + 1):
-                raw = run(cli, topic, seed, level)
-                where = "%s %s seed %d" % (topic, level, seed)
-
-                def fail(msg, where=where):
-                    errors.append("%s: %s" % (where, msg))
-
-                if seed <= 5 and run(cli, topic, seed, level) != raw:
-                    fail("two runs differ")
-                j = json.loads(raw)
-                kind = check(j, level, fail)
-                kinds[kind] = kinds.get(kind, 0) + 1
-                seen.add(json.dumps(j["given"], sort_keys=True))
-            if len(seen) < 0.9 * seeds:
-                errors.append("%s %s: only %d of %d instances distinct"
-                              % (topic, level, len(seen), seeds))
-            print("%s %s: %d distinct, %s" % (topic, level, len(seen), kinds))
-    for e in errors[:40]:
-        print("FAIL", e)
-    if errors:
-        print("%d failures" % len(errors))
-        return 1
-    return 0
+    checks = (("ray-sphere", check_sphere), ("ray-triangle", check_triangle))
+    practice_sweep.sweep(cli, checks, seeds, 5, errors)
+    practice_sweep.lesson_files_score(cli, [t for t, _ in checks], errors)
+    return practice_sweep.finish(errors)
 
 
 if __name__ == "__main__":
