@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <functional>
 
@@ -24,6 +25,17 @@ inline bool waitFor(const std::function<bool()>& done, int ms = 20000) {
     }
     return true;
 }
+
+/// A main window of 1500 x 900, shown, active and exposed: where most GUI tests start.
+struct ShownWindow {
+    MainWindow w;
+    ShownWindow() {
+        w.resize(1500, 900);
+        w.show();
+        w.activateWindow();
+        EXPECT_TRUE(QTest::qWaitForWindowExposed(&w));
+    }
+};
 
 /// Opens a lesson (built-in id or number, or a file) and waits for it; false if it failed.
 inline bool openLesson(MainWindow& w, const QString& lesson) {

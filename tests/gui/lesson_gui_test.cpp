@@ -83,16 +83,6 @@ int pixelsNear(const QImage& image, int r, int g, int b, int tolerance = 6) {
     return n;
 }
 
-struct Window {
-    MainWindow w;
-    Window() {
-        w.resize(1500, 900);
-        w.show();
-        w.activateWindow();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&w));
-    }
-};
-
 /// Writes a lesson file in `dir` (lessons of the test's own, so that the content helpers'
 /// edits of the built-in lessons do not change what these tests check).
 
@@ -126,7 +116,7 @@ TEST(Quiz, AnOpenExerciseStopsEveryWayOfMovingTheReplay) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)))
         << w.lastOpenError().toStdString();
@@ -226,7 +216,7 @@ TEST(Quiz, LecturerModeAndPuttingTheExerciseAwayLiftTheLimit) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
     LessonPanel* p = w.lessonPanel();
@@ -267,7 +257,7 @@ TEST(Quiz, AStepPastAnUnsolvedExerciseWaitsAndPageDownNeverLeavesTheLesson) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "quiz.json", kQuizLesson)));
     LessonPanel* p = w.lessonPanel();
@@ -316,7 +306,7 @@ const QByteArray kPixelLesson = R"({
 // lesson's trace, exercise and filter.
 TEST(Explore, TheLessonsPixelIsMarkedAndEscReturnsFromAPixelClick) {
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, writeLesson(dir, "pixel.json", kPixelLesson)))
         << w.lastOpenError().toStdString();
@@ -413,7 +403,7 @@ TEST(Lesson, ErrataBoxesShowAndHideAndHintsComeOneAPress) {
     QTemporaryDir dir;
     const QString path = lessonWithErrata(dir);
     {
-        Window win;
+        ShownWindow win;
         MainWindow& w = win.w;
         ASSERT_TRUE(openLesson(w, path)) << w.lastOpenError().toStdString();
         auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
@@ -455,7 +445,7 @@ TEST(Lesson, ErrataBoxesShowAndHideAndHintsComeOneAPress) {
         p->selectExercise(1);
         EXPECT_TRUE(p->hintsText().isEmpty());
     }
-    Window again;
+    ShownWindow again;
     EXPECT_FALSE(again.w.showErrataAction()->isChecked());  // remembered
     QSettings().remove("lessons/showErrata");
 }
@@ -463,7 +453,7 @@ TEST(Lesson, ErrataBoxesShowAndHideAndHintsComeOneAPress) {
 // A lesson text ending in a list: the step that follows it is not drawn as one more, empty, bullet
 // (the block inserted after the list used to inherit the list's format).
 TEST(Lesson, NoEmptyBulletAfterALessonTextThatEndsInAList) {
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, "2")) << w.lastOpenError().toStdString();
     auto* text = w.lessonPanel()->findChild<QTextBrowser*>("lessonText");
@@ -481,7 +471,7 @@ TEST(Lesson, NoEmptyBulletAfterALessonTextThatEndsInAList) {
 // The filter matches the trace's kind names (what lessons use) as well as the shown text, and
 // after a change of filter the highlighted row is the cursor's event, not a stale row.
 TEST(EventListFilter, MatchesKindNamesAndTheHighlightFollowsTheCursor) {
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     w.openScene("lecture-grid", AccelKind::Grid, true);
     ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
@@ -523,7 +513,7 @@ TEST(EventListFilter, MatchesKindNamesAndTheHighlightFollowsTheCursor) {
 // built node; the quiz lesson (first step after its one dda_setup) to the next DDA step.
 TEST(TimelineKind, FollowsTheLesson) {
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     auto* combo = w.timeline()->findChild<QComboBox*>("jumpKind");
     ASSERT_NE(combo, nullptr);
@@ -552,7 +542,7 @@ TEST(TimelineKind, FollowsTheLesson) {
 // are in those colours; the 2D view's tested, skipped and hit primitives use the palette's roles.
 TEST(Palette, TheViewsAndTheLegendUseThePalette) {
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     w.openScene("whitted", AccelKind::Grid, /*quiet=*/true, {}, /*renderImage=*/false);
     ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
@@ -593,7 +583,7 @@ TEST(Palette, TheViewsAndTheLegendUseThePalette) {
 // A ray that ends on a triangle: the inspector shows that hit's barycentric u and v, as the
 // event has them (lesson 12 asks for v).
 TEST(Inspector, ATriangleHitShowsItsBarycentricUV) {
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     w.openScene("whitted", AccelKind::Grid, /*quiet=*/true, {}, /*renderImage=*/false);
     ASSERT_TRUE(w.waitUntilIdle() && w.lastOpenOk().value_or(false));
@@ -653,7 +643,7 @@ TEST(NewKinds, ChoiceSequenceAndComputeAreAnsweredAsAStudentWould) {
     QFile::remove(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                   "/progress.json");
     QTemporaryDir dir;
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, lessonWithNewKinds(dir))) << w.lastOpenError().toStdString();
     LessonPanel* p = w.lessonPanel();
@@ -750,7 +740,7 @@ TEST(NewKinds, ASweepPickIsGradedFromTheSweepsTable) {
     out.write(QJsonDocument(lesson).toJson());
     out.close();
 
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     ASSERT_TRUE(openLesson(w, path)) << w.lastOpenError().toStdString();
     LessonPanel* p = w.lessonPanel();

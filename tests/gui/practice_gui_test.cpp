@@ -25,16 +25,6 @@
 namespace raystep::gui {
 namespace {
 
-struct Window {
-    MainWindow w;
-    Window() {
-        w.resize(1500, 900);
-        w.show();
-        w.activateWindow();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&w));
-    }
-};
-
 QString progressPath() {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/progress.json";
 }
@@ -82,7 +72,7 @@ void answerAllRight(LessonPanel* p) {
 TEST(Practice, ThreeRightInARowMasterATopicAndAWrongFirstAnswerStartsAgain) {
     QFile::remove(progressPath());
     QSettings().remove("practice");
-    Window win;
+    ShownWindow win;
     MainWindow& w = win.w;
     LessonPanel* p = w.lessonPanel();
     auto* bar = w.findChild<QWidget*>("practiceBar");
