@@ -174,6 +174,17 @@ with tempfile.TemporaryDirectory() as tmp:
         fail("dda.xml", f"{n} questions, expected 140 ({out.strip()})")
     run("export", "moodle", "--topic", "dda-3d", "--variants", "5", "-o", f"{tmp}/dda3.xml")
     check_xml(f"{tmp}/dda3.xml", False)
+    # Every topic `practice list` names, at every level: read back against the key.
+    topics = [line.split()[0] for line in subprocess.run(
+        [CLI, "practice", "list"], capture_output=True, text=True, check=True).stdout.splitlines()
+        if line and not line[0].isspace()]
+    if len(topics) < 6:
+        fail("practice list", f"only {topics}")
+    for topic in topics:
+        for level in ("easy", "medium", "hard"):
+            run("export", "moodle", "--topic", topic, "--variants", "2", "--level", level, "-o",
+                f"{tmp}/{topic}-{level}.xml")
+            check_xml(f"{tmp}/{topic}-{level}.xml", False)
     for lesson in ("6", "7", "11", "12"):
         check_xml(_ := f"{tmp}/l{lesson}.xml", False) if run(
             "export", "moodle", lesson, "-o", f"{tmp}/l{lesson}.xml") else None
