@@ -4,6 +4,7 @@
 #include "progress.h"
 
 #include "raystep/base/file_error.h"
+#include "raystep/base/i18n.h"
 #include "raystep/scene/model_import.h"
 
 #include <tbb/info.h>
@@ -187,6 +188,18 @@ void addMaxEventsOption(CLI::App* cmd, std::size_t& cap) {
     cmd->add_option("--max-events", cap, "Stop recording after this many events")
         ->transform(wholeNumber(1, 20'000'000))
         ->capture_default_str();
+}
+
+CLI::Option* addPracticeOptions(CLI::App* cmd, std::uint64_t& seed, std::uint64_t maxSeed,
+                                const std::string& seedHelp, std::string& level,
+                                const std::string& levelHelp, std::string& lang,
+                                const std::string& langHelp) {
+    CLI::Option* s = cmd->add_option("--seed", seed, seedHelp)->check(wholeNumber(0, maxSeed));
+    cmd->add_option("--level", level, levelHelp)
+        ->check(CLI::IsMember({"easy", "medium", "hard"}))
+        ->capture_default_str();
+    cmd->add_option("--lang", lang, langHelp + ": " + languageChoices())->capture_default_str();
+    return s;
 }
 
 std::optional<int> parseInt(const std::string& text, int lo, int hi) {

@@ -69,6 +69,14 @@ CLI::Validator finiteNumber();
 /// Adds --max-events to a command that records events: past `cap` the trace file is cut short.
 void addMaxEventsOption(CLI::App* cmd, std::size_t& cap);
 
+/// --seed (a whole number up to `maxSeed`), --level (easy, medium or hard) and --lang of a
+/// command that makes practice instances: practice make, export moodle, homework make. The
+/// seed's option is returned (a command may require it).
+CLI::Option* addPracticeOptions(CLI::App* cmd, std::uint64_t& seed, std::uint64_t maxSeed,
+                                const std::string& seedHelp, std::string& level,
+                                const std::string& levelHelp, std::string& lang,
+                                const std::string& langHelp);
+
 /// Whole number from text, within [lo, hi]; nullopt otherwise.
 std::optional<int> parseInt(const std::string& text, int lo, int hi);
 

@@ -23,13 +23,9 @@ void addExportCommand(CLI::App& app, ExportArgs& a) {
     a.moodle->add_option("--variants", a.variants, "Variants of each exercise (--topic)")
         ->check(CLI::Range(1, 500))
         ->capture_default_str();
-    a.moodle->add_option("--seed", a.seed, "The first variant's seed; the others follow it")
-        ->check(wholeNumber(0, UINT64_MAX - 500))
-        ->capture_default_str();
-    a.moodle->add_option("--level", a.level, "easy, medium or hard (--topic)")
-        ->check(CLI::IsMember({"easy", "medium", "hard"}))
-        ->capture_default_str();
-    a.moodle->add_option("--lang", a.lang, "Language of the questions: " + languageChoices())
+    addPracticeOptions(a.moodle, a.seed, UINT64_MAX - 500,
+                       "The first variant's seed; the others follow it", a.level,
+                       "easy, medium or hard (--topic)", a.lang, "Language of the questions")
         ->capture_default_str();
     a.moodle->add_option("--format", a.format, "xml (Moodle XML, with figures) or gift (text)")
         ->check(CLI::IsMember({"xml", "gift"}))

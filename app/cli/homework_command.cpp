@@ -404,14 +404,9 @@ void addHomeworkCommand(CLI::App& app, HomeworkArgs& a) {
     a.make->add_option("--roster", a.roster, "Moodle-style CSV with an id column")->required();
     a.make->add_option("--topics", a.topics, "Topics of `practice list`, comma-separated")
         ->required();
-    a.make->add_option("--seed", a.seed, "The homework's seed")
-        ->check(wholeNumber(0, UINT64_MAX))
+    addPracticeOptions(a.make, a.seed, UINT64_MAX, "The homework's seed", a.level,
+                       "easy, medium or hard", a.lang, "Language of the texts")
         ->required();
-    a.make->add_option("--level", a.level, "easy, medium or hard")
-        ->check(CLI::IsMember({"easy", "medium", "hard"}))
-        ->capture_default_str();
-    a.make->add_option("--lang", a.lang, "Language of the texts: " + languageChoices())
-        ->capture_default_str();
     a.make->add_option("-o,--output", a.output, "The homework folder")
         ->check(fileName())
         ->required();

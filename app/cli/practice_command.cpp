@@ -21,14 +21,10 @@ void addPracticeCommand(CLI::App& app, PracticeArgs& a) {
         "One instance: its exercises (Markdown), its data and answers (--json), or its "
         "lesson file (-o)");
     a.make->add_option("TOPIC", a.topic, "A topic of `practice list`")->required();
-    a.make->add_option("--seed", a.seed, "The instance: the same seed gives the same one")
-        ->check(wholeNumber(0, UINT64_MAX))
+    addPracticeOptions(a.make, a.seed, UINT64_MAX,
+                       "The instance: the same seed gives the same one", a.level,
+                       "easy, medium or hard", a.lang, "Language of the texts")
         ->required();
-    a.make->add_option("--level", a.level, "easy, medium or hard")
-        ->check(CLI::IsMember({"easy", "medium", "hard"}))
-        ->capture_default_str();
-    a.make->add_option("--lang", a.lang, "Language of the texts: " + languageChoices())
-        ->capture_default_str();
     a.make->add_flag("--json", a.json,
                      "Print {\"format\": \"raystep-practice\", \"given\", \"answers\", ...}");
     a.make

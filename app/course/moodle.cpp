@@ -272,6 +272,16 @@ std::string typeName(Question::Type t) {
     return "numerical";
 }
 
+/// A source's questions by category: one category per exercise, every variant of it in it.
+std::vector<Question> sortedQuestions(const MoodleSource& src, Language lang,
+                                      std::vector<std::string>& skipped) {
+    std::vector<Question> qs = questionsOf(src, lang, skipped);
+    std::stable_sort(qs.begin(), qs.end(), [](const Question& a, const Question& b) {
+        return a.category < b.category;
+    });
+    return qs;
+}
+
 }  // namespace
 
 MoodleExport moodleXml(const std::vector<MoodleSource>& sources, Language lang) {
@@ -280,11 +290,7 @@ MoodleExport moodleXml(const std::vector<MoodleSource>& sources, Language lang) 
     x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n";
     std::string lastCategory;
     for (const MoodleSource& src : sources) {
-        std::vector<Question> qs = questionsOf(src, lang, out.skipped);
-        // One category per exercise: every variant of it lands in the same one.
-        std::stable_sort(qs.begin(), qs.end(), [](const Question& a, const Question& b) {
-            return a.category < b.category;
-        });
+        const std::vector<Question> qs = sortedQuestions(src, lang, out.skipped);
         for (const Question& q : qs) {
             if (q.category != lastCategory) {
                 x += "  <question type=\"category\">\n    <category><text>$course$/top/" +
@@ -347,10 +353,7 @@ MoodleExport moodleGift(const std::vector<MoodleSource>& sources, Language lang)
     std::string& g = out.text;
     std::string lastCategory;
     for (const MoodleSource& src : sources) {
-        std::vector<Question> qs = questionsOf(src, lang, out.skipped);
-        std::stable_sort(qs.begin(), qs.end(), [](const Question& a, const Question& b) {
-            return a.category < b.category;
-        });
+        const std::vector<Question> qs = sortedQuestions(src, lang, out.skipped);
         for (const Question& q : qs) {
             if (q.category != lastCategory) {
                 g += "$CATEGORY: $course$/top/" + q.category + "\n\n";

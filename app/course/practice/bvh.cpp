@@ -57,18 +57,10 @@ std::optional<BvhData> drawBvh(Random& r, PracticeLevel level) {
     }
     // easy: siblings share no space at all; above: two siblings overlap.
     if (easy ? anyShared : !anyOverlap) return std::nullopt;
-    std::vector<double> xs, ys;
-    for (const TreeNode& n : g.nodes) {
-        xs.push_back(n.box.lo[0]);
-        xs.push_back(n.box.hi[0]);
-        ys.push_back(n.box.lo[1]);
-        ys.push_back(n.box.hi[1]);
-    }
-    for (int tries = 0; tries < 20; ++tries) {
-        g.ray = drawRay(r, g.nodes[0].box);
-        if (rayClear(g.scene, g.ray, xs, ys)) return g;
-    }
-    return std::nullopt;
+    const auto ray = clearRay(r, g.scene, g.nodes[0].box, g.nodes);
+    if (!ray) return std::nullopt;
+    g.ray = *ray;
+    return g;
 }
 
 std::string boxWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool it) {

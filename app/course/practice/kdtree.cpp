@@ -192,18 +192,10 @@ std::optional<KdData> drawKd(Random& r, PracticeLevel level) {
     g.cheapest = static_cast<int>(std::min_element(costs.begin(), costs.end()) - costs.begin());
 
     // The ray for TestTree, clear of every line the tree draws.
-    std::vector<double> xs, ys;
-    for (const TreeNode& n : g.nodes) {
-        xs.push_back(n.box.lo[0]);
-        xs.push_back(n.box.hi[0]);
-        ys.push_back(n.box.lo[1]);
-        ys.push_back(n.box.hi[1]);
-    }
-    for (int tries = 0; tries < 20; ++tries) {
-        g.ray = drawRay(r, g.root);
-        if (rayClear(g.scene, g.ray, xs, ys)) return g;
-    }
-    return std::nullopt;
+    const auto ray = clearRay(r, g.scene, g.root, g.nodes);
+    if (!ray) return std::nullopt;
+    g.ray = *ray;
+    return g;
 }
 
 }  // namespace

@@ -217,4 +217,22 @@ inline bool rayClear(const Scene2D& s, const Ray2& ray, std::vector<double> xs,
     return true;
 }
 
+/// A ray from outside `box` clear of every near tie with the nodes' boxes and the primitives
+/// (rayClear), drawn up to 20 times; nullopt if none is.
+inline std::optional<Ray2> clearRay(Random& r, const Scene2D& s, const BoxN<2>& box,
+                                   const std::vector<TreeNode>& nodes) {
+    std::vector<double> xs, ys;
+    for (const TreeNode& n : nodes) {
+        xs.push_back(n.box.lo[0]);
+        xs.push_back(n.box.hi[0]);
+        ys.push_back(n.box.lo[1]);
+        ys.push_back(n.box.hi[1]);
+    }
+    for (int tries = 0; tries < 20; ++tries) {
+        const Ray2 ray = drawRay(r, box);
+        if (rayClear(s, ray, xs, ys)) return ray;
+    }
+    return std::nullopt;
+}
+
 }  // namespace raystep::practice::tree2d
