@@ -23,6 +23,18 @@ const std::vector<Generator>& generators() {
              "facile: dall'interno, direzioni positive; medio: ogni direzione, anche da "
              "fuori; difficile: pareggi"}}}},
          makeDda3D},
+        {{"mailbox",
+          {"Mailboxing: the primitive tests a grid walk makes without and with a mailbox",
+           {{"it",
+             "Mailboxing: i test con le primitive di un attraversamento della griglia senza e "
+             "con il mailboxing"}}},
+          {"easy: one primitive over two cells; medium: several primitives; hard: the ray hits "
+           "a primitive beyond the cell that first tests it, and the walk stops early",
+           {{"it",
+             "facile: una primitiva su due celle; medio: più primitive; difficile: il raggio "
+             "colpisce una primitiva oltre la cella che la testa per prima, e l'attraversamento "
+             "si ferma prima"}}}},
+         makeMailbox},
         {{"ray-sphere",
           {"Ray-sphere intersection: B, C, the discriminant, hit or miss and t",
            {{"it", "Intersezione raggio-sfera: B, C, il discriminante, colpisce o manca e t"}}},
