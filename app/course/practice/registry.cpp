@@ -57,6 +57,18 @@ const std::vector<Generator>& generators() {
              "punti esterni al triangolo; difficile: il piano dietro l'origine, u + v appena "
              "sopra 1"}}}},
          makeRayTriangle},
+        {{"phong",
+          {"Phong shading at a hit point: n.l, the diffuse term, r.v and the specular term",
+           {{"it",
+             "Lo shading di Phong in un punto colpito: n.l, il termine diffuso, r.v e il termine "
+             "speculare"}}},
+          {"easy: the diffuse term, the light in front; medium: the specular term too; hard: the "
+           "light behind the surface, or the mirrored light turned away from the eye",
+           {{"it",
+             "facile: il termine diffuso, la luce davanti; medio: anche il termine speculare; "
+             "difficile: la luce dietro la superficie, o la luce riflessa che si allontana "
+             "dall'occhio"}}}},
+         makePhong},
     };
     return list;
 }
