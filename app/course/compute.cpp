@@ -162,8 +162,8 @@ Evaluation evaluate(const ComputeGiven& g) {
             // The renderer's own phong() (render/shading.h), one grey channel.
             const V3 n = vec(g.normal), l = vec(g.toLight);
             const V3 v = g.specular ? vec(g.toViewer) : n;
-            const PhongTerms t = phong(n, l, v, Color(g.intensity), Color(g.kd), Color(g.ks),
-                                       g.shininess);
+            const PhongTerms t =
+                phong(n, l, v, Color(g.intensity), Color(g.kd), Color(g.ks), g.shininess);
             e.q["n.l"] = glm::dot(n, l);
             e.q["diffuse"] = t.diffuse.x;
             if (g.specular) {
@@ -321,8 +321,8 @@ std::string computeWorking(const Exercise& ex, Language lang) {
         case Shape::Shading: {
             const V3 nn = vec(g.normal), l = vec(g.toLight);
             const double nl = q("n.l");
-            std::string s = "n·l = " + n(nn.x) + " · " + n(l.x) + " + " + n(nn.y) + " · " +
-                            n(l.y) + " + " + n(nn.z) + " · " + n(l.z) + " = " + v(nl);
+            std::string s = "n·l = " + n(nn.x) + " · " + n(l.x) + " + " + n(nn.y) + " · " + n(l.y) +
+                            " + " + n(nn.z) + " · " + n(l.z) + " = " + v(nl);
             if (what == "n.l") return s + ".";
             if (what == "diffuse") {
                 if (nl <= 0.0)
@@ -335,9 +335,9 @@ std::string computeWorking(const Exercise& ex, Language lang) {
             }
             const V3 r = reflect(-l, nn), eye = vec(g.toViewer);
             s += "; r = 2 (n·l) n − l = 2 · " + n(nl) + " · " + tuple(nn, lang) + " − " +
-                 tuple(l, lang) + " = " + tuple(r, lang) + "; r·v = " + n(r.x) + " · " +
-                 n(eye.x) + " + " + n(r.y) + " · " + n(eye.y) + " + " + n(r.z) + " · " +
-                 n(eye.z) + " = " + v(q("r.v"));
+                 tuple(l, lang) + " = " + tuple(r, lang) + "; r·v = " + n(r.x) + " · " + n(eye.x) +
+                 " + " + n(r.y) + " · " + n(eye.y) + " + " + n(r.z) + " · " + n(eye.z) + " = " +
+                 v(q("r.v"));
             if (what == "r.v") return s + ".";
             if (nl <= 0.0)
                 return s + "; " +
@@ -350,8 +350,8 @@ std::string computeWorking(const Exercise& ex, Language lang) {
                           "r·v ≤ 0: the mirrored light points away from the eye, so "
                           "max(0, r·v) = 0 and the specular term is 0.");
             return s + "; I_spec = I · k_s · max(0, r·v)^" + v(g.shininess) + " = " +
-                   n(g.intensity) + " · " + n(g.ks) + " · " + n(q("r.v")) + "^" +
-                   v(g.shininess) + " = " + v(q("specular")) + ".";
+                   n(g.intensity) + " · " + n(g.ks) + " · " + n(q("r.v")) + "^" + v(g.shininess) +
+                   " = " + v(q("specular")) + ".";
         }
     }
     return "";

@@ -180,7 +180,7 @@ struct ComputeGiven {
     // the material's kd, ks and shininess, the light's intensity (one grey value).
     std::array<double, 3> toLight{}, toViewer{};
     double kd = 0.0, ks = 0.0, shininess = 1.0, intensity = 1.0;
-    bool specular = false;  // v, ks and shininess given: r.v and the specular term defined
+    bool specular = false;        // v, ks and shininess given: r.v and the specular term defined
     std::vector<double> numbers;  // every number given, as written, for the prompt check
 };
 

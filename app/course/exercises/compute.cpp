@@ -39,8 +39,9 @@ constexpr int kThree = 1, kTwoOrThree = 3;
 ComputeGiven readGiven(const Reader& r, const json& j, const std::string& path) {
     using Shape = ComputeGiven::Shape;
     r.requireObject(j, path);
-    r.checkKeys(j, path,
-                {"ray", "sphere", "triangle", "plane", "box", "grid", "node", "nl", "nr", "shading"});
+    r.checkKeys(
+        j, path,
+        {"ray", "sphere", "triangle", "plane", "box", "grid", "node", "nl", "nr", "shading"});
     ComputeGiven g;
     auto& nums = g.numbers;
     const auto child = [&](const char* key) { return JsonLineMap::child(path, key); };

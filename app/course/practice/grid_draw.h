@@ -154,10 +154,10 @@ bool startFits(const DdaData<N>& g, PracticeLevel level) {
 
 /// What a recorded walk looks like to a student doing it by hand.
 struct WalkShape {
-    int cells = 0;          // dda_cell events
-    int ties = 0;           // cells after the first entered by stepping two axes at once
-    bool hit = false;       // a ray_hit ends the trace
-    bool readable = true;   // no two crossings within 0.05 (nor equal, unless ties are allowed)
+    int cells = 0;         // dda_cell events
+    int ties = 0;          // cells after the first entered by stepping two axes at once
+    bool hit = false;      // a ray_hit ends the trace
+    bool readable = true;  // no two crossings within 0.05 (nor equal, unless ties are allowed)
 };
 
 /// The walk of the log's ray: its cells, its ties, and whether it can be done by hand: every

@@ -91,7 +91,8 @@ std::optional<Prim> realise(Random& r, const DdaData<2>& g, std::array<int, 2> l
             if (span > 2) return std::nullopt;
             if (span == 1) {
                 if (p.r > 4) return std::nullopt;
-                p.a[k] = 10L * lo[k] + r.between(static_cast<int>(p.r) + 1, 9 - static_cast<int>(p.r));
+                p.a[k] =
+                    10L * lo[k] + r.between(static_cast<int>(p.r) + 1, 9 - static_cast<int>(p.r));
             } else {
                 // Across the line between the two cells, inside both.
                 const int most = static_cast<int>(std::min(p.r - 1, 9 - p.r));
@@ -318,7 +319,8 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
             it = "un cerchio di centro `" + vec({a.x, a.y}) + "` e raggio `" + num(rad) + "`";
         } else {
             if (!scene.contains("segments")) scene["segments"] = ojson::array();
-            scene["segments"].push_back({{"from", jsonVec({a.x, a.y})}, {"to", jsonVec({b.x, b.y})}});
+            scene["segments"].push_back(
+                {{"from", jsonVec({a.x, a.y})}, {"to", jsonVec({b.x, b.y})}});
             item["from"] = jsonVec({a.x, a.y});
             item["to"] = jsonVec({b.x, b.y});
             en = "a segment from `" + vec({a.x, a.y}) + "` to `" + vec({b.x, b.y}) + "`";
@@ -357,8 +359,9 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
              : " Il raggio manca tutte le primitive, quindi l'attraversamento continua finché "
                "esce dalla griglia.";
     l["text"] = text(
-        en + " Each cell lists every primitive whose bounding box overlaps it (cells X,Y counted "
-             "from 0 at min):" +
+        en +
+            " Each cell lists every primitive whose bounding box overlaps it (cells X,Y counted "
+            "from 0 at min):" +
             listEn +
             "\n\nThe two small circles at the corners only mark the grid; the walk does not "
             "pass through their cells." +
@@ -366,8 +369,9 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
             " With a **mailbox** every primitive keeps the id of the last ray tested against it, "
             "and a test this ray already made is skipped. Work each count by hand: walk the "
             "DDA, then go through the cells' lists.",
-        it + " Ogni cella elenca ogni primitiva il cui bounding box la tocca (celle X,Y contate "
-             "da 0 a partire da min):" +
+        it +
+            " Ogni cella elenca ogni primitiva il cui bounding box la tocca (celle X,Y contate "
+            "da 0 a partire da min):" +
             listIt +
             "\n\nI due piccoli cerchi agli angoli segnano solo la griglia; l'attraversamento non "
             "passa per le loro celle." +
@@ -379,13 +383,12 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
     l["setup"] = {{"accel", "grid"}, {"mailbox", true}, {"grid_res", {g.res[0], g.res[1]}}};
     l["trace"] = {{"ray", {g.o[0], g.o[1], g.d[0], g.d[1]}}};
 
-    const ojson walkHint = text(
-        "First the walk: the cells the DDA visits" +
-            std::string(hard ? ", up to the cell where it stops" : "") +
-            ". Then, cell by cell, the primitives each one lists.",
-        "Prima l'attraversamento: le celle che il DDA visita" +
-            std::string(hard ? ", fino alla cella in cui si ferma" : "") +
-            ". Poi, cella per cella, le primitive che ognuna elenca.");
+    const ojson walkHint = text("First the walk: the cells the DDA visits" +
+                                    std::string(hard ? ", up to the cell where it stops" : "") +
+                                    ". Then, cell by cell, the primitives each one lists.",
+                                "Prima l'attraversamento: le celle che il DDA visita" +
+                                    std::string(hard ? ", fino alla cella in cui si ferma" : "") +
+                                    ". Poi, cella per cella, le primitive che ognuna elenca.");
     ojson ex = ojson::array();
     ojson without = exercise(
         "tests-without", "count",
@@ -394,12 +397,11 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
              "l'attraversamento?"));
     without["count"] = "primitive_test";
     without["setup"] = {{"mailbox", false}};
-    without["hint"] =
-        hints({walkHint,
-               text("Without a mailbox every cell of the walk tests every primitive it lists: "
-                    "add up the lengths of the lists.",
-                    "Senza mailboxing ogni cella dell'attraversamento testa ogni primitiva che "
-                    "elenca: somma le lunghezze delle liste.")});
+    without["hint"] = hints(
+        {walkHint, text("Without a mailbox every cell of the walk tests every primitive it lists: "
+                        "add up the lengths of the lists.",
+                        "Senza mailboxing ogni cella dell'attraversamento testa ogni primitiva che "
+                        "elenca: somma le lunghezze delle liste.")});
     ex.push_back(without);
     ojson with = exercise("tests-with", "count",
                           text("With the mailbox, how many tests are actually made?",
@@ -424,12 +426,9 @@ Draft makeMailbox(Random& r, PracticeLevel level) {
     ex.push_back(saved);
     l["exercises"] = ex;
 
-    d.given = {{"grid", {g.res[0], g.res[1]}},
-               {"min", jsonVec(asVec(g.lo))},
-               {"max", jsonVec(asVec(g.hi))},
-               {"origin", jsonVec(asVec(g.o))},
-               {"dir", jsonVec(asVec(g.d))},
-               {"primitives", prims}};
+    d.given = {{"grid", {g.res[0], g.res[1]}}, {"min", jsonVec(asVec(g.lo))},
+               {"max", jsonVec(asVec(g.hi))},  {"origin", jsonVec(asVec(g.o))},
+               {"dir", jsonVec(asVec(g.d))},   {"primitives", prims}};
     d.answers = [](const Reference& ref) {
         ojson walk = ojson::array();
         ojson hit = nullptr;

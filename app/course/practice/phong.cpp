@@ -28,8 +28,7 @@ const std::vector<V>& unitVectors() {
                  {std::array<int, 3>{0, 1, 2}, {1, 2, 0}, {2, 0, 1}})
                 for (int signs = 0; signs < 8; ++signs) {
                     V v{};
-                    for (int k = 0; k < 3; ++k)
-                        v[order[k]] = base[k] * ((signs >> k & 1) ? -1 : 1);
+                    for (int k = 0; k < 3; ++k) v[order[k]] = base[k] * ((signs >> k & 1) ? -1 : 1);
                     if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
                 }
         return out;
@@ -38,8 +37,8 @@ const std::vector<V>& unitVectors() {
 }
 
 const std::vector<V>& axisVectors() {
-    static const std::vector<V> list = {{0, 0, 100}, {0, 0, -100}, {100, 0, 0},
-                                        {-100, 0, 0}, {0, 100, 0}, {0, -100, 0}};
+    static const std::vector<V> list = {{0, 0, 100},  {0, 0, -100}, {100, 0, 0},
+                                        {-100, 0, 0}, {0, 100, 0},  {0, -100, 0}};
     return list;
 }
 
@@ -113,9 +112,10 @@ Draft makePhong(Random& r, PracticeLevel level) {
                                  "`, la direzione unitaria verso la luce `l = " + vec(l) + "`"
                            : "At a hit point the unit normal is `n = " + vec(n) +
                                  "`, the unit direction towards the light `l = " + vec(l) + "`";
-        if (specular) s += (it ? " e verso l'occhio `v = " : " and towards the eye `v = ") +
-                           vec(v) + "`";
-        s += it ? "; il materiale ha `k_d = " + num(kd) + "`" : "; the material has `k_d = " + num(kd) + "`";
+        if (specular)
+            s += (it ? " e verso l'occhio `v = " : " and towards the eye `v = ") + vec(v) + "`";
+        s += it ? "; il materiale ha `k_d = " + num(kd) + "`"
+                : "; the material has `k_d = " + num(kd) + "`";
         if (specular)
             s += (it ? ", `k_s = " : ", `k_s = ") + num(ks) + "`" +
                  (it ? " e lucentezza `" : " and shininess `") + std::to_string(p.shininess) + "`";
@@ -173,10 +173,9 @@ Draft makePhong(Random& r, PracticeLevel level) {
         "termini, dove le slide scrivono `I_luce diff` e `I_luce spec`, e una lucentezza finita, "
         "dove lo specchio perfetto delle slide ha `cos^inf`; con la luce dietro la superficie "
         "(`n.l <= 0`) non dà nemmeno il riflesso speculare, qualunque sia `r.v`.";
-    lesson["text"] = text(en + modelEn + (specular ? codeEn : "") +
-                              " Work each answer by hand, then check it.",
-                          it + modelIt + (specular ? codeIt : "") +
-                              " Ricava ogni risposta a mano, poi verificala.");
+    lesson["text"] = text(
+        en + modelEn + (specular ? codeEn : "") + " Work each answer by hand, then check it.",
+        it + modelIt + (specular ? codeIt : "") + " Ricava ogni risposta a mano, poi verificala.");
     // The scene the 3D view shows: a sphere through the hit point with normal n there, the
     // light along l, the eye along v, and the eye's ray to the point.
     const auto along = [&](const std::vector<double>& dir, double k) {
@@ -186,16 +185,15 @@ Draft makePhong(Random& r, PracticeLevel level) {
     ojson scene;
     scene["description"] = "practice: Phong shading at one point of a sphere";
     // The default up, (0, 1, 0), unless the eye looks nearly along it.
-    const ojson up = std::abs(eyeDir[1]) >= 0.8 ? jsonVec({0.0, 0.0, 1.0}) : jsonVec({0.0, 1.0, 0.0});
+    const ojson up =
+        std::abs(eyeDir[1]) >= 0.8 ? jsonVec({0.0, 0.0, 1.0}) : jsonVec({0.0, 1.0, 0.0});
     scene["camera"] = {
         {"eye", along(eyeDir, 5.0)}, {"look_at", jsonVec({0.0, 0.0, 0.0})}, {"up", up}};
     scene["lights"] = {{{"position", along(l, 4.0)}, {"intensity", light}}};
-    scene["materials"] = {{"surface", {{"kd", kd}, {"ks", specular ? ks : 0.0},
-                                       {"n", specular ? p.shininess : 1}}}};
-    scene["objects"] = {{{"type", "sphere"},
-                         {"center", along(n, -1.0)},
-                         {"radius", 1.0},
-                         {"material", "surface"}}};
+    scene["materials"] = {
+        {"surface", {{"kd", kd}, {"ks", specular ? ks : 0.0}, {"n", specular ? p.shininess : 1}}}};
+    scene["objects"] = {
+        {{"type", "sphere"}, {"center", along(n, -1.0)}, {"radius", 1.0}, {"material", "surface"}}};
     lesson["scene"] = scene;
     lesson["setup"] = {{"accel", "bruteforce"}};
     lesson["trace"] = {{"ray", jsonVec({5.0 * eyeDir[0], 5.0 * eyeDir[1], 5.0 * eyeDir[2],
@@ -203,30 +201,43 @@ Draft makePhong(Random& r, PracticeLevel level) {
     lesson["views"] = {"3d"};
 
     ojson ex = ojson::array();
-    ojson nl = compute("n-dot-l", "n.l", "Compute `n.l`, the cosine of the angle between the normal and the direction to the light.",
-                       "Calcola `n.l`, il coseno dell'angolo tra la normale e la direzione verso la luce.");
-    nl["hint"] = hints({text("`n.l = n.x l.x + n.y l.y + n.z l.z`", "`n.l = n.x l.x + n.y l.y + n.z l.z`")});
+    ojson nl = compute(
+        "n-dot-l", "n.l",
+        "Compute `n.l`, the cosine of the angle between the normal and the direction to the light.",
+        "Calcola `n.l`, il coseno dell'angolo tra la normale e la direzione verso la luce.");
+    nl["hint"] =
+        hints({text("`n.l = n.x l.x + n.y l.y + n.z l.z`", "`n.l = n.x l.x + n.y l.y + n.z l.z`")});
     ex.push_back(nl);
     ojson diffuse = compute("diffuse", "diffuse", "Compute the diffuse term `I_diff`.",
                             "Calcola il termine diffuso `I_diff`.");
-    diffuse["hint"] = hints({text("`I_diff = I * k_d * max(0, n.l)`", "`I_diff = I * k_d * max(0, n.l)`"),
-                             text("Is the light in front of the surface? The sign of `n.l` says.",
-                                  "La luce è davanti alla superficie? Lo dice il segno di `n.l`.")});
+    diffuse["hint"] =
+        hints({text("`I_diff = I * k_d * max(0, n.l)`", "`I_diff = I * k_d * max(0, n.l)`"),
+               text("Is the light in front of the surface? The sign of `n.l` says.",
+                    "La luce è davanti alla superficie? Lo dice il segno di `n.l`.")});
     ex.push_back(diffuse);
     if (specular) {
         ojson rv = compute("r-dot-v", "r.v",
-                           "Compute `r.v`, with `r = 2 (n.l) n - l` the direction to the light mirrored about the normal.",
-                           "Calcola `r.v`, con `r = 2 (n.l) n - l` la direzione verso la luce riflessa rispetto alla normale.");
-        rv["hint"] = hints({text("First `r`, component by component: `r = 2 (n.l) n - l`; then its dot product with `v`.",
-                                 "Prima `r`, componente per componente: `r = 2 (n.l) n - l`; poi il suo prodotto scalare con `v`.")});
+                           "Compute `r.v`, with `r = 2 (n.l) n - l` the direction to the light "
+                           "mirrored about the normal.",
+                           "Calcola `r.v`, con `r = 2 (n.l) n - l` la direzione verso la luce "
+                           "riflessa rispetto alla normale.");
+        rv["hint"] =
+            hints({text("First `r`, component by component: `r = 2 (n.l) n - l`; then its dot "
+                        "product with `v`.",
+                        "Prima `r`, componente per componente: `r = 2 (n.l) n - l`; poi il suo "
+                        "prodotto scalare con `v`.")});
         ex.push_back(rv);
-        ojson spec = compute("specular", "specular",
-                             "Compute the specular term `I_spec` as raystep's `phong()` does.",
-                             "Calcola il termine speculare `I_spec` come fa la `phong()` di raystep.");
-        spec["hint"] = hints({text("`I_spec = I * k_s * max(0, r.v)^" + std::to_string(p.shininess) + "`",
-                                   "`I_spec = I * k_s * max(0, r.v)^" + std::to_string(p.shininess) + "`"),
-                              text("Is the light in front of the surface (`n.l > 0`), and does `r` point towards the eye (`r.v > 0`)?",
-                                   "La luce è davanti alla superficie (`n.l > 0`), e `r` punta verso l'occhio (`r.v > 0`)?")});
+        ojson spec =
+            compute("specular", "specular",
+                    "Compute the specular term `I_spec` as raystep's `phong()` does.",
+                    "Calcola il termine speculare `I_spec` come fa la `phong()` di raystep.");
+        spec["hint"] =
+            hints({text("`I_spec = I * k_s * max(0, r.v)^" + std::to_string(p.shininess) + "`",
+                        "`I_spec = I * k_s * max(0, r.v)^" + std::to_string(p.shininess) + "`"),
+                   text("Is the light in front of the surface (`n.l > 0`), and does `r` point "
+                        "towards the eye (`r.v > 0`)?",
+                        "La luce è davanti alla superficie (`n.l > 0`), e `r` punta verso l'occhio "
+                        "(`r.v > 0`)?")});
         ex.push_back(spec);
     }
     lesson["exercises"] = ex;
