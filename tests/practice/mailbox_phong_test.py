@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent check of the mailbox and phong practice topics (docs/practice.md).
+"""Independent check of the mailbox, phong and ray-tree practice topics (docs/practice.md).
 
 mailbox: every count of `raystep-cli practice make mailbox --seed S --level L --json` is
 recomputed from its `given` alone, in exact fractions and with no raystep code: the cells each
@@ -8,6 +8,9 @@ after the cell whose far side lies beyond the nearest hit found so far, the test
 mailbox (every listed primitive in every cell of the walk), with one (each primitive once) and
 the skips. phong: n.l, r.v, the diffuse and specular terms from the slides' formulas in exact
 fractions, with phong()'s convention (no term at all with the light behind the surface).
+ray-tree: a Whitted tree on the camera's axis traced here in one dimension from raystep's rules
+(a shadow ray per light on the side the ray came from, at every hit; reflection and refraction
+rays below `bounces`), counted by kind and by depth.
 Each level's rules are checked, the same seed gives the same bytes, instances rarely repeat,
 and a lesson file written with -o validates and its own key scores full marks in both
 languages.
@@ -22,7 +25,7 @@ from fractions import Fraction as F
 
 CLI = sys.argv[1]
 SEEDS = int(sys.argv[2]) if len(sys.argv) > 2 else 200
-TOPICS = sys.argv[3].split(",") if len(sys.argv) > 3 else ("mailbox", "phong")
+TOPICS = sys.argv[3].split(",") if len(sys.argv) > 3 else ("mailbox", "phong", "ray-tree")
 LEVELS = ("easy", "medium", "hard")
 failures = []
 
@@ -305,9 +308,95 @@ def check_phong(j, level, where):
     return "behind" if nl < 0 else "away"
 
 
+# --- ray-tree ------------------------------------------------------------------------------
+
+def check_ray_tree(j, level, where):
+    """Whitted's tree on the z axis, from raystep's rules as docs/practice.md states them: at
+    every hit a shadow ray per light on the side the ray came from; below `bounces` a
+    reflection ray (mirror, glass) and a refraction ray (glass); head-on, so reflections go
+    straight back and refractions straight on."""
+    g, ans = j["given"], j["answers"]
+    if g["pixel"] != [16, 12] or g["image"] != [33, 25]:
+        fail(where, "not the centre pixel of a 33 x 25 image")
+    eye = [exact(x) for x in g["eye"]]
+    if eye[0] or eye[1]:
+        fail(where, "the eye is off the axis")
+    balls = []
+    for b in g["spheres"]:
+        c = [exact(x) for x in b["center"]]
+        if c[0] or c[1] or c[2].denominator != 1 or b["radius"] != int(b["radius"]):
+            fail(where, f"a sphere off the axis or not in whole numbers: {b}")
+        balls.append((c[2] - b["radius"], c[2] + b["radius"], b["material"]))
+    balls.sort()
+    for (lo1, hi1, _), (lo2, hi2, _) in zip(balls, balls[1:]):
+        if hi1 >= lo2:
+            fail(where, "two spheres touch")
+    if any(hi >= eye[2] for _, hi, _ in balls):
+        fail(where, "the eye inside or behind a sphere")
+    lights = [[exact(x) for x in p] for p in g["lights"]]
+    surfaces = [z for lo, hi, _ in balls for z in (lo, hi)]
+    for p in lights:
+        if p[0] == 0 and p[1] == 0:
+            fail(where, "a light on the axis")
+        if any(abs(p[2] - z) < F(1, 2) for z in surfaces):
+            fail(where, f"a light level with a surface: {p}")
+    bounces = g["bounces"]
+    counts = {}
+
+    def begin(kind, depth):
+        counts[(kind, depth)] = counts.get((kind, depth), 0) + 1
+
+    def trace(z, s, inside, depth, kind):
+        # A ray from z along s (+1 or -1); inside: the index of the sphere it is in, or None.
+        begin(kind, depth)
+        if inside is not None:
+            lo, hi, mat = balls[inside]
+            hit, k = (hi if s > 0 else lo), inside
+        else:
+            ahead = [(lo if s > 0 else hi, i) for i, (lo, hi, _) in enumerate(balls)
+                     if (lo > z if s > 0 else hi < z)]
+            if not ahead:
+                return
+            hit, k = min(ahead) if s > 0 else max(ahead)
+        mat = balls[k][2]
+        for p in lights:
+            if -s * (p[2] - hit) > 0:  # the normal faces the incoming ray: -s along z
+                begin("shadow", depth + 1)
+        if depth >= bounces:
+            return
+        if mat in ("mirror", "glass"):
+            trace(hit, -s, inside, depth + 1, "reflection")
+        if mat == "glass":
+            trace(hit, s, None if inside is not None else k, depth + 1, "refraction")
+
+    trace(eye[2], -1, None, 0, "primary")
+
+    def total(kind=None, depth=None):
+        return sum(n for (k, d), n in counts.items()
+                   if (kind is None or k == kind) and (depth is None or d == depth))
+
+    want = {"shadowRays": total("shadow"), "reflectionRays": total("reflection"),
+            "refractionRays": total("refraction"),
+            "raysAtDepth": {"depth": g["depth"], "count": total(depth=g["depth"])}}
+    for key, value in want.items():
+        if ans[key] != value:
+            fail(where, f"{key} is {ans[key]}, expected {value}")
+    rays = total()
+    if not 3 <= rays <= 24 or want["raysAtDepth"]["count"] == 0:
+        fail(where, f"{rays} rays, or none at depth {g['depth']}")
+    mats = [m for _, _, m in balls]
+    if level == "easy" and (bounces > 2 or len(lights) != 1):
+        fail(where, "easy: more than 2 bounces or not one light")
+    if level != "easy" and balls[-1][2] != "glass":
+        fail(where, f"{level}: the sphere nearest the eye is not glass")
+    if level == "hard" and ("mirror" not in mats or len(lights) != 2 or bounces < 3):
+        fail(where, "hard: no mirror, not two lights, or fewer than 3 bounces")
+    return f"{rays} rays"
+
+
 # --- the runs ------------------------------------------------------------------------------
 
-for topic, check in ((t, {"mailbox": check_mailbox, "phong": check_phong}[t]) for t in TOPICS):
+for topic, check in ((t, {"mailbox": check_mailbox, "phong": check_phong, "ray-tree": check_ray_tree}[t]) for t in TOPICS):
     for level in LEVELS:
         seen, kinds = set(), {}
         for seed in range(1, SEEDS + 1):

@@ -69,6 +69,16 @@ const std::vector<Generator>& generators() {
              "difficile: la luce dietro la superficie, o la luce riflessa che si allontana "
              "dall'occhio"}}}},
          makePhong},
+        {{"ray-tree",
+          {"The ray tree: how many shadow, reflection and refraction rays one pixel traces",
+           {{"it",
+             "L'albero dei raggi: quanti raggi d'ombra, riflessi e rifratti traccia un pixel"}}},
+          {"easy: one or two spheres, one light, bounces 1 or 2; medium: glass in front, "
+           "bounces 2 or 3; hard: glass in front and a mirror, two lights, bounces 3 or 4",
+           {{"it",
+             "facile: una o due sfere, una luce, bounces 1 o 2; medio: il vetro davanti, bounces "
+             "2 o 3; difficile: il vetro davanti e uno specchio, due luci, bounces 3 o 4"}}}},
+         makeRayTree},
     };
     return list;
 }
