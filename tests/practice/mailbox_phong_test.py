@@ -171,6 +171,8 @@ def check_mailbox(j, level, where):
         if cells != {tuple(c) for c in p["cells"]} or len(p["cells"]) != len(cells):
             fail(where, f"primitive {p['id']}: cells {p['cells']}, expected {sorted(cells)}")
         listed.append(cells)
+    if len({frozenset(c) for c in listed}) != len(listed):
+        fail(where, "two primitives over the same cells")
     full = walk(lo, cell, res, o, d)
     if not full:
         fail(where, "the ray misses the grid")

@@ -270,6 +270,12 @@ std::optional<MailboxData> drawMailbox(Random& r, PracticeLevel level) {
                 if (q->hasCell(all.cells[k])) ++(k <= stop ? walked : later);
             if (isAfter && (walked != 0 || later == 0)) continue;
             if (offWalk && walked != 0) continue;
+            // Each over cells of its own: two primitives with the same cells teach nothing more.
+            const auto sameCells = [&](const Prim& o) { return o.lo == q->lo && o.hi == q->hi; };
+            if (std::any_of(circles.begin(), circles.end(), sameCells) ||
+                std::any_of(segments.begin(), segments.end(), sameCells) ||
+                (target && sameCells(*target)))
+                continue;
             if (!offWalk && !isAfter && walked < 2) continue;
             if (easy && (walked != 2 || (q->hi[0] - q->lo[0] + 1) * (q->hi[1] - q->lo[1] + 1) != 2))
                 continue;
