@@ -6,6 +6,7 @@
 #include "raystep/accel/sah.h"
 #include "raystep/base/math.h"
 #include "raystep/geometry/intersect.h"
+#include "raystep/render/shading.h"
 
 #include <algorithm>
 #include <cctype>
@@ -157,6 +158,20 @@ Evaluation evaluate(const ComputeGiven& g) {
                         static_cast<std::uint32_t>(g.nl), static_cast<std::uint32_t>(g.nr));
             break;
         }
+        case Shape::Shading: {
+            // The renderer's own phong() (render/shading.h), one grey channel.
+            const V3 n = vec(g.normal), l = vec(g.toLight);
+            const V3 v = g.specular ? vec(g.toViewer) : n;
+            const PhongTerms t =
+                phong(n, l, v, Color(g.intensity), Color(g.kd), Color(g.ks), g.shininess);
+            e.q["n.l"] = glm::dot(n, l);
+            e.q["diffuse"] = t.diffuse.x;
+            if (g.specular) {
+                e.q["r.v"] = glm::dot(reflect(-l, n), v);
+                e.q["specular"] = t.specular.x;
+            }
+            break;
+        }
     }
     return e;
 }
@@ -304,6 +319,41 @@ std::string computeWorking(const Exercise& ex, Language lang) {
             if (g.nl == 0 || g.nr == 0)
                 s += " · (1 − " + n(g.emptyBonus) + ") " + tr(lang, "(a side is empty: the bonus)");
             return s + " = " + v(q("sahCost")) + ".";
+        }
+        case Shape::Shading: {
+            const V3 nn = vec(g.normal), l = vec(g.toLight);
+            const double nl = q("n.l");
+            std::string s = "n·l = " + n(nn.x) + " · " + n(l.x) + " + " + n(nn.y) + " · " + n(l.y) +
+                            " + " + n(nn.z) + " · " + n(l.z) + " = " + v(nl);
+            if (what == "n.l") return s + ".";
+            if (what == "diffuse") {
+                if (nl <= 0.0)
+                    return s + "; " +
+                           tr(lang,
+                              "n·l ≤ 0: the light is behind the surface, so max(0, n·l) = 0 "
+                              "and the diffuse term is 0.");
+                return s + "; I_diff = I · k_d · max(0, n·l) = " + n(g.intensity) + " · " +
+                       n(g.kd) + " · " + n(nl) + " = " + v(q("diffuse")) + ".";
+            }
+            const V3 r = reflect(-l, nn), eye = vec(g.toViewer);
+            s += "; r = 2 (n·l) n − l = 2 · " + n(nl) + " · " + tuple(nn, lang) + " − " +
+                 tuple(l, lang) + " = " + tuple(r, lang) + "; r·v = " + n(r.x) + " · " + n(eye.x) +
+                 " + " + n(r.y) + " · " + n(eye.y) + " + " + n(r.z) + " · " + n(eye.z) + " = " +
+                 v(q("r.v"));
+            if (what == "r.v") return s + ".";
+            if (nl <= 0.0)
+                return s + "; " +
+                       tr(lang,
+                          "but n·l ≤ 0: the light is behind the surface, and raystep's phong() "
+                          "gives no highlight either, whatever r·v: the specular term is 0.");
+            if (q("r.v") <= 0.0)
+                return s + "; " +
+                       tr(lang,
+                          "r·v ≤ 0: the mirrored light points away from the eye, so "
+                          "max(0, r·v) = 0 and the specular term is 0.");
+            return s + "; I_spec = I · k_s · max(0, r·v)^" + v(g.shininess) + " = " +
+                   n(g.intensity) + " · " + n(g.ks) + " · " + n(q("r.v")) + "^" + v(g.shininess) +
+                   " = " + v(q("specular")) + ".";
         }
     }
     return "";
@@ -485,6 +535,54 @@ std::string computeSlip(const Exercise& ex, double given, Language lang) {
                 return trf(lang, "%1 applies the empty-space bonus, but neither side is empty.",
                            {n(given)});
             break;
+        case Shape::Shading: {
+            const V3 nn = vec(g.normal), l = vec(g.toLight);
+            const double nl = q("n.l");
+            if (what == "diffuse" && nl < 0.0 && close(given, g.intensity * g.kd * nl))
+                return trf(lang,
+                           "%1 is I · k_d · n·l without the clamp: with n·l < 0 the light is "
+                           "behind the surface, and max(0, n·l) = 0.",
+                           {n(given)});
+            if (what == "diffuse" && g.intensity != 1.0 && close(given, g.kd * std::max(0.0, nl)))
+                return trf(lang, "%1 leaves out the light's intensity I.", {n(given)});
+            if (!g.specular) break;
+            const V3 eye = vec(g.toViewer);
+            const double rv = q("r.v");
+            const auto spec = [&](double cosine) {
+                return g.intensity * g.ks * std::pow(std::max(0.0, cosine), g.shininess);
+            };
+            if (what == "r.v" && close(given, glm::dot(l, eye)) && !close(rv, glm::dot(l, eye)))
+                return trf(lang,
+                           "%1 is l·v: the light's direction itself, not mirrored about the "
+                           "normal (r = 2 (n·l) n − l).",
+                           {n(given)});
+            if (what == "r.v" && close(given, glm::dot(nn, eye)) && !close(rv, glm::dot(nn, eye)))
+                return trf(lang, "%1 is n·v: the specular term takes the mirrored light r, not n.",
+                           {n(given)});
+            if (what != "specular") break;
+            if (nl <= 0.0 && given > 0.0 && close(given, spec(rv)))
+                return trf(lang,
+                           "%1 gives the light behind the surface a highlight: with n·l ≤ 0 "
+                           "raystep's phong() gives neither term.",
+                           {n(given)});
+            if (rv < 0.0 && close(given, g.intensity * g.ks * std::pow(rv, g.shininess)))
+                return trf(lang,
+                           "%1 raises a negative r·v to the power: the clamp max(0, r·v) makes "
+                           "it 0.",
+                           {n(given)});
+            if (g.shininess != 1.0 && rv > 0.0 && close(given, g.intensity * g.ks * rv))
+                return trf(lang, "%1 leaves out the shininess exponent: (r·v)^%2.",
+                           {n(given), n(g.shininess)});
+            if (close(given, spec(glm::dot(nn, eye))) && !close(right, spec(glm::dot(nn, eye))))
+                return trf(lang, "%1 takes n·v for the cosine: the specular term's is r·v.",
+                           {n(given)});
+            if (close(given, spec(glm::dot(l, eye))) && !close(right, spec(glm::dot(l, eye))))
+                return trf(lang,
+                           "%1 takes l·v for the cosine: the light's direction mirrored about the "
+                           "normal, r = 2 (n·l) n − l, goes in the specular term.",
+                           {n(given)});
+            break;
+        }
     }
     if (right != 0.0 && close(given, -right))
         return trf(lang, "%1 has the wrong sign.", {n(given)});

@@ -160,7 +160,7 @@ struct ChoiceOption {
 
 /// The data of a Compute exercise: a ray and one shape (or a kd node and a plane for the SAH).
 struct ComputeGiven {
-    enum class Shape { Sphere, Triangle, Plane, Box, Grid, Node };
+    enum class Shape { Sphere, Triangle, Plane, Box, Grid, Node, Shading };
     Shape shape = Shape::Sphere;
     int dims = 3;                    // Grid and Node: 2 or 3, by the vectors' length
     std::array<double, 3> o{}, d{};  // the ray (all but Node)
@@ -176,6 +176,11 @@ struct ComputeGiven {
     int nl = 0, nr = 0;  // Node: primitives left and right
     // Node's SAH and SweepPick's cost: the lesson's setup (c_trav, c_isect, empty_bonus).
     double cTrav = 1.0, cIsect = 5.0, emptyBonus = 0.5;
+    // Shading: Phong at a point, with `normal` as n; the light's and the eye's unit directions,
+    // the material's kd, ks and shininess, the light's intensity (one grey value).
+    std::array<double, 3> toLight{}, toViewer{};
+    double kd = 0.0, ks = 0.0, shininess = 1.0, intensity = 1.0;
+    bool specular = false;        // v, ks and shininess given: r.v and the specular term defined
     std::vector<double> numbers;  // every number given, as written, for the prompt check
 };
 

@@ -196,6 +196,59 @@ TEST(ComputeExercises, TheSahCostOfANamedPlane) {
         13, "exercises[0].given.plane.at", "strictly inside");
 }
 
+// Phong at a point, as render/shading.h's phong(): n = (0, 0, 1), l = (0, 0.6, 0.8), n.l = 0.8,
+// I_diff = 2 * 0.5 * 0.8 = 0.8; r = 2 (n.l) n - l = (0, -0.6, 0.8), with v = n r.v = 0.8 and
+// I_spec = 2 * 0.25 * 0.8^2 = 0.32 (with n.v = 1 instead: 0.5).
+TEST(ComputeExercises, PhongShadingByHandAndItsSlips) {
+    const auto shading = [](const std::string& l, const std::string& v) {
+        return "{\"shading\": {\"n\": [0, 0, 1], \"l\": " + l + ", \"v\": " + v +
+               ", \"kd\": 0.5, \"ks\": 0.25, \"shininess\": 2, \"intensity\": 2}}";
+    };
+    const std::string front = shading("[0, 0.6, 0.8]", "[0, 0, 1]");
+    EXPECT_NEAR(answerOf(compute(front, "n.l")), 0.8, 1e-15);
+    EXPECT_NEAR(answerOf(compute(front, "diffuse")), 0.8, 1e-15);
+    EXPECT_NEAR(answerOf(compute(front, "r.v")), 0.8, 1e-15);
+    EXPECT_NEAR(answerOf(compute(front, "specular")), 0.32, 1e-15);
+    EXPECT_TRUE(has(computeSlip(compute(front, "diffuse"), 0.4, Language::En), "intensity"));
+    EXPECT_TRUE(has(computeSlip(compute(front, "specular"), 0.5, Language::En), "n·v"));
+    const std::string w = computeWorking(compute(front, "specular"), Language::It);
+    EXPECT_TRUE(has(w, "r = 2 (n·l) n − l = 2 · 0,8 · (0; 0; 1) − (0; 0,6; 0,8)")) << w;
+    EXPECT_TRUE(has(w, "= 0,32.")) << w;
+    // The light behind the surface: n.l = -0.8, no term at all; the unclamped I kd n.l = -0.8.
+    const std::string behind = shading("[0, 0.6, -0.8]", "[0, 0, 1]");
+    EXPECT_EQ(answerOf(compute(behind, "diffuse")), 0.0);
+    EXPECT_EQ(answerOf(compute(behind, "specular")), 0.0);
+    EXPECT_TRUE(has(computeSlip(compute(behind, "diffuse"), -0.8, Language::En), "clamp"));
+    // The mirrored light away from the eye: r = (0, -0.8, 0.6), v = (0, 0.8, 0.6), r.v = -0.28;
+    // squared without the clamp: 2 * 0.25 * 0.0784 = 0.0392.
+    const std::string away = shading("[0, 0.8, 0.6]", "[0, 0.8, 0.6]");
+    EXPECT_NEAR(answerOf(compute(away, "r.v")), -0.28, 1e-15);
+    EXPECT_EQ(answerOf(compute(away, "specular")), 0.0);
+    EXPECT_TRUE(has(computeSlip(compute(away, "specular"), 0.0392, Language::En), "negative r·v"));
+    // Without v, ks and shininess only the diffuse term is defined.
+    const std::string diffuseOnly =
+        "{\"shading\": {\"n\": [0, 0, 1], \"l\": [0, 0.6, 0.8], \"kd\": 0.5, \"intensity\": 1}}";
+    EXPECT_NEAR(answerOf(compute(diffuseOnly, "diffuse")), 0.4, 1e-15);
+    const auto with = [](const std::string& given, const std::string& quantity) {
+        return lessonWith(
+            ",\n\"exercises\": [{\"id\": \"c\", \"type\": \"compute\", \"prompt\": {\"en\": "
+            "\"?\"},\n \"given\": " +
+            given + ",\n \"quantity\": \"" + quantity + "\"}]");
+    };
+    expectLessonError(with(diffuseOnly, "specular"), 13, "exercises[0].quantity",
+                      "this shape's quantities are n.l, diffuse");
+    expectLessonError(with("{\"shading\": {\"n\": [0, 0, 2], \"l\": [0, 0, 1], \"kd\": 0.5, "
+                           "\"intensity\": 1}}",
+                           "diffuse"),
+                      12, "exercises[0].given.shading.n", "unit vector");
+    expectLessonError(with("{\"shading\": {\"n\": [0, 0, 1], \"l\": [0, 0, 1], \"v\": [0, 0, 1], "
+                           "\"kd\": 0.5, \"intensity\": 1}}",
+                           "diffuse"),
+                      12, "exercises[0].given.shading", "all of");
+    expectLessonError(with(shading("[0, 0, 1]", "[0, 0, -1]"), "specular"), 12,
+                      "exercises[0].given.shading.v", "normal's side");
+}
+
 TEST(ComputeExercises, BadGivenDataNameLineAndKey) {
     const auto with = [](const std::string& given, const std::string& quantity) {
         return lessonWith(

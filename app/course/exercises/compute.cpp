@@ -7,6 +7,7 @@
 #include "raystep/base/i18n.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace raystep::exercises {
 
@@ -38,10 +39,58 @@ constexpr int kThree = 1, kTwoOrThree = 3;
 ComputeGiven readGiven(const Reader& r, const json& j, const std::string& path) {
     using Shape = ComputeGiven::Shape;
     r.requireObject(j, path);
-    r.checkKeys(j, path, {"ray", "sphere", "triangle", "plane", "box", "grid", "node", "nl", "nr"});
+    r.checkKeys(
+        j, path,
+        {"ray", "sphere", "triangle", "plane", "box", "grid", "node", "nl", "nr", "shading"});
     ComputeGiven g;
     auto& nums = g.numbers;
     const auto child = [&](const char* key) { return JsonLineMap::child(path, key); };
+    if (j.contains("shading")) {
+        g.shape = Shape::Shading;
+        if (j.size() != 1) r.fail(path, "Phong shading's data are all under \"shading\"");
+        const std::string sp = child("shading");
+        const json& s = j["shading"];
+        r.requireObject(s, sp);
+        r.checkKeys(s, sp, {"n", "l", "v", "kd", "ks", "shininess", "intensity"});
+        for (const char* key : {"n", "l", "kd", "intensity"})
+            if (!s.contains(key))
+                r.fail(sp, std::string("Phong shading needs \"") + key +
+                               "\" (and \"v\", \"ks\", \"shininess\" for the specular term)");
+        const auto unit = [&](const char* key) {
+            const std::string kp = JsonLineMap::child(sp, key);
+            const std::array<double, 3> v = readVector(r, s[key], kp, kThree, nums);
+            // phong() takes unit vectors: a longer one would scale the terms unnoticed.
+            if (std::abs(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - 1.0) > 1e-9)
+                r.fail(kp, "expected a unit vector (length 1)");
+            return v;
+        };
+        const auto value = [&](const char* key) {
+            const std::string kp = JsonLineMap::child(sp, key);
+            const double v = r.number(s[key], kp);
+            if (!(v >= 0.0)) r.fail(kp, "expected a number >= 0");
+            nums.push_back(v);
+            return v;
+        };
+        g.normal = unit("n");
+        g.toLight = unit("l");
+        g.kd = value("kd");
+        g.intensity = value("intensity");
+        const int specularKeys = s.contains("v") + s.contains("ks") + s.contains("shininess");
+        if (specularKeys != 0 && specularKeys != 3)
+            r.fail(sp, "the specular term needs all of \"v\", \"ks\" and \"shininess\"");
+        g.specular = specularKeys == 3;
+        if (g.specular) {
+            g.toViewer = unit("v");
+            if (!(g.normal[0] * g.toViewer[0] + g.normal[1] * g.toViewer[1] +
+                      g.normal[2] * g.toViewer[2] >
+                  0.0))
+                r.fail(JsonLineMap::child(sp, "v"),
+                       "the eye must be on the normal's side of the surface (n.v > 0)");
+            g.ks = value("ks");
+            g.shininess = value("shininess");
+        }
+        return g;
+    }
     if (j.contains("node")) {
         g.shape = Shape::Node;
         for (const char* key : {"plane", "nl", "nr"})
@@ -94,7 +143,8 @@ ComputeGiven readGiven(const Reader& r, const json& j, const std::string& path) 
     if (shapes != 1)
         r.fail(path,
                "give the ray and exactly one of \"sphere\", \"triangle\", \"plane\", \"box\", "
-               "\"grid\" (or a \"node\" with its \"plane\", \"nl\", \"nr\")");
+               "\"grid\" (or a \"node\" with its \"plane\", \"nl\", \"nr\", or "
+               "\"shading\")");
     const bool grid = j.contains("grid");
     const std::string rp = child("ray");
     r.requireObject(j["ray"], rp);
@@ -194,6 +244,9 @@ std::vector<std::string> computeQuantities(const ComputeGiven& g) {
         }
         case Shape::Node:
             return {"pL", "pR", "sahCost"};
+        case Shape::Shading:
+            if (g.specular) return {"n.l", "diffuse", "r.v", "specular"};
+            return {"n.l", "diffuse"};
     }
     return {};
 }

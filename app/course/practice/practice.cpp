@@ -265,10 +265,16 @@ int Reference::choice(std::string_view id) const {
 
 std::string num(double v, bool comma) {
     std::string s;
+    // The shortest that reads back, without an exponent ("10", not "1e+01") unless it needs one.
     for (int digits = 1; digits <= 17; ++digits) {
         s = formatNumber(v, digits);
-        if (std::stod(s) == v) break;
+        if (std::stod(s) == v && s.find('e') == std::string::npos) break;
     }
+    if (s.find('e') != std::string::npos)
+        for (int digits = 1; digits <= 17; ++digits) {
+            s = formatNumber(v, digits);
+            if (std::stod(s) == v) break;
+        }
     if (s == "-0") s = "0";
     if (comma) std::replace(s.begin(), s.end(), '.', ',');
     return s;

@@ -23,6 +23,18 @@ const std::vector<Generator>& generators() {
              "facile: dall'interno, direzioni positive; medio: ogni direzione, anche da "
              "fuori; difficile: pareggi"}}}},
          makeDda3D},
+        {{"mailbox",
+          {"Mailboxing: the primitive tests a grid walk makes without and with a mailbox",
+           {{"it",
+             "Mailboxing: i test con le primitive di un attraversamento della griglia senza e "
+             "con il mailboxing"}}},
+          {"easy: one primitive over two cells; medium: several primitives; hard: the ray hits "
+           "a primitive beyond the cell that first tests it, and the walk stops early",
+           {{"it",
+             "facile: una primitiva su due celle; medio: più primitive; difficile: il raggio "
+             "colpisce una primitiva oltre la cella che la testa per prima, e l'attraversamento "
+             "si ferma prima"}}}},
+         makeMailbox},
         {{"kdtree",
           {"Building a kd-tree: P(L|C), P(R|C), the SAH cost, the cheapest plane, TestTree",
            {{"it",
@@ -71,6 +83,28 @@ const std::vector<Generator>& generators() {
              "punti esterni al triangolo; difficile: il piano dietro l'origine, u + v appena "
              "sopra 1"}}}},
          makeRayTriangle},
+        {{"phong",
+          {"Phong shading at a hit point: n.l, the diffuse term, r.v and the specular term",
+           {{"it",
+             "Lo shading di Phong in un punto colpito: n.l, il termine diffuso, r.v e il termine "
+             "speculare"}}},
+          {"easy: the diffuse term, the light in front; medium: the specular term too; hard: the "
+           "light behind the surface, or the mirrored light turned away from the eye",
+           {{"it",
+             "facile: il termine diffuso, la luce davanti; medio: anche il termine speculare; "
+             "difficile: la luce dietro la superficie, o la luce riflessa che si allontana "
+             "dall'occhio"}}}},
+         makePhong},
+        {{"ray-tree",
+          {"The ray tree: how many shadow, reflection and refraction rays one pixel traces",
+           {{"it",
+             "L'albero dei raggi: quanti raggi d'ombra, riflessi e rifratti traccia un pixel"}}},
+          {"easy: one or two spheres, one light, bounces 1 or 2; medium: glass in front, "
+           "bounces 2 or 3; hard: glass in front and a mirror, two lights, bounces 3 or 4",
+           {{"it",
+             "facile: una o due sfere, una luce, bounces 1 o 2; medio: il vetro davanti, bounces "
+             "2 o 3; difficile: il vetro davanti e uno specchio, due luci, bounces 3 o 4"}}}},
+         makeRayTree},
     };
     return list;
 }
