@@ -17,26 +17,23 @@ languages.
 
 usage: mailbox_phong_test.py RAYSTEP_CLI [SEEDS [TOPICS]]
 """
-import json
-import subprocess
 import sys
-import tempfile
 from fractions import Fraction as F
+
+import practice_sweep
 
 CLI = sys.argv[1]
 SEEDS = int(sys.argv[2]) if len(sys.argv) > 2 else 200
 TOPICS = sys.argv[3].split(",") if len(sys.argv) > 3 else ("mailbox", "phong", "ray-tree")
-LEVELS = ("easy", "medium", "hard")
 failures = []
 
 
 def fail(where, message):
-    failures.append(f"{where}: {message}")
-
-
-def make(topic, seed, level):
-    return subprocess.run([CLI, "practice", "make", topic, "--seed", str(seed), "--level", level,
-                           "--json"], capture_output=True, check=True).stdout
+    # `where` is the sweep's fail for this instance, or a place named in text.
+    if callable(where):
+        where(message)
+    else:
+        failures.append(f"{where}: {message}")
 
 
 def exact(x):
@@ -398,55 +395,18 @@ def check_ray_tree(j, level, where):
 
 # --- the runs ------------------------------------------------------------------------------
 
-for topic, check in ((t, {"mailbox": check_mailbox, "phong": check_phong, "ray-tree": check_ray_tree}[t]) for t in TOPICS):
-    for level in LEVELS:
-        seen, kinds = set(), {}
-        for seed in range(1, SEEDS + 1):
-            where = f"{topic} {level} seed {seed}"
-            raw = make(topic, seed, level)
-            if seed <= 5 and make(topic, seed, level) != raw:
-                fail(where, "the same seed gave different bytes")
-            j = json.loads(raw)
-            kind = check(j, level, where)
-            kinds[kind] = kinds.get(kind, 0) + 1
-            seen.add(json.dumps(j["given"], sort_keys=True))
-        if len(seen) < 0.9 * SEEDS:
-            fail(f"{topic} {level}", f"only {len(seen)} distinct instances in {SEEDS}")
-        print(f"{topic} {level}: {len(seen)} distinct, {kinds}")
-        if topic == "phong" and level == "hard" and len(kinds) < 2:
-            fail("phong hard", f"only one case drawn: {kinds}")
+CHECKS = {"mailbox": check_mailbox, "phong": check_phong, "ray-tree": check_ray_tree}
 
-# The lesson file (-o) validates and its own key scores full marks, in both languages; a wrong
-# answer does not.
-with tempfile.TemporaryDirectory() as tmp:
-    for topic in TOPICS:
-        for level in LEVELS:
-            for lang in ("en", "it"):
-                path = f"{tmp}/{topic}-{level}-{lang}.json"
-                subprocess.run([CLI, "practice", "make", topic, "--seed", "7", "--level", level,
-                                "--lang", lang, "-o", path], check=True, capture_output=True)
-                subprocess.run([CLI, "lesson", "validate", path], check=True,
-                               capture_output=True)
-                key = json.loads(subprocess.run([CLI, "lesson", "key", path, "--lang", lang],
-                                                check=True, capture_output=True).stdout)
-                with open(f"{tmp}/key.json", "w") as f:
-                    json.dump(key, f)
-                grade = json.loads(subprocess.run(
-                    [CLI, "lesson", "check", path, "--answers", f"{tmp}/key.json", "--json",
-                     "--lang", lang], check=True, capture_output=True).stdout)
-                if grade["score"] != grade["out_of"] or grade["out_of"] < 2:
-                    fail(path, f"its own key does not score full marks: {grade}")
-                first = next(iter(key["answers"]))
-                key["answers"][first] = str(float(str(key["answers"][first]).replace(",", ".")) + 3)
-                with open(f"{tmp}/wrong.json", "w") as f:
-                    json.dump(key, f)
-                grade = json.loads(subprocess.run(
-                    [CLI, "lesson", "check", path, "--answers", f"{tmp}/wrong.json", "--json",
-                     "--lang", lang], check=True, capture_output=True).stdout)
-                if grade["score"] >= grade["out_of"]:
-                    fail(path, f"a wrong {first} scores full marks: {grade}")
 
-for f in failures[:40]:
-    print(f)
-print(f"{len(failures)} failures")
-sys.exit(1 if failures else 0)
+def adapt(check):
+    # The sweep's fail(message) knows where; the checks here take it as their `where`.
+    return lambda j, level, fail_here: check(j, level, fail_here)
+
+
+errors = []
+kinds = practice_sweep.sweep(CLI, [(t, adapt(CHECKS[t])) for t in TOPICS], SEEDS, 5, errors)
+if "phong" in TOPICS and len(kinds[("phong", "hard")]) < 2:
+    errors.append("phong hard: only one case drawn: %s" % kinds[("phong", "hard")])
+practice_sweep.lesson_files_score(CLI, TOPICS, errors)
+errors += failures
+sys.exit(practice_sweep.finish(errors))

@@ -16,7 +16,9 @@ def run(cli, topic, seed, level):
 
 
 def sweep(cli, checks, seeds, reruns, errors):
-    """checks: (topic, check(json, level, fail) -> a kind of instance, counted for the log)."""
+    """checks: (topic, check(json, level, fail) -> a kind of instance, counted for the log).
+    Returns the kinds counted, by (topic, level)."""
+    counted = {}
     for topic, check in checks:
         for level in LEVELS:
             seen, kinds = set(), {}
@@ -37,6 +39,8 @@ def sweep(cli, checks, seeds, reruns, errors):
                 errors.append("%s %s: only %d of %d instances distinct"
                               % (topic, level, len(seen), seeds))
             print("%s %s: %d distinct, %s" % (topic, level, len(seen), kinds))
+            counted[(topic, level)] = kinds
+    return counted
 
 
 def lesson_files_score(cli, topics, errors, seed=7):
@@ -61,6 +65,21 @@ def lesson_files_score(cli, topics, errors, seed=7):
                     if grade["score"] != grade["out_of"] or grade["out_of"] < 2:
                         errors.append("%s: its own key does not score full marks: %s"
                                       % (path, grade))
+                    # The first numeric answer off by 3: no longer full marks.
+                    answers = json.loads(key)["answers"]
+                    for ex, value in answers.items():
+                        try:
+                            wrong = float(str(value).replace(",", ".")) + 3
+                        except ValueError:
+                            continue
+                        with open(tmp + "/wrong.json", "w") as f:
+                            json.dump({**json.loads(key), "answers": {**answers, ex: str(wrong)}}, f)
+                        grade = json.loads(subprocess.run(
+                            [cli, "lesson", "check", path, "--answers", tmp + "/wrong.json",
+                             "--json", "--lang", lang], check=True, capture_output=True).stdout)
+                        if grade["score"] >= grade["out_of"]:
+                            errors.append("%s: a wrong %s scores full marks" % (path, ex))
+                        break
 
 
 def finish(errors):
