@@ -212,8 +212,9 @@ int make(const HomeworkArgs& a, Language lang) {
             const PracticeInstance p = makePractice(t, seed, level);
             const Lesson& l = p.lesson;
             lessons[t] = l.id;
-            md += "## " + l.title.in(lang) + "\n\n" + trf(lang, "Lesson id: %1", {"`" + l.id + "`"}) +
-                  "\n\n" + l.text.in(lang) + "\n\n";
+            md += "## " + l.title.in(lang) + "\n\n" +
+                  trf(lang, "Lesson id: %1", {"`" + l.id + "`"}) + "\n\n" + l.text.in(lang) +
+                  "\n\n";
             h += "<h2>" + html(l.title.in(lang)) + "</h2>\n<p>" +
                  trf(lang, "Lesson id: %1", {"<code>" + html(l.id) + "</code>"}) + "</p>\n<p>" +
                  prose(l.text.in(lang)) + "</p>\n";

@@ -21,9 +21,8 @@ void addPracticeCommand(CLI::App& app, PracticeArgs& a) {
         "One instance: its exercises (Markdown), its data and answers (--json), or its "
         "lesson file (-o)");
     a.make->add_option("TOPIC", a.topic, "A topic of `practice list`")->required();
-    addPracticeOptions(a.make, a.seed, UINT64_MAX,
-                       "The instance: the same seed gives the same one", a.level,
-                       "easy, medium or hard", a.lang, "Language of the texts")
+    addPracticeOptions(a.make, a.seed, UINT64_MAX, "The instance: the same seed gives the same one",
+                       a.level, "easy, medium or hard", a.lang, "Language of the texts")
         ->required();
     a.make->add_flag("--json", a.json,
                      "Print {\"format\": \"raystep-practice\", \"given\", \"answers\", ...}");

@@ -276,9 +276,8 @@ std::string typeName(Question::Type t) {
 std::vector<Question> sortedQuestions(const MoodleSource& src, Language lang,
                                       std::vector<std::string>& skipped) {
     std::vector<Question> qs = questionsOf(src, lang, skipped);
-    std::stable_sort(qs.begin(), qs.end(), [](const Question& a, const Question& b) {
-        return a.category < b.category;
-    });
+    std::stable_sort(qs.begin(), qs.end(),
+                     [](const Question& a, const Question& b) { return a.category < b.category; });
     return qs;
 }
 

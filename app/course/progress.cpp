@@ -73,10 +73,14 @@ Progress readProgress(std::string_view text, const std::string& fileName) {
                 });
                 ifPresent(rj[i], ip, "result", [&](const json& x, const std::string& xp) {
                     const std::string res = r.string(x, xp);
-                    if (res == "right") in.result = PracticeRecord::Result::Right;
-                    else if (res == "missed") in.result = PracticeRecord::Result::Missed;
-                    else if (res == "open") in.result = PracticeRecord::Result::Open;
-                    else r.fail(xp, "expected \"right\", \"missed\" or \"open\"");
+                    if (res == "right")
+                        in.result = PracticeRecord::Result::Right;
+                    else if (res == "missed")
+                        in.result = PracticeRecord::Result::Missed;
+                    else if (res == "open")
+                        in.result = PracticeRecord::Result::Open;
+                    else
+                        r.fail(xp, "expected \"right\", \"missed\" or \"open\"");
                 });
                 ifPresent(rj[i], ip, "digest", [&](const json& x, const std::string& xp) {
                     in.digest = r.string(x, xp);
@@ -120,9 +124,9 @@ bool PracticeRecord::mastered() const {
 }
 
 int PracticeRecord::right() const {
-    return static_cast<int>(std::count_if(instances.begin(), instances.end(), [](const Instance& i) {
-        return i.result == Result::Right;
-    }));
+    return static_cast<int>(
+        std::count_if(instances.begin(), instances.end(),
+                      [](const Instance& i) { return i.result == Result::Right; }));
 }
 
 bool PracticeRecord::drawn(std::uint64_t seed) const {
@@ -131,9 +135,8 @@ bool PracticeRecord::drawn(std::uint64_t seed) const {
 }
 
 bool PracticeRecord::given(std::string_view digest) const {
-    return !digest.empty() && std::any_of(instances.begin(), instances.end(), [&](const Instance& i) {
-        return i.digest == digest;
-    });
+    return !digest.empty() && std::any_of(instances.begin(), instances.end(),
+                                          [&](const Instance& i) { return i.digest == digest; });
 }
 
 std::string practiceKey(std::string_view topic, std::string_view level) {
@@ -315,14 +318,15 @@ std::string progressReport(const Progress& p, const std::vector<Lesson>& lessons
                 any = true;
             }
             const PracticeRecord& rec = it->second;
-            s << "| " << topic.title.in(lang) << " | " << practiceLevelLabel(level, lang)
-              << " | " << rec.instances.size() << " | " << rec.right() << " | " << rec.streak()
-              << " | " << (rec.mastered() ? tr(lang, "yes") : tr(lang, "not yet")) << " |\n";
+            s << "| " << topic.title.in(lang) << " | " << practiceLevelLabel(level, lang) << " | "
+              << rec.instances.size() << " | " << rec.right() << " | " << rec.streak() << " | "
+              << (rec.mastered() ? tr(lang, "yes") : tr(lang, "not yet")) << " |\n";
         }
     if (any)
         s << "\n"
-          << trf(lang, "A topic is mastered at a level by %1 instances in a row, each right at "
-                       "every first answer.",
+          << trf(lang,
+                 "A topic is mastered at a level by %1 instances in a row, each right at "
+                 "every first answer.",
                  {std::to_string(kMasteryStreak)})
           << "\n";
     return s.str();

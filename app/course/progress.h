@@ -45,7 +45,7 @@ struct PracticeRecord {
 inline constexpr int kMasteryStreak = 3;
 
 struct Progress {
-    std::map<std::string, LessonProgress> lessons;  // by lesson id (practice instances too)
+    std::map<std::string, LessonProgress> lessons;   // by lesson id (practice instances too)
     std::map<std::string, PracticeRecord> practice;  // by "topic/level" (practiceKey)
 };
 /// "dda-2d/easy": the key of a topic's practice at a level in Progress::practice.

@@ -1,7 +1,7 @@
 // The replay app's window: its views, its parts made and wired, its own actions and the menus.
 #include "main_window.h"
-#include "practice_controller.h"
 #include "file_dialogs.h"
+#include "practice_controller.h"
 
 #include "board_docks.h"
 #include "compare_launcher.h"

@@ -96,10 +96,10 @@ void PracticeController::addLessonItems(QMenu* lessons) {
 void PracticeController::retranslate(Language lang) {
     lang_ = lang;
     const QSettings settings;
-    const QString wantTopic = topics_->count() ? q(topic())
-                                               : settings.value("practice/topic").toString();
-    const QString wantLevel = levels_->count() ? q(level())
-                                               : settings.value("practice/level").toString();
+    const QString wantTopic =
+        topics_->count() ? q(topic()) : settings.value("practice/topic").toString();
+    const QString wantLevel =
+        levels_->count() ? q(level()) : settings.value("practice/level").toString();
     topics_->clear();
     for (const PracticeTopic& t : practiceTopics())
         topics_->addItem(q(t.title.in(lang)), q(t.name));

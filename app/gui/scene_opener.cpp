@@ -128,7 +128,7 @@ void SceneOpener::openLesson(const QString& idOrPath, bool quiet) {
             return LessonController::prepare(lesson, progress);
         },
         [this, lesson, quiet, practice, title](LessonController::Opened&& o,
-                                                const TaskOutcome& outcome) {
+                                               const TaskOutcome& outcome) {
             if (outcome.superseded) return;
             if (!outcome.ok()) {
                 openFailed(practice ? title : tr("lesson %1").arg(lesson.number), outcome, quiet);

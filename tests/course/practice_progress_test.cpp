@@ -54,8 +54,8 @@ TEST(PracticeProgress, StreakAndMasteryCountRightsInARow) {
     EXPECT_EQ(record({Result::Right, Result::Open, Result::Right}).streak(), 2);
     EXPECT_EQ(record({Result::Right, Result::Missed, Result::Right}).streak(), 1);
     EXPECT_FALSE(record({Result::Right, Result::Right, Result::Missed, Result::Right}).mastered());
-    EXPECT_TRUE(
-        record({Result::Missed, Result::Right, Result::Open, Result::Right, Result::Right}).mastered());
+    EXPECT_TRUE(record({Result::Missed, Result::Right, Result::Open, Result::Right, Result::Right})
+                    .mastered());
     // Mastery once reached is kept after a later miss; the streak is not.
     const PracticeRecord later =
         record({Result::Right, Result::Right, Result::Right, Result::Missed});
@@ -80,7 +80,8 @@ TEST(PracticeProgress, ADecidedResultIsNeverChanged) {
 
 TEST(PracticeProgress, TheFileKeepsThePracticeAndReadsItBack) {
     Progress p;
-    p.practice[practiceKey("dda-2d", "easy")] = record({Result::Right, Result::Missed, Result::Open});
+    p.practice[practiceKey("dda-2d", "easy")] =
+        record({Result::Right, Result::Missed, Result::Open});
     p.practice["dda-2d/easy"].instances.push_back({9007199254740991ull, Result::Right});
     const std::string text = progressToJson(p);
     const Progress back = parseProgress(text, "progress.json");
@@ -97,8 +98,10 @@ TEST(PracticeProgress, TheFileKeepsThePracticeAndReadsItBack) {
 
 TEST(PracticeProgress, BadPracticeEntriesNameTheirKey) {
     const auto fails = [](const std::string& practice, const std::string& want) {
-        const std::string text = "{\"format\": \"raystep-progress\", \"version\": 1,\n"
-                                 "\"practice\": " + practice + "}";
+        const std::string text =
+            "{\"format\": \"raystep-progress\", \"version\": 1,\n"
+            "\"practice\": " +
+            practice + "}";
         try {
             parseProgress(text, "p.json");
             ADD_FAILURE() << practice << " was accepted";
@@ -117,7 +120,7 @@ TEST(PracticeProgress, BadPracticeEntriesNameTheirKey) {
 
 TEST(PracticeProgress, MergingKeepsBothWindowsInstancesAndDecisions) {
     Progress mine, theirs;
-    mine.practice["dda-2d/easy"] = record({Result::Right, Result::Open});    // seeds 100, 101
+    mine.practice["dda-2d/easy"] = record({Result::Right, Result::Open});  // seeds 100, 101
     theirs.practice["dda-2d/easy"] = record({Result::Right, Result::Missed, Result::Right});
     theirs.practice["ray-sphere/hard"] = record({Result::Right});
     mergeProgress(mine, theirs);
@@ -160,8 +163,8 @@ TEST(PracticeProgress, ANewInstanceIsNeverOneGivenBeforeEvenFromAnotherSeed) {
     const auto seen = [&](std::uint64_t s, const std::string& d) {
         return rec.drawn(s) || rec.given(d);
     };
-    const PracticeInstance c =
-        drawPractice("dda-2d", PracticeLevel::Easy, [&] { return draws.at(next++); }, seen);
+    const PracticeInstance c = drawPractice(
+        "dda-2d", PracticeLevel::Easy, [&] { return draws.at(next++); }, seen);
     EXPECT_EQ(c.seed, 85u);
     EXPECT_NE(practiceDigest(c), practiceDigest(a));
     // The digest is kept in the file and read back.
@@ -170,6 +173,7 @@ TEST(PracticeProgress, ANewInstanceIsNeverOneGivenBeforeEvenFromAnotherSeed) {
     EXPECT_EQ(parseProgress(progressToJson(p), "p").practice.at("dda-2d/easy").instances[0].digest,
               practiceDigest(a));
     // Every seed refused: one clear error, not a hang.
-    EXPECT_THROW(drawPractice("dda-2d", PracticeLevel::Easy, [] { return std::uint64_t(27); }, seen),
+    EXPECT_THROW(drawPractice(
+                     "dda-2d", PracticeLevel::Easy, [] { return std::uint64_t(27); }, seen),
                  PracticeError);
 }

@@ -88,8 +88,8 @@ TEST(Practice, ThreeRightInARowMasterATopicAndAWrongFirstAnswerStartsAgain) {
     EXPECT_EQ(shownKey(p).topic, "dda-2d");
     EXPECT_EQ(shownKey(p).level, PracticeLevel::Easy);
     EXPECT_EQ(status(w), "Right in a row: 0 of 3");
-    EXPECT_TRUE(w.findChild<QLabel*>("practiceSeed")->text().contains(
-        QString::number(shownKey(p).seed)));
+    EXPECT_TRUE(
+        w.findChild<QLabel*>("practiceSeed")->text().contains(QString::number(shownKey(p).seed)));
 
     std::set<std::uint64_t> seeds;
     for (int round = 1; round <= 3; ++round) {

@@ -89,8 +89,9 @@ StructureOutline<Prims::N> outlineOf(const KdTree<Prims>& kd, OutlineDetail deta
         o.maxDepth = std::max(o.maxDepth, out.depth);
         if (out.leaf) {
             out.primitives = n.count;
-            listPrimitives<N>(o, out, detail,
-                              std::span<const std::uint32_t>(kd.primIds()).subspan(n.index, n.count));
+            listPrimitives<N>(
+                o, out, detail,
+                std::span<const std::uint32_t>(kd.primIds()).subspan(n.index, n.count));
             return;
         }
         out.plane = static_cast<std::uint32_t>(o.planes.size());

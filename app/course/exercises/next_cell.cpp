@@ -132,9 +132,8 @@ class NextCell final : public ExerciseKindUnit {
         if (!replayHeld) return stepTheReplayAdvice(lang);
         // Held before the walk's first cell: there is no current cell on screen to compare.
         const bool beforeTheWalk =
-            heldAtTheStart(ex) ||
-            (ex.at.mode == ReplayPosition::Mode::BeforeEvent &&
-             ex.at.eventKind == variantIndex<DdaCell>() && ex.at.nth == 1);
+            heldAtTheStart(ex) || (ex.at.mode == ReplayPosition::Mode::BeforeEvent &&
+                                   ex.at.eventKind == variantIndex<DdaCell>() && ex.at.nth == 1);
         if (beforeTheWalk)
             return tr(lang,
                       "The replay waits here until you answer, before the walk's first cell: "

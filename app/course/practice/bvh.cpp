@@ -5,7 +5,6 @@
 // overlapping siblings, on more primitives.
 #include "course/practice/tree2d.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

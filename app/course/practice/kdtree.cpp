@@ -7,7 +7,6 @@
 
 #include "course/compute.h"
 
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -106,11 +105,11 @@ std::string treeWords(const Scene2D& s, const std::vector<TreeNode>& nodes, bool
         const std::string id = std::to_string(n.id);
         if (!n.leaf) {
             const std::string a = kAxis[n.axis], at = num(n.split, it);
-            parts.push_back(
-                (it ? "nodo " : "node ") + id + (it ? ": il piano `" : ": the plane `") + a +
-                " = " + num(n.split) + (it ? "`, figli " : "`, children ") +
-                std::to_string(n.left) + " (" + a + " < " + at + ")" + (it ? " e " : " and ") +
-                std::to_string(n.right) + " (" + a + " > " + at + ")");
+            parts.push_back((it ? "nodo " : "node ") + id +
+                            (it ? ": il piano `" : ": the plane `") + a + " = " + num(n.split) +
+                            (it ? "`, figli " : "`, children ") + std::to_string(n.left) + " (" +
+                            a + " < " + at + ")" + (it ? " e " : " and ") +
+                            std::to_string(n.right) + " (" + a + " > " + at + ")");
             continue;
         }
         std::vector<std::string> names;

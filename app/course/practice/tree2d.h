@@ -49,8 +49,8 @@ struct TreeNode {
     std::uint32_t id = 0;
     BoxN<2> box;
     bool leaf = false;
-    int axis = 0;         // interior: the axis of its split
-    double split = 0.0;   // a kd-tree's interior: its plane's position
+    int axis = 0;                       // interior: the axis of its split
+    double split = 0.0;                 // a kd-tree's interior: its plane's position
     std::uint32_t left = 0, right = 0;  // interior: its children (left: the lower side)
     std::vector<std::uint32_t> prims;   // a leaf's, in the engine's order
 };
@@ -220,7 +220,7 @@ inline bool rayClear(const Scene2D& s, const Ray2& ray, std::vector<double> xs,
 /// A ray from outside `box` clear of every near tie with the nodes' boxes and the primitives
 /// (rayClear), drawn up to 20 times; nullopt if none is.
 inline std::optional<Ray2> clearRay(Random& r, const Scene2D& s, const BoxN<2>& box,
-                                   const std::vector<TreeNode>& nodes) {
+                                    const std::vector<TreeNode>& nodes) {
     std::vector<double> xs, ys;
     for (const TreeNode& n : nodes) {
         xs.push_back(n.box.lo[0]);
