@@ -168,10 +168,6 @@ void PracticeController::answerRecorded(const Lesson& lesson) {
     refresh();
 }
 
-QString PracticeController::status() const {
-    return status_->text();
-}
-
 void PracticeController::refresh() {
     const Progress& progress = lessons_.studentProgress();
     const auto it = progress.practice.find(practiceKey(topic(), level()));

@@ -35,9 +35,6 @@ class PracticeController : public QObject {
     void addLessonItems(QMenu* lessons);
     /// Draws a new instance of the chosen topic and level (never one the student was given).
     void newExercise();
-    /// The bar's text: the topic, the level, the streak and mastery.
-    QString status() const;
-    QWidget* bar() const { return bar_; }
     /// After a change of language: the combos' texts and the status again.
     void retranslate(Language lang);
 

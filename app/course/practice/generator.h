@@ -92,6 +92,9 @@ ojson jsonVec(const std::vector<double>& v);
 ojson text(const std::string& en, const std::string& it);
 /// An exercise with its id, type and prompt; the caller adds its own keys.
 ojson exercise(const std::string& id, const std::string& type, const ojson& prompt);
+/// A compute exercise: `quantity` of the data `given` (course/compute.h), asked by `prompt`.
+ojson computeExercise(const std::string& id, const std::string& quantity, const ojson& given,
+                      const ojson& prompt);
 /// A hint list: each {"en", "it"}.
 ojson hints(std::initializer_list<ojson> items);
 

@@ -296,10 +296,8 @@ Draft makeKdTree(Random& r, PracticeLevel level) {
     ojson ex = ojson::array();
     const auto compute = [&](const std::string& id, const std::string& quantity,
                              const std::string& askEn, const std::string& askIt) {
-        ojson e = exercise(id, "compute", text(leadEn + " " + askEn, leadIt + " " + askIt));
-        e["given"] = computeGiven;
-        e["quantity"] = quantity;
-        return e;
+        return computeExercise(id, quantity, computeGiven,
+                               text(leadEn + " " + askEn, leadIt + " " + askIt));
     };
     ojson pl = compute(
         "p-left", "pL",

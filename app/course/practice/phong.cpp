@@ -136,10 +136,7 @@ Draft makePhong(Random& r, PracticeLevel level) {
     given["shading"] = shading;
     const auto compute = [&](const std::string& id, const std::string& quantity,
                              const std::string& askEn, const std::string& askIt) {
-        ojson e = exercise(id, "compute", text(en + " " + askEn, it + " " + askIt));
-        e["given"] = given;
-        e["quantity"] = quantity;
-        return e;
+        return computeExercise(id, quantity, given, text(en + " " + askEn, it + " " + askIt));
     };
 
     Draft d;

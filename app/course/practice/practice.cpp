@@ -263,6 +263,14 @@ int Reference::choice(std::string_view id) const {
     return static_cast<int>(answerOf(*this, id).numbers.at(0));
 }
 
+ojson computeExercise(const std::string& id, const std::string& quantity, const ojson& given,
+                      const ojson& prompt) {
+    ojson e = exercise(id, "compute", prompt);
+    e["given"] = given;
+    e["quantity"] = quantity;
+    return e;
+}
+
 std::string num(double v, bool comma) {
     std::string s;
     // The shortest that reads back, without an exponent ("10", not "1e+01") unless it needs one.

@@ -119,10 +119,7 @@ Draft makeRaySphere(Random& r, PracticeLevel level) {
     given["sphere"] = {{"c", jsonVec(asVec(g.c))}, {"r", g.r}};
     const auto compute = [&](const std::string& id, const std::string& quantity,
                              const std::string& askEn, const std::string& askIt) {
-        ojson e = exercise(id, "compute", text(en + " " + askEn, it + " " + askIt));
-        e["given"] = given;
-        e["quantity"] = quantity;
-        return e;
+        return computeExercise(id, quantity, given, text(en + " " + askEn, it + " " + askIt));
     };
 
     Draft dr;

@@ -137,11 +137,10 @@ Draft makeRayTriangle(Random& r, PracticeLevel level) {
     const auto compute = [&](const std::string& id, double value, const std::string& askEn,
                              const std::string& askIt) {
         const bool exact = multipleOf(value, 0.01);
-        ojson e = exercise(id, "compute",
-                           text(en + " " + askEn + (exact ? "" : " Give it to two decimals."),
-                                it + " " + askIt + (exact ? "" : " Arrotonda a due decimali.")));
-        e["given"] = given;
-        e["quantity"] = id;
+        ojson e =
+            computeExercise(id, id, given,
+                            text(en + " " + askEn + (exact ? "" : " Give it to two decimals."),
+                                 it + " " + askIt + (exact ? "" : " Arrotonda a due decimali.")));
         if (!exact) e["tolerance"] = 0.005;
         return e;
     };
