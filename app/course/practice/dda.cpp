@@ -61,9 +61,9 @@ Draft makeDda(Random& r, PracticeLevel level) {
         "first-cell", "next_cell",
         text("Which cell is the ray in first (" + dims +
                  ", counted from 0 at min)? A ray from outside starts where it enters the grid.",
-             "In quale cella si trova per prima il raggio (" + dims +
-                 ", contate da 0 a partire da min)? Un raggio da fuori parte da dove entra "
-                 "nella griglia."));
+             "Qual è la prima cella in cui si trova il raggio (" + dims +
+                 ", indici contati da 0 a partire da min)? Per un raggio esterno, la prima cella "
+                 "è quella in cui entra nella griglia."));
     first["hint"] =
         hints({text("cell = floor((point - min) / cell size), axis by axis, at the "
                     "point where the walk starts.",

@@ -165,7 +165,7 @@ Draft makeRaySphere(Random& r, PracticeLevel level) {
     const ojson missWhy = text(
         "A miss: a negative discriminant (the line passes the sphere by), or both roots "
         "t < 0 (the sphere is behind the origin).",
-        "Il raggio manca la sfera: discriminante negativo (la retta passa oltre la sfera), "
+        "Il raggio manca la sfera: discriminante negativo (la retta non interseca la sfera), "
         "oppure entrambe le radici con t < 0 (la sfera è dietro l'origine).");
     ch["choices"] = {
         {{"text", text("The ray hits the sphere", "Il raggio colpisce la sfera")}, {"why", hitWhy}},

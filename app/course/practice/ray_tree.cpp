@@ -147,9 +147,9 @@ Draft makeRayTree(Random& r, PracticeLevel level) {
         "`bounces`, un **raggio riflesso** se il materiale riflette (lo specchio; anche il vetro, "
         "con peso 0,1) e un **raggio rifratto** attraverso il vetro. La profondità di un raggio "
         "è quella del padre più uno (quella del raggio primario è 0; quella di un raggio d'ombra "
-        "è quella del suo punto più uno). Qui ogni intersezione è frontale: un riflesso torna "
-        "dritto indietro, un rifratto prosegue dritto, e un raggio che si lascia alle spalle le "
-        "sfere non incontra nulla.";
+        "è quella del suo punto più uno). Qui ogni raggio colpisce le superfici "
+        "perpendicolarmente: un raggio riflesso torna indietro lungo l'asse, uno rifratto "
+        "prosegue dritto, e un raggio che si lascia alle spalle le sfere non incontra nulla.";
 
     Draft d;
     ojson& l = d.lesson;
@@ -174,7 +174,7 @@ Draft makeRayTree(Random& r, PracticeLevel level) {
     };
     ojson shadow =
         count("shadow-rays", "shadow", "How many shadow rays does this pixel trace in all?",
-              "Quanti raggi d'ombra traccia in tutto questo pixel?");
+              "Quanti raggi d'ombra vengono tracciati in tutto per questo pixel?");
     shadow["hint"] = hints(
         {text("List the hits of the tree first, with their depths; at each, which lights lie on "
               "the side the ray came from?",
@@ -203,7 +203,7 @@ Draft makeRayTree(Random& r, PracticeLevel level) {
                           "How many rays of depth " + std::to_string(depth) +
                               " does it trace, of every kind (shadow rays too)?",
                           "Quanti raggi di profondità " + std::to_string(depth) +
-                              " traccia, di ogni tipo (anche quelli d'ombra)?");
+                              " vengono tracciati in tutto, di qualunque tipo (compresi quelli d'ombra)?");
     atDepth["ray_depth"] = depth;
     atDepth["hint"] =
         hints({text("Rays of depth " + std::to_string(depth) +

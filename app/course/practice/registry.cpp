@@ -12,7 +12,7 @@ const std::vector<Generator>& generators() {
            "hard: ties through a grid vertex",
            {{"it",
              "facile: un raggio dall'interno, verso +x e +y; medio: ogni direzione, anche "
-             "da fuori; difficile: pareggi in un vertice della griglia"}}}},
+             "da fuori; difficile: casi di parità (tMax uguali) in un vertice della griglia"}}}},
          makeDda2D},
         {{"dda-3d",
           {"The 3D DDA: tDelta, tMax, the first cell and the walk",
@@ -21,7 +21,7 @@ const std::vector<Generator>& generators() {
            "hard: ties",
            {{"it",
              "facile: dall'interno, direzioni positive; medio: ogni direzione, anche da "
-             "fuori; difficile: pareggi"}}}},
+             "fuori; difficile: casi di parità"}}}},
          makeDda3D},
         {{"mailbox",
           {"Mailboxing: the primitive tests a grid walk makes without and with a mailbox",
@@ -102,8 +102,9 @@ const std::vector<Generator>& generators() {
           {"easy: one or two spheres, one light, bounces 1 or 2; medium: glass in front, "
            "bounces 2 or 3; hard: glass in front and a mirror, two lights, bounces 3 or 4",
            {{"it",
-             "facile: una o due sfere, una luce, bounces 1 o 2; medio: il vetro davanti, bounces "
-             "2 o 3; difficile: il vetro davanti e uno specchio, due luci, bounces 3 o 4"}}}},
+             "facile: una o due sfere, una luce, `bounces` = 1 o 2; medio: il vetro davanti, "
+             "`bounces` = 2 o 3; difficile: il vetro davanti e uno specchio, due luci, "
+             "`bounces` = 3 o 4"}}}},
          makeRayTree},
     };
     return list;
