@@ -199,11 +199,12 @@ Draft makeRayTree(Random& r, PracticeLevel level) {
                         "lancia uno, da fuori verso dentro e da dentro verso fuori.")});
         ex.push_back(refr);
     }
-    ojson atDepth = count("depth-rays", nullptr,
-                          "How many rays of depth " + std::to_string(depth) +
-                              " does it trace, of every kind (shadow rays too)?",
-                          "Quanti raggi di profondità " + std::to_string(depth) +
-                              " vengono tracciati in tutto, di qualunque tipo (compresi quelli d'ombra)?");
+    ojson atDepth =
+        count("depth-rays", nullptr,
+              "How many rays of depth " + std::to_string(depth) +
+                  " does it trace, of every kind (shadow rays too)?",
+              "Quanti raggi di profondità " + std::to_string(depth) +
+                  " vengono tracciati in tutto, di qualunque tipo (compresi quelli d'ombra)?");
     atDepth["ray_depth"] = depth;
     atDepth["hint"] =
         hints({text("Rays of depth " + std::to_string(depth) +
