@@ -3,6 +3,7 @@
 // (scripts/measure_build.sh plots the scaling into docs/images/build-scaling.png).
 #include "meshes.h"
 #include "raystep/accel/accel.h"
+#include "raystep/accel/outline.h"
 #include "raystep/render/tracer.h"
 #include "raystep/scene/scene_loader.h"
 
@@ -80,9 +81,34 @@ void knotSizesFiveTimes(benchmark::internal::Benchmark* b) {
     b->ComputeStatistics(
         "max", [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
 }
+/// The outline a view draws a structure from (boxes only), against the one a practice prompt
+/// reads (each leaf's primitive ids too): on the 181-around knot's fast kd-tree (262k triangles).
+void outlineOfKnot(benchmark::State& state, OutlineDetail detail) {
+    static const Accelerator tree = [] {
+        AccelOptions o;
+        o.kdtree.build = KdBuild::Fast;
+        return buildAccelerator(knot(181), AccelKind::KdTree, {}, o);
+    }();
+    std::size_t ids = 0;
+    for (auto _ : state) {
+        const StructureOutline<3> o = outline(tree, detail);
+        ids = o.leafPrimitives.size();
+        benchmark::DoNotOptimize(o.nodes.data());
+    }
+    state.counters["leafIds"] = static_cast<double>(ids);
+}
+void BM_Outline_Boxes(benchmark::State& state) {
+    outlineOfKnot(state, OutlineDetail::Boxes);
+}
+void BM_Outline_Primitives(benchmark::State& state) {
+    outlineOfKnot(state, OutlineDetail::Primitives);
+}
+
 BENCHMARK(BM_KdTreeSahBuild)->Apply(knotSizes);
 BENCHMARK(BM_KdTreeFastBuild)->Apply(knotSizesFiveTimes)->UseRealTime();
 BENCHMARK(BM_BvhSahBuild)->Apply(knotSizesFiveTimes);
+BENCHMARK(BM_Outline_Boxes)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Outline_Primitives)->Unit(benchmark::kMillisecond);
 
 // Recording: the same pixels of the default scene traced with recording off (NullRecorder: the
 // hooks are discarded at compile time) and on (every event kept in an EventLog).
