@@ -27,11 +27,11 @@ constexpr PracticeLevel kLevels[] = {PracticeLevel::Easy, PracticeLevel::Medium,
 }  // namespace
 
 PracticeController::PracticeController(QObject* parent, LessonController& lessons,
-                                       LessonPanel& panel, std::function<std::uint64_t()> draw)
-    : QObject(parent), lessons_(lessons), panel_(panel), draw_(std::move(draw)) {
-    if (!draw_)
-        // Nine digits: a seed a lecturer reads off the bar and types into `practice make`.
-        draw_ = [] { return QRandomGenerator::global()->bounded(Q_UINT64_C(1'000'000'000)); };
+                                       LessonPanel& panel)
+    : QObject(parent),
+      lessons_(lessons),
+      // Nine digits: a seed a lecturer reads off the bar and types into `practice make`.
+      draw_([] { return QRandomGenerator::global()->bounded(Q_UINT64_C(1'000'000'000)); }) {
     bar_ = new QWidget;
     bar_->setObjectName("practiceBar");
     bar_->setStyleSheet(QStringLiteral("#practiceBar { background: #e8f1fb; }"));
@@ -62,7 +62,7 @@ PracticeController::PracticeController(QObject* parent, LessonController& lesson
     grid->addWidget(seedLabel_, 1, 2, Qt::AlignRight | Qt::AlignTop);
     grid->setColumnStretch(0, 1);
     bar_->hide();
-    panel_.setHeader(bar_);
+    panel.setHeader(bar_);
     retranslate(Language::En);
 
     // A topic or a level picked: an instance of it at once, as a lesson picked opens.
@@ -94,7 +94,6 @@ void PracticeController::addLessonItems(QMenu* lessons) {
 }
 
 void PracticeController::retranslate(Language lang) {
-    lang_ = lang;
     const QSettings settings;
     const QString wantTopic =
         topics_->count() ? q(topic()) : settings.value("practice/topic").toString();

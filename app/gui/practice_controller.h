@@ -27,9 +27,8 @@ class LessonPanel;
 class PracticeController : public QObject {
     Q_OBJECT
   public:
-    /// `draw` gives a new seed (random in the app; a test's own sequence).
-    PracticeController(QObject* parent, LessonController& lessons, LessonPanel& panel,
-                       std::function<std::uint64_t()> draw = {});
+    /// The bar goes over `panel`; the progress is `lessons`'.
+    PracticeController(QObject* parent, LessonController& lessons, LessonPanel& panel);
 
     /// Lessons > Practice...: the bar, and a new instance of the topic and level it shows.
     void addLessonItems(QMenu* lessons);
@@ -49,9 +48,7 @@ class PracticeController : public QObject {
     void refresh();
 
     LessonController& lessons_;
-    LessonPanel& panel_;
-    std::function<std::uint64_t()> draw_;
-    Language lang_ = Language::En;
+    std::function<std::uint64_t()> draw_;  // a new seed
     QWidget* bar_ = nullptr;
     QComboBox* topics_ = nullptr;
     QComboBox* levels_ = nullptr;

@@ -359,15 +359,5 @@ def check_bvh(j, level, fail):
     return "%d boxes" % len(boxes)
 
 
-def main():
-    cli = sys.argv[1]
-    seeds = int(sys.argv[2]) if len(sys.argv) > 2 else 200
-    errors = []
-    checks = (("kdtree", check_kdtree), ("bvh", check_bvh))
-    practice_sweep.sweep(cli, checks, seeds, 3, errors)
-    practice_sweep.lesson_files_score(cli, [t for t, _ in checks], errors)
-    return practice_sweep.finish(errors)
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(practice_sweep.main(sys.argv, (("kdtree", check_kdtree), ("bvh", check_bvh)), 200, 3))

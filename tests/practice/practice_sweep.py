@@ -82,6 +82,17 @@ def lesson_files_score(cli, topics, errors, seed=7):
                         break
 
 
+def main(argv, checks, default_seeds, reruns):
+    """A topic script's main: `script RAYSTEP_CLI [SEEDS]`, every check swept, the -o files
+    scored; the exit code."""
+    cli = argv[1]
+    seeds = int(argv[2]) if len(argv) > 2 else default_seeds
+    errors = []
+    sweep(cli, checks, seeds, reruns, errors)
+    lesson_files_score(cli, [t for t, _ in checks], errors)
+    return finish(errors)
+
+
 def finish(errors):
     for e in errors[:40]:
         print("FAIL", e)

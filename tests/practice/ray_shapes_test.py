@@ -123,15 +123,5 @@ def check_triangle(j, level, fail):
     return "hit" if hit else "over" if u > 0 and v > 0 else "outside"
 
 
-def main():
-    cli = sys.argv[1]
-    seeds = int(sys.argv[2]) if len(sys.argv) > 2 else 150
-    errors = []
-    checks = (("ray-sphere", check_sphere), ("ray-triangle", check_triangle))
-    practice_sweep.sweep(cli, checks, seeds, 5, errors)
-    practice_sweep.lesson_files_score(cli, [t for t, _ in checks], errors)
-    return practice_sweep.finish(errors)
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(practice_sweep.main(sys.argv, (("ray-sphere", check_sphere), ("ray-triangle", check_triangle)), 150, 5))

@@ -102,13 +102,11 @@ ojson PracticeInstance::toJson() const {
     out["given"] = given;
     out["answers"] = answers;
     ojson list = ojson::array();
-    const LessonRun run = runLesson(lesson);
-    const LessonLogs logs = run.logs();
-    for (const Exercise& ex : lesson.exercises) {
-        const Answer a = referenceAnswer(ex, logs.of(ex.setup), lesson.file);
+    for (std::size_t i = 0; i < lesson.exercises.size(); ++i) {
+        const Exercise& ex = lesson.exercises[i];
         list.push_back({{"id", ex.id},
                         {"type", std::string(exerciseKindName(ex.kind))},
-                        {"answer", formatAnswer(ex, a, Language::En)}});
+                        {"answer", formatAnswer(ex, key[i], Language::En)}});
     }
     out["exercises"] = list;
     return out;
@@ -200,6 +198,7 @@ PracticeInstance makePractice(std::string_view topic, std::uint64_t seed, Practi
         out.level = level;
         out.given = std::move(d.given);
         out.answers = d.answers(ref);
+        for (const Exercise& ex : lesson.exercises) out.key.push_back(ref.byId.at(ex.id));
         out.lessonText = std::move(text);
         out.lesson = std::move(lesson);
         return out;

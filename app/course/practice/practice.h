@@ -3,6 +3,7 @@
 // ray, data) as a lesson of its own, and every answer of it is read from that lesson's recorded
 // trace or computed by raystep's kernels, through the lesson engine that checks the built-in
 // lessons. The same topic, seed and level give the same instance on every machine.
+#include "course/exercise.h"
 #include "course/lesson.h"
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,7 @@ struct PracticeInstance {
     nlohmann::ordered_json answers;  // read from the lesson's trace or raystep's kernels
     std::string lessonText;          // the lesson file (inline scene), as `-o` writes it
     Lesson lesson;                   // the same, loaded
+    std::vector<Answer> key;         // each exercise's reference answer, in the lesson's order
     /// {"format": "raystep-practice", "version": 1, "topic", "seed", "level", "given",
     /// "answers", "exercises": [{"id", "type", "answer"}]}: `practice make --json`.
     nlohmann::ordered_json toJson() const;
