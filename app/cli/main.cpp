@@ -1,4 +1,5 @@
 // raystep-cli: the renderer from the command line, for lecturers' scripts and for tests.
+#include "assess_command.h"
 #include "build_command.h"
 #include "common.h"
 #include "compare_command.h"
@@ -34,14 +35,14 @@ int main(int argc, char** argv) {
 
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     const std::string first = argc > 1 ? argv[1] : "";
-    const std::array<std::string, 11> commands = {"scenes",   "render", "intersect", "dda",
+    const std::array<std::string, 12> commands = {"scenes",   "render", "intersect", "dda",
                                                   "build",    "trace",  "compare",   "lesson",
-                                                  "practice", "export", "homework"};
+                                                  "practice", "export", "homework",  "assess"};
     if (!first.empty() && first[0] != '-' &&
         std::find(commands.begin(), commands.end(), first) == commands.end())
         return fail(std::string("unknown command '") + argv[1] +
                     "' (expected: scenes, render, intersect, dda, build, trace, compare, lesson, "
-                    "practice, export, homework)");
+                    "practice, export, homework, assess)");
 
     // The languages (base/i18n.h), with those of a RAYSTEP_LANGUAGES folder: a bad one is bad
     // input.
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
     addExportCommand(app, exportArgs);
     HomeworkArgs homeworkArgs;
     addHomeworkCommand(app, homeworkArgs);
+    AssessArgs assessArgs;
+    addAssessCommand(app, assessArgs);
 
     try {
         app.parse(argc, argv);
@@ -108,6 +111,8 @@ int main(int argc, char** argv) {
             code = runExport(exportArgs);
         else if (app.got_subcommand("homework"))
             code = runHomework(homeworkArgs);
+        else if (app.got_subcommand("assess"))
+            code = runAssess(assessArgs);
         else
             code = runRender(renderArgs);
     } catch (const std::filesystem::filesystem_error& e) {

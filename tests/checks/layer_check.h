@@ -18,8 +18,8 @@ struct LayerViolation {
 
 /// The core's floors, lowest first: a file under algorithms/raystep/<floor>/ includes
 /// "raystep/<floor'>/..." only for a floor' at or below its own.
-inline constexpr std::string_view kFloors[] = {"base",  "geometry", "trace",
-                                               "scene", "accel",    "render"};
+inline constexpr std::string_view kFloors[] = {"base",  "geometry", "trace", "scene",
+                                               "accel", "render",   "assess"};
 
 /// Headers that only their structure's .cpp files include (what the builds or the queries share).
 inline constexpr std::string_view kInternalHeaders[] = {"raystep/accel/kdtree_build.h",
