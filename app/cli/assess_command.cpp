@@ -91,10 +91,9 @@ GridSpec<3, double> parseGrid(const AssessArgs& a, int& dims) {
 }
 
 /// The structure raystep checks against, numbered as the trace names it, one record a line.
-template <int N, typename Accel>
-std::string structureLines(const Accel& accel) {
+template <int N>
+std::string structureLines(const StructureOutline<N>& o) {
     std::string out;
-    const auto o = outline(accel, OutlineDetail::Primitives);
     const auto vec = [](const VecN<N, double>& v) {
         nlohmann::json a = nlohmann::json::array();
         for (int i = 0; i < N; ++i) a.push_back(v[i]);
@@ -164,24 +163,24 @@ std::string primitiveLines(const std::variant<Scene, Scene2D>& any) {
 }
 
 /// The grid's cells that list primitives, one line each.
-template <int N, typename Prims>
-std::string cellLines(const UniformGridT<Prims>& grid, const GridSpec<N, double>& spec) {
+template <int N>
+std::string cellLines(const OutlineGrid<N>& grid) {
     std::string out;
     IVecN<N> c{0};
-    for (;;) {
-        const auto prims = grid.cell(c);
-        if (!prims.empty()) {
+    for (std::size_t k = 0; k + 1 < grid.cellStart.size(); ++k) {
+        if (grid.cellStart[k + 1] > grid.cellStart[k]) {
             std::vector<int> cell(N);
             for (int i = 0; i < N; ++i) cell[i] = c[i];
             out += nlohmann::ordered_json(
                        {{"cell", cell},
-                        {"prims", std::vector<std::uint32_t>(prims.begin(), prims.end())}})
+                        {"prims", std::vector<std::uint32_t>(
+                                      grid.cellPrimitives.begin() + grid.cellStart[k],
+                                      grid.cellPrimitives.begin() + grid.cellStart[k + 1])}})
                        .dump() +
                    "\n";
         }
-        int i = 0;
-        while (i < N && ++c[i] == spec.res[i]) c[i++] = 0;
-        if (i == N) break;
+        int a = 0;
+        while (a < N && ++c[a] == grid.spec.res[a]) c[a++] = 0;
     }
     return out;
 }
@@ -221,15 +220,13 @@ void loadTarget(const AssessArgs& a, Target& t) {
 std::string structureText(const Target& t) {
     std::string out;
     if (t.structure.in2D) {
-        const auto& accel = *t.structure.in2D;
-        out += structureLines<2>(accel);
-        if (const auto* g = std::get_if<UniformGridT<Scene2DPrims>>(&accel))
-            out += cellLines<2>(*g, outline(accel).grid->spec);
+        const auto o = outline(*t.structure.in2D, OutlineDetail::Primitives);
+        out += structureLines<2>(o);
+        if (o.grid) out += cellLines<2>(*o.grid);
     } else {
-        const auto& accel = *t.structure.in3D;
-        out += structureLines<3>(accel);
-        if (const auto* g = std::get_if<UniformGridT<ScenePrims>>(&accel))
-            out += cellLines<3>(*g, outline(accel).grid->spec);
+        const auto o = outline(*t.structure.in3D, OutlineDetail::Primitives);
+        out += structureLines<3>(o);
+        if (o.grid) out += cellLines<3>(*o.grid);
     }
     return out + primitiveLines(t.scene);
 }
@@ -320,6 +317,7 @@ int gradeClass(const AssessArgs& a, const Target& t, Language lang) {
     std::sort(byCount.begin(), byCount.end());
     for (const auto& [n, m] : byCount)
         md += "| " + m + " | " + std::to_string(-n) + " | " +
+              // i18n: the descriptions are marked in mistakes.cpp
               tr(lang, mistakeInfo(*parseMistake(m)).description) + " |\n";
     md += "\n## The quantities that decided the failed rays\n\n| quantity | rays |\n|---|---|\n";
     std::vector<std::pair<int, std::string>> byRays;

@@ -55,7 +55,7 @@ StructureOutline<Prims::N> outlineOf(const BruteForceT<Prims>& bf, OutlineDetail
 }
 
 template <typename Prims>
-StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g, OutlineDetail) {
+StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g, OutlineDetail detail) {
     constexpr int N = Prims::N;
     StructureOutline<N> o;
     o.kind = AccelKind::Grid;
@@ -68,6 +68,18 @@ StructureOutline<Prims::N> outlineOf(const UniformGridT<Prims>& g, OutlineDetail
             grid.lines[a].push_back(grid.spec.lo[a] + i * grid.spec.cellSize(a));
     o.bounds.lo = grid.spec.lo;
     o.bounds.hi = grid.spec.hi;
+    if (detail == OutlineDetail::Primitives) {
+        // X fastest, as the grid stores its cells.
+        IVecN<N> c{0};
+        grid.cellStart.push_back(0);
+        for (bool more = true; more;) {
+            for (std::uint32_t p : g.cell(c)) grid.cellPrimitives.push_back(p);
+            grid.cellStart.push_back(static_cast<std::uint32_t>(grid.cellPrimitives.size()));
+            int a = 0;
+            while (a < N && ++c[a] == grid.spec.res[a]) c[a++] = 0;
+            more = a < N;
+        }
+    }
     o.grid = std::move(grid);
     return o;
 }

@@ -59,6 +59,9 @@ struct OutlineGrid {
     }
     /// The cell holding point `p`, if it lies in the grid (a cell owns its lower faces).
     std::optional<IVecN<N>> cellAt(const VecN<N, double>& p) const;
+    /// With OutlineDetail::Primitives: each cell's primitive ids, cell by cell with X fastest
+    /// (cell k holds cellPrimitives[cellStart[k] .. cellStart[k + 1])); empty otherwise.
+    std::vector<std::uint32_t> cellStart, cellPrimitives;
 };
 
 template <int N>

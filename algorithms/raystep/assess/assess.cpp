@@ -205,13 +205,28 @@ class Comparer {
         d.expected = d.got = "null";
         return d;
     }
-    std::string unitName(const ReferenceUnit& u) const {
-        if (u.kind == Kind::Cell) return trf(lang_, "cell %1", {tuple(u.cell, dims_, lang_)});
-        if (u.kind == Kind::Node) {
-            const bool leaf = u.node < refer_.nodes().size() && refer_.nodes()[u.node].leaf;
-            return trf(lang_, leaf ? "leaf %1" : "node %1", {std::to_string(u.node)});
-        }
-        return tr(lang_, "the scene");
+    enum class Form { In, To, After };
+    /// "in cell (3, 1)", "to leaf 5", "after node 2": the unit as a sentence takes it, in the
+    /// language's own prepositions and articles ("nella cella", "dopo il nodo").
+    std::string phrase(const ReferenceUnit& u, Form f) const {
+        if (u.kind == Kind::Cell) return cellPhrase(u.cell, f);
+        if (u.kind == Kind::None) return tr(lang_, "in the scene");
+        const bool leaf = u.node < refer_.nodes().size() && refer_.nodes()[u.node].leaf;
+        const std::string x = std::to_string(u.node);
+        if (f == Form::In) return trf(lang_, leaf ? "in leaf %1" : "in node %1", {x});
+        if (f == Form::To) return trf(lang_, leaf ? "to leaf %1" : "to node %1", {x});
+        return trf(lang_, leaf ? "after leaf %1" : "after node %1", {x});
+    }
+    std::string cellPhrase(const std::array<long long, 3>& c, Form f) const {
+        const std::string x = tuple(c, dims_, lang_);
+        if (f == Form::In) return trf(lang_, "in cell %1", {x});
+        if (f == Form::To) return trf(lang_, "to cell %1", {x});
+        return trf(lang_, "after cell %1", {x});
+    }
+    /// A phrase that opens a sentence: its first letter in capitals (ASCII in every catalogue).
+    static std::string capital(std::string s) {
+        if (!s.empty() && s[0] >= 'a' && s[0] <= 'z') s[0] = char(s[0] - 'a' + 'A');
+        return s;
     }
     std::string walkJson(const ReferenceUnit& u) const {
         if (u.kind == Kind::Cell) return ordered_json({{"cell", cellJson(u.cell, dims_)}}).dump();
@@ -232,7 +247,7 @@ class Comparer {
         d.expected = walkJson(r);
         d.got = s.walk ? walkJson(*s.walk) : "null";
         d.quantity = r.kind == Kind::Node ? "tNear" : "tMax";
-        d.explanation = trf(lang_, "The reference is in %1 here.", {unitName(r)});
+        d.explanation = trf(lang_, "Here raystep's run is %1.", {phrase(r, Form::In)});
         return d;
     }
 
@@ -341,22 +356,22 @@ class Comparer {
                 for (int b = 0; b < dims_; ++b)
                     if (r.axes & (1u << b)) equal += (equal.empty() ? "" : " = ") + tMaxName(b);
                 d.quantity = equal;
-                d.explanation = trf(
-                    lang_,
-                    "In %1 %2 = %3: the ray passes exactly through a corner where cells meet and "
-                    "only touches %4. Every tied axis steps at once: the next cell is %5.",
-                    {trf(lang_, "cell %1", {from}), equal, num(prev.tMax[winner], lang_), got,
-                     want});
+                d.explanation =
+                    trf(lang_,
+                        "%1, %2 = %3: the ray passes exactly through a corner where cells meet and "
+                        "only touches %4. Every tied axis steps at once: the next cell is %5.",
+                        {capital(cellPhrase(prev.cell, Form::In)), equal,
+                         num(prev.tMax[winner], lang_), got, want});
                 return d;
             }
             if (!tie) {
                 d.explanation = trf(
                     lang_,
-                    "In %1 %2 = %3 and %4 = %5: %2 < %4, so the ray crosses a %6 boundary "
-                    "first and the next cell is %7; you stepped in %8, to %9.",
-                    {trf(lang_, "cell %1", {from}), tMaxName(winner), num(prev.tMax[winner], lang_),
-                     tMaxName(a), num(prev.tMax[a], lang_), std::string(1, kAxisNames[winner]),
-                     want, std::string(1, kAxisNames[a]), got});
+                    "%1, %2 = %3 and %4 = %5: %2 < %4, so the ray crosses a %6 boundary first and "
+                    "the next cell is %7; you stepped in %8, to %9.",
+                    {capital(cellPhrase(prev.cell, Form::In)), tMaxName(winner),
+                     num(prev.tMax[winner], lang_), tMaxName(a), num(prev.tMax[a], lang_),
+                     std::string(1, kAxisNames[winner]), want, std::string(1, kAxisNames[a]), got});
                 return d;
             }
         }
@@ -390,12 +405,12 @@ class Comparer {
                 .dump();
         d.got = walkJson(s);
         d.quantity = tMaxName(a);
-        const std::string cell = trf(lang_, "cell %1", {tuple(r.cell, dims_, lang_)});
+        const std::string cell = capital(cellPhrase(r.cell, Form::In));
         const std::string yours = num((*s.tMax)[a], lang_);
         if (ref_.step[a] == 0) {
             d.explanation = trf(lang_,
-                                "In %1 your %2 is %3, but the ray is parallel to %4 (d%5 = 0): "
-                                "%2 is infinite (null).",
+                                "%1, your %2 is %3, but the ray is parallel to %4 (d%5 = 0): %2 is "
+                                "infinite (null).",
                                 {cell, tMaxName(a), yours, std::string(1, kAxisNames[a]),
                                  std::string(1, kAxisLower[a])});
             return d;
@@ -410,7 +425,7 @@ class Comparer {
         }
         d.explanation =
             trf(lang_,
-                "In %1 your %2 is %3, but the next %4 boundary ahead (step%4 = %5) is %6 = %7, "
+                "%1, your %2 is %3, but the next %4 boundary ahead (step%4 = %5) is %6 = %7, "
                 "crossed at t = (%7 - %8) / %9.",
                 {cell, tMaxName(a), yours, std::string(1, kAxisNames[a]),
                  ref_.step[a] > 0 ? "+1" : "-1", std::string(1, kAxisLower[a]),
@@ -497,14 +512,15 @@ class Comparer {
                     : "null";
         if (m == 0) {
             d.quantity = ref.cells ? "tEnter" : "tNear";
-            d.explanation = ref.cells ? trf(lang_,
-                                            "You logged no cell, but the ray enters the grid at "
-                                            "tEnter = %1, in %2.",
-                                            {num(ref.tEnter, lang_), unitName(next)})
-                                      : trf(lang_,
-                                            "You logged no node, but the traversal starts "
-                                            "at node %1 (the root).",
-                                            {std::to_string(next.node)});
+            d.explanation =
+                ref.cells
+                    ? trf(lang_,
+                          "You logged no cell, but the ray enters the grid at tEnter = %1, %2.",
+                          {num(ref.tEnter, lang_), phrase(next, Form::In)})
+                    : trf(lang_,
+                          "You logged no node, but the traversal starts "
+                          "at node %1 (the root).",
+                          {std::to_string(next.node)});
             return d;
         }
         const ReferenceUnit& here = ref.units[at - 1];
@@ -515,36 +531,37 @@ class Comparer {
                 if (here.tMax[a] < here.tMax[axis]) axis = a;
             d.quantity = tMaxName(axis);
             if (hitBeyond)
-                d.explanation = trf(
-                    lang_,
-                    "You stopped in %1 with the hit of primitive %2 at t = %3, but that hit lies "
-                    "beyond this cell's exit, t = %4 (%5): a primitive in a later cell may be "
-                    "nearer, so the walk goes on to %6.",
-                    {unitName(here), std::to_string(end->id), num(end->t, lang_),
-                     num(here.tFar, lang_), tMaxName(axis), unitName(next)});
+                d.explanation =
+                    trf(lang_,
+                        "You stopped %1 with the hit of primitive %2 at t = %3, but that hit lies "
+                        "beyond this cell's exit, t = %4 (%5): a primitive in a later cell may be "
+                        "nearer, so the walk goes on %6.",
+                        {phrase(here, Form::In), std::to_string(end->id), num(end->t, lang_),
+                         num(here.tFar, lang_), tMaxName(axis), phrase(next, Form::To)});
             else
-                d.explanation = trf(lang_,
-                                    "You stopped in %1, but the ray goes on: it leaves this cell "
-                                    "at t = %2 (%3), before the grid's exit at t = %4, into %5.",
-                                    {unitName(here), num(here.tFar, lang_), tMaxName(axis),
-                                     num(ref.tGridExit, lang_), unitName(next)});
+                d.explanation =
+                    trf(lang_,
+                        "You stopped %1, but the ray goes on: it leaves this cell at t = %2 (%3), "
+                        "before the grid's exit at t = %4, and the walk goes on %5.",
+                        {phrase(here, Form::In), num(here.tFar, lang_), tMaxName(axis),
+                         num(ref.tGridExit, lang_), phrase(next, Form::To)});
             return d;
         }
         d.quantity = hitBeyond ? "tFar" : "tNear";
         if (hitBeyond)
-            d.explanation = trf(
-                lang_,
-                "You stopped after %1 with the hit of primitive %2 at t = %3, but that hit lies "
-                "beyond the leaf's tFar = %4: a nearer hit may lie in a node still on the stack, "
-                "and the traversal goes on to node %5 (tNear = %6).",
-                {unitName(here), std::to_string(end->id), num(end->t, lang_), num(here.tFar, lang_),
-                 std::to_string(next.node), num(next.tNear, lang_)});
+            d.explanation =
+                trf(lang_,
+                    "You stopped %1 with the hit of primitive %2 at t = %3, but that hit lies "
+                    "beyond the leaf's tFar = %4: a nearer hit may lie in a node still on the "
+                    "stack, and the traversal goes on to node %5 (tNear = %6).",
+                    {phrase(here, Form::After), std::to_string(end->id), num(end->t, lang_),
+                     num(here.tFar, lang_), std::to_string(next.node), num(next.tNear, lang_)});
         else
-            d.explanation = trf(lang_,
-                                "You stopped after %1, but the traversal goes on to node %2 "
-                                "(tNear = %3, tFar = %4).",
-                                {unitName(here), std::to_string(next.node), num(next.tNear, lang_),
-                                 num(next.tFar, lang_)});
+            d.explanation =
+                trf(lang_,
+                    "You stopped %1, but the traversal goes on to node %2 (tNear = %3, tFar = %4).",
+                    {phrase(here, Form::After), std::to_string(next.node), num(next.tNear, lang_),
+                     num(next.tFar, lang_)});
         return d;
     }
 
@@ -573,14 +590,14 @@ class Comparer {
                 d.quantity = "tMax";
                 d.explanation =
                     trf(lang_,
-                        "The walk ends in %1: the hit at t = %2 lies before this cell's exit, "
-                        "t = %3, so no later cell can hold a nearer one; you went on to %4.",
-                        {unitName(*last), num(ref.t, lang_), num(last->tFar, lang_), got});
+                        "The walk ends %1: the hit at t = %2 lies before this cell's exit, t = %3, "
+                        "so no later cell can hold a nearer one; you went on to %4.",
+                        {phrase(*last, Form::In), num(ref.t, lang_), num(last->tFar, lang_), got});
             } else {
                 d.quantity = "tGridExit";
                 d.explanation =
-                    trf(lang_, "The ray leaves the grid after %1, at t = %2; you went on to %3%4.",
-                        {unitName(*last), num(ref.tGridExit, lang_), got,
+                    trf(lang_, "The ray leaves the grid %1, at t = %2; you went on to %3%4.",
+                        {phrase(*last, Form::After), num(ref.tGridExit, lang_), got,
                          insideGrid(extra->cell)
                              ? ""
                              : trf(lang_, ", outside the grid (%1 cells)", {gridSize()})});
@@ -594,13 +611,14 @@ class Comparer {
                                 "entered node %1.",
                                 {std::to_string(extra->id)});
         else if (ref.hit)
-            d.explanation = trf(lang_,
-                                "The traversal ends after %1: the nearest hit, t = %2, lies "
-                                "before every node still on the stack; you entered node %3.",
-                                {unitName(*last), num(ref.t, lang_), std::to_string(extra->id)});
+            d.explanation =
+                trf(lang_,
+                    "The traversal ends %1: the nearest hit, t = %2, lies before every node still "
+                    "on the stack; you entered node %3.",
+                    {phrase(*last, Form::After), num(ref.t, lang_), std::to_string(extra->id)});
         else
-            d.explanation = trf(lang_, "The traversal ends after %1; you entered node %2.",
-                                {unitName(*last), std::to_string(extra->id)});
+            d.explanation = trf(lang_, "The traversal ends %1; you entered node %2.",
+                                {phrase(*last, Form::After), std::to_string(extra->id)});
         return d;
     }
 
@@ -623,18 +641,19 @@ class Comparer {
             std::string earlier;
             for (std::size_t k = 0; k < i && earlier.empty(); ++k)
                 for (std::uint32_t p : ref.units[k].tests)
-                    if (p == t->id) earlier = unitName(ref.units[k]);
+                    if (p == t->id) earlier = phrase(ref.units[k], Form::In);
             if (!earlier.empty() || seen.count(t->id)) {
                 d.quantity = "mailbox";
                 d.explanation = trf(lang_,
-                                    "In %1 you tested primitive %2 again: this ray already tested "
-                                    "it in %3, and the mailbox skips it.",
-                                    {unitName(r), prim, earlier.empty() ? unitName(r) : earlier});
+                                    "%1, you tested primitive %2 again: this ray already tested it "
+                                    "%3, and the mailbox skips it.",
+                                    {capital(phrase(r, Form::In)), prim,
+                                     earlier.empty() ? phrase(r, Form::In) : earlier});
             } else {
                 d.quantity = r.kind == Kind::Cell ? "cell" : "leaf";
                 d.explanation =
-                    trf(lang_, "In %1 you tested primitive %2, which is not listed there.",
-                        {unitName(r), prim});
+                    trf(lang_, "%1, you tested primitive %2, which is not listed there.",
+                        {capital(phrase(r, Form::In)), prim});
             }
             return d;
         }
@@ -644,9 +663,9 @@ class Comparer {
             d.expected = ordered_json({{"test", p}}).dump();
             d.quantity = r.kind == Kind::Cell ? "cell" : "leaf";
             d.explanation = trf(lang_,
-                                "In %1 primitive %2 is listed and not yet tested by this ray: it "
-                                "is tested here, and you did not test it.",
-                                {unitName(r), std::to_string(p)});
+                                "%1, primitive %2 is listed and not yet tested by this ray: it is "
+                                "tested here, and you did not test it.",
+                                {capital(phrase(r, Form::In)), std::to_string(p)});
             return d;
         }
         return std::nullopt;
@@ -970,14 +989,32 @@ Assessment assess(const StudentTrace& trace, const Reference& reference, Languag
     return a;
 }
 
+namespace {
+/// Where a divergence is, in words: "cell 4", "the tMax of cell 4", "the end of the walk".
+std::string place(const Divergence& d, Language lang) {
+    const std::string i = std::to_string(std::max(d.index, 0));
+    if (d.record == "cell") return trf(lang, "cell record %1", {i});
+    if (d.record == "node") return trf(lang, "node record %1", {i});
+    if (d.record == "tMax") return trf(lang, "the tMax of cell record %1", {i});
+    if (d.record == "test") return tr(lang, "a primitive test");
+    if (d.record == "end") return tr(lang, "the end of the walk");
+    return tr(lang, "the hit or miss");
+}
+}  // namespace
+
 std::string assessmentJson(const Assessment& a, Language lang) {
-    ordered_json j;
-    j["score"] = a.score();
-    j["rays_passed"] = a.passed();
-    j["rays_total"] = a.rays.size();
-    j["passed"] = a.allPassed();
-    ordered_json rays = ordered_json::array();
-    for (const RayVerdict& v : a.rays) {
+    // One ray a line: a class's file stays readable, and a diff points at the ray.
+    ordered_json head;
+    head["score"] = a.score();
+    head["rays_passed"] = a.passed();
+    head["rays_total"] = a.rays.size();
+    head["passed"] = a.allPassed();
+    std::string out = "{\n";
+    for (const auto& [k, v] : head.items())
+        out += "  " + ordered_json(k).dump() + ": " + v.dump() + ",\n";
+    out += "  \"rays\": [";
+    for (std::size_t i = 0; i < a.rays.size(); ++i) {
+        const RayVerdict& v = a.rays[i];
         ordered_json r;
         r["ray"] = v.ray;
         r["line"] = v.line;
@@ -995,35 +1032,37 @@ std::string assessmentJson(const Assessment& a, Language lang) {
         } else {
             r["first_divergence"] = nullptr;
         }
-        if (v.mistake)
-            r["mistake"] = {{"name", mistakeInfo(*v.mistake).name},
-                            {"description", tr(lang, mistakeInfo(*v.mistake).description)}};
-        else
+        if (v.mistake) {
+            const MistakeInfo& info = mistakeInfo(*v.mistake);
+            // i18n: the descriptions are marked in mistakes.cpp
+            const std::string description = tr(lang, info.description);
+            r["mistake"] = {{"name", info.name}, {"description", description}};
+        } else {
             r["mistake"] = nullptr;
-        rays.push_back(r);
+        }
+        out += std::string(i ? "," : "") + "\n    " + r.dump();
     }
-    j["rays"] = rays;
-    return j.dump(2) + "\n";
+    return out + (a.rays.empty() ? "]\n}\n" : "\n  ]\n}\n");
 }
 
 std::string assessmentText(const Assessment& a, Language lang) {
     std::string out;
     for (const RayVerdict& v : a.rays) {
         if (v.passed) {
-            out += trf(lang, "ray %1: passed (%2 records)",
+            out += trf(lang, "ray %1: passed (%2 cells or nodes)",
                        {std::to_string(v.ray), std::to_string(v.walkRecords)}) +
                    "\n";
             continue;
         }
         const Divergence& d = *v.divergence;
-        out += trf(lang, "ray %1: failed at %2 %3 (line %4)",
-                   {std::to_string(v.ray), d.record, std::to_string(std::max(d.index, 0)),
-                    std::to_string(d.line)}) +
+        out += trf(lang, "ray %1: failed at line %2, %3",
+                   {std::to_string(v.ray), std::to_string(d.line), place(d, lang)}) +
                "\n  " + d.explanation + "\n";
         if (v.mistake)
             out += "  " +
                    trf(lang, "This is the known mistake \"%1\": %2.",
                        {std::string(mistakeInfo(*v.mistake).name),
+                        // i18n: the descriptions are marked in mistakes.cpp
                         tr(lang, mistakeInfo(*v.mistake).description)}) +
                    "\n";
     }
