@@ -118,14 +118,24 @@ ReferenceRay flattened(const ReferenceRay& ref) {
     return flat;
 }
 
+/// What a student's file logs: its cells or nodes, its tests (what it does not log is not
+/// checked).
+struct Logged {
+    bool walk = false, tests = false;
+};
+
 class Comparer {
   public:
+    /// `logged`: what the file logs (on any of its rays), so a ray that logs no cell is checked
+    /// for none when the others log theirs.
     Comparer(const Reference& reference, const StudentRay& ray, const ReferenceRay& ref,
-             Language lang)
-        : refer_(reference), ray_(ray), ref_(ref), lang_(lang), dims_(ray.dims) {}
+             Language lang, const Logged& logged)
+        : refer_(reference), ray_(ray), ref_(ref), lang_(lang), dims_(ray.dims), logged_(logged) {}
 
     std::optional<Divergence> compare() {
         StudentRun run = group(ray_);
+        run.logsWalk = logged_.walk;
+        run.logsTests = logged_.tests;
         ReferenceRay flat;
         const ReferenceRay* ref = &ref_;
         if (!run.logsWalk && run.logsTests) {
@@ -176,6 +186,7 @@ class Comparer {
     const ReferenceRay& ref_;
     Language lang_;
     int dims_;
+    Logged logged_;
 
     static int walkCount(const std::vector<StudentUnit>& su) {
         int n = 0;
@@ -972,6 +983,15 @@ double Assessment::score() const {
 Assessment assess(const StudentTrace& trace, const Reference& reference, Language lang) {
     Assessment a;
     a.file = trace.file;
+    // A bare walk has nothing but its cells to log: they are always checked.
+    Logged logged;
+    logged.walk = reference.bare();
+    for (const StudentRay& ray : trace.rays)
+        for (const StudentRecord& r : ray.records) {
+            logged.walk = logged.walk || r.kind == StudentRecordKind::Cell ||
+                          r.kind == StudentRecordKind::Node;
+            logged.tests = logged.tests || r.kind == StudentRecordKind::Test;
+        }
     for (std::size_t i = 0; i < trace.rays.size(); ++i) {
         const StudentRay& ray = trace.rays[i];
         RayVerdict v;
@@ -980,7 +1000,7 @@ Assessment assess(const StudentTrace& trace, const Reference& reference, Languag
         v.reference = reference.run(ray);
         for (const auto& r : ray.records)
             v.walkRecords += r.kind == StudentRecordKind::Cell || r.kind == StudentRecordKind::Node;
-        Comparer c(reference, ray, v.reference, lang);
+        Comparer c(reference, ray, v.reference, lang, logged);
         v.divergence = c.compare();
         v.passed = !v.divergence;
         if (v.divergence) v.mistake = recognise(reference, ray, v.reference, *v.divergence);
