@@ -466,12 +466,13 @@ class Comparer {
             const std::string parent = std::to_string(nodes[r.node].parent);
             if (p.split && p.axis >= 0) {
                 d.quantity = "split";
-                d.explanation =
-                    trf(lang_,
-                        "Node %1 splits %2 at %3. The ray starts on the side of node %4 (%5 = %6), "
-                        "the near child, entered first; you entered node %7 first.",
-                        {parent, std::string(1, kAxisLower[p.axis]), num(*p.split, lang_), want,
-                         std::string(1, kAxisLower[p.axis]), num(ray_.origin[p.axis], lang_), got});
+                const std::string axis(1, kAxisLower[p.axis]);
+                d.explanation = trf(lang_,
+                                    "Node %1 is split at %2 = %3, and the ray comes from the side "
+                                    "of node %4 (its origin has %2 = %5): the near child, entered "
+                                    "first; you entered node %6 first.",
+                                    {parent, axis, num(*p.split, lang_), want,
+                                     num(ray_.origin[p.axis], lang_), got});
             } else {
                 d.explanation = trf(lang_,
                                     "Node %1's near child, on the side the ray comes from, is "
@@ -1069,9 +1070,11 @@ std::string assessmentText(const Assessment& a, Language lang) {
     std::string out;
     for (const RayVerdict& v : a.rays) {
         if (v.passed) {
-            out += trf(lang, "ray %1: passed (%2 cells or nodes)",
-                       {std::to_string(v.ray), std::to_string(v.walkRecords)}) +
-                   "\n";
+            out +=
+                trf(lang,
+                    v.reference.cells ? "ray %1: passed (%2 cells)" : "ray %1: passed (%2 nodes)",
+                    {std::to_string(v.ray), std::to_string(v.walkRecords)}) +
+                "\n";
             continue;
         }
         const Divergence& d = *v.divergence;
