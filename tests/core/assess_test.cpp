@@ -128,8 +128,8 @@ TEST(Assess, ExplainsTheStepWithTheSlidesQuantitiesInBothLanguages) {
     const StudentTrace t = readStudentTrace(text, "t.jsonl", 2);
     const Divergence en = *assess(t, ref, Language::En).rays[0].divergence;
     EXPECT_EQ(en.explanation,
-              "In cell (3, 2), tMaxX = 0.5 and tMaxY = 1: tMaxX < tMaxY, so the ray crosses a X "
-              "boundary first and the next cell is (2, 2); you stepped in Y, to (3, 1).");
+              "In cell (3, 2), tMaxX = 0.5 and tMaxY = 1: tMaxX < tMaxY, so the ray crosses the next "
+              "X boundary first and the next cell is (2, 2); you stepped in Y, to (3, 1).");
     EXPECT_EQ(en.line, 3);
     const Divergence it = *assess(t, ref, Language::It).rays[0].divergence;
     EXPECT_NE(it.explanation.find("Nella cella (3; 2), tMaxX = 0,5 e tMaxY = 1"), std::string::npos)

@@ -378,8 +378,7 @@ class Comparer {
             if (!tie) {
                 d.explanation = trf(
                     lang_,
-                    "%1, %2 = %3 and %4 = %5: %2 < %4, so the ray crosses a %6 boundary first and "
-                    "the next cell is %7; you stepped in %8, to %9.",
+                    "%1, %2 = %3 and %4 = %5: %2 < %4, so the ray crosses the next %6 boundary first and the next cell is %7; you stepped in %8, to %9.",
                     {capital(cellPhrase(prev.cell, Form::In)), tMaxName(winner),
                      num(prev.tMax[winner], lang_), tMaxName(a), num(prev.tMax[a], lang_),
                      std::string(1, kAxisNames[winner]), want, std::string(1, kAxisNames[a]), got});
