@@ -121,17 +121,13 @@ def walk(res, lo, hi, o, d, mistake=None):
             X[i] = math.floor((p - lo[i]) / VSize[i])
         X[i] = min(max(X[i], 0), res[i] - 1)
 
-    def boundary_ahead(i):
-        # X + 1 moving up, X moving down: the slides' tMaxX, computed afresh rather than summed.
-        k = X[i] + 1 if step[i] > 0 or mistake == "negative-direction-boundary" else X[i]
-        return ieee_div(lo[i] + k * VSize[i] - o[i], d[i])
-
+    tDelta = [INF] * n
     for i in range(n):
         if step[i] != 0:
-            tMax[i] = boundary_ahead(i)
-
-    def inside():
-        return all(0 <= X[i] < res[i] for i in range(n))
+            # The first boundary ahead: X + 1 moving up, X moving down.
+            k = X[i] + 1 if step[i] > 0 or mistake == "negative-direction-boundary" else X[i]
+            tMax[i] = ieee_div(lo[i] + k * VSize[i] - o[i], d[i])
+            tDelta[i] = ieee_div(VSize[i], abs(d[i]))
 
     beyond = 0
     first = True
@@ -139,16 +135,22 @@ def walk(res, lo, hi, o, d, mistake=None):
         if not (first and mistake == "start-cell-skipped"):
             log_cell(X, tMax)
         first = False
-        t = min(tMax)
+        # The axis of the smallest tMax, by the slides' comparison (the later axis at a tie).
+        a = 0
+        for i in range(1, n):
+            if not tMax[a] < tMax[i]:
+                a = i
+        t = tMax[a]
         if t == INF:
             break  # no boundary ahead on any axis (a zero direction)
-        tied = [i for i in range(n) if tMax[i] == t]
-        if mistake == "tie-one-axis":
-            tied = tied[-1:]  # the slides' `if (tMaxX < tMaxY) X else Y`: Y at a tie
-        for i in tied:
-            X[i] += step[i]
-            tMax[i] = boundary_ahead(i)
-        if not inside():
+        out = False
+        for i in range(n):
+            # At an exact tie every tied axis steps (tie-one-axis: the slides' one, a).
+            if i == a or (mistake != "tie-one-axis" and tMax[i] == t):
+                X[i] += step[i]
+                tMax[i] += tDelta[i]  # the slides' tMaxX += tDeltaX
+                out = out or not 0 <= X[i] < res[i]
+        if out:
             if mistake != "no-exit-check":
                 break
             beyond += 1

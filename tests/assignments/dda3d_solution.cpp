@@ -289,33 +289,32 @@ void walk(const Grid& grid, const Vec3& o, const Vec3& d) {
         const double c = step[i] < 0 && mistake != "no-entry-clip" ? std::ceil(f) - 1 : std::floor(f);
         X[i] = static_cast<int>(std::clamp(c, 0.0, double(grid.res[i] - 1)));
     }
-    // The slides' tMaxX, computed afresh from the boundary ahead (X + 1 moving up, X moving
-    // down) rather than summed step after step.
-    const auto boundaryAhead = [&](int i) {
+    Vec3 tDelta;
+    for (int i = 0; i < 3; ++i) {
+        // The first boundary ahead: X + 1 moving up, X moving down.
         const int k = step[i] > 0 || mistake == "negative-direction-boundary" ? X[i] + 1 : X[i];
-        return (grid.lo[i] + k * VSize[i] - o[i]) / d[i];
-    };
-    for (int i = 0; i < 3; ++i) tMax[i] = step[i] != 0 ? boundaryAhead(i) : kInf;
+        tMax[i] = step[i] != 0 ? (grid.lo[i] + k * VSize[i] - o[i]) / d[i] : kInf;
+        tDelta[i] = step[i] != 0 ? VSize[i] / std::abs(d[i]) : kInf;
+    }
 
     int beyond = 0;
     for (bool first = true;; first = false) {
         if (!(first && mistake == "start-cell-skipped")) logCell(X, tMax);
-        const double t = std::min({tMax[0], tMax[1], tMax[2]});
+        // The axis of the smallest tMax, by the slides' comparisons (the later axis at a tie).
+        int a = 0;
+        for (int i = 1; i < 3; ++i)
+            if (!(tMax[a] < tMax[i])) a = i;
+        const double t = tMax[a];
         if (t == kInf) break;  // no boundary ahead on any axis (a zero direction)
-        int tied[3], n = 0;
-        for (int i = 0; i < 3; ++i)
-            if (tMax[i] == t) tied[n++] = i;
-        // The slides' if-else steps the last tied axis only (Y at a tie of X and Y, Z with Z).
-        const int from = mistake == "tie-one-axis" ? n - 1 : 0;
-        for (int k = from; k < n; ++k) {
-            X[tied[k]] += step[tied[k]];
-            tMax[tied[k]] = boundaryAhead(tied[k]);
+        bool out = false;
+        for (int i = 0; i < 3; ++i) {
+            // At an exact tie every tied axis steps (tie-one-axis: the slides' one, a).
+            if (i != a && (mistake == "tie-one-axis" || tMax[i] != t)) continue;
+            X[i] += step[i];
+            tMax[i] += tDelta[i];  // the slides' tMaxX += tDeltaX
+            out = out || X[i] < 0 || X[i] >= grid.res[i];
         }
-        bool inside = true;
-        for (int i = 0; i < 3; ++i) inside = inside && X[i] >= 0 && X[i] < grid.res[i];
-        if (!inside) {
-            if (mistake != "no-exit-check" || ++beyond > kCellsBeyond) break;
-        }
+        if (out && (mistake != "no-exit-check" || ++beyond > kCellsBeyond)) break;
     }
 }
 
