@@ -363,6 +363,16 @@ def kdtree(tmp):
         expect_mistake(assess(target, wrong, kit, what), os.path.join(kit, "right.jsonl"),
                        os.path.join(kit, wrong), name, what)
 
+    # The solution reads any of raystep's kd-trees of the scene: the midpoint's and the median's
+    # leaves hold several primitives (their tests compared as a set).
+    for split in ("midpoint", "median"):
+        other = [*target, "--split", split]
+        run([CLI, "assess", *other, "--structure"], kit, stdout=f"tree-{split}.jsonl")
+        run(["./kdtree_solution", f"tree-{split}.jsonl", "rays.json"], kit,
+            stdout=f"right-{split}.jsonl")
+        expect_pass(assess(other, f"right-{split}.jsonl", kit, f"kdtree solution, {split}"),
+                    f"kdtree solution, {split}")
+
     # The kit's reader takes exactly the --structure forms: anything else is refused, naming
     # the line, not misread.
     lines = open(os.path.join(kit, "tree.jsonl")).read().splitlines()
