@@ -265,9 +265,10 @@ def dda_kit(name, grid, skeleton_run, solution_run, tmp):
     target = ["dda", "--grid", grid[0], "--min", grid[1], "--max", grid[2]]
     kit = copy_kit(name, tmp)
 
-    # As shipped: runs, logs the rays, says what is missing, and fails the assessment cleanly.
+    # As shipped: runs, logs the rays, says what is missing (exit 1, so that `kit > walk.jsonl &&
+    # raystep-cli assess ...` fails too), and its rays alone must not pass the assessment.
     p = skeleton_run(kit, [], "walk.jsonl")
-    if p.returncode != 0 or "TODO" not in p.stderr:
+    if p.returncode != 1 or "TODO" not in p.stderr:
         fail(f"{name} skeleton: exit {p.returncode}, stderr {p.stderr.strip()!r}")
     verdict = assess(target, "walk.jsonl", kit, f"{name} skeleton")
     if verdict and verdict["passed"]:
@@ -346,7 +347,7 @@ def kdtree(tmp):
     compile_cpp(solution_file, "kdtree_solution", kit)
 
     p = run(["./kdtree", "tree.jsonl", "rays.json"], kit, stdout="run.jsonl", check=False)
-    if p.returncode != 0 or "TODO" not in p.stderr:
+    if p.returncode != 1 or "TODO" not in p.stderr:
         fail(f"kdtree skeleton: exit {p.returncode}, stderr {p.stderr.strip()!r}")
     verdict = assess(target, "run.jsonl", kit, "kdtree skeleton")
     if verdict and verdict["passed"]:

@@ -249,9 +249,10 @@ void readRays(const std::string& path, Grid& grid, std::vector<Ray>& rays) {
 // ---- The solution ----
 
 // The named mistakes of docs/assignment-format.md this walk can make on purpose.
-const char* const kMistakes[] = {"start-cell-skipped", "negative-direction-boundary",
-                                 "parallel-axis-division", "negative-zero", "tie-one-axis",
-                                 "no-entry-clip", "no-exit-check"};
+const char* const kMistakes[] = {"start-cell-skipped",     "negative-direction-boundary",
+                                 "parallel-axis-division", "negative-zero",
+                                 "tie-one-axis",           "no-entry-clip",
+                                 "no-exit-check"};
 std::string mistake;  // empty: the right walk
 // no-exit-check: the walk goes on past the grid for this many cells, so that it ends.
 constexpr int kCellsBeyond = 64;
@@ -286,7 +287,8 @@ void walk(const Grid& grid, const Vec3& o, const Vec3& d) {
         const double p = mistake == "no-entry-clip" ? o[i] : o[i] + tEnter * d[i];
         const double f = (p - grid.lo[i]) / VSize[i];
         // The cell the ray goes into: on a boundary moving down, the one below it.
-        const double c = step[i] < 0 && mistake != "no-entry-clip" ? std::ceil(f) - 1 : std::floor(f);
+        const double c =
+            step[i] < 0 && mistake != "no-entry-clip" ? std::ceil(f) - 1 : std::floor(f);
         X[i] = static_cast<int>(std::clamp(c, 0.0, double(grid.res[i] - 1)));
     }
     Vec3 tDelta;
@@ -323,9 +325,8 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--mistake") == 0 && a + 1 < argc) {
             mistake = argv[++a];
-            if (std::find_if(std::begin(kMistakes), std::end(kMistakes), [](const char* m) {
-                    return mistake == m;
-                }) == std::end(kMistakes)) {
+            if (std::find_if(std::begin(kMistakes), std::end(kMistakes),
+                             [](const char* m) { return mistake == m; }) == std::end(kMistakes)) {
                 std::fprintf(stderr, "dda3d: --mistake %s: not one of this walk's\n",
                              mistake.c_str());
                 return 2;

@@ -52,11 +52,15 @@ void logNode(int id) {
     std::printf("{\"node\": %d}\n", id);
 }
 /// Primitive `prim` tested (in the leaf logged last).
-void logTest(int prim) { std::printf("{\"test\": %d}\n", prim); }
+void logTest(int prim) {
+    std::printf("{\"test\": %d}\n", prim);
+}
 void logHit(int prim, double t) {
     std::printf("{\"hit\": {\"prim\": %d, \"t\": %s}}\n", prim, number(t).c_str());
 }
-void logMiss() { std::printf("{\"miss\": true}\n"); }
+void logMiss() {
+    std::printf("{\"miss\": true}\n");
+}
 
 // ---- Given: a small JSON reader (no library needed) ----
 
@@ -214,11 +218,11 @@ inline std::string readFile(const std::string& path) {
 
 struct Node {
     bool leaf = false;
-    Vec2 lo{}, hi{};         // the node's cell of space
-    int axis = 0;            // interior: the split plane is axis = split (0: x, 1: y)
+    Vec2 lo{}, hi{};  // the node's cell of space
+    int axis = 0;     // interior: the split plane is axis = split (0: x, 1: y)
     double split = 0.0;
     int children[2] = {-1, -1};  // interior: [0] below the split, [1] above it
-    std::vector<int> prims;  // leaf: the primitives listed in it
+    std::vector<int> prims;      // leaf: the primitives listed in it
 };
 
 struct Prim {
@@ -289,7 +293,8 @@ Tree readTree(const std::string& path) {
                 if (prims->kind != Json::Kind::Array)
                     throw std::runtime_error(at + ": prims: expected an array");
                 node.leaf = true;
-                for (const Json& p : prims->items) node.prims.push_back(wholeNumber(&p, at + ": prims"));
+                for (const Json& p : prims->items)
+                    node.prims.push_back(wholeNumber(&p, at + ": prims"));
             } else {
                 onlyKeys(r, {"node", "lo", "hi", "axis", "split", "children"}, at);
                 node.axis = wholeNumber(r.get("axis"), at + ": axis");
@@ -330,9 +335,11 @@ Tree readTree(const std::string& path) {
     }
     // Every id from 0 up, and every reference to one that exists.
     for (std::size_t n = 0; n < nodeSeen.size(); ++n)
-        if (!nodeSeen[n]) throw std::runtime_error(path + ": node " + std::to_string(n) + " missing");
+        if (!nodeSeen[n])
+            throw std::runtime_error(path + ": node " + std::to_string(n) + " missing");
     for (std::size_t p = 0; p < primSeen.size(); ++p)
-        if (!primSeen[p]) throw std::runtime_error(path + ": prim " + std::to_string(p) + " missing");
+        if (!primSeen[p])
+            throw std::runtime_error(path + ": prim " + std::to_string(p) + " missing");
     if (tree.nodes.empty()) throw std::runtime_error(path + ": no nodes");
     for (const Node& node : tree.nodes) {
         for (int c : node.children)
@@ -340,7 +347,8 @@ Tree readTree(const std::string& path) {
                 throw std::runtime_error(path + ": a child " + std::to_string(c) + " missing");
         for (int p : node.prims)
             if (p >= static_cast<int>(tree.prims.size()))
-                throw std::runtime_error(path + ": a leaf's prim " + std::to_string(p) + " missing");
+                throw std::runtime_error(path + ": a leaf's prim " + std::to_string(p) +
+                                         " missing");
     }
     return tree;
 }
@@ -351,8 +359,12 @@ struct Ray {
     Vec2 origin, dir;  // the points origin + t dir, t > 0
 };
 
-double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
-double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
+double cross(const Vec2& a, const Vec2& b) {
+    return a[0] * b[1] - a[1] * b[0];
+}
+double dot(const Vec2& a, const Vec2& b) {
+    return a[0] * b[0] + a[1] * b[1];
+}
 
 /// The nearest t > 0 where the ray meets the segment, or kInf.
 double intersectSegment(const Ray& ray, const Prim& s) {
@@ -482,8 +494,8 @@ Hit testTree(const Tree& tree, const Ray& ray) {
             const double tSplit = (node.split - o) * (1.0 / d);
             constexpr double eps = std::numeric_limits<double>::epsilon();
             const double tSplitLo = tSplit * (1 - 4 * eps), tSplitHi = tSplit * (1 + 4 * eps);
-            const bool belowFirst = mistake == "far-child-first" || o < node.split ||
-                                    (o == node.split && d <= 0);
+            const bool belowFirst =
+                mistake == "far-child-first" || o < node.split || (o == node.split && d <= 0);
             const int nearChild = node.children[belowFirst ? 0 : 1];
             const int farChild = node.children[belowFirst ? 1 : 0];
             if (!(tSplit > 0) || tSplitLo > tFar) {
@@ -514,9 +526,8 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--mistake") == 0 && a + 1 < argc) {
             mistake = argv[++a];
-            if (std::find_if(std::begin(kMistakes), std::end(kMistakes), [](const char* m) {
-                    return mistake == m;
-                }) == std::end(kMistakes)) {
+            if (std::find_if(std::begin(kMistakes), std::end(kMistakes),
+                             [](const char* m) { return mistake == m; }) == std::end(kMistakes)) {
                 std::fprintf(stderr, "kdtree: --mistake %s: not one of this traversal's\n",
                              mistake.c_str());
                 return 2;

@@ -95,8 +95,11 @@ def main():
         log_ray(ray["origin"], ray["dir"])
         walk(res, lo, hi, ray["origin"], ray["dir"])
     if cells_logged == 0:
+        # Not a finished walk: every kit's ray list has rays that visit cells.
         print("dda2d.py: walk() logged no cell: write its TODOs (TASK.md)", file=sys.stderr)
+        return 1
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -294,7 +294,10 @@ int main(int argc, char** argv) {
         logRay(r.origin, r.dir);
         walk(grid, r.origin, r.dir);
     }
-    if (cellsLogged == 0)
+    if (cellsLogged == 0) {
+        // Not a finished walk: every kit's ray list has rays that visit cells.
         std::fprintf(stderr, "dda3d: walk() logged no cell: write its TODOs (TASK.md)\n");
+        return 1;
+    }
     return 0;
 }
