@@ -294,6 +294,45 @@ def dda_kit(name, grid, skeleton_run, solution_run, tmp):
             expect_mistake(verdict, os.path.join(kit, reference), os.path.join(kit, trace),
                            mistake, what)
 
+    # A class of three: the solution, a mistake, the untouched skeleton; and a malformed trace.
+    grade_class(kit, target, {"ann": "right.jsonl", "bob": "tie-one-axis.jsonl",
+                              "carla": "walk.jsonl"}, f"{name} --class")
+
+
+def grade_class(kit, target, traces, what):
+    """--class DIR -o OUT over the kit's traces, one student each, and a malformed one: grades.csv
+    (id,grade,feedback) read back with Python's csv module, grade = the share of rays passed."""
+    import csv
+    folder = os.path.join(kit, "class")
+    os.makedirs(folder)
+    expected = {}
+    for student, trace in traces.items():
+        shutil.copy(os.path.join(kit, trace), os.path.join(folder, f"{student}.jsonl"))
+        rays = read_trace(os.path.join(kit, trace))
+        verdict = assess(target, trace, kit, f"{what}, {student}")
+        if verdict:
+            expected[student] = 100.0 * verdict["rays_passed"] / len(rays)
+    with open(os.path.join(folder, "broken.jsonl"), "w") as f:
+        f.write('{"ray": {"origin": [0, 0], "dir": [1, Infinity]}}\n')
+    expected["broken"] = 0.0
+    p = run([CLI, "assess", *target, "--class", "class", "-o", "results"], kit, check=False)
+    if p.returncode != 0:
+        fail(f"{what}: --class exit {p.returncode}: {p.stderr.strip()}")
+        return
+    with open(os.path.join(kit, "results", "grades.csv"), newline="", encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    if rows[:1] != [["id", "grade", "feedback"]]:
+        fail(f"{what}: grades.csv starts {rows[:1]}")
+    grades = {row[0]: row for row in rows[1:]}
+    for student, grade in expected.items():
+        row = grades.get(student)
+        if not row or len(row) != 3 or f"{grade:.2f}" != row[1]:
+            fail(f"{what}: grades.csv has {row} for {student}, expected grade {grade:.2f}")
+    if "Infinity" not in grades.get("broken", ["", "", ""])[2]:
+        fail(f"{what}: the malformed trace's feedback does not say why: {grades.get('broken')}")
+    if not os.path.isfile(os.path.join(kit, "results", "class.md")):
+        fail(f"{what}: no class.md")
+
 
 def dda_2d(tmp):
     def skeleton(kit, args, out):
