@@ -117,7 +117,9 @@ def same_end(a, b):
 def divergence(right, wrong):
     """Where the wrong ray's records first differ from the right one's: (index, record), with
     docs/assignment-format.md's index (walk records; a test or the end counts for the walk record
-    it follows) and record kind; None when they agree."""
+    it follows) and record kind (`end` where the wrong ray stops early; where it goes on past the
+    end, the kind of its extra record, as raystep's own tests/assess have it); None when they
+    agree."""
     a, b = right["walk"], wrong["walk"]
     for i in range(min(len(a), len(b))):
         if a[i]["value"] != b[i]["value"]:
@@ -127,8 +129,10 @@ def divergence(right, wrong):
             return i, "tMax"
         if sorted(a[i]["tests"]) != sorted(b[i]["tests"]):
             return i, "test"
-    if len(a) != len(b):
-        return min(len(a), len(b)), "end"
+    if len(b) > len(a):
+        return len(a), b[len(a)]["kind"]  # goes on past the end: its extra record (expected null)
+    if len(b) < len(a):
+        return len(b), "end"  # stops early
     if not same_end(right["end"], wrong["end"]):
         return len(a) - 1, "hit" if wrong["end"] and "hit" in wrong["end"] else "miss"
     return None
@@ -173,8 +177,10 @@ def assess(target, trace, cwd, what):
     if p.returncode != (0 if verdict["passed"] else 1):
         fail(f"{what}: exit {p.returncode} with passed = {verdict['passed']}")
     missing = sorted({key for r in verdict["rays"] for key in
-                      ("ray", "line", "passed", "cells", "first_divergence", "mistake")
-                      if key not in r})
+                      ("ray", "line", "passed", "first_divergence", "mistake") if key not in r})
+    # The count of walk records: `cells` in docs/assignment-format.md, `walk_records` as written.
+    if any("cells" not in r and "walk_records" not in r for r in verdict["rays"]):
+        missing.append("walk_records")
     for key in missing:
         if key not in missing_keys:  # once: every verdict would repeat it
             missing_keys.add(key)
@@ -183,8 +189,9 @@ def assess(target, trace, cwd, what):
         if r.get("line") != ray["line"]:
             fail(f"{what}: ray {r.get('ray')} at line {r.get('line')}, its record is at "
                  f"{ray['line']}")
-        if r.get("cells") is not None and r["cells"] != len(ray["walk"]):
-            fail(f"{what}: ray {r['ray']}: cells = {r['cells']}, it logs {len(ray['walk'])}")
+        count = r.get("walk_records", r.get("cells"))
+        if count is not None and count != len(ray["walk"]):
+            fail(f"{what}: ray {r['ray']}: {count} walk records, it logs {len(ray['walk'])}")
         if r.get("passed") != (r.get("first_divergence") is None):
             fail(f"{what}: ray {r.get('ray')}: passed and first_divergence disagree")
     return verdict
