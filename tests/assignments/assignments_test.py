@@ -117,9 +117,9 @@ def same_end(a, b):
 def divergence(right, wrong):
     """Where the wrong ray's records first differ from the right one's: (index, record), with
     docs/assignment-format.md's index (walk records; a test or the end counts for the walk record
-    it follows) and record kind (`end` where the wrong ray stops early; where it goes on past the
-    end, the kind of its extra record, as raystep's own tests/assess have it); None when they
-    agree."""
+    it follows; for `end`, how many walk records the wrong ray logged) and record kind (`end`
+    where the wrong ray stops early; where it goes on past the end, the kind of its extra
+    record); None when they agree."""
     a, b = right["walk"], wrong["walk"]
     for i in range(min(len(a), len(b))):
         if a[i]["value"] != b[i]["value"]:
@@ -177,10 +177,8 @@ def assess(target, trace, cwd, what):
     if p.returncode != (0 if verdict["passed"] else 1):
         fail(f"{what}: exit {p.returncode} with passed = {verdict['passed']}")
     missing = sorted({key for r in verdict["rays"] for key in
-                      ("ray", "line", "passed", "first_divergence", "mistake") if key not in r})
-    # The count of walk records: `cells` in docs/assignment-format.md, `walk_records` as written.
-    if any("cells" not in r and "walk_records" not in r for r in verdict["rays"]):
-        missing.append("walk_records")
+                      ("ray", "line", "passed", "walk_records", "first_divergence", "mistake")
+                      if key not in r})
     for key in missing:
         if key not in missing_keys:  # once: every verdict would repeat it
             missing_keys.add(key)
@@ -189,9 +187,9 @@ def assess(target, trace, cwd, what):
         if r.get("line") != ray["line"]:
             fail(f"{what}: ray {r.get('ray')} at line {r.get('line')}, its record is at "
                  f"{ray['line']}")
-        count = r.get("walk_records", r.get("cells"))
-        if count is not None and count != len(ray["walk"]):
-            fail(f"{what}: ray {r['ray']}: {count} walk records, it logs {len(ray['walk'])}")
+        if r.get("walk_records", len(ray["walk"])) != len(ray["walk"]):
+            fail(f"{what}: ray {r['ray']}: walk_records = {r['walk_records']}, it logs "
+                 f"{len(ray['walk'])}")
         if r.get("passed") != (r.get("first_divergence") is None):
             fail(f"{what}: ray {r.get('ray')}: passed and first_divergence disagree")
     return verdict
