@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -273,30 +274,35 @@ int gradeClass(const AssessArgs& a, const Target& t, Language lang) {
         std::string feedback;
         double pct = 0.0;
         if (path.empty()) {
-            feedback = "more than one .jsonl file in the folder";
+            feedback = tr(lang, "more than one .jsonl file in the folder");
             ++unreadable;
         } else {
             try {
                 const Assessment as = assess(loadStudentTrace(path, t.dims), *t.reference, lang);
                 pct = 100.0 * as.score();
                 allPassed += as.allPassed();
-                feedback = std::to_string(as.passed()) + "/" + std::to_string(as.rays.size()) +
-                           " rays passed";
+                const std::string passed = std::to_string(as.passed()),
+                                  rays = std::to_string(as.rays.size());
+                feedback = trf(lang, "%1/%2 rays passed", {passed, rays});
                 std::set<std::string> named;
+                bool first = true;
                 for (const RayVerdict& v : as.rays) {
                     if (v.passed) continue;
-                    if (feedback.find("; ray") == std::string::npos)
-                        feedback +=
-                            "; ray " + std::to_string(v.ray) + ": " + v.divergence->record + " " +
-                            std::to_string(std::max(v.divergence->index, 0)) + " (" +
-                            v.divergence->quantity + ")" +
-                            (v.mistake ? ", " + std::string(mistakeInfo(*v.mistake).name) : "");
-                    ++quantityRays[v.divergence->quantity];
+                    const Divergence& d = *v.divergence;
+                    // The first failed ray, where the student looks first: its line and quantity.
+                    if (first)
+                        feedback =
+                            trf(lang, "%1/%2 rays passed; ray %3 first fails at line %4, %5 (%6)",
+                                {passed, rays, std::to_string(v.ray), std::to_string(d.line),
+                                 divergencePlace(d, lang), d.quantity}) +
+                            (v.mistake ? ": " + std::string(mistakeInfo(*v.mistake).name) : "");
+                    first = false;
+                    ++quantityRays[d.quantity];
                     if (v.mistake) named.insert(std::string(mistakeInfo(*v.mistake).name));
                 }
                 for (const auto& m : named) ++mistakeStudents[m];
             } catch (const FileError& e) {
-                feedback = std::string("unreadable: ") + e.what();
+                feedback = trf(lang, "unreadable: %1", {e.what()});
                 ++unreadable;
             }
         }
@@ -305,13 +311,18 @@ int gradeClass(const AssessArgs& a, const Target& t, Language lang) {
         std::snprintf(g, sizeof g, "%.2f", pct);
         grades += csvField(id) + "," + g + "," + csvField(feedback) + "\r\n";
     }
-    std::string md = "# " + a.target + ": the class\n\n";
     char mean[32];
     std::snprintf(mean, sizeof mean, "%.1f", total / double(traces.size()));
-    md += std::to_string(traces.size()) + " students, " + std::to_string(allPassed) +
-          " passed every ray, mean grade " + mean + ", " + std::to_string(unreadable) +
-          " traces unreadable.\n\n## The mistakes, most common first\n\n"
-          "| mistake | students | what it does wrong |\n|---|---|---|\n";
+    // Counts as "label: n", so no language needs its plurals here.
+    std::string md = "# " + trf(lang, "%1: the class", {a.target}) + "\n\n" +
+                     trf(lang,
+                         "Students: %1. Passed every ray: %2. Mean grade: %3. Traces that could "
+                         "not be read: %4.",
+                         {std::to_string(traces.size()), std::to_string(allPassed),
+                          formatNumber(std::atof(mean), lang), std::to_string(unreadable)}) +
+                     "\n\n## " + tr(lang, "The mistakes, most common first") + "\n\n| " +
+                     tr(lang, "mistake") + " | " + tr(lang, "students") + " | " +
+                     tr(lang, "what it does wrong") + " |\n|---|---|---|\n";
     std::vector<std::pair<int, std::string>> byCount;
     for (const auto& [m, n] : mistakeStudents) byCount.emplace_back(-n, m);
     std::sort(byCount.begin(), byCount.end());
@@ -319,7 +330,8 @@ int gradeClass(const AssessArgs& a, const Target& t, Language lang) {
         md += "| " + m + " | " + std::to_string(-n) + " | " +
               // i18n: the descriptions are marked in mistakes.cpp
               tr(lang, mistakeInfo(*parseMistake(m)).description) + " |\n";
-    md += "\n## The quantities that decided the failed rays\n\n| quantity | rays |\n|---|---|\n";
+    md += "\n## " + tr(lang, "The quantities that decided the failed rays") + "\n\n| " +
+          tr(lang, "quantity") + " | " + tr(lang, "rays") + " |\n|---|---|\n";
     std::vector<std::pair<int, std::string>> byRays;
     for (const auto& [q, n] : quantityRays) byRays.emplace_back(-n, q);
     std::sort(byRays.begin(), byRays.end());
@@ -329,11 +341,11 @@ int gradeClass(const AssessArgs& a, const Target& t, Language lang) {
     const std::string gp = (std::filesystem::path(a.output) / "grades.csv").string();
     const std::string cp = (std::filesystem::path(a.output) / "class.md").string();
     if (auto problem = writeOutputs({{gp, grades}, {cp, md}})) throw BadInput{*problem};
-    std::printf("%s, %s: %zu students, %d passed every ray%s\n", gp.c_str(), cp.c_str(),
+    std::printf("%s, %s: students %zu, passed every ray %d%s\n", gp.c_str(), cp.c_str(),
                 traces.size(), allPassed,
                 byCount.empty() ? ""
-                                : ("; most common mistake: " + byCount[0].second + " (" +
-                                   std::to_string(-byCount[0].first) + " students)")
+                                : ("; most common mistake " + byCount[0].second + " (students " +
+                                   std::to_string(-byCount[0].first) + ")")
                                       .c_str());
     return 0;
 }

@@ -392,7 +392,7 @@ def class_folder():
         check("unreadable" in broken["feedback"] and ":1:" in broken["feedback"], f"class: broken: {broken['feedback']}")
         md = open(os.path.join(out_dir, "class.md"), encoding="utf-8").read()
         check(f"| start-cell-skipped | {skipped_students} |" in md, f"class.md: start-cell-skipped {skipped_students}: {md}")
-        check("201 students" in md, "class.md: count")
+        check("Students: 201. Passed every ray: " in md and "Traces that could not be read: 1." in md, "class.md: count")
 
 
 main()

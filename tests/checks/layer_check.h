@@ -21,9 +21,10 @@ struct LayerViolation {
 inline constexpr std::string_view kFloors[] = {"base",  "geometry", "trace", "scene",
                                                "accel", "render",   "assess"};
 
-/// Headers that only their structure's .cpp files include (what the builds or the queries share).
-inline constexpr std::string_view kInternalHeaders[] = {"raystep/accel/kdtree_build.h",
-                                                        "raystep/accel/query_impl.h"};
+/// Headers that only their own floor's .cpp files include (what a structure's builds or queries
+/// share, what the assessor's parts share).
+inline constexpr std::string_view kInternalHeaders[] = {
+    "raystep/accel/kdtree_build.h", "raystep/accel/query_impl.h", "raystep/assess/divergence.h"};
 
 /// The headers `source` includes, with their lines: `#include "x"` or `#include <x>` at the start
 /// of a line (a commented-out include is not one).

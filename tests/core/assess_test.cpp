@@ -127,9 +127,10 @@ TEST(Assess, ExplainsTheStepWithTheSlidesQuantitiesInBothLanguages) {
     const Reference ref = Reference::dda(grid4x4(), 2);
     const StudentTrace t = readStudentTrace(text, "t.jsonl", 2);
     const Divergence en = *assess(t, ref, Language::En).rays[0].divergence;
-    EXPECT_EQ(en.explanation,
-              "In cell (3, 2), tMaxX = 0.5 and tMaxY = 1: tMaxX < tMaxY, so the ray crosses the next "
-              "X boundary first and the next cell is (2, 2); you stepped in Y, to (3, 1).");
+    EXPECT_EQ(
+        en.explanation,
+        "In cell (3, 2), tMaxX = 0.5 and tMaxY = 1: tMaxX < tMaxY, so the ray crosses the next "
+        "X boundary first and the next cell is (2, 2); you stepped in Y, to (3, 1).");
     EXPECT_EQ(en.line, 3);
     const Divergence it = *assess(t, ref, Language::It).rays[0].divergence;
     EXPECT_NE(it.explanation.find("Nella cella (3; 2), tMaxX = 0,5 e tMaxY = 1"), std::string::npos)
@@ -155,6 +156,10 @@ TEST(StudentTrace, RefusesBadRecordsNamingTheLine) {
                   .find("s.jsonl:2: Infinity and NaN"),
               std::string::npos);
     EXPECT_EQ(problem(""), "s.jsonl: no ray: the trace has no {\"ray\": ...} line");
+    // C's printf("%g", -0.0) writes -0: its sign is kept.
+    const StudentTrace z =
+        readStudentTrace("{\"ray\": {\"origin\": [0.5, 0.5], \"dir\": [1, -0]}}\n", "z", 2);
+    EXPECT_TRUE(std::signbit(z.rays[0].dir[1]));
     // CRLF, a BOM and a null tMax (a parallel axis) read.
     const StudentTrace t = readStudentTrace(
         "\xEF\xBB\xBF" + ray(0.5, 0.5, 1, 0) + "{\"cell\": [0, 0], \"tMax\": [0.5, null]}\r\n",

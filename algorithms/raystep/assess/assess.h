@@ -115,6 +115,9 @@ struct Assessment {
 /// Checks every ray of `trace` against `reference`; the explanations are in `lang`.
 Assessment assess(const StudentTrace& trace, const Reference& reference, Language lang);
 
+/// Where a divergence is, in words: "cell record 4", "the end of the walk".
+std::string divergencePlace(const Divergence& d, Language lang);
+
 /// The verdict as docs/assignment-format.md's JSON (`--json`).
 std::string assessmentJson(const Assessment& a, Language lang);
 /// The verdict as text: a line per ray, the divergence explained, the score.

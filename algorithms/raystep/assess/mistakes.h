@@ -84,13 +84,16 @@ std::vector<WalkCell<N>> ddaWithMistake(const GridSpec<N, double>& grid, const V
         const double size = grid.cellSize(i);
         // NoEntryClip: the cell of the origin, clamped into the grid, not of the entry point.
         const double p = is(M::NoEntryClip) ? o[i] : o[i] + tEnter * d[i];
-        X[i] = int(std::clamp(std::floor((p - grid.lo[i]) / size), 0.0, double(grid.res[i] - 1)));
         if (is(M::ParallelAxisDivision))
             step[i] = d[i] > 0 ? 1 : -1;  // d = 0 steps down
         else if (is(M::NegativeZero))
             step[i] = d[i] >= 0 ? 1 : -1;  // -0.0 >= 0 is true: steps up
         else
             step[i] = d[i] > 0 ? 1 : (d[i] < 0 ? -1 : 0);
+        // The cell the ray goes into, as dda.h's: on a boundary moving down, the one below it.
+        const double f = (p - grid.lo[i]) / size;
+        const double c = d[i] < 0 && !is(M::NoEntryClip) ? std::ceil(f) - 1 : std::floor(f);
+        X[i] = int(std::clamp(c, 0.0, double(grid.res[i] - 1)));
         justOut[i] = step[i] > 0 ? grid.res[i] : -1;
         // The boundary ahead: X + 1 moving up, X moving down (NegativeDirectionBoundary: X + 1).
         const int k = is(M::NegativeDirectionBoundary) || step[i] > 0 ? X[i] + 1 : X[i];

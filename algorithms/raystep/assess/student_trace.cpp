@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -75,6 +76,33 @@ bool hasNonJsonNumber(std::string_view s) {
     return false;
 }
 
+/// `line` with each bare -0 written -0.0: JSON's integer -0 reads as 0 and would lose the sign
+/// that C's printf("%g", -0.0) gives, and the negative-zero mistake is told by it.
+std::string keepNegativeZero(std::string_view line) {
+    std::string out;
+    bool inString = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        out += c;
+        if (inString) {
+            if (c == '\\' && i + 1 < line.size())
+                out += line[++i];
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '-' && i + 1 < line.size() && line[i + 1] == '0') {
+            const char after = i + 2 < line.size() ? line[i + 2] : ' ';
+            if (!(std::isdigit(static_cast<unsigned char>(after)) || after == '.' || after == 'e' ||
+                  after == 'E')) {
+                out += "0.0";
+                ++i;
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 StudentTrace readStudentTrace(std::string_view text, const std::string& file, int dims) {
@@ -94,7 +122,7 @@ StudentTrace readStudentTrace(std::string_view text, const std::string& file, in
         if (JsonLineMap::tooDeepLine(line, 8)) r.fail("", "nested too deep for a trace record");
         json j;
         try {
-            j = json::parse(line);
+            j = json::parse(keepNegativeZero(line));
         } catch (const json::parse_error& e) {
             if (hasNonJsonNumber(line))
                 r.fail("",
