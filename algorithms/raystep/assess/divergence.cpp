@@ -512,10 +512,15 @@ class Comparer {
         if (m == 0) {
             d.quantity = ref.cells ? "tEnter" : "tNear";
             d.explanation =
-                ref.cells
+                ref.cells && ref.tEnter > 0
                     ? trf(lang_,
                           "You logged no cell, but the ray enters the grid at tEnter = %1, %2.",
                           {num(ref.tEnter, lang_), phrase(next, Form::In)})
+                : ref.cells
+                    ? trf(lang_,
+                          "You logged no cell, but the ray starts inside the grid, %1, which "
+                          "holds its origin.",
+                          {phrase(next, Form::In)})
                     : trf(lang_,
                           "You logged no node, but the traversal starts "
                           "at node %1 (the root).",
