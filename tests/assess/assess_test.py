@@ -262,8 +262,8 @@ def main():
             check(r["first_divergence"]["index"] == 0, f"{where}: start skipped: index")
             named["start-cell-skipped"] = named.get("start-cell-skipped", 0) + (((r["mistake"] or {}).get("name")) == "start-cell-skipped")
     check(checked > SEEDS, f"only {checked} slips checked")
-    for bug, count in named.items():
-        check(count > 0, f"{bug} never named")
+    for bug in ("start-cell-skipped", "negative-direction-boundary"):
+        check(named.get(bug, 0) > 0, f"{bug} never named")
     print(f"{checked} slips checked; mistakes named: {named}")
 
     bad_input()
@@ -301,6 +301,13 @@ def tie_and_parallel():
     code, out, _ = assess_dda(*g, [ray] + [cell_line(c) for c in [(0, 2), (0, 3)]])
     r = json.loads(out)["rays"][0]
     check((r["mistake"] or {}).get("name") == "negative-zero", f"-0.0: {r['mistake']}")
+    # From (-1, 0.5) along (1, 1): enters at t = 1, at (0, 1.5), so the walk starts in (0, 1);
+    # the origin's row, clamped, is (0, 0).
+    code, out, _ = assess_dda(*g, [ray_line([-1.0, 0.5], [1.0, 1.0])] + [cell_line(c) for c in [(0, 0), (0, 1), (1, 1)]])
+    r = json.loads(out)["rays"][0]
+    check(r["first_divergence"]["index"] == 0 and r["first_divergence"]["quantity"] == "tEnter",
+          f"entry: {r['first_divergence']}")
+    check((r["mistake"] or {}).get("name") == "no-entry-clip", f"entry: {r['mistake']}")
     # Italian: a decimal comma and the same index.
     code, out, _ = assess_dda(*g, [ray_line([0.5, 0.25], [1.0, 0.5])] + [cell_line(c) for c in [(0, 0), (0, 1)]], ["--lang", "it"])
     r = json.loads(out)["rays"][0]
