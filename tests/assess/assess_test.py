@@ -328,6 +328,7 @@ def bad_input():
         ('{"ray": {"origin": [0.5, 0.5], "dir": [1, 0]}}\n{"cell": [0.5, 0]}\n', ":2:", "whole number"),
         ('{"ray": {"origin": [0.5, 0.5], "dir": [1, 0]}}\n{"miss": true}\n{"cell": [0, 0]}\n', ":3:", "after this ray"),
         ("\n\n", "", "no ray"),
+        ('{"ray": {"origin": [5.51e308, 0], "dir": [1, 0]}}\n', ":1:", "too large"),
     ]
     for text, line, words in cases:
         with tempfile.NamedTemporaryFile("w", suffix=".jsonl", delete=False) as f:

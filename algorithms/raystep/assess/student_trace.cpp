@@ -129,6 +129,9 @@ StudentTrace readStudentTrace(std::string_view text, const std::string& file, in
                        "Infinity and NaN are not JSON numbers: write null for an infinite tMax "
                        "(Python: None)");
             r.fail("", std::string("not a JSON object: ") + e.what());
+        } catch (const json::exception&) {
+            // nlohmann's out_of_range: a number beyond double's range (5e308).
+            r.fail("", "a number too large for a double");
         }
         if (!j.is_object() || j.size() == 0)
             r.fail("",
