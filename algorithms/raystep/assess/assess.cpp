@@ -41,15 +41,7 @@ int agreement(const std::vector<const StudentRecord*>& cells,
 template <int N>
 std::optional<Mistake> ddaMistake(const GridSpec<3, double>& grid3, const StudentRay& ray,
                                   const std::vector<const StudentRecord*>& cells, int diverged) {
-    GridSpec<N, double> grid;
-    VecN<N, double> o, d;
-    for (int a = 0; a < N; ++a) {
-        grid.lo[a] = grid3.lo[a];
-        grid.hi[a] = grid3.hi[a];
-        grid.res[a] = grid3.res[a];
-        o[a] = ray.origin[a];
-        d[a] = ray.dir[a];
-    }
+    const auto [grid, o, d] = assess_detail::onGrid<N>(grid3, ray);
     int cap = N;
     for (int a = 0; a < N; ++a) cap += grid.res[a];
     cap = std::max(cap, int(cells.size())) + 1;

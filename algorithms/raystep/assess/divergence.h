@@ -30,6 +30,25 @@ struct Logged {
     bool walk = false, tests = false;
 };
 
+/// The student's ray and the grid in N dimensions (a Reference keeps its grid in 3).
+template <int N>
+struct RayOnGrid {
+    GridSpec<N, double> grid;
+    VecN<N, double> o, d;
+};
+template <int N>
+RayOnGrid<N> onGrid(const GridSpec<3, double>& grid3, const StudentRay& ray) {
+    RayOnGrid<N> r;
+    for (int a = 0; a < N; ++a) {
+        r.grid.lo[a] = grid3.lo[a];
+        r.grid.hi[a] = grid3.hi[a];
+        r.grid.res[a] = grid3.res[a];
+        r.o[a] = ray.origin[a];
+        r.d[a] = ray.dir[a];
+    }
+    return r;
+}
+
 /// Where `ray` first departs from `ref`, raystep's run of it, explained in `lang`; nullopt when
 /// it does not. `logged`: what the file logs (on any of its rays), so a ray that logs no cell is
 /// checked for none when the others log theirs.

@@ -4,7 +4,7 @@
 // lessons replay a variant for "spot the bug". Each variant is the slides' loop with one line
 // changed, written as the student would write it, IEEE arithmetic included (a -inf tMax, a NaN
 // comparison): the names and what each one does wrong are in docs/assignment-format.md.
-#include "raystep/accel/dda.h"
+#include "raystep/accel/dda_textbook.h"
 
 #include <algorithm>
 #include <array>
@@ -65,18 +65,8 @@ std::vector<WalkCell<N>> ddaWithMistake(const GridSpec<N, double>& grid, const V
     const auto is = [&](M m) { return mistake && *mistake == m; };
     std::vector<WalkCell<N>> cells;
     // Where the ray enters the grid's box (the slab test), t >= 0.
-    double tEnter = 0.0, tExit = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < N; ++i) {
-        if (d[i] == 0.0) {
-            if (o[i] < grid.lo[i] || o[i] > grid.hi[i]) return cells;
-            continue;
-        }
-        double t0 = (grid.lo[i] - o[i]) / d[i], t1 = (grid.hi[i] - o[i]) / d[i];
-        if (t0 > t1) std::swap(t0, t1);
-        tEnter = std::max(tEnter, t0);
-        tExit = std::min(tExit, t1);
-    }
-    if (!(tEnter < tExit)) return cells;
+    double tEnter = 0.0;
+    if (!detail::textbookEntry<N, double>(grid, o, d, tEnter)) return cells;
     // The set-up: X, stepX, tMaxX, tDeltaX per axis.
     IVecN<N> X{0}, step{0}, justOut{0};
     VecN<N, double> tMax{0.0}, tDelta{0.0};

@@ -2,6 +2,7 @@
 // the units (cells, nodes) the comparison goes through.
 #include "raystep/accel/outline.h"
 #include "raystep/assess/assess.h"
+#include "raystep/assess/divergence.h"
 
 #include <algorithm>
 
@@ -13,15 +14,7 @@ using Kind = ReferenceUnit::Kind;
 
 template <int N>
 ReferenceRay ddaReference(const GridSpec<3, double>& grid3, const StudentRay& ray) {
-    GridSpec<N, double> grid;
-    VecN<N, double> o, d;
-    for (int a = 0; a < N; ++a) {
-        grid.lo[a] = grid3.lo[a];
-        grid.hi[a] = grid3.hi[a];
-        grid.res[a] = grid3.res[a];
-        o[a] = ray.origin[a];
-        d[a] = ray.dir[a];
-    }
+    const auto [grid, o, d] = assess_detail::onGrid<N>(grid3, ray);
     ReferenceRay ref;
     ref.dims = N;
     ref.cells = true;
