@@ -535,6 +535,8 @@ std::string LessonSetup::key() const {
         std::snprintf(v, sizeof v, "%.17g", options.value(accel, info.option));
         k += " " + std::string(info.key) + "=" + v;
     }
+    // A replayed walk is a trace of its own, though its structure is the lesson's.
+    if (!replay.empty()) k += " replay=" + replay;
     return k;
 }
 
@@ -670,6 +672,23 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         ex.given.cIsect = o.kdtree.cIsect;
         ex.given.emptyBonus = o.kdtree.emptyBonus;
     }
+    for (std::size_t i = 0; i < l.exercises.size(); ++i) {
+        Exercise& ex = l.exercises[i];
+        if (!exercises::unitOf(ex.kind).replaysOwnWalk()) continue;
+        // Its wrong walk is a trace of its own, walked on its structure's grid.
+        const std::string ep = JsonLineMap::element("exercises", i);
+        LessonSetup own = l.setupOf(ex.setup);
+        if (own.accel != AccelKind::Grid)
+            r.fail(JsonLineMap::child(ep, ex.setup ? "setup" : "type"),
+                   "a " + std::string(exerciseKindName(ex.kind)) +
+                       " exercise replays a walk on a grid: the lesson's setup.accel, or the "
+                       "exercise's own, must be grid");
+        if (!ex.walkRay && l.trace.kind == LessonTrace::Kind::Build)
+            r.fail(ep, "a " + std::string(exerciseKindName(ex.kind)) +
+                           " exercise on a lesson that records a build needs its own \"ray\"");
+        own.replay = ex.id;
+        ex.setup = own;
+    }
     for (std::size_t i = 0; i < l.exercises.size(); ++i)
         if (exercises::unitOf(l.exercises[i].kind).needsSweep() && !l.sweep)
             r.fail(JsonLineMap::child(JsonLineMap::element("exercises", i), "type"),
@@ -679,7 +698,9 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         r.fail("trace", "a build can be recorded for " + kindList(recordsBuild) + " (setup.accel)");
     // The trace is recorded through every structure named: a build needs one that records it.
     const auto ownBuild = [&](const std::optional<LessonSetup>& own, const std::string& at) {
-        if (l.trace.kind == LessonTrace::Kind::Build && own && !recordsBuild(own->accel))
+        // A replayed walk records no build.
+        if (l.trace.kind == LessonTrace::Kind::Build && own && own->replay.empty() &&
+            !recordsBuild(own->accel))
             r.fail(JsonLineMap::child(JsonLineMap::child(at, "setup"), "accel"),
                    "the lesson records a build, which " + kindList(recordsBuild) + " have");
     };

@@ -79,6 +79,9 @@ struct LessonCamera {
 struct LessonSetup {
     AccelKind accel = AccelKind::BruteForce;
     AccelOptions options;
+    /// A spot_bug exercise's id: the trace through this setup is that exercise's wrong walk,
+    /// replayed on the structure's grid, instead of the lesson's trace (empty: the lesson's).
+    std::string replay = {};  // initialised: {accel, options} stays a whole initialiser
     /// Two setups with the same key build the same structure: the kind and every option its
     /// build reads, so a step and an exercise naming the same BVH share one trace.
     std::string key() const;
@@ -124,9 +127,10 @@ enum class ExerciseKind {
     SweepPick,  // the sweep's resolution of the lowest metric
     Compute,    // a hand computation from data the prompt gives
     Overlap,    // two boxes of the tree that share space, neither inside the other (a BVH)
+    SpotBug,    // the first wrong step of a replayed DDA walk with a classic mistake in it
 };
 /// How many kinds there are: a new kind goes last, and moves this.
-constexpr int kExerciseKindCount = static_cast<int>(ExerciseKind::Overlap) + 1;
+constexpr int kExerciseKindCount = static_cast<int>(ExerciseKind::SpotBug) + 1;
 std::string_view exerciseKindName(ExerciseKind k);
 
 /// Quantities a Value exercise asks for; each is read from the next event of its kind at or after
@@ -185,6 +189,12 @@ struct ComputeGiven {
 };
 
 enum class SweepMetric { Cost, TestsPerRay, CellsPerRay };
+
+/// A spot_bug exercise's ray: 2D or 3D by its length in the lesson file.
+struct WalkRay {
+    std::array<double, 3> o{}, d{};
+    int dims = 2;
+};
 std::string_view sweepMetricName(SweepMetric m);
 
 struct Exercise {
@@ -208,6 +218,8 @@ struct Exercise {
     SweepMetric metric = SweepMetric::Cost;  // SweepPick
     ComputeGiven given;                      // Compute
     std::string computeQuantity;             // Compute: "t0", "tMax.x", "sahCost", ...
+    std::string mistake;                     // SpotBug: a DDA mistake's name (assess/mistakes.h)
+    std::optional<WalkRay> walkRay;          // SpotBug: its ray (else the lesson's first ray)
     // Its own structure: the answer is read from the lesson's trace through it (the same ray).
     std::optional<LessonSetup> setup;
     int line = 0;

@@ -56,10 +56,66 @@ void recordNodeBoxes(const StructureOutline<N>& o, EventLog& log) {
 }
 }  // namespace
 
+namespace {
+template <int N>
+GridRecord gridRecord(const GridSpec<N, double>& spec) {
+    GridRecord g{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1, 1, 1}};
+    for (int a = 0; a < N; ++a) {
+        g.lo[a] = spec.lo[a];
+        g.hi[a] = spec.hi[a];
+        g.res[a] = spec.res[a];
+    }
+    return g;
+}
+
+/// A spot_bug exercise's trace: its wrong walk of its ray (else the lesson's first ray) on the
+/// structure's grid.
+std::unique_ptr<EventLog> recordReplayedWalk(const Lesson& lesson, const LessonSetup& setup,
+                                             const std::variant<Scene, Scene2D>& scene,
+                                             const Accelerator* accel3D,
+                                             const Accelerator2D* accel2D) {
+    const Exercise* ex = lesson.exercise(setup.replay);
+    if (!ex) throw LessonError(lesson.file, 0, "exercises", "no exercise " + setup.replay);
+    const auto fail = [&](const std::string& message) {
+        throw LessonError(lesson.file, ex->line, "exercises." + ex->id, message);
+    };
+    std::optional<GridRecord> grid;
+    int dims = 3;
+    if (accel2D) {
+        dims = 2;
+        if (const auto o = outline(*accel2D); o.grid) grid = gridRecord(o.grid->spec);
+    } else if (accel3D) {
+        if (const auto o = outline(*accel3D); o.grid) grid = gridRecord(o.grid->spec);
+    }
+    if (!grid) fail("its walk is replayed on a grid, and its structure is none");
+    WalkRay ray;
+    if (ex->walkRay) {
+        ray = *ex->walkRay;
+    } else {
+        // The lesson's own first ray: the example ray, the trace's ray, a pixel's primary ray.
+        LessonSetup plain = setup;
+        plain.replay.clear();
+        const auto own = recordLessonTrace(lesson, plain, scene, accel3D, accel2D);
+        if (own->rays().empty()) fail("the lesson's trace has no ray: give the exercise a \"ray\"");
+        const RayRecord& r = own->rays().front();
+        ray.o = {r.origin.x, r.origin.y, r.origin.z};
+        ray.d = {r.dir.x, r.dir.y, r.dir.z};
+        ray.dims = dims;
+    }
+    if (ray.dims != dims)
+        fail("its ray is " + std::to_string(ray.dims) + "D, the scene " + std::to_string(dims) +
+             "D");
+    auto log = std::make_unique<EventLog>();
+    exercises::unitOf(ex->kind).recordWalk(*ex, *grid, dims, ray, *log);
+    return log;
+}
+}  // namespace
+
 std::unique_ptr<EventLog> recordLessonTrace(const Lesson& lesson, const LessonSetup& setup,
                                             const std::variant<Scene, Scene2D>& scene,
                                             const Accelerator* accel3D,
                                             const Accelerator2D* accel2D) {
+    if (!setup.replay.empty()) return recordReplayedWalk(lesson, setup, scene, accel3D, accel2D);
     auto log = std::make_unique<EventLog>();
     const LessonTrace& t = lesson.trace;
     const auto* s2 = std::get_if<Scene2D>(&scene);

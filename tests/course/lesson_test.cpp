@@ -132,6 +132,9 @@ TEST(Lessons, EveryStepReplaysAndEveryExerciseChecksItsOwnReference) {
                 case ExerciseKind::Overlap:
                     wrong.numbers = {0, 1};  // the root and its child: one inside the other
                     break;
+                case ExerciseKind::SpotBug:
+                    wrong.numbers[0] += 1;  // a later step: wrong, but not the first wrong one
+                    break;
             }
             EXPECT_FALSE(checkAnswer(ex, log, wrong, Language::En, l.file, &sweep).correct);
         }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -183,6 +184,12 @@ struct RayRecord {
 struct NodeRecord {
     std::array<double, 3> lo, hi;
 };
+/// The grid a bare DDA walk was recorded on (a lesson's replayed wrong walk): its box and cells
+/// per axis, so that a reader can walk the same ray exactly. Not written to a trace file.
+struct GridRecord {
+    std::array<double, 3> lo, hi;
+    std::array<int, 3> res;
+};
 
 /// Appends events until `cap`; past it, counts what it drops (truncated() says so).
 class EventLog {
@@ -216,6 +223,8 @@ class EventLog {
     const std::vector<Event>& events() const { return events_; }
     const std::vector<RayRecord>& rays() const { return rays_; }
     const std::vector<NodeRecord>& nodes() const { return nodes_; }
+    const std::optional<GridRecord>& grid() const { return grid_; }
+    void setGrid(const GridRecord& g) { grid_ = g; }
     std::size_t cap() const { return cap_; }
     /// 2 for a log of a 2D scene, 3 for a 3D one: said once by whoever records, so a reader of
     /// an event (a 2D cell leaves its third coordinate at 0) need not guess.
@@ -227,6 +236,7 @@ class EventLog {
         events_.clear();
         rays_.clear();
         nodes_.clear();
+        grid_.reset();
         dropped_ = 0;
     }
     // For the trace reader.
@@ -239,6 +249,7 @@ class EventLog {
     std::vector<Event> events_;
     std::vector<RayRecord> rays_;
     std::vector<NodeRecord> nodes_;
+    std::optional<GridRecord> grid_;
     std::size_t dropped_ = 0;
     int dims_ = 3;
 };

@@ -170,6 +170,12 @@ class ExerciseKindUnit {
     virtual bool needsSweep() const { return false; }
     /// Its answer is in the tree's node boxes, which the trace must carry.
     virtual bool needsNodeBoxes() const { return false; }
+    /// Its trace is a walk of its own (spot_bug's wrong walk), recorded by recordWalk on its
+    /// structure's grid instead of the lesson's trace (LessonSetup::replay names the exercise).
+    virtual bool replaysOwnWalk() const { return false; }
+    /// Records that walk of `ray` on `grid` (`dims` 2 or 3) into `log`.
+    virtual void recordWalk(const Exercise&, const GridRecord& /*grid*/, int /*dims*/,
+                            const WalkRay& /*ray*/, EventLog&) const {}
 };
 
 /// A kind whose answer is one number, right within the exercise's tolerance (value, compute).

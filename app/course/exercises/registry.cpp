@@ -17,12 +17,14 @@ const ExerciseKindUnit& sequenceUnit();
 const ExerciseKindUnit& sweepPickUnit();
 const ExerciseKindUnit& computeUnit();
 const ExerciseKindUnit& overlapUnit();
+const ExerciseKindUnit& spotBugUnit();
 
 const std::vector<const ExerciseKindUnit*>& kindUnits() {
     // In the order of ExerciseKind: a key two kinds take is named after the first.
     static const std::vector<const ExerciseKindUnit*> units{
-        &nextCellUnit(), &valueUnit(),    &pickSplitUnit(), &countUnit(),   &hitOrMissUnit(),
-        &choiceUnit(),   &sequenceUnit(), &sweepPickUnit(), &computeUnit(), &overlapUnit()};
+        &nextCellUnit(),  &valueUnit(),   &pickSplitUnit(), &countUnit(),
+        &hitOrMissUnit(), &choiceUnit(),  &sequenceUnit(),  &sweepPickUnit(),
+        &computeUnit(),   &overlapUnit(), &spotBugUnit()};
     return units;
 }
 
