@@ -52,7 +52,7 @@ TEST(ExerciseRegistry, ALessonNamesEveryKindByItsType) {
     } catch (const LessonError& e) {
         EXPECT_NE(std::string(e.what()).find(
                       "expected next_cell, value, pick_split, count, hit_or_miss, choice, "
-                      "sequence, sweep_pick, compute or overlap"),
+                      "sequence, sweep_pick, compute, overlap or spot_bug"),
                   std::string::npos)
             << e.what();
     }

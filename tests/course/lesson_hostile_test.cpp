@@ -87,14 +87,14 @@ TEST(LessonsHostile, QuotedTextIsEscapedAndShortened) {
     const LessonRun run = runLesson(l);
     std::string what = lessonErrorOf([&] {
         gradeAnswers(
-            l, *run.log,
+            l, run.logs(),
             loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"a\\nb\\u0000c\": 1}}", "a.json"),
             Language::En, "a.json");
     });
     EXPECT_TRUE(contains(what, "key 'answers.a\\nb\\x00c'")) << what;
     what = lessonErrorOf([&] {
         gradeAnswers(
-            l, *run.log,
+            l, run.logs(),
             loadAnswerSheet("{\"lesson\": \"" + std::string(3000, '7') + "\",\n\"answers\": {}}",
                             "a.json"),
             Language::En, "a.json");
@@ -110,7 +110,7 @@ TEST(LessonsHostile, AnswerSheetMessages) {
     EXPECT_EQ(byNumber.lesson, "6");
     const Lesson l = loadLesson("6");
     const LessonRun run = runLesson(l);
-    EXPECT_EQ(gradeAnswers(l, *run.log, byNumber, Language::En, "a.json").items.size(),
+    EXPECT_EQ(gradeAnswers(l, run.logs(), byNumber, Language::En, "a.json").items.size(),
               l.exercises.size());
     std::string what =
         lessonErrorOf([] { loadAnswerSheet("{\"lesson\": 6.5, \"answers\": {}}", "a.json"); });
@@ -121,7 +121,7 @@ TEST(LessonsHostile, AnswerSheetMessages) {
         [] { loadAnswerSheet("{\"lesson\": 6,\n\"student\": {}, \"answers\": {}}", "a.json"); });
     EXPECT_TRUE(contains(what, "a.json:2: key 'student': ")) << what;
     try {
-        gradeAnswers(l, *run.log,
+        gradeAnswers(l, run.logs(),
                      loadAnswerSheet("{\"answers\": {},\n \"lesson\": \"mailboxing\"}", "a.json"),
                      Language::En, "a.json");
         ADD_FAILURE();

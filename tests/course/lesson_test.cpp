@@ -479,7 +479,7 @@ TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
         "{\"lesson\": \"grid-2d-dda\",\n \"answers\": {\n  \"tdelta-y\": 2.5,\n"
         "  \"next-cell\": [2, 2]\n }}",
         "answers.json");
-    const Grade g = gradeAnswers(l, *run.log, sheet, Language::En, "answers.json");
+    const Grade g = gradeAnswers(l, run.logs(), sheet, Language::En, "answers.json");
     EXPECT_EQ(g.score, 1);
     ASSERT_EQ(g.items.size(), l.exercises.size());
     EXPECT_TRUE(g.items[0].correct);
@@ -488,7 +488,7 @@ TEST(Lessons, AnAnswerSheetIsGradedAndItsMistakesNamed) {
     EXPECT_FALSE(g.items[3].correct);
     EXPECT_EQ(g.items[3].expected, "3,1");
     try {
-        gradeAnswers(l, *run.log,
+        gradeAnswers(l, run.logs(),
                      loadAnswerSheet("{\"lesson\": \"6\",\n\"answers\": {\"x\": 1}}", "a.json"),
                      Language::En, "a.json");
         ADD_FAILURE();

@@ -54,7 +54,10 @@ std::string slipFor(const std::string& lesson, const std::string& id, const std:
         ADD_FAILURE() << typed << ": " << why;
         return "";
     }
-    const Verdict v = checkAnswer(*ex, *run.log, *answer, lang, l.file, nullptr, run.scene.get());
+    // Each exercise on its own structure's trace (a spot_bug's is its replayed walk).
+    const LessonLogs logs = run.logs();
+    const Verdict v =
+        checkAnswer(*ex, logs.of(ex->setup), *answer, lang, l.file, nullptr, run.scene.get());
     EXPECT_FALSE(v.correct) << typed;
     // A slip is shown at once, with two tries left and the exercises after this one still open:
     // it names the student's mistake, not this answer (the three tries would be one) nor a later
@@ -64,7 +67,8 @@ std::string slipFor(const std::string& lesson, const std::string& id, const std:
         if (other->kind == ExerciseKind::Choice || other->kind == ExerciseKind::Count ||
             other->kind == ExerciseKind::SweepPick)
             continue;
-        const AnswerForms forms = answerForms(*other, *run.log, l.file, run.scene.get(), nullptr);
+        const AnswerForms forms =
+            answerForms(*other, logs.of(other->setup), l.file, run.scene.get(), nullptr);
         // The student's own number may be another exercise's answer ("0.4441 is v, not u").
         if (const auto found = findAnswer(forms, v.slip, TextRole::Prose); found && *found != typed)
             ADD_FAILURE() << lesson << " " << id << " '" << typed << "': the slip gives "
@@ -202,10 +206,12 @@ TEST(RetryAdvice, NeverStepTheReplayWhileHeldNorForAnAnswerOutsideTheTrace) {
                                  (hint ? " hint" : ""));
                     const std::string en = retryAdvice(ex, held, hint, Language::En);
                     const std::string it = retryAdvice(ex, held, hint, Language::It);
-                    // An overlap's answer is the structure's boxes, drawn at every step.
+                    // An overlap's answer is the structure's boxes, drawn at every step; a
+                    // spot_bug's replay is never held: its whole wrong walk is what is studied.
                     const bool inTrace =
                         ex.kind != ExerciseKind::Compute && ex.kind != ExerciseKind::Choice &&
-                        ex.kind != ExerciseKind::SweepPick && ex.kind != ExerciseKind::Overlap;
+                        ex.kind != ExerciseKind::SweepPick && ex.kind != ExerciseKind::Overlap &&
+                        ex.kind != ExerciseKind::SpotBug;
                     // Step the replay only when it can be stepped and the answer is in it.
                     EXPECT_EQ(has(en, "Step the replay"), inTrace && !held) << en;
                     EXPECT_EQ(has(it, "Fai avanzare la riproduzione"), inTrace && !held) << it;
