@@ -678,11 +678,14 @@ Lesson readLesson(std::string_view text, const std::string& fileName) {
         // Its wrong walk is a trace of its own, walked on its structure's grid.
         const std::string ep = JsonLineMap::element("exercises", i);
         LessonSetup own = l.setupOf(ex.setup);
-        if (own.accel != AccelKind::Grid)
+        // A structure of cells: the one whose build reads grid_res (its row, structure_info.h).
+        const auto hasCells = [](AccelKind k) { return readsOption(k, AccelOption::GridRes); };
+        if (!hasCells(own.accel))
             r.fail(JsonLineMap::child(ep, ex.setup ? "setup" : "type"),
                    "a " + std::string(exerciseKindName(ex.kind)) +
-                       " exercise replays a walk on a grid: the lesson's setup.accel, or the "
-                       "exercise's own, must be grid");
+                       " exercise replays a walk through cells: the lesson's setup.accel, or the "
+                       "exercise's own, must be " +
+                       kindList(+hasCells));
         if (!ex.walkRay && l.trace.kind == LessonTrace::Kind::Build)
             r.fail(ep, "a " + std::string(exerciseKindName(ex.kind)) +
                            " exercise on a lesson that records a build needs its own \"ray\"");

@@ -457,7 +457,7 @@ TEST(SpotBug, ItsKeysAreChecked) {
     EXPECT_TRUE(has(message("{\"id\": \"s\", \"type\": \"spot_bug\", \"mistake\": "
                             "\"no-exit-check\", \"prompt\": {\"en\": \"?\"}}",
                             "\"bvh\""),
-                    "must be grid"));
+                    "must be grid"));  // the structure of cells
     EXPECT_TRUE(has(message("{\"id\": \"s\", \"type\": \"spot_bug\", \"mistake\": "
                             "\"no-exit-check\", \"ray\": {\"o\": [1, 2], \"d\": [0, 0]}, "
                             "\"prompt\": {\"en\": \"?\"}}"),
