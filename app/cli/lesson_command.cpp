@@ -102,7 +102,11 @@ int showLesson(Lesson l, Language lang) {
         printErrata(l.steps[i].errata, lang);
     }
     for (const Exercise& ex : l.exercises) {
-        const std::string on = ex.setup ? ", " + trf(lang, "on the %1", {ex.setup->name()}) : "";
+        // A replayed walk (spot_bug) is a trace of its own on the lesson's grid.
+        const std::string on = !ex.setup ? ""
+                               : ex.setup->replay.empty()
+                                   ? ", " + trf(lang, "on the %1", {ex.setup->name()})
+                                   : ", " + trf(lang, "its own walk on the %1", {ex.setup->name()});
         std::printf("\n## %s %s (%s%s)\n\n%s\n", tr(lang, "Exercise").c_str(), ex.id.c_str(),
                     std::string(exerciseKindName(ex.kind)).c_str(), on.c_str(),
                     ex.prompt.in(lang).c_str());
