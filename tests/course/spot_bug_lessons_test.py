@@ -90,7 +90,10 @@ def slides_walk(lo, hi, res, o, d, mistake):
     for a in range(n):
         # no-entry-clip: the origin's cell, clamped into the grid, not the entry point's.
         p = o[a] if mistake == "no-entry-clip" else o[a] + t_enter * d[a]
-        cell.append(min(max(math.floor((p - lo[a]) / size[a]), 0), res[a] - 1))
+        # The cell the ray goes into: on a boundary moving down, the one below it.
+        f = (p - lo[a]) / size[a]
+        c = math.ceil(f) - 1 if d[a] < 0 and mistake != "no-entry-clip" else math.floor(f)
+        cell.append(min(max(c, 0), res[a] - 1))
         step.append(1 if d[a] > 0 else -1)
         # negative-direction-boundary: the boundary X + 1 also when moving down.
         k = cell[a] + 1 if mistake == "negative-direction-boundary" or step[a] > 0 else cell[a]
