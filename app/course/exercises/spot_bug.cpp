@@ -48,6 +48,7 @@ void recordWrongWalk(Mistake mistake, const GridRecord& g, const WalkRay& r, Eve
         setup.tDelta[a] = dda.tDelta()[a];
     }
     if (static_cast<int>(cells.size()) >= cap) {
+        // It never ends by itself: kept to a few cells past its first wrong one.
         std::size_t k = 0;
         for (bool in = dda.valid(); in && k < cells.size() && dda.cell() == cells[k].cell;
              in = dda.next())
