@@ -99,7 +99,7 @@ BoardBeside besideOf(const StudentRay& ray, const ReferenceRay& ref, Language la
         std::vector<std::string> cells;
         std::vector<bool> differs;
         const auto add = [&](std::string text, bool differ) {
-            cells.push_back(differ ? kDiffers + (text.empty() ? "-" : text) : std::move(text));
+            cells.push_back(differ ? kDiffers + (text.empty() ? "\u2014" : text) : std::move(text));
             differs.push_back(differ);
         };
         // The step itself: a student who stopped early has none where raystep goes on.
@@ -163,7 +163,7 @@ AssessController::AssessController(QMainWindow& window, Session& session, View2D
       view_(view),
       board_(board),
       hooks_(std::move(hooks)) {
-    open_ = new QAction(tr("Open student &trace..."), &window_);
+    open_ = new QAction(tr("Open stu&dent trace..."), &window_);
     open_->setObjectName("openStudentTrace");
     open_->setStatusTip(
         tr("Check a student's own DDA or tree walk (JSON Lines) against raystep's, on the open "

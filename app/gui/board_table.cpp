@@ -80,6 +80,9 @@ class MarkedCellDelegate : public QStyledItemDelegate {
         // Unselected, it is drawn on the model's tint (BackgroundRole), in the text's colour.
         QStyleOptionViewItem o(option);
         o.state &= ~QStyle::State_Selected;
+        const PaletteColour& c = roleColour(PaletteRole::Tested);
+        const auto light = [](int v) { return (v * 11 + 255 * 9) / 20; };  // over white, opaque
+        painter->fillRect(o.rect, QColor(light(c.r), light(c.g), light(c.b)));
         QStyledItemDelegate::paint(painter, o, index);
     }
 

@@ -73,8 +73,10 @@ void View2D::drawStudentWalk(QPainter& g) const {
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const QRectF r = boxes[i].adjusted(inset, inset, -inset, -inset);
         const bool divergent = w.divergent && index[i] == *w.divergent;
+        // A tree's nodes nest: tinted, the root would be under every tint of its descendants.
         g.setBrush(divergent ? QBrush(blue, Qt::BDiagPattern)
-                             : QBrush(QColor(blue.red(), blue.green(), blue.blue(), 40)));
+                   : grid    ? QBrush(QColor(blue.red(), blue.green(), blue.blue(), 40))
+                             : QBrush(Qt::NoBrush));
         QPen pen(blue, px(divergent ? 4.0 : 2.0));
         if (!divergent) pen.setStyle(Qt::DashLine);
         g.setPen(pen);
