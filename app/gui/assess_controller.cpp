@@ -262,11 +262,10 @@ QString AssessController::open(const QString& path, bool quiet) {
 
     rays_->clear();
     for (const RayVerdict& v : assessment_->rays)
-        rays_->addItem(v.passed ? tr("ray %1: passed").arg(v.ray)
-                                : tr("ray %1: failed at %2 %3")
-                                      .arg(v.ray)
-                                      .arg(q(v.divergence->record))
-                                      .arg(std::max(v.divergence->index, 0)));
+        rays_->addItem(
+            v.passed
+                ? tr("ray %1: passed").arg(v.ray)
+                : tr("ray %1: failed at step %2").arg(v.ray).arg(std::max(v.divergence->index, 0)));
     rays_->setVisible(assessment_->rays.size() > 1);
     const QString file = QString::fromStdString(trace_->file).section(QLatin1Char('/'), -1);
     title_->setText(tr("Student trace %1: %2 of %3 rays passed")
@@ -333,10 +332,11 @@ void AssessController::showRay(int ray) {
         text = tr("Ray %1 passed: %2 steps, as raystep walks them.").arg(ray).arg(v.walkRecords);
     } else {
         const Divergence& d = *v.divergence;
-        text = tr("Ray %1 failed at %2 %3 (line %4): %5")
+        // The board's step (the walk's index, not a node's id), the record as the file names it.
+        text = tr("Ray %1 failed at step %2 (%3, line %4): %5")
                    .arg(ray)
-                   .arg(q(d.record))
                    .arg(std::max(d.index, 0))
+                   .arg(q(d.record))
                    .arg(d.line)
                    .arg(q(d.explanation));
         if (v.mistake) {
