@@ -52,7 +52,7 @@ std::string tMaxText(const std::array<double, 3>& t, int dims, Language lang) {
 /// As the assessor compares a tMax: to a relative 1e-9, infinity (parallel) only to itself.
 bool sameT(double a, double b) {
     if (std::isinf(a) || std::isinf(b)) return a == b;
-    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+    return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
 }
 
 std::string idsText(const std::vector<std::uint32_t>& ids) {
@@ -125,17 +125,14 @@ BoardBeside besideOf(const StudentRay& ray, const ReferenceRay& ref, Language la
         if (testsLogged) {
             // A set per cell, as the assessor compares them (the order inside is the student's).
             const std::vector<std::uint32_t> theirs = s ? s->tests : std::vector<std::uint32_t>{};
-            const std::set<std::uint32_t> a(theirs.begin(), theirs.end());
-            const std::set<std::uint32_t> b2 =
+            const std::set<std::uint32_t> yours(theirs.begin(), theirs.end());
+            const std::set<std::uint32_t> raystep =
                 u ? std::set<std::uint32_t>(u->tests.begin(), u->tests.end())
                   : std::set<std::uint32_t>{};
-            add(idsText(theirs), s && a != b2);
+            add(idsText(theirs), s && yours != raystep);
         }
         b.rows.push_back(std::move(cells));
         b.differs.push_back(std::move(differs));
-        if (!b.divergent && std::find(b.differs.back().begin(), b.differs.back().end(), true) !=
-                                b.differs.back().end())
-            b.divergent = k;
     }
     return b;
 }
@@ -297,7 +294,11 @@ void AssessController::showRay(int ray) {
     walk.log = log;
     BoardBeside beside = besideOf(sr, v.reference, lang);
     beside.log = log;
-    if (v.divergence) walk.divergent = std::size_t(std::max(v.divergence->index, 0));
+    // The assessor's first divergence: the view, the board and the replay's jump show the same.
+    if (v.divergence) {
+        walk.divergent = std::size_t(std::max(v.divergence->index, 0));
+        beside.divergent = walk.divergent;
+    }
     beside.caption =
         v.passed ? tr("Ray %1 of the student's trace beside raystep's: they agree.").arg(ray)
                  : tr("Ray %1 of the student's trace beside raystep's: %2 marks where theirs "

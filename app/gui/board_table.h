@@ -33,7 +33,7 @@ struct BoardBeside {
     std::vector<std::string> header;             // "your cell", "your tMax"...
     std::vector<std::vector<std::string>> rows;  // per step of the student's walk
     std::vector<std::vector<bool>> differs;      // per row and column: not raystep's
-    std::optional<std::size_t> divergent;        // the first row that differs
+    std::optional<std::size_t> divergent;        // the assessor's first divergence
     QString caption;                             // what the board's caption says then
 };
 
