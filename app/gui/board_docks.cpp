@@ -61,6 +61,10 @@ void BoardDocks::show(bool board, bool live) {
     liveDock_->setVisible(live);
 }
 
+void BoardDocks::showBoard() {
+    boardDock_->setVisible(true);
+}
+
 void BoardDocks::place() {
     const bool shown = !session_.hasScene() || session_.is2D();
     for (QDockWidget* d : {boardDock_, liveDock_}) {

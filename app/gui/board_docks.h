@@ -29,6 +29,8 @@ class BoardDocks : public QObject {
     void addViewItems(QMenu* view);
     /// A lesson's choice: the board and the live controls shown or not.
     void show(bool board, bool live);
+    /// The board shown, the live controls as they are (a student's trace compared on it).
+    void showBoard();
     /// View > Reset layout's part: the board and the live controls under the views, side by side.
     void place();
     /// After a zoom: the docks under the views at the zoom's height (defaultBottomDockHeight).

@@ -20,8 +20,10 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPainter>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -63,6 +65,29 @@ class BoardView : public QTableView {
 
   private:
     QAction* copy_;
+};
+
+/// The board's cells, with a student's cell that differs from raystep's tinted even in the
+/// current (selected) row, where the selection's colour would hide it: that row is the jump's.
+class MarkedCellDelegate : public QStyledItemDelegate {
+  public:
+    MarkedCellDelegate(const BoardModel* model, QObject* parent)
+        : QStyledItemDelegate(parent), model_(model) {}
+    void paint(QPainter* painter, const QStyleOptionViewItem& option,
+               const QModelIndex& index) const override {
+        if (!model_->marked(index.row(), index.column()))
+            return QStyledItemDelegate::paint(painter, option, index);
+        // Unselected, it is drawn on the model's tint (BackgroundRole), in the text's colour.
+        QStyleOptionViewItem o(option);
+        o.state &= ~QStyle::State_Selected;
+        const PaletteColour& c = roleColour(PaletteRole::Tested);
+        const auto light = [](int v) { return (v * 11 + 255 * 9) / 20; };  // over white, opaque
+        painter->fillRect(o.rect, QColor(light(c.r), light(c.g), light(c.b)));
+        QStyledItemDelegate::paint(painter, o, index);
+    }
+
+  private:
+    const BoardModel* model_;
 };
 
 /// A one-line label that elides what does not fit (the whole text is its tooltip): a zoomed
@@ -127,11 +152,25 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= rowCount({}) || index.column() >= columnCount({}))
         return {};
     const bool current = board_.current && *board_.current == std::size_t(index.row());
+    const bool student = markedFrom_ >= 0 && index.column() >= markedFrom_;
+    const bool differs = marked(index.row(), index.column());
     switch (role) {
         case Qt::DisplayRole:
         case Qt::ToolTipRole:
             return shownText(board_.rows[index.row()].cells[index.column()]);
         case Qt::BackgroundRole:
+            if (differs) {
+                // Where the student's walk is not raystep's: the 2D view's tested pink, strong on
+                // the first such row (the replay's jump), lighter after it.
+                const PaletteColour& c = roleColour(PaletteRole::Tested);
+                const bool first = divergent_ && *divergent_ == std::size_t(index.row());
+                return QColor(c.r, c.g, c.b, first ? 170 : 90);
+            }
+            if (student && !current) {
+                // The student's columns in the 2D view's colour of their walk, lightly.
+                const PaletteColour& c = roleColour(PaletteRole::Chosen);
+                return QColor(c.r, c.g, c.b, 30);
+            }
             if (current) {
                 // The 2D view's colour for the current cell, as a tint the text reads on.
                 const PaletteColour& c = roleColour(PaletteRole::Current);
@@ -139,7 +178,7 @@ QVariant BoardModel::data(const QModelIndex& index, int role) const {
             }
             return {};
         case Qt::FontRole:
-            if (current) {
+            if (current || differs) {
                 QFont f;
                 f.setBold(true);
                 return f;
@@ -160,6 +199,21 @@ QVariant BoardModel::headerData(int section, Qt::Orientation o, int role) const 
     if (role != Qt::DisplayRole || o != Qt::Horizontal || section < 0 || section >= columnCount({}))
         return {};
     return QString::fromStdString(board_.header[section]);
+}
+
+void BoardModel::setMarks(int first, std::vector<std::vector<bool>> differs,
+                          std::optional<std::size_t> divergent) {
+    markedFrom_ = first;
+    marks_ = std::move(differs);
+    divergent_ = divergent;
+}
+
+bool BoardModel::marked(int row, int column) const {
+    if (markedFrom_ < 0 || column < markedFrom_ || row < 0 || std::size_t(row) >= marks_.size())
+        return false;
+    const auto& r = marks_[row];
+    const std::size_t c = std::size_t(column - markedFrom_);
+    return c < r.size() && r[c];
 }
 
 bool BoardModel::numericColumn(int c) const {
@@ -259,6 +313,7 @@ BoardTable::BoardTable(Session& s, QWidget* parent) : QWidget(parent), session_(
     view_->addAction(copyKey);
     view_->setObjectName("boardView");
     view_->setModel(model_);
+    view_->setItemDelegate(new MarkedCellDelegate(model_, view_));
     view_->verticalHeader()->hide();
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -292,7 +347,35 @@ void BoardTable::refresh() {
     if (stale_) return;
     BoardOptions options;
     options.lang = interfaceLanguage();
-    model_->setBoard(makeBoard(session_.log(), session_.cursor(), options));
+    Board made = makeBoard(session_.log(), session_.cursor(), options);
+    const bool beside =
+        showsBeside() && (made.kind == BoardKind::Dda || made.kind == BoardKind::Tree);
+    if (beside) {
+        // The student's k-th step beside raystep's k-th; past raystep's last row (a walk that
+        // goes on), theirs alone, once the replay has reached raystep's end.
+        const int first = int(made.header.size());
+        made.header.insert(made.header.end(), beside_->header.begin(), beside_->header.end());
+        const std::size_t ours = made.rows.size();
+        std::size_t rows = ours;
+        if (session_.cursor() >= session_.size()) rows = std::max(ours, beside_->rows.size());
+        const std::size_t lastEvent = session_.size() > 0 ? session_.size() - 1 : 0;
+        std::vector<std::vector<bool>> marks(rows);
+        for (std::size_t r = 0; r < rows; ++r) {
+            if (r >= ours)
+                made.rows.push_back({lastEvent, std::vector<std::string>(std::size_t(first))});
+            auto& cells = made.rows[r].cells;
+            if (r < beside_->rows.size()) {
+                cells.insert(cells.end(), beside_->rows[r].begin(), beside_->rows[r].end());
+                marks[r] = beside_->differs[r];
+            } else {
+                cells.resize(made.header.size());
+            }
+        }
+        model_->setMarks(first, std::move(marks), beside_->divergent);
+    } else {
+        model_->setMarks(-1, {}, std::nullopt);
+    }
+    model_->setBoard(std::move(made));
     const Board& b = board();
     QString what;
     const QString ray = QString::number(b.ray);
@@ -313,6 +396,7 @@ void BoardTable::refresh() {
             what = tr("The build: a row per node made, with its split or why it is a leaf.");
             break;
     }
+    if (beside && !beside_->caption.isEmpty()) what = beside_->caption;
     static_cast<ElidedLabel*>(caption_)->setFullText(what);
     copy_->setEnabled(!b.header.empty());
     export_->setEnabled(!b.header.empty());
@@ -327,6 +411,15 @@ void BoardTable::refresh() {
     } else {
         view_->clearSelection();
     }
+}
+
+void BoardTable::setBeside(std::optional<BoardBeside> beside) {
+    beside_ = std::move(beside);
+    refresh();
+}
+
+bool BoardTable::showsBeside() const {
+    return beside_ && beside_->log && beside_->log == session_.logRef();
 }
 
 int BoardTable::currentRow() const {

@@ -10,6 +10,10 @@
 #include <QAbstractTableModel>
 #include <QWidget>
 
+#include <optional>
+#include <string>
+#include <vector>
+
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -20,6 +24,18 @@ namespace raystep::gui {
 /// A board cell as the table shows it: its numbers with the interface's decimal sign (the
 /// exports and Copy keep the board's own text, with points).
 QString shownText(const std::string& cell);
+
+/// A student's rows beside the board's (File > Open student trace, assess_controller.h): their
+/// own columns after raystep's, the k-th row of theirs beside raystep's k-th, each cell marked
+/// where it differs.
+struct BoardBeside {
+    LogRef log;  // raystep's run of the same ray: the columns are shown while it is replayed
+    std::vector<std::string> header;             // "your cell", "your tMax"...
+    std::vector<std::vector<std::string>> rows;  // per step of the student's walk
+    std::vector<std::vector<bool>> differs;      // per row and column: not raystep's
+    std::optional<std::size_t> divergent;        // the assessor's first divergence
+    QString caption;                             // what the board's caption says then
+};
 
 /// The board as a table model: rows grow at the end while the replay steps forward.
 class BoardModel : public QAbstractTableModel {
@@ -32,12 +48,20 @@ class BoardModel : public QAbstractTableModel {
     /// Shows `board`: rows appended or removed at the end when the columns stay, else reset.
     void setBoard(Board board);
     const Board& board() const { return board_; }
+    /// The columns from `first` on are a student's; `differs` marks their cells (per row).
+    void setMarks(int first, std::vector<std::vector<bool>> differs,
+                  std::optional<std::size_t> divergent);
+    /// Whether a cell is a student's that differs from raystep's (shown with a sign and a tint).
+    bool marked(int row, int column) const;
 
   private:
     /// Whether every cell of column `c` is a number (a figure column, right-aligned), cached.
     bool numericColumn(int c) const;
     Board board_;
     mutable std::vector<signed char> numeric_;  // per column: -1 not known yet, 0, 1
+    int markedFrom_ = -1;                       // the first student column (-1: none)
+    std::vector<std::vector<bool>> marks_;
+    std::optional<std::size_t> divergent_;
 };
 
 class BoardTable : public QWidget {
@@ -61,6 +85,11 @@ class BoardTable : public QWidget {
     QTableView* view() const { return view_; }
     /// The line above the table: whose rows these are.
     QString caption() const;
+    /// A student's rows beside raystep's while `beside.log` is replayed (none: no more).
+    void setBeside(std::optional<BoardBeside> beside);
+    /// Whether the student's columns are shown now.
+    bool showsBeside() const;
+    BoardModel* model() const { return model_; }
 
   protected:
     void showEvent(QShowEvent* e) override;
@@ -79,6 +108,7 @@ class BoardTable : public QWidget {
     QPushButton* copy_;
     QPushButton* export_;
     bool stale_ = false;
+    std::optional<BoardBeside> beside_;
 };
 
 }  // namespace raystep::gui

@@ -305,7 +305,7 @@ void ImageRender::renderImage() {
         TaskKind::Render, tr("Rendering %1...").arg(QString::fromStdString(session_.name())),
         [ref = session_.sceneRef(), f, box](const ProgressFn& progress) {
             const Scene& s = std::get<Scene>(ref->scene);
-            ProgressiveRender r(s, *ref->accel3D, f.options());
+            ProgressiveRender r(s, *ref->structure.in3D, f.options());
             const double passes = static_cast<double>(r.plan().size());
             while (!r.done()) {
                 const double before = static_cast<double>(r.passesDone());
@@ -362,9 +362,9 @@ void ImageRender::tracePixelHereOrInBackground(int x, int y, int w, int h,
             auto log = std::make_shared<EventLog>(kSlowPixelEventCap);
             const Scene& s = std::get<Scene>(ref->scene);
             if (camera)
-                tracePixelEvents(s, *ref->accel3D, *camera, settings, x, y, w, h, *log);
+                tracePixelEvents(s, *ref->structure.in3D, *camera, settings, x, y, w, h, *log);
             else
-                tracePixelEvents(s, *ref->accel3D, x, y, w, h, *log);
+                tracePixelEvents(s, *ref->structure.in3D, x, y, w, h, *log);
             return LogRef(std::move(log));
         },
         [this, generation, x, y, clicked = camera.has_value()](LogRef&& log,

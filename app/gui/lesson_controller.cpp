@@ -55,11 +55,12 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
         withRay.name = o.scene->name;
         o.scene = Session::prepare(std::move(withRay), lesson.accel, options);
     }
-    o.trace =
-        recordLessonTrace(lesson, o.scene->scene, o.scene->accel3D ? &*o.scene->accel3D : nullptr,
-                          o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+    o.trace = recordLessonTrace(lesson, o.scene->scene,
+                                o.scene->structure.in3D ? &*o.scene->structure.in3D : nullptr,
+                                o.scene->structure.in2D ? &*o.scene->structure.in2D : nullptr);
     o.lesson = lesson;
-    addStepNotes(o.lesson, o.scene->scene, o.scene->accel2D ? &*o.scene->accel2D : nullptr);
+    addStepNotes(o.lesson, o.scene->scene,
+                 o.scene->structure.in2D ? &*o.scene->structure.in2D : nullptr);
     // Every other structure a step or an exercise names, built here in the background over the
     // same scene (as the structure chooser rebuilds), with the lesson's trace through it.
     const std::vector<LessonSetup> setups = lesson.setups();
@@ -68,9 +69,10 @@ LessonController::Opened LessonController::prepare(const Lesson& lesson,
         so.setProgress(progress);
         Structure st;
         st.scene = Session::rebuild(o.scene, setups[i].accel, so);
-        st.trace = recordLessonTrace(lesson, setups[i], st.scene->scene,
-                                     st.scene->accel3D ? &*st.scene->accel3D : nullptr,
-                                     st.scene->accel2D ? &*st.scene->accel2D : nullptr);
+        st.trace =
+            recordLessonTrace(lesson, setups[i], st.scene->scene,
+                              st.scene->structure.in3D ? &*st.scene->structure.in3D : nullptr,
+                              st.scene->structure.in2D ? &*st.scene->structure.in2D : nullptr);
         o.others[setups[i].key()] = std::move(st);
     }
     return o;

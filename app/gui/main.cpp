@@ -1,5 +1,5 @@
 // raystep: the replay app. It opens on lesson 1 unless told otherwise. Options for slides and
-// tests: --lesson, --scene, --accel, --step, --screenshot.
+// tests: --lesson, --scene, --accel, --step, --student-trace, --screenshot.
 #include "compare_window.h"
 #include "language.h"
 #include "lesson_panel.h"
@@ -71,10 +71,15 @@ int main(int argc, char** argv) {
         "Also open compare mode on the scene: the structures --accel lists (grid,kdtree,bvh: "
         "trees by SAH), or a tree's split methods (midpoint, median, SAH), or for one grid the "
         "slides' grid, kd-tree and BVH; --screenshot then saves that window.");
+    const QCommandLineOption studentOpt(
+        "student-trace",
+        "Then open a student's trace (JSON Lines) and check it against the scene's structure, as "
+        "File > Open student trace does.",
+        "file");
     const QCommandLineOption shotOpt(
         "screenshot", "Show the window, let it paint, save it as PNG, exit.", "file");
     parser.addOptions({lessonOpt, sceneOpt, accelOpt, replayOpt, stepOpt, compareOpt, langOpt,
-                       lecturerOpt, presentOpt, shotOpt});
+                       lecturerOpt, presentOpt, studentOpt, shotOpt});
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet("help")) parser.showHelp(0);
 
@@ -167,6 +172,10 @@ int main(int argc, char** argv) {
         QApplication::exit(0);
     };
     const auto afterReplay = [&] {
+        if (parser.isSet(studentOpt)) {
+            const QString problem = window.openStudentTrace(parser.value(studentOpt), quiet);
+            if (!problem.isEmpty() && scriptFails("--student-trace " + problem)) return;
+        }
         if (step) {
             if (*step > window.session().size()) {
                 scriptFails(QStringLiteral("--step %1: the replay has %2 events")

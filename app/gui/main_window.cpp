@@ -3,6 +3,7 @@
 #include "file_dialogs.h"
 #include "practice_controller.h"
 
+#include "assess_controller.h"
 #include "board_docks.h"
 #include "compare_launcher.h"
 #include "event_list.h"
@@ -62,6 +63,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createStructureControls();
     live_ = new LiveEdit(*this, session_, view2D_, [this](SceneRef s) { showLive(std::move(s)); });
     board_ = new BoardDocks(*this, session_);
+    assess_ = new AssessController(*this, session_, view2D_, board_->boardTable(), {refused});
+    // Its bar over the views, above the 2D view and the 3D one.
+    qobject_cast<QVBoxLayout*>(views_->parentWidget()->layout())->insertWidget(0, assess_->bar());
     presenter_ = new PresenterControls(*this);
     compare_ = new CompareLauncher(*this, session_, runner_, generation, lesson_,
                                    {refused, [this](QSize s) { return fitToScreen(s); },
@@ -84,6 +88,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(opener_, &SceneOpener::lessonArriving, lessons_, &LessonController::replaceLesson);
     connect(opener_, &SceneOpener::lessonOpened, this, &MainWindow::showOpenedLesson);
     connect(opener_, &SceneOpener::opened, this, &MainWindow::opened);
+    // A student's ray is compared on the board: shown beside it, whatever the scene.
+    connect(assess_, &AssessController::rayShown, board_, &BoardDocks::showBoard);
     // The lesson's requests: the timeline's N, its own scene again, a step's comparison.
     connect(lessons_, &LessonController::jumpKindSuggested, timeline_, &Timeline::setJumpKind);
     connect(lessons_, &LessonController::lessonSceneRequested, this, [this](SceneRef scene) {
@@ -307,7 +313,9 @@ void MainWindow::syncViewActions() {
 void MainWindow::createMenus() {
     const Actions& a = actions_;
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addActions({a.open, a.saveScene});
+    file->addAction(a.open);
+    assess_->addFileItems(file);
+    file->addAction(a.saveScene);
     live_->addFileItems(file);
     file->addActions(
         {a.exportTrace, a.shotWindow, a.shot2D, a.shot3D, a.shotImage, a.exportReport});

@@ -31,6 +31,7 @@ namespace raystep::gui {
 /// leaves the old file whole). The one-line problem, or an empty string.
 QString savePng(const QImage& image, const QString& path);
 
+class AssessController;
 class BoardDocks;
 class BoardTable;
 class CompareChooser;
@@ -77,6 +78,11 @@ class MainWindow : public QMainWindow {
     /// scene is rebuilt at once and shown with showLive (its walk or build recorded again at the
     /// same step); a 3D one in the background, as changeStructure. Ends with structureChanged.
     void applyStructure(AccelKind kind, const AccelOptions& options);
+    /// File > Open student trace: `path` checked against the open scene's structure, its first
+    /// failed ray shown over raystep's run (assess_controller.h). The problem, or empty (a bad
+    /// file changes nothing; a message box says why unless quiet).
+    QString openStudentTrace(const QString& path, bool quiet = false);
+    AssessController* assessController() const { return assess_; }
     /// The board dock's table and the live controls (board_docks.h).
     BoardTable* boardTable() const;
     LiveControls* liveControls() const;
@@ -253,6 +259,7 @@ class MainWindow : public QMainWindow {
     ImageRender* image_ = nullptr;
     LiveEdit* live_ = nullptr;
     BoardDocks* board_ = nullptr;
+    AssessController* assess_ = nullptr;
     PresenterControls* presenter_ = nullptr;
     CompareLauncher* compare_ = nullptr;
     WindowLayout* layout_ = nullptr;

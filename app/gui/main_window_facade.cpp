@@ -2,6 +2,7 @@
 // forwarded to the part.
 #include "main_window.h"
 
+#include "assess_controller.h"
 #include "board_docks.h"
 #include "compare_launcher.h"
 #include "inspector.h"
@@ -42,6 +43,10 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
         if (!busy()) return true;
         if (clock.elapsed() >= timeoutMs) return false;
     }
+}
+
+QString MainWindow::openStudentTrace(const QString& path, bool quiet) {
+    return assess_->open(path, quiet);
 }
 
 // The views' own, for the tests and scripts that drive the window.

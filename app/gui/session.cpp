@@ -11,12 +11,10 @@ namespace raystep::gui {
 namespace {
 /// The structure of a scene built in place (it points into the scene, which must not move).
 void buildIn(LoadedScene& l, const AccelOptions& options) {
-    AnyStructure built = buildStructure(l.scene, l.kind, {}, options);
-    l.accel2D = std::move(built.in2D);
-    l.accel3D = std::move(built.in3D);
+    l.structure = buildStructure(l.scene, l.kind, {}, options);
     // Here, on the worker that built it: a view never walks the structure itself.
-    if (l.accel2D) l.outline2D = outline(*l.accel2D);
-    if (l.accel3D) l.outline3D = outline(*l.accel3D);
+    if (l.structure.in2D) l.outline2D = outline(*l.structure.in2D);
+    if (l.structure.in3D) l.outline3D = outline(*l.structure.in3D);
     // The progress callback belonged to this build only.
     l.options.setProgress(nullptr);
 }
@@ -105,7 +103,8 @@ void Session::recordBuild() {
 
 BuildSummary Session::summary() const {
     if (!scene_) return {};
-    return scene_->accel2D ? summarize(*scene_->accel2D) : summarize(*scene_->accel3D);
+    return scene_->structure.in2D ? summarize(*scene_->structure.in2D)
+                                  : summarize(*scene_->structure.in3D);
 }
 
 void Session::tracePixel(int x, int y, int width, int height) {

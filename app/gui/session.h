@@ -28,8 +28,8 @@ struct LoadedScene {
     LoadedScene& operator=(const LoadedScene&) = delete;
 
     std::variant<Scene, Scene2D> scene;
-    std::optional<Accelerator> accel3D;
-    std::optional<Accelerator2D> accel2D;
+    // The built structure, 2D or 3D (as the core's assessor of a student's trace takes it).
+    AnyStructure structure;
     // The structure's outline, made with it (once per structure: the views draw from it).
     std::optional<StructureOutline<3>> outline3D;
     std::optional<StructureOutline<2>> outline2D;
@@ -44,7 +44,7 @@ using SceneRef = std::shared_ptr<const LoadedScene>;
 using LogRef = std::shared_ptr<const EventLog>;
 
 /// What the replayed log is, for the window to say.
-enum class LogKind { None, ExampleRay, Pixel, Build, Lesson };
+enum class LogKind { None, ExampleRay, Pixel, Build, Lesson, StudentRay };
 
 class Session : public QObject {
     Q_OBJECT
@@ -111,10 +111,10 @@ class Session : public QObject {
         return scene_ ? std::get_if<Scene2D>(&scene_->scene) : nullptr;
     }
     const Accelerator2D* accel2D() const {
-        return scene_ && scene_->accel2D ? &*scene_->accel2D : nullptr;
+        return scene_ && scene_->structure.in2D ? &*scene_->structure.in2D : nullptr;
     }
     const Accelerator* accel3D() const {
-        return scene_ && scene_->accel3D ? &*scene_->accel3D : nullptr;
+        return scene_ && scene_->structure.in3D ? &*scene_->structure.in3D : nullptr;
     }
     /// The shown structure's outline (2D or 3D), made once when it was built: the same object
     /// for as long as the structure is shown, a new one with each new structure.

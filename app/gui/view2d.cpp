@@ -182,6 +182,15 @@ void View2D::setSequence(const QList<QPoint>& cells) {
     update();
 }
 
+void View2D::setStudentWalk(std::optional<StudentWalk> walk) {
+    student_ = std::move(walk);
+    update();
+}
+
+bool View2D::showsStudentWalk() const {
+    return student_ && student_->log && student_->log == session_.logRef();
+}
+
 void View2D::indexBuild() {
     // Once per log: where each split was chosen, and each node's parent (a build's replay).
     chosenAt_.clear();
@@ -230,6 +239,7 @@ void View2D::paintEvent(QPaintEvent*) {
     const ReplayState& st = session_.state();
     if (layerDirty_ || layerSize_ != size()) buildLayer();
     drawWalk(g, st);
+    if (showsStudentWalk()) drawStudentWalk(g);
     const bool build = session_.showingBuild();
     if (build) drawBuildReplay(g, st);
     drawTouched(g, st);

@@ -42,6 +42,15 @@ std::vector<double> niceTicks(double lo, double hi, int count);
 
 class Live2D;
 
+/// A student's walk drawn over raystep's (File > Open student trace, assess_controller.h): their
+/// cells or nodes in the order logged, and the first that differs from raystep's.
+struct StudentWalk {
+    LogRef log;  // raystep's run of the same ray: the walk is drawn while that log is replayed
+    std::vector<std::array<std::int32_t, 3>> cells;  // a grid's walk
+    std::vector<std::uint32_t> nodes;                // a tree's (the reference's numbering)
+    std::optional<std::size_t> divergent;            // into cells or nodes; none: all agree
+};
+
 class View2D : public QWidget {
     Q_OBJECT
   public:
@@ -117,6 +126,11 @@ class View2D : public QWidget {
         return tDeltaSpans_;
     }
 
+    /// The student's walk drawn over raystep's while its log is replayed (none: not drawn).
+    void setStudentWalk(std::optional<StudentWalk> walk);
+    /// Whether a student's walk is drawn now (its log is the one replayed).
+    bool showsStudentWalk() const;
+
   public slots:
     /// The cells a student has clicked for a sequence exercise, numbered in order on the grid.
     void setSequence(const QList<QPoint>& cells);
@@ -161,6 +175,9 @@ class View2D : public QWidget {
     void drawRay(QPainter& g, const ReplayState& st) const;
     /// A sequence answer's clicked cells, numbered in order (view2d_structure.cpp).
     void drawSequence(QPainter& g) const;
+    /// A student's walk over raystep's: their cells or nodes outlined and joined in order, the
+    /// first that differs hatched (view2d_structure.cpp).
+    void drawStudentWalk(QPainter& g) const;
     /// Where grid cell `c` is drawn.
     QRectF cellRect(const OutlineGrid<2>& grid, const std::array<std::int32_t, 3>& c) const;
     /// The caption over the picture: the scene's name and its structure.
@@ -202,6 +219,7 @@ class View2D : public QWidget {
 
     Session& session_;
     QList<QPoint> sequence_;  // a sequence answer's cells, in the order clicked
+    std::optional<StudentWalk> student_;
     Language lang_ = Language::En;
     bool legendShown_ = true, captionShown_ = true;
     QPixmap layer_;

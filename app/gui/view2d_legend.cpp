@@ -59,7 +59,18 @@ std::vector<std::pair<QColor, QString>> View2D::legendRows(bool build) const {
                 {role(PaletteRole::Candidate), roleLabel(PaletteRole::Candidate, lang_)},
                 {role(PaletteRole::Chosen), roleLabel(PaletteRole::Chosen, lang_)}};
     std::vector<std::pair<QColor, QString>> rows{{ink().ray, rayLegendLabel(lang_)}};
-    rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
+    if (showsStudentWalk()) {
+        // A student's walk over raystep's: whose cells are whose, each in its colour.
+        const auto named = [&](const QString& who, PaletteRole r) {
+            const std::string_view colour = roleColour(r).name(lang_);
+            return QStringLiteral("%1 (%2)").arg(who,
+                                                 QString::fromUtf8(colour.data(), colour.size()));
+        };
+        rows.emplace_back(ink().visited, named(tr("raystep"), PaletteRole::Visited));
+        rows.emplace_back(ink().student, named(tr("your walk"), PaletteRole::Chosen));
+    } else {
+        rows.emplace_back(ink().visited, roleLabel(PaletteRole::Visited, lang_));
+    }
     rows.emplace_back(ink().current, roleLabel(PaletteRole::Current, lang_));
     for (PaletteRole r : {PaletteRole::Tested, PaletteRole::Skipped, PaletteRole::Hit})
         rows.emplace_back(role(r), roleLabel(r, lang_));

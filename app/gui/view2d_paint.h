@@ -21,6 +21,7 @@ inline QColor role(PaletteRole r, int alpha = 255) {
 struct Ink {
     QColor background, gridLine, primitive, label;
     QColor visited, current, tested, skipped, hit, ray;
+    QColor student;  // a student's own walk over raystep's (File > Open student trace)
 };
 inline Ink ink() {
     const bool high = presentation().highContrast();
@@ -37,6 +38,9 @@ inline Ink ink() {
     k.skipped = role(PaletteRole::Skipped);
     k.hit = role(PaletteRole::Hit);
     k.ray = colourOf(rayColour(RayKind::Primary));
+    // The chosen plane's blue: a build's colour, never on screen with a ray's walk, and of a
+    // hue none of the walk's roles has.
+    k.student = role(PaletteRole::Chosen);
     return k;
 }
 /// A pen width (or a mark's radius) as drawn: wider in presenter mode.

@@ -45,6 +45,74 @@ void View2D::drawWalk(QPainter& g, const ReplayState& st) const {
     }
 }
 
+void View2D::drawStudentWalk(QPainter& g) const {
+    const StudentWalk& w = *student_;
+    const QColor blue = draw2d::ink().student;
+    const StructureOutline<2>* outline = session_.outline2D();
+    const OutlineGrid<2>* grid = shownGrid();
+    // Each of the student's cells (or nodes) as a box inset in the reference's, so raystep's
+    // colour still shows around it; the walk's order as a line through their centres.
+    std::vector<QRectF> boxes;
+    std::vector<std::size_t> index;  // each box's place in the student's walk
+    if (grid) {
+        for (std::size_t k = 0; k < w.cells.size(); ++k) {
+            boxes.push_back(cellRect(*grid, w.cells[k]).normalized());
+            index.push_back(k);
+        }
+    } else if (outline) {
+        for (std::size_t k = 0; k < w.nodes.size(); ++k)
+            if (const BoxN<2>* b = outline->nodeBox(w.nodes[k])) {
+                boxes.push_back(
+                    QRectF(toScreen(Vec2(b->lo.x, b->hi.y)), toScreen(Vec2(b->hi.x, b->lo.y)))
+                        .normalized());
+                index.push_back(k);
+            }
+    }
+    const double inset = px(3.5);
+    g.save();
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const QRectF r = boxes[i].adjusted(inset, inset, -inset, -inset);
+        const bool divergent = w.divergent && index[i] == *w.divergent;
+        // A tree's nodes nest: tinted, the root would be under every tint of its descendants.
+        g.setBrush(divergent ? QBrush(blue, Qt::BDiagPattern)
+                   : grid    ? QBrush(QColor(blue.red(), blue.green(), blue.blue(), 40))
+                             : QBrush(Qt::NoBrush));
+        QPen pen(blue, px(divergent ? 4.0 : 2.0));
+        if (!divergent) pen.setStyle(Qt::DashLine);
+        g.setPen(pen);
+        g.drawRect(r);
+    }
+    // A tree's nodes nest: their centres say little of the order, so only a grid's are joined.
+    if (grid && boxes.size() > 1) {
+        QPolygonF path;
+        for (const QRectF& r : boxes) path << r.center();
+        g.setPen(QPen(blue, px(2.0)));
+        g.setBrush(Qt::NoBrush);
+        g.drawPolyline(path);
+        g.setBrush(blue);
+        for (const QPointF& c : path) g.drawEllipse(c, px(3.0), px(3.0));
+    }
+    // The first that differs, marked with the sign the board uses.
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        if (w.divergent && index[i] == *w.divergent) {
+            QFont f = g.font();
+            f.setBold(true);
+            f.setPointSizeF(f.pointSizeF() * 1.6);
+            g.setFont(f);
+            const QRectF r = boxes[i];
+            const QRectF tag(r.left() + inset, r.top() + inset, r.width() / 2, r.height() / 2);
+            g.setPen(Qt::NoPen);
+            g.setBrush(QColor(255, 255, 255, 230));
+            const QFontMetricsF fm(f);
+            const double s = fm.height();
+            const QRectF badge(tag.left() + 2, tag.top() + 2, s, s);
+            g.drawEllipse(badge);
+            g.setPen(blue);
+            g.drawText(badge, Qt::AlignCenter, QStringLiteral("\u2260"));
+        }
+    g.restore();
+}
+
 void View2D::drawBuildReplay(QPainter& g, const ReplayState& st) const {
     // The tree as far as it is built: the planes chosen before the cursor. A big build has
     // thousands (a frame must stay cheap while scrubbing): then only the current node's
