@@ -333,12 +333,12 @@ void AssessController::showRay(int ray) {
         text = tr("Ray %1 passed: %2 steps, as raystep walks them.").arg(ray).arg(v.walkRecords);
     } else {
         const Divergence& d = *v.divergence;
-        // The board's step (the walk's index, not a node's id), the record as the file names it.
-        text = tr("Ray %1 failed at step %2 (%3, line %4): %5")
+        // The board's step (the walk's index, not a node's id), the line and the record there.
+        text = tr("Ray %1 failed at step %2 (line %3, %4): %5")
                    .arg(ray)
                    .arg(std::max(d.index, 0))
-                   .arg(q(d.record))
                    .arg(d.line)
+                   .arg(q(divergencePlace(d, lang)))
                    .arg(q(d.explanation));
         if (v.mistake) {
             const MistakeInfo& m = mistakeInfo(*v.mistake);
