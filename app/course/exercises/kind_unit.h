@@ -55,6 +55,8 @@ bool close(double answer, double reference, double tolerance);
 std::string letter(int i);
 /// A whole number as typed ("3").
 std::string whole(double v);
+/// Whole numbers as a cell is typed: "3,1" (next_cell, spot_bug).
+std::string wholes(const std::vector<double>& numbers);
 
 /// The first event of type E at or after `from`, with its index.
 template <typename E>

@@ -85,6 +85,16 @@ std::string whole(double v) {
     return std::to_string(static_cast<long long>(v));
 }
 
+std::string wholes(const std::vector<double>& numbers) {
+    std::string s;
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "," + to_string here.
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+        if (i) s += ',';
+        s += whole(numbers[i]);
+    }
+    return s;
+}
+
 Context contextOf(const Exercise& ex, const EventLog& log, const std::string& file,
                   const std::vector<GridSweepRow>* sweep) {
     Context c{ex, log, file, 0, sweep};

@@ -269,13 +269,7 @@ class SpotBug final : public ExerciseKindUnit {
     }
 
     std::string format(const Exercise&, const Answer& a, Language) const override {
-        std::string s;
-        // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "," + to_string here.
-        for (std::size_t i = 0; i < a.numbers.size(); ++i) {
-            if (i) s += ',';
-            s += whole(a.numbers[i]);
-        }
-        return s;
+        return wholes(a.numbers);
     }
 
     bool grade(const Context& c, const Answer& given, const Reference& ref) const override {
