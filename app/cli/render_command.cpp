@@ -40,7 +40,14 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
                     "Random diffuse bounce rays at the first diffuse hit (0 = none)")
         ->transform(wholeNumber(0, kMaxDiffuseSamples));
     addAccelOptions(cmd, a.accel);
-    a.accelOption = cmd->get_option("--accel");
+    CLI::Option* accelOption = cmd->get_option("--accel");
+    a.accelOption = accelOption;
+    accelOption->description("Accelerator: " + std::string(kFastAccel) +
+                             " (the fast path: a four-wide BVH in float, SIMD, nothing "
+                             "recorded) or a teaching structure, " +
+                             accelOption->get_description().substr(13));
+    for (const char* k : {"--precision", "--triangle-method", "--sphere-method"})
+        a.kernelOptions.push_back(cmd->get_option(k));
     cmd->add_option("--ray-offset", a.rayOffset,
                     "Secondary-ray origins: epsilon (fixed 1e-4) or robust (error bounds)")
         ->capture_default_str();
@@ -90,8 +97,23 @@ int runRender(const RenderArgs& a) {
     // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says otherwise.
     AccelArgs accelArgs = a.accel;
     if (model && !(a.accelOption && a.accelOption->count() > 0)) accelArgs.accel = "kdtree";
+    // The fast path has one set of kernels; the other options are checked as a BVH's would be.
+    const bool fast = accelArgs.accel == kFastAccel;
+    if (fast) {
+        const std::pair<std::string, std::string> fixed[] = {{"float", a.accel.precision},
+                                                             {"watertight", a.accel.triangleMethod},
+                                                             {"stable", a.accel.sphereMethod}};
+        for (std::size_t k = 0; k < a.kernelOptions.size(); ++k)
+            if (a.kernelOptions[k]->count() > 0 && fixed[k].second != fixed[k].first)
+                return fail(a.kernelOptions[k]->get_name() + " " + fixed[k].second +
+                            ": --accel fast tests in float with watertight triangles and stable "
+                            "spheres; choose a teaching structure (--accel bvh) for " +
+                            fixed[k].second);
+        accelArgs.accel = "bvh";
+    }
     AccelChoice choice;
     if (auto problem = resolveAccel(accelArgs, choice)) return fail(*problem);
+    if (fast) choice.kernels = WideBvh::kKernels;
     const auto offset = parseRayOffset(a.rayOffset);
     if (!offset) return fail("--ray-offset " + a.rayOffset + ": expected epsilon or robust");
 
@@ -133,16 +155,25 @@ int runRender(const RenderArgs& a) {
     }
 
     std::optional<Accelerator> accel;
+    std::optional<WideBvh> wide;
+    const std::string description = fast ? std::string(kFastAccel) : describeAccel(choice);
     {
-        ProgressBar buildBar("build " + describeAccel(choice));
-        choice.options.setProgress([&](double f) { return buildBar.update(f); });
-        accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
+        ProgressBar buildBar("build " + description);
+        const ProgressFn progress = [&](double f) { return buildBar.update(f); };
+        if (fast) {
+            WideBvhOptions wideOptions;
+            wideOptions.progress = progress;
+            wide.emplace(scene, wideOptions);
+        } else {
+            choice.options.setProgress(progress);
+            accel = buildAccelerator(scene, choice.kind, choice.kernels, choice.options);
+        }
         buildBar.finish();
     }
 
     ProgressBar bar("render " + scene.name);
-    const RenderResult result =
-        render(scene, *accel, opt, [&bar](double f) { return bar.update(f); });
+    const RenderResult result = render(scene, fast ? SceneQuery(*wide) : SceneQuery(*accel), opt,
+                                       [&bar](double f) { return bar.update(f); });
     bar.finish();
 
     // The image, the heat map and the stats are written all or none, once all are ready.
@@ -164,13 +195,20 @@ int runRender(const RenderArgs& a) {
         j["spp"] = opt.spp;
         j["bounces"] = opt.trace.bounces;
         j["diffuse_samples"] = opt.trace.diffuseSamples;
-        j["accel"] = describeAccel(choice);
-        j["precision"] = a.accel.precision;
+        j["accel"] = description;
+        j["precision"] = std::string(name(choice.kernels.precision));
         j["ray_offset"] = a.rayOffset;
-        j["triangle_method"] = a.accel.triangleMethod;
-        j["sphere_method"] = a.accel.sphereMethod;
+        j["triangle_method"] = std::string(name(choice.kernels.triangle));
+        j["sphere_method"] = std::string(name(choice.kernels.sphere));
+        if (fast) {
+            const WideBvhStats& w = wide->stats();
+            j["fast"] = {{"nodes", w.nodes},        {"leaves", w.leaves},
+                         {"blocks", w.blocks},      {"empty_lanes", w.emptyLanes},
+                         {"max_depth", w.maxDepth}, {"bytes", w.bytes},
+                         {"build_ms", w.buildMs}};
+        }
         // A grid's cells from its outline (asked of a grid only: a tree's lists every node).
-        if (readsOption(choice.kind, AccelOption::GridRes))
+        if (!fast && readsOption(choice.kind, AccelOption::GridRes))
             if (const auto grid = outline(*accel).grid) {
                 const BuildSummary b = summarize(*accel);
                 const auto& res = grid->spec.res;
@@ -179,7 +217,7 @@ int runRender(const RenderArgs& a) {
                              {"empty_cells", b.stats.emptyLeaves},
                              {"mailbox", a.accel.mailbox}};
             }
-        if (hasSplit(choice.kind)) {
+        if (!fast && hasSplit(choice.kind)) {
             const BuildSummary b = summarize(*accel);
             j["tree"] = {{"nodes", b.stats.nodes},        {"leaves", b.stats.leaves},
                          {"max_depth", b.stats.maxDepth}, {"references", b.stats.references},

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace raystep::cli {
 
@@ -24,7 +25,13 @@ struct RenderArgs {
     std::string saveScene;  // a model's scene, written as a scene file
     const CLI::Option* accelOption =
         nullptr;  // whether --accel was given (models default to a tree)
+    // --precision, --triangle-method, --sphere-method: whether one was given (the fast path has
+    // its own kernels).
+    std::vector<const CLI::Option*> kernelOptions;
 };
+
+/// The --accel name of the fast path (fast/wide_bvh.h): a wide BVH in float that records nothing.
+inline constexpr const char* kFastAccel = "fast";
 
 void addRenderCommand(CLI::App& app, RenderArgs& a);
 int runRender(const RenderArgs& a);

@@ -18,8 +18,8 @@ struct LayerViolation {
 
 /// The core's floors, lowest first: a file under algorithms/raystep/<floor>/ includes
 /// "raystep/<floor'>/..." only for a floor' at or below its own.
-inline constexpr std::string_view kFloors[] = {"base",  "geometry", "trace", "scene",
-                                               "accel", "render",   "assess"};
+inline constexpr std::string_view kFloors[] = {"base",  "geometry", "trace",  "scene",
+                                               "accel", "fast",     "render", "assess"};
 
 /// Headers that only their own floor's .cpp files include (what a structure's builds or queries
 /// share, what the assessor's parts share).

@@ -1,6 +1,7 @@
 #pragma once
 // Every x86 intrinsic of the core, each beside a portable version that computes the same bits:
-// the kd-tree's fast build (kdtree_fast.cpp) bins four edges at a time, and the core must still
+// the kd-tree's fast build (kdtree_fast.cpp) bins four edges at a time, the wide BVH
+// (fast/wide_bvh_traverse.cpp) tests four boxes and four triangles at once, and the core must still
 // build on a student's ARM64 laptop. `simd::` picks SSE2 where the compiler has it, else the
 // portable code; `simd::portable::` is always there, so the tests compare the two on x86.
 #if defined(__SSE2__)
@@ -43,6 +44,67 @@ inline Float4 operator-(Float4 a, Float4 b) {
 }
 inline Float4 operator*(Float4 a, Float4 b) {
     for (int i = 0; i < 4; ++i) a.v[i] *= b.v[i];
+    return a;
+}
+
+/// Four lane masks (a comparison's result), lane 0 first.
+struct Mask4 {
+    bool v[4];
+};
+inline Float4 operator+(Float4 a, Float4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] += b.v[i];
+    return a;
+}
+inline Float4 operator/(Float4 a, Float4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] /= b.v[i];
+    return a;
+}
+/// |a| lane by lane (the sign bit cleared, as SSE's andnot with -0.0).
+inline Float4 abs(Float4 a) {
+    for (int i = 0; i < 4; ++i) a.v[i] = std::fabs(a.v[i]);
+    return a;
+}
+// Ordered comparisons, as SSE's cmpps: false in a lane where either operand is NaN.
+inline Mask4 operator<(Float4 a, Float4 b) {
+    Mask4 m;
+    for (int i = 0; i < 4; ++i) m.v[i] = a.v[i] < b.v[i];
+    return m;
+}
+inline Mask4 operator<=(Float4 a, Float4 b) {
+    Mask4 m;
+    for (int i = 0; i < 4; ++i) m.v[i] = a.v[i] <= b.v[i];
+    return m;
+}
+inline Mask4 operator>(Float4 a, Float4 b) {
+    return b < a;
+}
+inline Mask4 operator==(Float4 a, Float4 b) {
+    Mask4 m;
+    for (int i = 0; i < 4; ++i) m.v[i] = a.v[i] == b.v[i];
+    return m;
+}
+inline Mask4 operator&(Mask4 a, Mask4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] = a.v[i] && b.v[i];
+    return a;
+}
+inline Mask4 operator|(Mask4 a, Mask4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] = a.v[i] || b.v[i];
+    return a;
+}
+/// !a & b lane by lane.
+inline Mask4 andNot(Mask4 a, Mask4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] = !a.v[i] && b.v[i];
+    return a;
+}
+/// Bit i set where lane i is true (SSE's movemask).
+inline unsigned bits(Mask4 m) {
+    unsigned r = 0;
+    for (int i = 0; i < 4; ++i) r |= unsigned(m.v[i]) << i;
+    return r;
+}
+/// m ? a : b lane by lane.
+inline Float4 select(Mask4 m, Float4 a, Float4 b) {
+    for (int i = 0; i < 4; ++i) a.v[i] = m.v[i] ? a.v[i] : b.v[i];
     return a;
 }
 /// Lane by lane a < b ? a : b, as SSE's minps (the second operand if either is NaN).
@@ -111,6 +173,45 @@ struct Float4 {
 struct Int4 {
     __m128i v;
 };
+struct Mask4 {
+    __m128 v;
+};
+inline Float4 operator+(Float4 a, Float4 b) {
+    return {_mm_add_ps(a.v, b.v)};
+}
+inline Float4 operator/(Float4 a, Float4 b) {
+    return {_mm_div_ps(a.v, b.v)};
+}
+inline Float4 abs(Float4 a) {
+    return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)};
+}
+inline Mask4 operator<(Float4 a, Float4 b) {
+    return {_mm_cmplt_ps(a.v, b.v)};
+}
+inline Mask4 operator<=(Float4 a, Float4 b) {
+    return {_mm_cmple_ps(a.v, b.v)};
+}
+inline Mask4 operator>(Float4 a, Float4 b) {
+    return {_mm_cmpgt_ps(a.v, b.v)};
+}
+inline Mask4 operator==(Float4 a, Float4 b) {
+    return {_mm_cmpeq_ps(a.v, b.v)};
+}
+inline Mask4 operator&(Mask4 a, Mask4 b) {
+    return {_mm_and_ps(a.v, b.v)};
+}
+inline Mask4 operator|(Mask4 a, Mask4 b) {
+    return {_mm_or_ps(a.v, b.v)};
+}
+inline Mask4 andNot(Mask4 a, Mask4 b) {
+    return {_mm_andnot_ps(a.v, b.v)};
+}
+inline unsigned bits(Mask4 m) {
+    return unsigned(_mm_movemask_ps(m.v));
+}
+inline Float4 select(Mask4 m, Float4 a, Float4 b) {
+    return {_mm_or_ps(_mm_and_ps(m.v, a.v), _mm_andnot_ps(m.v, b.v))};
+}
 
 inline Float4 load(const float* p) {
     return {_mm_loadu_ps(p)};

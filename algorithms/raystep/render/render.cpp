@@ -35,12 +35,10 @@ int threadsOf(int wanted) {
 }
 }  // namespace
 
-ProgressiveRender::ProgressiveRender(const Scene& scene, const Accelerator& accel,
-                                     RenderOptions options)
+ProgressiveRender::ProgressiveRender(const Scene& scene, SceneQuery query, RenderOptions options)
     : scene_(scene),
-      accel_(accel),
       options_(options),
-      tracer_(scene, accel, options.trace),
+      tracer_(scene, query, options.trace),
       threads_(threadsOf(options.threads)) {
     if (options_.width < 1 || options_.height < 1 || options_.width > kMaxImageSide ||
         options_.height > kMaxImageSide)
@@ -184,9 +182,9 @@ bool ProgressiveRender::run(const ProgressFn& progress) {
     return !cancelled_;
 }
 
-RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+RenderResult render(const Scene& scene, SceneQuery query, const RenderOptions& options,
                     const ProgressFn& progress) {
-    ProgressiveRender r(scene, accel, options);
+    ProgressiveRender r(scene, query, options);
     const double passes = static_cast<double>(r.plan().size());
     while (!r.done()) {
         const double before = static_cast<double>(r.passesDone());

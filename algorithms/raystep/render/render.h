@@ -34,10 +34,11 @@ std::vector<ProgressivePass> progressivePlan(int firstBlock, int spp, bool refin
 
 class ProgressiveRender {
   public:
-    /// `scene` and `accel` must outlive the render. The options are checked: width and height in
-    /// 1..kMaxImageSide, spp >= 1, firstBlock a power of two, a camera with a view direction
-    /// (std::invalid_argument otherwise). No camera in the options: the scene's.
-    ProgressiveRender(const Scene& scene, const Accelerator& accel, RenderOptions options);
+    /// `scene` and what `query` holds (a structure or the fast path) must outlive the render. The
+    /// options are checked: width and height in 1..kMaxImageSide, spp >= 1, firstBlock a power of
+    /// two, a camera with a view direction (std::invalid_argument otherwise). No camera in the
+    /// options: the scene's.
+    ProgressiveRender(const Scene& scene, SceneQuery query, RenderOptions options);
 
     /// Runs the next pass on all the options' threads. Returns false when `progress` asks to stop
     /// (then the render is over: done()), the image left as the previous pass made it; a single
@@ -70,7 +71,6 @@ class ProgressiveRender {
     void sample(int x, int y, int from, int to, RayCounters& counters);
 
     const Scene& scene_;
-    const Accelerator& accel_;
     RenderOptions options_;  // its camera set (the scene's when none was given)
     Tracer tracer_;
     std::vector<ProgressivePass> plan_;
@@ -91,7 +91,7 @@ class ProgressiveRender {
 
 /// The whole image in the passes `options` plans (one, by default) on `options.threads` threads.
 /// The image and the counters are the same for any thread count and any passes.
-RenderResult render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
+RenderResult render(const Scene& scene, SceneQuery query, const RenderOptions& options,
                     const ProgressFn& progress = {});
 
 }  // namespace raystep

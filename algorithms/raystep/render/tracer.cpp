@@ -38,7 +38,11 @@ Color Tracer::trace(const Ray& ray, RayKind kind, int depth, std::uint32_t paren
                     bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const {
     ++counters[kind];
     const std::uint32_t rayId = rec.beginRay(ray, kind, depth, parent);
-    const std::optional<Hit> hit = intersect(accel_, ray, counters.traversal, rec, rayId);
+    std::optional<Hit> hit;
+    if constexpr (Rec::kEnabled)
+        hit = intersect(query_.recording(), ray, counters.traversal, rec, rayId);
+    else
+        hit = query_.intersect(ray, counters.traversal);
     if (!hit) {
         if constexpr (Rec::kEnabled) rec(RayMiss{rayId});
         return scene_.background;
@@ -51,7 +55,7 @@ template <typename Rec>
 Color Tracer::shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int depth,
                     bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const {
     const Material& m = scene_.materialOf(hit.prim);
-    const KernelOptions& kernels = kernelsOf(accel_);
+    const KernelOptions& kernels = query_.kernels();
     const SurfacePoint sp = scene_.surfacePoint(hit, ray, kernels.precision);
     const Vec3& p = sp.p;
     const Vec3 outward = scene_.normalAt(hit, p);
@@ -82,7 +86,12 @@ Color Tracer::shade(const Ray& ray, std::uint32_t rayId, const Hit& hit, int dep
         const std::uint32_t shadowId = rec.beginRay(shadow, RayKind::Shadow, depth + 1, rayId);
         std::size_t shadowFrom = 0;  // the shadow ray's first event after its RayBegin
         if constexpr (Rec::kEnabled) shadowFrom = rec.events().size();
-        if (occluded(accel_, shadow, counters.traversal, rec, shadowId)) {
+        bool blocked = false;
+        if constexpr (Rec::kEnabled)
+            blocked = occluded(query_.recording(), shadow, counters.traversal, rec, shadowId);
+        else
+            blocked = query_.occluded(shadow, counters.traversal);
+        if (blocked) {
             if constexpr (Rec::kEnabled)
                 rec(blockedBy(rec.events(), shadowId, shadowFrom, rec.events().size()));
             continue;

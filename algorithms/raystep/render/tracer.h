@@ -4,6 +4,7 @@
 #include "raystep/accel/accel.h"
 #include "raystep/base/rng.h"
 #include "raystep/render/image.h"
+#include "raystep/render/scene_query.h"
 #include "raystep/scene/scene.h"
 
 #include <array>
@@ -54,8 +55,9 @@ struct RayCounters {
 /// Traces the ray tree of single rays; stateless apart from references, so threads share one.
 class Tracer {
   public:
-    Tracer(const Scene& scene, const Accelerator& accel, TraceSettings settings)
-        : scene_(scene), accel_(accel), settings_(settings) {}
+    /// `query` a teaching structure (what the recording overloads need) or the fast path.
+    Tracer(const Scene& scene, SceneQuery query, TraceSettings settings)
+        : scene_(scene), query_(query), settings_(settings) {}
 
     /// Radiance arriving along `ray` (a ray of `kind` at bounce `depth`).
     Color trace(const Ray& ray, RayKind kind, int depth, Pcg32& rng, RayCounters& counters) const;
@@ -86,7 +88,7 @@ class Tracer {
                 bool diffuseBranched, Pcg32& rng, RayCounters& counters, Rec& rec) const;
 
     const Scene& scene_;
-    const Accelerator& accel_;
+    SceneQuery query_;
     TraceSettings settings_;
 };
 
