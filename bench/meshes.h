@@ -1,9 +1,13 @@
 #pragma once
-// Test meshes of any size for the benchmarks: the stadium's torus-knot tube (see
-// scripts/make_stadium_mesh.py), tessellated to about `triangles` triangles.
+// The benchmarks' meshes: the stadium's torus-knot tube (see scripts/make_stadium_mesh.py),
+// tessellated to any size, and the Stanford bunny on a floor.
 #include "raystep/scene/scene.h"
+#include "raystep/scene/scene_loader.h"
 
 #include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
 
 namespace raystep::bench {
 
@@ -45,6 +49,33 @@ inline Scene knotScene(int along, int around = 32) {
             s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1), 0});
         }
     return s;
+}
+
+inline constexpr const char* kBunnyPath = "/usr/share/glmark2/models/bunny.obj";  // glmark2-data
+
+/// The bunny (69,666 triangles) on a floor, lit by two lights, the camera framing it (the mesh
+/// spans about [-1, 1] x [-0.99, 0.99] x [-0.78, 0.78]).
+inline Scene bunnyScene() {
+    const std::string text = R"({
+      "camera": {"eye": [0.6, 0.5, 3.4], "look_at": [0, -0.1, 0], "up": [0, 1, 0], "fov": 40},
+      "background": [0.1, 0.12, 0.16], "ambient": 0.1,
+      "lights": [{"position": [3, 4, 4], "intensity": 0.8},
+                 {"position": [-4, 3, 2], "color": [0.6, 0.7, 1.0], "intensity": 0.5}],
+      "materials": {"clay": {"kd": [0.8, 0.7, 0.55], "ks": 0.2, "n": 20},
+                    "floor": {"kd": 0.6, "checker": {"color": 0.3, "size": 0.5}}},
+      "objects": [
+        {"type": "mesh", "file": "bunny.obj", "material": "clay"},
+        {"type": "triangle", "material": "floor",
+         "vertices": [[-6, -0.992, -6], [-6, -0.992, 6], [6, -0.992, 6]]},
+        {"type": "triangle", "material": "floor",
+         "vertices": [[-6, -0.992, -6], [6, -0.992, 6], [6, -0.992, -6]]}]})";
+    return loadSceneText(text, "bunny.json", [](const std::string&) -> std::optional<std::string> {
+        std::ifstream in(kBunnyPath, std::ios::binary);
+        if (!in) return std::nullopt;
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    });
 }
 
 }  // namespace raystep::bench

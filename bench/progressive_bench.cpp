@@ -1,55 +1,31 @@
 // "Ray trace this view" on a big mesh: after a camera move, how soon the first (coarse) picture
 // and the full 640x480 image at 1 spp are there, on the Stanford bunny (69,666 triangles) with the
-// SAH kd-tree and the SAH BVH. Run: build/bench/raystep_bench_progressive (docs/performance.md).
+// SAH kd-tree, the SAH BVH and the fast path (fast/wide_bvh.h). Run:
+// build/bench/raystep_bench_progressive (docs/performance.md).
+#include "meshes.h"
 #include "raystep/render/render.h"
-#include "raystep/scene/scene_loader.h"
 
 #include <benchmark/benchmark.h>
-
-#include <fstream>
-#include <sstream>
 
 namespace {
 
 using namespace raystep;
 
-constexpr const char* kBunnyPath = "/usr/share/glmark2/models/bunny.obj";  // glmark2-data
-
-/// The bunny on a floor, lit by two lights, the camera framing it (the mesh spans about
-/// [-1, 1] x [-0.99, 0.99] x [-0.78, 0.78]).
-Scene bunnyScene() {
-    const std::string text = R"({
-      "camera": {"eye": [0.6, 0.5, 3.4], "look_at": [0, -0.1, 0], "up": [0, 1, 0], "fov": 40},
-      "background": [0.1, 0.12, 0.16], "ambient": 0.1,
-      "lights": [{"position": [3, 4, 4], "intensity": 0.8},
-                 {"position": [-4, 3, 2], "color": [0.6, 0.7, 1.0], "intensity": 0.5}],
-      "materials": {"clay": {"kd": [0.8, 0.7, 0.55], "ks": 0.2, "n": 20},
-                    "floor": {"kd": 0.6, "checker": {"color": 0.3, "size": 0.5}}},
-      "objects": [
-        {"type": "mesh", "file": "bunny.obj", "material": "clay"},
-        {"type": "triangle", "material": "floor",
-         "vertices": [[-6, -0.992, -6], [-6, -0.992, 6], [6, -0.992, 6]]},
-        {"type": "triangle", "material": "floor",
-         "vertices": [[-6, -0.992, -6], [6, -0.992, 6], [6, -0.992, -6]]}]})";
-    return loadSceneText(text, "bunny.json", [](const std::string&) -> std::optional<std::string> {
-        std::ifstream in(kBunnyPath, std::ios::binary);
-        if (!in) return std::nullopt;
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
-    });
-}
-
 /// The scene and its structure, built once per structure (the build is not what is measured).
 struct Prepared {
-    const Scene& scene;  // the structure points into it
-    Accelerator accel;
+    const Scene& scene;  // the structures point into it
+    SceneQuery query;
 };
-const Prepared& prepared(AccelKind kind) {
-    static const Scene scene = bunnyScene();
-    static Prepared kd{scene, buildAccelerator(scene, AccelKind::KdTree)};
-    static Prepared bvh{scene, buildAccelerator(scene, AccelKind::Bvh)};
-    return kind == AccelKind::KdTree ? kd : bvh;
+/// The fast path stands in for a structure kind of its own here.
+constexpr int kFast = -1;
+const Prepared& prepared(int kind) {
+    static const Scene scene = bench::bunnyScene();
+    static const Accelerator kdTree = buildAccelerator(scene, AccelKind::KdTree);
+    static const Accelerator bvhTree = buildAccelerator(scene, AccelKind::Bvh);
+    static const WideBvh wide(scene);
+    static const Prepared kd{scene, kdTree}, bvh{scene, bvhTree}, fast{scene, wide};
+    if (kind == kFast) return fast;
+    return kind == int(AccelKind::KdTree) ? kd : bvh;
 }
 
 /// A camera moved by `step` degrees around the bunny: each iteration a new view.
@@ -76,11 +52,11 @@ RenderOptions options(const Scene& s, int step, int threads) {
 }
 
 /// From the camera move to the first complete (8x8-block) picture: the set-up and one pass.
-void firstImage(benchmark::State& state, AccelKind kind) {
+void firstImage(benchmark::State& state, int kind) {
     const Prepared& p = prepared(kind);
     int step = 0;
     for (auto _ : state) {
-        ProgressiveRender r(p.scene, p.accel, options(p.scene, ++step, int(state.range(0))));
+        ProgressiveRender r(p.scene, p.query, options(p.scene, ++step, int(state.range(0))));
         r.nextPass();
         benchmark::DoNotOptimize(r.image().pixels.data());
     }
@@ -88,12 +64,12 @@ void firstImage(benchmark::State& state, AccelKind kind) {
 }
 
 /// From the camera move to the full 640x480 image at 1 spp: all four passes.
-void fullImage(benchmark::State& state, AccelKind kind) {
+void fullImage(benchmark::State& state, int kind) {
     const Prepared& p = prepared(kind);
     int step = 0;
     std::uint64_t rays = 0;
     for (auto _ : state) {
-        ProgressiveRender r(p.scene, p.accel, options(p.scene, ++step, int(state.range(0))));
+        ProgressiveRender r(p.scene, p.query, options(p.scene, ++step, int(state.range(0))));
         r.run();
         benchmark::DoNotOptimize(r.image().pixels.data());
         rays += r.counters().totalRays();
@@ -102,35 +78,63 @@ void fullImage(benchmark::State& state, AccelKind kind) {
 }
 
 /// The same image in one plain render(): what the progressive passes cost on top.
-void plainRender(benchmark::State& state, AccelKind kind) {
+void plainRender(benchmark::State& state, int kind) {
     const Prepared& p = prepared(kind);
     int step = 0;
     for (auto _ : state) {
         RenderOptions o = options(p.scene, ++step, int(state.range(0)));
         o.firstBlock = 1;  // one pass
         o.refine = false;
-        const RenderResult img = render(p.scene, p.accel, o);
+        const RenderResult img = render(p.scene, p.query, o);
         benchmark::DoNotOptimize(img.image.pixels.data());
     }
 }
 
 void BM_Bunny_FirstImage_KdTree(benchmark::State& s) {
-    firstImage(s, AccelKind::KdTree);
+    firstImage(s, int(AccelKind::KdTree));
 }
 void BM_Bunny_FirstImage_Bvh(benchmark::State& s) {
-    firstImage(s, AccelKind::Bvh);
+    firstImage(s, int(AccelKind::Bvh));
 }
 void BM_Bunny_Full640x480_KdTree(benchmark::State& s) {
-    fullImage(s, AccelKind::KdTree);
+    fullImage(s, int(AccelKind::KdTree));
 }
 void BM_Bunny_Full640x480_Bvh(benchmark::State& s) {
-    fullImage(s, AccelKind::Bvh);
+    fullImage(s, int(AccelKind::Bvh));
 }
 void BM_Bunny_PlainRender640x480_KdTree(benchmark::State& s) {
-    plainRender(s, AccelKind::KdTree);
+    plainRender(s, int(AccelKind::KdTree));
 }
 void BM_Bunny_PlainRender640x480_Bvh(benchmark::State& s) {
-    plainRender(s, AccelKind::Bvh);
+    plainRender(s, int(AccelKind::Bvh));
+}
+
+void BM_Bunny_FirstImage_Fast(benchmark::State& s) {
+    firstImage(s, kFast);
+}
+void BM_Bunny_Full640x480_Fast(benchmark::State& s) {
+    fullImage(s, kFast);
+}
+void BM_Bunny_PlainRender640x480_Fast(benchmark::State& s) {
+    plainRender(s, kFast);
+}
+/// What "Ray trace this view" follows the camera with: primary and shadow rays (no bounce).
+void BM_Bunny_Live640x480_Fast(benchmark::State& state) {
+    const Prepared& p = prepared(kFast);
+    int step = 0;
+    std::uint64_t rays = 0;
+    for (auto _ : state) {
+        RenderOptions o = options(p.scene, ++step, int(state.range(0)));
+        o.firstBlock = 1;
+        o.refine = false;
+        o.trace.bounces = 0;
+        const RenderResult img = render(p.scene, p.query, o);
+        rays += img.counters.totalRays();
+        benchmark::DoNotOptimize(img.image.pixels.data());
+    }
+    state.counters["Mrays"] = benchmark::Counter(rays * 1e-6, benchmark::Counter::kIsRate);
+    state.counters["fps"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 #define RAYSTEP_BUNNY_BENCH(name) \
@@ -141,6 +145,10 @@ RAYSTEP_BUNNY_BENCH(BM_Bunny_Full640x480_KdTree);
 RAYSTEP_BUNNY_BENCH(BM_Bunny_Full640x480_Bvh);
 RAYSTEP_BUNNY_BENCH(BM_Bunny_PlainRender640x480_KdTree);
 RAYSTEP_BUNNY_BENCH(BM_Bunny_PlainRender640x480_Bvh);
+RAYSTEP_BUNNY_BENCH(BM_Bunny_FirstImage_Fast);
+RAYSTEP_BUNNY_BENCH(BM_Bunny_Full640x480_Fast);
+RAYSTEP_BUNNY_BENCH(BM_Bunny_PlainRender640x480_Fast);
+RAYSTEP_BUNNY_BENCH(BM_Bunny_Live640x480_Fast);
 
 }  // namespace
 

@@ -8,7 +8,10 @@
 #include "raystep/geometry/intersect.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -31,16 +34,26 @@ F splat4(float x) {
         return simd::splat(x);
 }
 template <typename F>
-float lane(F x, int i) {
-    alignas(16) float v[4];
+void store4(float* p, F x) {
     if constexpr (std::is_same_v<F, simd::portable::Float4>)
-        simd::portable::store(v, x);
+        simd::portable::store(p, x);
     else
-        simd::store(v, x);
-    return v[i];
+        simd::store(p, x);
 }
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
+
+/// The next float toward +inf or -inf of a finite or infinite f (std::nextafter, inlined: it was
+/// a library call per ray).
+float nextToward(float f, bool up) {
+    if (f == 0.0f)
+        return up ? std::numeric_limits<float>::denorm_min()
+                  : -std::numeric_limits<float>::denorm_min();
+    if (std::isinf(f) && (f > 0) == up) return f;
+    auto bits = std::bit_cast<std::uint32_t>(f);
+    bits += ((f > 0) == up) ? 1 : -1;  // the magnitude grows on the side f is on
+    return std::bit_cast<float>(bits);
+}
 
 /// A double bound as the float at or inside it (tMin up, tMax down): the float query never
 /// reaches past the double one.
@@ -48,14 +61,14 @@ float innerLow(double x) {
     if (!(x > -double(std::numeric_limits<float>::max()))) return -kInf;
     if (x > double(std::numeric_limits<float>::max())) return kInf;
     float f = static_cast<float>(x);
-    if (double(f) < x) f = std::nextafter(f, kInf);
+    if (double(f) < x) f = nextToward(f, true);
     return f;
 }
 float innerHigh(double x) {
     if (!(x < double(std::numeric_limits<float>::max()))) return kInf;
     if (x < -double(std::numeric_limits<float>::max())) return -kInf;
     float f = static_cast<float>(x);
-    if (double(f) > x) f = std::nextafter(f, -kInf);
+    if (double(f) > x) f = nextToward(f, false);
     return f;
 }
 
@@ -93,21 +106,37 @@ FloatRay floatRay(const Ray& ray) {
     return r;
 }
 
+/// The ray's slab-test values in all four lanes, set once per ray (not once per node).
+template <typename F>
+struct SlabLanes {
+    F o[3], inv[3];
+    int nearOffset[3], farOffset[3];  // floats from a node's start: lo[a] or hi[a]
+    explicit SlabLanes(const FloatRay& r) {
+        for (int a = 0; a < 3; ++a) {
+            o[a] = splat4<F>(r.o[a]);
+            inv[a] = splat4<F>(r.inv[a]);
+            const int lo = 4 * a, hi = 12 + 4 * a;  // Node::lo[a], Node::hi[a]
+            nearOffset[a] = r.nearLo[a] ? lo : hi;
+            farOffset[a] = r.nearLo[a] ? hi : lo;
+        }
+    }
+};
+static_assert(offsetof(WideBvh::Node, hi) == 12 * sizeof(float));
+
 /// The near hit of the four boxes: bit i set for child i, its entry distance in tNear.
 template <typename F>
-unsigned boxes4(const WideBvh::Node& n, const FloatRay& r, float tHit, F& tNear) {
+[[gnu::always_inline]] inline unsigned boxes4(const WideBvh::Node& n, const SlabLanes<F>& r, F tMin,
+                                              float tHit, F& tNear) {
     constexpr float widen = 1.0f + 2.0f * gamma<float>(3);  // Ize 2013: no box lost to rounding
+    const float* base = &n.lo[0][0];
     F t0[3], t1[3];
     for (int a = 0; a < 3; ++a) {
-        const F o = splat4<F>(r.o[a]), inv = splat4<F>(r.inv[a]);
-        const float* nearSide = r.nearLo[a] ? n.lo[a] : n.hi[a];
-        const float* farSide = r.nearLo[a] ? n.hi[a] : n.lo[a];
-        t0[a] = (load4<F>(nearSide) - o) * inv;
-        t1[a] = (load4<F>(farSide) - o) * inv;
+        t0[a] = (load4<F>(base + r.nearOffset[a]) - r.o[a]) * r.inv[a];
+        t1[a] = (load4<F>(base + r.farOffset[a]) - r.o[a]) * r.inv[a];
     }
     // min and max return their second operand on a NaN (an origin on a slab's plane, parallel
     // to it: 0 * inf): that axis then sets no bound, as the ray runs along the box's face.
-    tNear = max(t0[0], max(t0[1], max(t0[2], splat4<F>(r.tMin))));
+    tNear = max(t0[0], max(t0[1], max(t0[2], tMin)));
     const F tFar = min(t1[0], min(t1[1], min(t1[2], splat4<F>(tHit)))) * splat4<F>(widen);
     return bits(tNear <= tFar);
 }
@@ -118,9 +147,13 @@ unsigned boxes4(const WideBvh::Node& n, const FloatRay& r, float tHit, F& tNear)
 template <typename F>
 bool blockTest(const WideBvh::Block& b, const FloatRay& r, float& tHit, float& u, float& v,
                std::uint32_t& prim, TraversalCounters& counters) {
-    unsigned valid = 0;
-    for (int l = 0; l < 4; ++l) valid |= unsigned(b.prim[l] != WideBvh::kNoPrim) << l;
-    counters.primitiveTests += static_cast<unsigned>(__builtin_popcount(valid));
+    // Empty lanes are the block's last ones (the build fills lanes in order).
+    const unsigned used = b.prim[3] != WideBvh::kNoPrim   ? 4
+                          : b.prim[2] != WideBvh::kNoPrim ? 3
+                          : b.prim[1] != WideBvh::kNoPrim ? 2
+                                                          : 1;
+    const unsigned valid = (1u << used) - 1;
+    counters.primitiveTests += used;
     const F ox = splat4<F>(r.o[r.kx]), oy = splat4<F>(r.o[r.ky]), oz = splat4<F>(r.o[r.kz]);
     const F sx = splat4<F>(r.sx), sy = splat4<F>(r.sy), sz = splat4<F>(r.sz);
     F x[3], y[3], z[3];
@@ -165,16 +198,21 @@ bool blockTest(const WideBvh::Block& b, const FloatRay& r, float& tHit, float& u
                 splat4<F>(3.0f) * (g3 * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * abs(invDet);
             const unsigned sure = bits(deltaT < t) & inRange;
             undecided |= inRange & ~sure;
-            for (unsigned m = sure; m; m &= m - 1) {
-                const int l = __builtin_ctz(m);
-                const float tl = lane(t, l);
-                if (!(tl < tHit)) continue;  // a nearer lane of this block came first
-                tHit = tl;
-                const float il = lane(invDet, l);
-                u = lane(V, l) * il;
-                v = lane(W, l) * il;
-                prim = b.prim[l];
-                found = true;
+            if (sure) {
+                alignas(16) float ts[4], invs[4], vs[4], ws[4];
+                store4(ts, t);
+                store4(invs, invDet);
+                store4(vs, V);
+                store4(ws, W);
+                for (unsigned m = sure; m; m &= m - 1) {
+                    const int l = __builtin_ctz(m);
+                    if (!(ts[l] < tHit)) continue;  // a nearer lane of this block came first
+                    tHit = ts[l];
+                    u = vs[l] * invs[l];
+                    v = ws[l] * invs[l];
+                    prim = b.prim[l];
+                    found = true;
+                }
             }
         }
     }
@@ -210,43 +248,79 @@ std::optional<Hit> WideBvh::traverse(const Ray& ray, TraversalCounters& counters
     // Three entries a level at most, and the build keeps the tree under 64 levels.
     Entry stack[256];
     int top = 0;
-    stack[top++] = {root_, r.tMin};
-    while (top > 0) {
-        const Entry e = stack[--top];
-        if (e.tNear > tHit) continue;  // a nearer hit was found since it was pushed
-        if (e.child >= 0) {
-            const Node& n = nodes_[e.child];
+    std::int32_t cur = root_;
+    const SlabLanes<F> slab(r);
+    const F tMinLanes = splat4<F>(r.tMin);
+    for (;;) {
+        // Down the nodes, nearest child first, the others pushed.
+        while (cur >= 0) {
+            const Node& n = nodes_[cur];
             ++counters.nodeVisits;
             F tNear;
-            unsigned hit = boxes4<F>(n, r, tHit, tNear);
-            if (!hit) continue;
-            // The children hit, farthest pushed first so the nearest is taken next.
-            Entry found[4];
-            int k = 0;
+            unsigned hit = boxes4<F>(n, slab, tMinLanes, tHit, tNear);
+            if (!hit) {
+                cur = kEmpty;
+                break;
+            }
+            alignas(16) float dist[4];
+            store4(dist, tNear);
+            const int a = __builtin_ctz(hit);
+            hit &= hit - 1;
+            if (!hit) {  // one child: no stack
+                cur = n.child[a];
+                continue;
+            }
+            const int b = __builtin_ctz(hit);
+            hit &= hit - 1;
+            if (!hit) {  // two: the farther waits
+                const bool aFirst = dist[a] <= dist[b];
+                stack[top++] = aFirst ? Entry{n.child[b], dist[b]} : Entry{n.child[a], dist[a]};
+                cur = aFirst ? n.child[a] : n.child[b];
+                continue;
+            }
+            // Three or four: pushed, sorted farthest deepest, the nearest popped.
+            const int first = top;
+            stack[top++] = {n.child[a], dist[a]};
+            stack[top++] = {n.child[b], dist[b]};
             for (; hit; hit &= hit - 1) {
                 const int i = __builtin_ctz(hit);
-                found[k++] = {n.child[i], lane(tNear, i)};
+                stack[top++] = {n.child[i], dist[i]};
             }
-            std::sort(found, found + k,
-                      [](const Entry& a, const Entry& b) { return a.tNear > b.tNear; });
-            for (int i = 0; i < k; ++i) stack[top++] = found[i];
-            continue;
+            // Any hit will do for a shadow ray: no order to keep.
+            if constexpr (!AnyHit)
+                for (int i = first + 1; i < top; ++i)
+                    for (int j = i; j > first && stack[j - 1].tNear < stack[j].tNear; --j)
+                        std::swap(stack[j - 1], stack[j]);
+            cur = stack[--top].child;
         }
-        const Leaf& leaf = leaves_[~e.child];
-        for (std::uint32_t bi = 0; bi < leaf.blocks && r.triangles; ++bi)
-            if (blockTest<F>(blocks_[leaf.firstBlock + bi], r, tHit, u, v, prim, counters))
-                if constexpr (AnyHit) return Hit{tHit, prim, u, v};
-        for (std::uint32_t si = 0; si < leaf.spheres; ++si) {
-            const FloatSphere& s = spheres_[leaf.firstSphere + si];
-            ++counters.primitiveTests;
-            const glm::vec3 c(s.center[0], s.center[1], s.center[2]);
-            if (const auto t = intersectSphereStable<float>(r.o, r.d, c, s.radius, r.tMin, tHit)) {
-                tHit = *t;
-                prim = spherePrims_[leaf.firstSphere + si];
-                u = v = 0.0f;
-                if constexpr (AnyHit) return Hit{tHit, prim, 0.0, 0.0};
+        if (cur != kEmpty) {
+            const Leaf& leaf = leaves_[~cur];
+            for (std::uint32_t bi = 0; bi < leaf.blocks && r.triangles; ++bi)
+                if (blockTest<F>(blocks_[leaf.firstBlock + bi], r, tHit, u, v, prim, counters))
+                    if constexpr (AnyHit) return Hit{tHit, prim, u, v};
+            for (std::uint32_t si = 0; si < leaf.spheres; ++si) {
+                const FloatSphere& s = spheres_[leaf.firstSphere + si];
+                ++counters.primitiveTests;
+                const glm::vec3 c(s.center[0], s.center[1], s.center[2]);
+                if (const auto t =
+                        intersectSphereStable<float>(r.o, r.d, c, s.radius, r.tMin, tHit)) {
+                    tHit = *t;
+                    prim = spherePrims_[leaf.firstSphere + si];
+                    u = v = 0.0f;
+                    if constexpr (AnyHit) return Hit{tHit, prim, 0.0, 0.0};
+                }
             }
         }
+        // The nearest entry not beyond the nearest hit found since it was pushed.
+        cur = kEmpty;
+        while (top > 0) {
+            const Entry e = stack[--top];
+            if (e.tNear <= tHit) {
+                cur = e.child;
+                break;
+            }
+        }
+        if (cur == kEmpty) break;
     }
     if (prim == kNoPrim) return std::nullopt;
     return Hit{tHit, prim, u, v};

@@ -56,6 +56,7 @@ ProgressiveRender::ProgressiveRender(const Scene& scene, SceneQuery query, Rende
     if (!options_.camera) options_.camera = scene.camera;
     if (!cameraUsable(*options_.camera))
         throw std::invalid_argument("progressive render: the camera has no view direction");
+    tracer_.fixCamera(*options_.camera, options_.width, options_.height);
     plan_ = progressivePlan(options_.firstBlock, options_.spp, options_.refine);
     onePass_ = plan_.size() == 1;
     const std::size_t n = static_cast<std::size_t>(options_.width) * options_.height;

@@ -164,10 +164,14 @@ template <typename Rec>
 void Tracer::samples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
                      Color& sum, RayCounters& counters, Rec& rec) const {
     const Camera& cam = options.camera ? *options.camera : scene_.camera;
+    const auto generateRay = [&](double px, double py) {
+        return camera_ ? (*camera_)(px, py)
+                       : cam.generateRay(px, py, options.width, options.height);
+    };
     if (options.spp == 1) {
         if (from > 0 || to < 1) return;  // the one sample is sample 0
-        sum += trace(cam.generateRay(x + 0.5, y + 0.5, options.width, options.height),
-                     RayKind::Primary, 0, kNoId, false, rng, counters, rec);
+        sum += trace(generateRay(x + 0.5, y + 0.5), RayKind::Primary, 0, kNoId, false, rng,
+                     counters, rec);
         return;
     }
     // Jittered sampling: the pixel is cut into a near-square grid of strata, one sample in each.
@@ -176,8 +180,8 @@ void Tracer::samples(int x, int y, int from, int to, const RenderOptions& option
     for (int s = from; s < to; ++s) {
         const double jx = ((s % cols) + rng.uniform()) / cols;
         const double jy = ((s / cols) + rng.uniform()) / rows;
-        sum += trace(cam.generateRay(x + jx, y + jy, options.width, options.height),
-                     RayKind::Primary, 0, kNoId, false, rng, counters, rec);
+        sum += trace(generateRay(x + jx, y + jy), RayKind::Primary, 0, kNoId, false, rng, counters,
+                     rec);
     }
 }
 

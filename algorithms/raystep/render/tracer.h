@@ -65,6 +65,11 @@ class Tracer {
     /// Adds samples [from, to) of pixel (x, y) to `sum`, drawn in order from `rng` (the pixel's
     /// own stream): the centre for 1 spp, else one jittered sample in each stratum of a
     /// near-square grid. Every render, in one pass or in many, samples a pixel through this.
+    /// The camera and image size every later addSamples renders with, its frame computed once
+    /// here rather than per ray (ProgressiveRender's options do not change during a render).
+    void fixCamera(const Camera& camera, int width, int height) {
+        camera_.emplace(camera, width, height);
+    }
     void addSamples(int x, int y, int from, int to, const RenderOptions& options, Pcg32& rng,
                     Color& sum, RayCounters& counters) const;
     /// Radiance of pixel (x, y) averaged over `spp` samples, with that pixel's own random stream.
@@ -90,6 +95,7 @@ class Tracer {
     const Scene& scene_;
     SceneQuery query_;
     TraceSettings settings_;
+    std::optional<CameraRays> camera_;  // fixCamera's
 };
 
 /// Records pixel (x, y) of a width x height image of the scene as its settings say (bounces,

@@ -5,17 +5,24 @@
 namespace raystep {
 
 Ray Camera::generateRay(double x, double y, int width, int height) const {
+    return CameraRays(*this, width, height)(x, y);
+}
+
+CameraRays::CameraRays(const Camera& c, int w, int h) : width(w), height(h), eye_(c.eye) {
     // Orthonormal camera frame; the loader has rejected eye == lookAt and up parallel to the view.
-    const Vec3 forward = glm::normalize(lookAt - eye);
-    const Vec3 right = glm::normalize(glm::cross(forward, up));
-    const Vec3 trueUp = glm::cross(right, forward);
-    const double halfHeight = std::tan(glm::radians(fovDeg) * 0.5);
-    const double halfWidth = halfHeight * static_cast<double>(width) / static_cast<double>(height);
-    const double sx = (2.0 * x / width - 1.0) * halfWidth;
-    const double sy = (1.0 - 2.0 * y / height) * halfHeight;
+    forward_ = glm::normalize(c.lookAt - c.eye);
+    right_ = glm::normalize(glm::cross(forward_, c.up));
+    up_ = glm::cross(right_, forward_);
+    halfHeight_ = std::tan(glm::radians(c.fovDeg) * 0.5);
+    halfWidth_ = halfHeight_ * static_cast<double>(w) / static_cast<double>(h);
+}
+
+Ray CameraRays::operator()(double x, double y) const {
+    const double sx = (2.0 * x / width - 1.0) * halfWidth_;
+    const double sy = (1.0 - 2.0 * y / height) * halfHeight_;
     Ray ray;
-    ray.origin = eye;
-    ray.dir = glm::normalize(forward + sx * right + sy * trueUp);
+    ray.origin = eye_;
+    ray.dir = glm::normalize(forward_ + sx * right_ + sy * up_);
     return ray;
 }
 

@@ -18,6 +18,18 @@ struct Camera {
     Ray generateRay(double x, double y, int width, int height) const;
 };
 
+/// A camera's frame for one image size, computed once (a render's every ray): the rays of
+/// Camera::generateRay, bit for bit.
+struct CameraRays {
+    CameraRays(const Camera& camera, int width, int height);
+    Ray operator()(double x, double y) const;
+    int width, height;
+
+  private:
+    Vec3 eye_, forward_, right_, up_;
+    double halfWidth_, halfHeight_;
+};
+
 /// Whether the camera has a view: eye apart from lookAt, up not along the view, fov in (0, 180).
 bool cameraUsable(const Camera& camera);
 
