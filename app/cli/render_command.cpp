@@ -94,11 +94,17 @@ int runRender(const RenderArgs& a) {
                                      {"--save-scene (its mesh)", meshPath}},
                                     inputsOf(a.scene)))
         return fail(*problem);
-    // A model is a big mesh more often than not: a kd-tree (SAH) unless --accel says otherwise.
+    // A whole image records nothing: the fast path, whose images equal the accurate path's within
+    // docs/accuracy.md's tolerance, unless --accel or a kernel option asks for a structure (a
+    // model then gets a kd-tree, a scene brute force, as before there was a fast path).
     AccelArgs accelArgs = a.accel;
-    if (model && !(a.accelOption && a.accelOption->count() > 0)) accelArgs.accel = "kdtree";
+    const bool accelGiven = a.accelOption && a.accelOption->count() > 0;
+    bool kernelsGiven = false;
+    for (const CLI::Option* k : a.kernelOptions) kernelsGiven = kernelsGiven || k->count() > 0;
+    if (!accelGiven)
+        accelArgs.accel = kernelsGiven ? (model ? "kdtree" : "bruteforce") : kFastAccel;
     // The fast path has one set of kernels; the other options are checked as a BVH's would be.
-    const bool fast = accelArgs.accel == kFastAccel;
+    bool fast = accelArgs.accel == kFastAccel;
     if (fast) {
         const std::pair<std::string, std::string> fixed[] = {{"float", a.accel.precision},
                                                              {"watertight", a.accel.triangleMethod},
@@ -124,7 +130,18 @@ int runRender(const RenderArgs& a) {
     } catch (const SceneError& e) {
         return fail(e.what());
     }
-    if (auto problem = checkKernelRange(a.scene, scene, choice)) return fail(*problem);
+    if (auto problem = checkKernelRange(a.scene, scene, choice)) {
+        if (!fast || accelGiven) return fail(*problem);
+        // The default only: a scene beyond float's range is rendered by the accurate path.
+        fast = false;
+        choice.kernels = KernelOptions{};
+        accelArgs.accel = model ? "kdtree" : "bruteforce";
+        if (auto p = resolveAccel(accelArgs, choice)) return fail(*p);
+        std::fprintf(stderr,
+                     "raystep-cli: note: %s lies beyond the fast path's float range: rendered "
+                     "with %s in double\n",
+                     a.scene.c_str(), describeAccel(choice).c_str());
+    }
 
     RenderOptions opt;
     opt.width = a.width.value_or(scene.settings.width);

@@ -125,7 +125,7 @@ TEST_F(Cli, ListsBuiltinScenes) {
 TEST_F(Cli, RendersWithStatsAndHeatmap) {
     const CliRun r =
         run("render whitted -o w.png --width 40 --height 30 --spp 4 --bounces 3 "
-            "--stats s.json --heatmap h.png --threads 2 --seed 7");
+            "--stats s.json --heatmap h.png --threads 2 --seed 7 --accel bruteforce");
     ASSERT_EQ(r.code, 0) << r.err;
     int w = 0, h = 0, n = 0;
     ASSERT_TRUE(stbi_info((dir / "w.png").c_str(), &w, &h, &n));
@@ -147,6 +147,23 @@ TEST_F(Cli, RendersWithStatsAndHeatmap) {
     EXPECT_GE(stats["primitive_tests"].get<long>(), 4L * 40 * 30 * 4);
     EXPECT_GT(stats["render_ms"].get<double>(), 0.0);
     EXPECT_EQ(stats["seed"], 7);
+}
+
+TEST_F(Cli, AWholeImageIsMadeByTheFastPathUnlessAStructureIsAsked) {
+    const CliRun r = run("render whitted -o w.png --width 40 --height 30 --stats s.json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto stats = nlohmann::json::parse(slurp(dir / "s.json"));
+    EXPECT_EQ(stats["accel"], "fast");
+    EXPECT_EQ(stats["precision"], "float");
+    EXPECT_GT(stats["fast"]["nodes"].get<int>(), 0);
+    // A kernel option asks for the teaching structures' kernels: the old default, brute force.
+    const CliRun d =
+        run("render whitted -o w.png --width 40 --height 30 --stats s.json "
+            "--precision double");
+    ASSERT_EQ(d.code, 0) << d.err;
+    stats = nlohmann::json::parse(slurp(dir / "s.json"));
+    EXPECT_EQ(stats["accel"], "bruteforce");
+    EXPECT_EQ(stats["precision"], "double");
 }
 
 TEST_F(Cli, DefaultSceneAndOutputName) {
@@ -1176,8 +1193,12 @@ TEST_F(Cli, FloatKernelsRefuseAScenePastTheirRange) {
     }
     EXPECT_FALSE(fs::exists(dir / "f.png"));
     EXPECT_FALSE(fs::exists(dir / "t.json"));
+    // The default (the fast path, in float) gives way to the accurate path, and says so.
     const CliRun ok = run("render far.json -o f.png --width 8 --height 6");
     EXPECT_EQ(ok.code, 0) << ok.err;
+    EXPECT_NE(ok.err.find("rendered with bruteforce in double"), std::string::npos) << ok.err;
+    const CliRun fast = run("render far.json -o f.png --width 8 --height 6 --accel fast");
+    EXPECT_EQ(fast.code, 2) << fast.err;
 }
 
 TEST_F(Cli, TwoDimensionalRaysOutsideTheKernelsRangeAreRefused) {

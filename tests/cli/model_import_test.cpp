@@ -35,7 +35,7 @@ class ModelCli : public CliFolder {
     }
 };
 
-TEST_F(ModelCli, EveryFormatRendersWithAKdTreeByDefault) {
+TEST_F(ModelCli, EveryFormatRendersWithTheFastPathByDefault) {
     // Triangles of each model (worked out by hand, in the files' comments) plus the floor's 2.
     const std::vector<std::pair<std::string, int>> models = {
         {"pyramid.obj", 6},      {"tetra.ply", 4}, {"square.stl", 2},
@@ -48,7 +48,7 @@ TEST_F(ModelCli, EveryFormatRendersWithAKdTreeByDefault) {
         EXPECT_TRUE(fs::exists(dir / "m.png"));
         const auto s = stats();
         EXPECT_EQ(s["primitives"]["triangles"], triangles + 2);
-        EXPECT_EQ(s["accel"], "kdtree sah");
+        EXPECT_EQ(s["accel"], "fast");
         // The model is in the picture: some pixel tested a primitive.
         EXPECT_GT(s["max_primitive_tests_per_pixel"].get<int>(), 0);
     }
@@ -60,9 +60,15 @@ TEST_F(ModelCli, BunnyRendersWithATreeNotBruteForce) {
     ASSERT_EQ(r.code, 0) << r.err;
     const auto s = stats();
     EXPECT_EQ(s["primitives"]["triangles"], 69666 + 2);
-    EXPECT_EQ(s["accel"], "kdtree sah");
+    EXPECT_EQ(s["accel"], "fast");
     // A tree tests a few dozen triangles a pixel at most; brute force would test all 69,668.
     EXPECT_LT(s["max_primitive_tests_per_pixel"].get<int>(), 5000);
+    // With a kernel option and no --accel, a model still gets a kd-tree, not brute force.
+    const CliResult k =
+        run("render " + kBunny +
+            " -o bunny.png --width 40 --height 30 --stats s.json --precision double");
+    ASSERT_EQ(k.code, 0) << k.err;
+    EXPECT_EQ(stats()["accel"], "kdtree sah");
 }
 
 TEST_F(ModelCli, AStructureGivenIsKept) {
