@@ -31,6 +31,18 @@ double blocksOf(std::uint32_t n) {
     return std::ceil(n / 4.0);
 }
 
+bool finite(const Vec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+bool primitiveFinite(const Scene& scene, std::uint32_t p) {
+    if (scene.isSphere(p)) {
+        const Sphere& s = scene.spheres[p];
+        return finite(s.center) && std::isfinite(s.radius);
+    }
+    const Triangle& t = scene.triangle(p);
+    return finite(t.a) && finite(t.b) && finite(t.c);
+}
+
 struct Ref {
     Bounds3 box;
     Vec3 centre;
@@ -290,12 +302,11 @@ WideBvh::WideBvh(const Scene& scene, const WideBvhOptions& options) : scene_(&sc
     std::vector<Ref> refs;
     refs.reserve(scene.primitiveCount());
     for (std::uint32_t p = 0; p < scene.primitiveCount(); ++p) {
+        // A primitive with a NaN or infinite coordinate cannot be boxed, nor hit: its own
+        // coordinates are checked, as a box's min and max would drop a NaN.
+        if (!primitiveFinite(scene, p)) continue;
         const Bounds3 b = scene.primitiveBounds(p);
-        // A primitive with a NaN or infinite coordinate cannot be boxed, nor hit.
-        bool finite = true;
-        for (int a = 0; a < 3; ++a)
-            finite = finite && std::isfinite(b.lo[a]) && std::isfinite(b.hi[a]);
-        if (finite) refs.push_back({b, b.centroid(), p});
+        refs.push_back({b, b.centroid(), p});
     }
     const std::vector<BinaryNode> bin = BinaryBuilder(refs, options).build();
     if (!bin.empty()) root_ = WideBvhCollapse(*this, scene, refs, bin).root();

@@ -123,11 +123,14 @@ struct SlabLanes {
 };
 static_assert(offsetof(WideBvh::Node, hi) == 12 * sizeof(float));
 
+/// A box's exit distance is widened by this (Ize 2013: no box lost to rounding); a child popped
+/// from the stack is compared with the nearest hit widened the same, or it would be lost again.
+constexpr float kWiden = 1.0f + 2.0f * gamma<float>(3);
+
 /// The near hit of the four boxes: bit i set for child i, its entry distance in tNear.
 template <typename F>
 [[gnu::always_inline]] inline unsigned boxes4(const WideBvh::Node& n, const SlabLanes<F>& r, F tMin,
                                               float tHit, F& tNear) {
-    constexpr float widen = 1.0f + 2.0f * gamma<float>(3);  // Ize 2013: no box lost to rounding
     const float* base = &n.lo[0][0];
     F t0[3], t1[3];
     for (int a = 0; a < 3; ++a) {
@@ -137,7 +140,7 @@ template <typename F>
     // min and max return their second operand on a NaN (an origin on a slab's plane, parallel
     // to it: 0 * inf): that axis then sets no bound, as the ray runs along the box's face.
     tNear = max(t0[0], max(t0[1], max(t0[2], tMin)));
-    const F tFar = min(t1[0], min(t1[1], min(t1[2], splat4<F>(tHit)))) * splat4<F>(widen);
+    const F tFar = min(t1[0], min(t1[1], min(t1[2], splat4<F>(tHit)))) * splat4<F>(kWiden);
     return bits(tNear <= tFar);
 }
 
@@ -315,7 +318,7 @@ std::optional<Hit> WideBvh::traverse(const Ray& ray, TraversalCounters& counters
         cur = kEmpty;
         while (top > 0) {
             const Entry e = stack[--top];
-            if (e.tNear <= tHit) {
+            if (e.tNear <= tHit * kWiden) {
                 cur = e.child;
                 break;
             }
